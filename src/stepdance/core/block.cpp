@@ -1,0 +1,15 @@
+// Block registration and the default deep read.
+#include "stepdance/core/block.hpp"
+
+#include "stepdance/core/block_port.hpp"
+#include "stepdance/core/engine.hpp"
+
+namespace stepdance {
+
+Block::~Block() { engine().remove(this); }
+
+double Block::read_deep(BlockPort& port) { return port.read(ABSOLUTE); }
+
+Status Block::register_in(Stage stage) { return engine().add(stage, this); }
+
+}  // namespace stepdance

@@ -1,0 +1,55 @@
+// Base class of every engine block (ports, channels, generators, kinematics, interfaces).
+#pragma once
+
+#include "stepdance/core/stage.hpp"
+#include "stepdance/core/status.hpp"
+
+namespace stepdance {
+
+class BlockPort;
+
+/// A unit of work the engine runs in one context. Blocks register themselves in begin() and
+/// run in registration order within their stage. Destroying a block unregisters it.
+class Block {
+ public:
+  Block() = default;
+  virtual ~Block();
+  Block(const Block&) = delete;
+  Block& operator=(const Block&) = delete;
+
+  /// Lets the block run. Context: any.
+  virtual void enable() { enabled_ = true; }
+  /// Stops the block from running (its state is kept). Context: any.
+  virtual void disable() { enabled_ = false; }
+  /// True while the block runs. Context: any.
+  bool is_enabled() const { return enabled_; }
+
+  /// Deep sync, downstream: re-derive outputs from inputs that were just reset, without motion.
+  /// Called by an INPUT BlockPort's push_deep(). Context: loop (or frame ISR for GLOBAL moves).
+  virtual void push_deep() {}
+  /// Deep sync, upstream: adopt the downstream state into this block's inputs.
+  /// Called by an INPUT BlockPort's pull_deep(). Context: as push_deep().
+  virtual void pull_deep() {}
+  /// Deep read: the value `port` (one of this block's INPUT ports) would hold if its state were
+  /// re-derived from downstream, in the port's world units, without changing anything.
+  /// Default: the port's own absolute value. Context: any.
+  virtual double read_deep(BlockPort& port);
+
+  /// Runs one frame (frame stages) or one tick (kilohertz). Called by the engine only.
+  virtual void run() {}
+  /// Runs once per dance_loop() (loop stage). Called by the engine only.
+  virtual void loop() {}
+
+ protected:
+  /// Registers this block in a stage. On a full registry it reports a fault and returns kFull;
+  /// registering twice in one stage is a no-op. Context: loop.
+  Status register_in(Stage stage);
+
+ private:
+  bool enabled_ = true;
+};
+
+/// The original library's name for a block.
+using Plugin = Block;
+
+}  // namespace stepdance

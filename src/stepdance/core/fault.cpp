@@ -1,0 +1,48 @@
+// The single fault path's state and the hand-off to the backend's safe state.
+#include "stepdance/core/fault.hpp"
+
+#include "stepdance/hal/hal.hpp"
+
+namespace stepdance {
+namespace {
+volatile FaultReason first_reason = FaultReason::kNone;
+const char* volatile first_detail = "";
+volatile uint32_t count = 0;
+}  // namespace
+
+const char* to_string(FaultReason reason) {
+  switch (reason) {
+    case FaultReason::kNone: return "none";
+    case FaultReason::kRegistryFull: return "registry full";
+    case FaultReason::kQueueFull: return "queue full";
+    case FaultReason::kInvariant: return "invariant broken";
+    case FaultReason::kHardware: return "hardware error";
+    case FaultReason::kBadConfiguration: return "bad configuration";
+  }
+  return "unknown";
+}
+
+void fault(FaultReason reason, const char* detail) {
+  {
+    hal::CriticalSection guard;
+    count = count + 1;
+    if (first_reason != FaultReason::kNone) return;
+    first_reason = reason;
+    first_detail = detail != nullptr ? detail : "";
+  }
+  hal::enter_safe_state();
+  hal::log_fault(to_string(reason), first_detail);
+}
+
+FaultReason fault_reason() { return first_reason; }
+const char* fault_detail() { return first_detail; }
+uint32_t fault_count() { return count; }
+
+void clear_fault() {
+  hal::CriticalSection guard;
+  first_reason = FaultReason::kNone;
+  first_detail = "";
+  count = 0;
+}
+
+}  // namespace stepdance
