@@ -1,0 +1,151 @@
+// OutputPort: pending pulses, frame encoding, statistics, driver enable and current read-back.
+#include "stepdance/io/output_port.hpp"
+
+#include "stepdance/boards/board.hpp"
+#include "stepdance/core/fixed_list.hpp"
+#include "stepdance/hal/hal.hpp"
+
+namespace stepdance {
+namespace {
+
+constexpr const char* kPortNames[NUM_AVAILABLE_OUTPUT_PORTS] = {"OUTPUT A", "OUTPUT B", "OUTPUT C", "OUTPUT D"};
+constexpr float kAdcFullScaleVolts = 3.3f;
+constexpr float kAdcFullScaleCounts = 1023.0f;
+
+FixedList<OutputPort*, NUM_AVAILABLE_OUTPUT_PORTS>& begun_ports() {
+  static FixedList<OutputPort*, NUM_AVAILABLE_OUTPUT_PORTS> ports;
+  return ports;
+}
+
+uint8_t bit(uint8_t signal) { return static_cast<uint8_t>(1u << signal); }
+
+}  // namespace
+
+OutputPort::~OutputPort() { begun_ports().remove(this); }
+
+Status OutputPort::begin(uint8_t port) { return begin(port, OUTPUT_FRAME_32US, OUTPUT_TRANSMIT_ON_FRAME); }
+
+Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
+  if (format != OUTPUT_FRAME_32US) return Status::kUnsupported;
+  if (port >= active_board().output_port_count) {
+    hal::log_message("OutputPort::begin: this board has no such output port");
+    return Status::kNoSuchPin;
+  }
+  const Status claimed = hal::port_out_begin(port);
+  if (claimed != Status::kOk) return claimed;
+  port_ = port;
+  port_name = kPortNames[port];
+  if (!begun_ports().contains(this) && begun_ports().push_back(this) != Status::kOk) return Status::kFull;
+  if (transmit_mode == OUTPUT_TRANSMIT_MANUAL) return Status::kOk;
+  return register_in(Stage::kOutputPorts);
+}
+
+void OutputPort::add_signal(uint8_t signal, uint8_t direction) {
+  if (signal >= kNumSignals) return;
+  pending_[signal] = pending_[signal] + (direction == DIRECTION_FORWARD ? 1 : -1);
+}
+
+void OutputPort::step_now(uint8_t direction, uint8_t signal) {
+  hal::CriticalSection guard;
+  add_signal(signal, direction);
+}
+
+void OutputPort::transmit_frame() {
+  protocol::FrameRequest request;
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    if (pending_[signal] == 0) continue;
+    request.active_mask |= bit(signal);
+    if (pending_[signal] > 0) request.forward_mask |= bit(signal);
+  }
+  request.priority_mask = carried_mask_ & request.active_mask;
+  const protocol::EncodedFrame frame = protocol::encode_frame(request);
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    if (!(frame.sent_mask & bit(signal))) continue;
+    const bool forward = pending_[signal] > 0;
+    pending_[signal] = pending_[signal] + (forward ? -1 : 1);
+    ++sent_[signal][forward ? DIRECTION_FORWARD : DIRECTION_REVERSE];
+  }
+  carried_mask_ = frame.carried_mask;
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    if (frame.carried_mask & bit(signal)) ++signals_carried_;
+  }
+  if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, frame.words);
+}
+
+const OutputPortPins* OutputPort::pins() const {
+  const BoardDefinition& board = active_board();
+  if (port_ >= board.output_port_count) return nullptr;
+  return &board.output_ports[port_];
+}
+
+Status OutputPort::enable_driver() {
+  const OutputPortPins* p = pins();
+  if (p == nullptr || p->enable == kNoPin) {
+    hal::log_message("enable_driver: this board has no stepper driver on that port");
+    return Status::kNoSuchPin;
+  }
+  const Status mode = hal::gpio_mode(p->enable, hal::PinMode::kOutput);
+  if (mode != Status::kOk) return mode;
+  hal::gpio_write(p->enable, false);
+  return Status::kOk;
+}
+
+Status OutputPort::disable_driver() {
+  const OutputPortPins* p = pins();
+  if (p == nullptr || p->enable == kNoPin) return Status::kNoSuchPin;
+  hal::gpio_write(p->enable, true);
+  return Status::kOk;
+}
+
+float OutputPort::read_drive_current_amps() { return read_drive_current_amps(current_gain_a_per_v_); }
+
+float OutputPort::read_drive_current_amps(float amps_per_volt) {
+  const OutputPortPins* p = pins();
+  if (p == nullptr || p->vref == kNoPin) return -1.0f;
+  if (!vref_started_) {
+    if (hal::adc_begin(p->vref) != Status::kOk) return -1.0f;
+    vref_started_ = true;
+  }
+  const float volts = hal::adc_read(p->vref) * kAdcFullScaleVolts / kAdcFullScaleCounts;
+  return volts * amps_per_volt;
+}
+
+bool OutputPort::read_limit_switch() {
+  const OutputPortPins* p = pins();
+  if (p == nullptr || p->limit == kNoPin) return false;
+  return hal::gpio_read(p->limit);
+}
+
+uint32_t OutputPort::pulses_sent(uint8_t signal, uint8_t direction) const {
+  if (signal >= kNumSignals) return 0;
+  return sent_[signal][direction == DIRECTION_FORWARD ? 1 : 0];
+}
+
+void transmit_frames_on_all_output_ports() {
+  for (OutputPort* port : begun_ports()) port->transmit_frame();
+}
+
+void iterate_across_all_output_ports(void (*fn)(OutputPort* port)) {
+  if (fn == nullptr) return;
+  for (OutputPort* port : begun_ports()) fn(port);
+}
+
+Status enable_drivers() {
+  Status result = Status::kOk;
+  for (OutputPort* port : begun_ports()) {
+    const Status status = port->enable_driver();
+    if (status != Status::kOk) result = status;
+  }
+  return result;
+}
+
+Status disable_drivers() {
+  Status result = Status::kOk;
+  for (OutputPort* port : begun_ports()) {
+    const Status status = port->disable_driver();
+    if (status != Status::kOk) result = status;
+  }
+  return result;
+}
+
+}  // namespace stepdance

@@ -1,0 +1,99 @@
+// OutputPort: collects each frame's signals, encodes them and hands the frame to the hardware.
+#pragma once
+
+#include <stdint.h>
+
+#include "stepdance/boards/board.hpp"
+#include "stepdance/core/block.hpp"
+#include "stepdance/core/status.hpp"
+#include "stepdance/protocol/frame_encoder.hpp"
+#include "stepdance/protocol/signals.hpp"
+
+namespace stepdance {
+
+/// Output port selectors (the PCB's OUTPUT A..D).
+enum OutputPortId : uint8_t { OUTPUT_A = 0, OUTPUT_B = 1, OUTPUT_C = 2, OUTPUT_D = 3 };
+constexpr uint8_t OUTPUT_A_LEGACY = OUTPUT_A;
+constexpr uint8_t OUTPUT_B_LEGACY = OUTPUT_B;
+constexpr uint8_t NUM_AVAILABLE_OUTPUT_PORTS = 4;
+
+/// Frame formats of the original's three-argument begin(). Only the 32 µs format exists on the
+/// wire of a 40 µs frame; the others are refused with Status::kUnsupported.
+enum OutputFrameFormat : uint8_t { OUTPUT_FRAME_32US = 0, OUTPUT_FRAME_16US, OUTPUT_FRAME_8US, OUTPUT_FRAME_4US };
+/// Whether the engine transmits the port every frame, or the sketch calls transmit_frame().
+enum OutputTransmitMode : uint8_t { OUTPUT_TRANSMIT_ON_FRAME = 1, OUTPUT_TRANSMIT_MANUAL = 2 };
+
+/// A motion-stream output port. Channels queue at most one pulse per signal per frame with
+/// add_signal(); every frame the port encodes its pending pulses (protocol/frame_encoder) and
+/// hands the words to the HAL. A pulse that does not fit is carried to the next frame and
+/// counted; a forward and a reverse pulse still pending on one signal cancel (net position kept).
+class OutputPort : public Block {
+ public:
+  OutputPort() = default;
+  ~OutputPort() override;
+
+  /// Claims the port on the active board and transmits every frame. kNoSuchPin if the board has
+  /// no such port. Context: loop.
+  Status begin(uint8_t port);
+  /// The original's full form. Only OUTPUT_FRAME_32US is accepted. Context: loop.
+  Status begin(uint8_t port, uint8_t format, uint8_t transmit_mode);
+
+  /// Queues one pulse of `signal` (0..5) in `direction` (DIRECTION_FORWARD/REVERSE).
+  /// Context: frame ISR (channels), or loop while the engine is stopped.
+  void add_signal(uint8_t signal, uint8_t direction);
+  /// Queues one pulse for the next frame (the original sent it at once and could collide with
+  /// a frame on the wire). Context: any.
+  void step_now(uint8_t direction, uint8_t signal = SIGNAL_E);
+  /// Encodes the pending pulses and hands the frame to the HAL. Called by the engine each frame
+  /// in OUTPUT_TRANSMIT_ON_FRAME mode, by the sketch in manual mode. Context: frame ISR.
+  void transmit_frame();
+  void run() override { transmit_frame(); }
+
+  /// Drives the driver's ENABLE low (enabled). kNoSuchPin on a board without drivers.
+  /// Context: loop.
+  Status enable_driver();
+  /// Drives ENABLE high (disabled). kNoSuchPin on a board without drivers. Context: any.
+  Status disable_driver();
+  /// Amps per volt of VREF for the fitted driver (1.0 for BigTreeTech TMC2209). Context: any.
+  void set_drive_current_gain(float amps_per_volt) { current_gain_a_per_v_ = amps_per_volt; }
+  /// Driver peak current in amps from the VREF read-back; −1 if the board has no VREF pin.
+  /// The first call starts the conversions. Context: loop.
+  float read_drive_current_amps();
+  float read_drive_current_amps(float amps_per_volt);
+  /// True while the port's limit switch is active (input high). False without a limit pin.
+  /// Context: any.
+  bool read_limit_switch();
+
+  /// Pulses placed on the wire for a signal in one direction since begin. Context: any.
+  uint32_t pulses_sent(uint8_t signal, uint8_t direction) const;
+  /// Signal-frames deferred because the frame was full (each deferral counts once).
+  uint32_t signals_carried() const { return signals_carried_; }
+  /// Net pulses still waiting for a frame on a signal (+ forward, − reverse).
+  int32_t pending(uint8_t signal) const { return signal < kNumSignals ? pending_[signal] : 0; }
+  /// The port index (0..3), or 255 before begin().
+  uint8_t port_index() const { return port_; }
+  /// "OUTPUT A" .. "OUTPUT D".
+  const char* port_name = "OUTPUT ?";
+
+ private:
+  const OutputPortPins* pins() const;
+
+  uint8_t port_ = 255;
+  uint8_t carried_mask_ = 0;
+  volatile int32_t pending_[kNumSignals] = {};
+  uint32_t sent_[kNumSignals][2] = {};
+  uint32_t signals_carried_ = 0;
+  float current_gain_a_per_v_ = 1.0f;
+  bool vref_started_ = false;
+};
+
+/// Transmits the frames of every begun port (the engine does this itself). Context: frame ISR.
+void transmit_frames_on_all_output_ports();
+/// Calls fn for every begun output port. Context: loop.
+void iterate_across_all_output_ports(void (*fn)(OutputPort* port));
+/// Enables / disables the drivers of every begun port. kNoSuchPin on a board without drivers.
+/// Context: loop.
+Status enable_drivers();
+Status disable_drivers();
+
+}  // namespace stepdance
