@@ -33,8 +33,8 @@
 #endif
 
 /* The same checks as servo_pulse_settings_valid(), made at build time. */
-#if (PULSE_PERIOD_US + PULSE_PERIOD_OFFSET) < 2 || (PULSE_PERIOD_US + PULSE_PERIOD_OFFSET) > 65536
-#error "PULSE_PERIOD_US + PULSE_PERIOD_OFFSET must lie in 2..65536 (Timer1 is 16 bits)"
+#if (PULSE_PERIOD_US + PULSE_PERIOD_OFFSET) < 2 || (PULSE_PERIOD_US + PULSE_PERIOD_OFFSET) > 65535
+#error "PULSE_PERIOD_US + PULSE_PERIOD_OFFSET must lie in 2..65535 (Timer1 is 16 bits)"
 #endif
 #if SERVO_BOTTOM_LIMIT_STEPS > SERVO_TOP_LIMIT_STEPS
 #error "SERVO_BOTTOM_LIMIT_STEPS must not exceed SERVO_TOP_LIMIT_STEPS"

@@ -46,6 +46,6 @@ bool servo_pulse_settings_valid(const servo_pulse_settings *settings)
     const int64_t max_width_us = (int64_t)neutral_width_us(settings) + settings->top_limit_steps;
 
     return settings->bottom_limit_steps <= settings->top_limit_steps
-        && period_us >= 2 && period_us <= 65536
+        && period_us >= 2 && period_us <= UINT16_MAX
         && min_width_us >= 1 && max_width_us < period_us;
 }

@@ -44,7 +44,7 @@ uint16_t servo_pulse_top_for_period_us(uint16_t period_us);
 uint16_t servo_pulse_compare_for_width_us(uint16_t width_us);
 
 /* True when every width in the step window is at least 1 us and ends before the period does,
- * the period fits Timer1, and bottom_limit_steps <= top_limit_steps. */
+ * the period lies in 2..65535 us (Timer1 and uint16_t), and bottom_limit_steps <= top_limit_steps. */
 bool servo_pulse_settings_valid(const servo_pulse_settings *settings);
 
 #ifdef __cplusplus
