@@ -84,7 +84,11 @@ void BlockPort::reset(double value, bool raw) {
 void BlockPort::push() { push(mode_); }
 
 void BlockPort::push(PositionMode mode) {
-  if (peer_ == nullptr || !enabled_) return;
+  if (peer_ == nullptr) return;
+  if (!enabled_) {
+    pushed_total_ = committed_world_;  // a gated change is dropped, not delivered later
+    return;
+  }
   if (mode == INCREMENTAL) {
     const double change = committed_world_ - pushed_total_;
     pushed_total_ = committed_world_;
@@ -97,7 +101,11 @@ void BlockPort::push(PositionMode mode) {
 void BlockPort::pull() { pull(mode_); }
 
 void BlockPort::pull(PositionMode mode) {
-  if (peer_ == nullptr || !enabled_) return;
+  if (peer_ == nullptr) return;
+  if (!enabled_) {
+    pulled_total_ = peer_->committed_total();  // a gated change is dropped, not delivered later
+    return;
+  }
   if (mode == INCREMENTAL) {
     const double total = peer_->committed_total();
     const double change = total - pulled_total_;
@@ -118,7 +126,10 @@ double BlockPort::read(PositionMode mode) const {
   return (incremental_buffer + absolute_buffer) * world_per_block_;
 }
 
+// Deep operations hold interrupts off for the whole chain: a frame running halfway through
+// would see some ports reset and others not, and turn the difference into motion.
 void BlockPort::push_deep(double world_value) {
+  hal::CriticalSection guard;
   reset(world_value);
   if (direction_ == BLOCKPORT_INPUT && parent_ != nullptr) {
     parent_->push_deep();
@@ -128,6 +139,7 @@ void BlockPort::push_deep(double world_value) {
 }
 
 double BlockPort::pull_deep() {
+  hal::CriticalSection guard;
   if (direction_ == BLOCKPORT_OUTPUT && peer_ != nullptr) {
     const double position = peer_->pull_deep();
     reset(position);

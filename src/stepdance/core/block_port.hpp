@@ -88,7 +88,8 @@ class BlockPort {
   /// Deep read: the downstream machine position seen from this port (world), changing nothing.
   double read_deep();
 
-  /// Gate push() and pull() on or off. Context: any.
+  /// Gate push() and pull() on or off. A change committed or offered while gated is dropped,
+  /// never delivered after enable() (as in the original). Context: any.
   void enable() { enabled_ = true; }
   void disable() { enabled_ = false; }
 

@@ -1,0 +1,191 @@
+// Channel: the per-frame stepping law, its exact rate limiter, soft limits and deep sync.
+#include "stepdance/motion/channel.hpp"
+
+#include "stepdance/hal/hal.hpp"
+#include "stepdance/io/output_port.hpp"
+#include "stepdance/protocol/signals.hpp"
+
+namespace stepdance {
+namespace {
+
+// The rate limiter counts credit in milli-pulses per second, one add per frame. A pulse costs
+// one second's worth of frames of credit, so a rate of N pulses/s earns exactly N pulses in any
+// 25 000 frames; fractional rates keep a resolution of 0.001 pulses/s.
+constexpr uint32_t kCreditScale = 1000;
+constexpr uint32_t kCreditPerPulse = kFrameRateHz * kCreditScale;
+constexpr uint32_t kMaxCreditPerFrame = kCreditPerPulse;  // one pulse per frame
+
+// Half a step: the dead band around the target.
+constexpr double kDeadBandSteps = 0.5;
+
+}  // namespace
+
+Channel::Channel() = default;
+
+Status Channel::begin(OutputPort* port, uint8_t signal) {
+  if (signal >= kNumSignals) return Status::kBadArgument;
+  return start(port, signal);
+}
+
+Status Channel::begin() { return start(nullptr, 255); }
+
+Status Channel::start(OutputPort* port, uint8_t signal) {
+  port_ = port;
+  signal_ = signal;
+  reset_state();
+  input_target_position.begin(&target_position, BLOCKPORT_INPUT, this);
+  input_target_position_2.begin(&target_position_2, BLOCKPORT_INPUT, this);
+  return register_in(Stage::kChannels);
+}
+
+void Channel::reset_state() {
+  target_position = 0;
+  target_position_2 = 0;
+  current_position = 0;
+  filtered_target_position = 0;
+  direction_ = 1;
+  last_pulse_step_ = 0;
+  credit_per_frame_ = kMaxCreditPerFrame;
+  credit_ = kCreditPerPulse - 1;  // as after a long idle time: the first pulse may go at once
+  pulses_forward_ = 0;
+  pulses_reverse_ = 0;
+  pulses_withheld_ = 0;
+}
+
+void Channel::set_max_pulse_rate(double pulses_per_s) {
+  if (!(pulses_per_s > 0.0)) {  // also catches NaN
+    credit_per_frame_ = 0;
+    return;
+  }
+  if (pulses_per_s >= kMaxPulseRatePerS) {
+    credit_per_frame_ = kMaxCreditPerFrame;
+    return;
+  }
+  credit_per_frame_ = static_cast<uint32_t>(pulses_per_s * kCreditScale + 0.5);
+}
+
+void Channel::set_ratio(double world_units, double channel_units) {
+  input_target_position.set_ratio(world_units, channel_units);
+  input_target_position_2.set_ratio(world_units, channel_units);
+  update_limit_steps();
+}
+
+void Channel::set_upper_limit(double world_position) {
+  upper_limit_world_ = world_position;
+  update_limit_steps();
+  upper_enabled_ = true;
+}
+
+void Channel::set_lower_limit(double world_position) {
+  lower_limit_world_ = world_position;
+  update_limit_steps();
+  lower_enabled_ = true;
+}
+
+void Channel::disable_limits() {
+  upper_enabled_ = false;
+  lower_enabled_ = false;
+}
+
+void Channel::update_limit_steps() {
+  upper_limit_steps_ = input_target_position.convert_world_to_block_units(upper_limit_world_);
+  lower_limit_steps_ = input_target_position.convert_world_to_block_units(lower_limit_world_);
+}
+
+int8_t Channel::is_outside_limits() const {
+  const double current = current_position;
+  const double commanded = filtered_target_position;
+  if (upper_enabled_ && (current > upper_limit_steps_ || commanded > upper_limit_steps_)) return 1;
+  if (lower_enabled_ && (current < lower_limit_steps_ || commanded < lower_limit_steps_)) return -1;
+  return 0;
+}
+
+void Channel::enable_filtering(uint16_t samples) {
+  filter_samples_ = samples == 0 ? 1 : samples;
+  filtering_ = true;
+}
+
+void Channel::push_deep() {
+  hal::CriticalSection guard;
+  const double summed = target_position + target_position_2;
+  filtered_target_position = summed;
+  current_position = summed;
+}
+
+void Channel::run() {
+  input_target_position.pull();
+  input_target_position.update();
+  input_target_position_2.pull();
+  input_target_position_2.update();
+  const double error_steps = advance_filter() - current_position;
+  track_direction(error_steps);
+  meter_credit(demanded_step(error_steps));
+}
+
+double Channel::advance_filter() {
+  const double summed = target_position + target_position_2;
+  if (!filtering_) {
+    filtered_target_position = summed;
+  } else {
+    const double n = filter_samples_;
+    filtered_target_position = (filtered_target_position * (n - 1.0) + summed) / n;
+  }
+  return filtered_target_position;
+}
+
+void Channel::track_direction(double error_steps) {
+  if (error_steps >= kDeadBandSteps) {
+    direction_ = 1;
+  } else if (error_steps < -kDeadBandSteps) {
+    direction_ = -1;
+  }
+}
+
+int8_t Channel::demanded_step(double error_steps) {
+  if (error_steps <= kDeadBandSteps && error_steps >= -kDeadBandSteps) return 0;
+  if (!limit_allows(direction_)) {
+    ++pulses_withheld_;
+    return 0;
+  }
+  return direction_;
+}
+
+bool Channel::limit_allows(int8_t step) const {
+  const double next = current_position + step;
+  if (step > 0) return !upper_enabled_ || next <= upper_limit_steps_;
+  return !lower_enabled_ || next >= lower_limit_steps_;
+}
+
+uint32_t Channel::threshold_for(int8_t step) const {
+  const bool reversing = step != 0 && last_pulse_step_ != 0 && step != last_pulse_step_;
+  return reversing ? 2 * kCreditPerPulse : kCreditPerPulse;
+}
+
+// Earns this frame's credit and pulses if the step is affordable. Without a pulse the credit is
+// capped just below the price, so idle (or blocked) time never banks a burst, while a pending
+// reversal may still save up its double price.
+void Channel::meter_credit(int8_t step) {
+  credit_ += credit_per_frame_;
+  const uint32_t price = threshold_for(step);
+  if (step != 0 && credit_ >= price) {
+    credit_ -= price;  // keep the remainder: exact long-run rate
+    emit(step);
+    return;
+  }
+  if (credit_ > price - 1) credit_ = price - 1;
+}
+
+void Channel::emit(int8_t step) {
+  current_position = current_position + step;
+  last_pulse_step_ = step;
+  if (step > 0) {
+    ++pulses_forward_;
+  } else {
+    ++pulses_reverse_;
+  }
+  if (port_ == nullptr) return;
+  const bool forward_on_wire = (step > 0) != inverted_;
+  port_->add_signal(signal_, forward_on_wire ? DIRECTION_FORWARD : DIRECTION_REVERSE);
+}
+
+}  // namespace stepdance
