@@ -118,6 +118,33 @@ void check_pulse_updates(const ServoBoard& board, const Waveform& waveform, cons
               std::to_string(writes.size() - next_write) + " stray write(s)");
 }
 
+void check_neutral_output_pulses(const ServoBoard& board, const Expectations& expect, Report& report) {
+  // simavr arms the first pulse in the cycle TCCR1B is written, one cycle early.
+  constexpr std::uint64_t kToleranceCycles = 1;
+  const std::uint64_t period_cycles = static_cast<std::uint64_t>(expect.period_us) * ServoBoard::kCyclesPerUs;
+  const std::uint64_t width_cycles = static_cast<std::uint64_t>(expect.width_us(0)) * ServoBoard::kCyclesPerUs;
+  const auto within = [](std::uint64_t actual, std::uint64_t expected) {
+    return actual + kToleranceCycles >= expected && actual <= expected + kToleranceCycles;
+  };
+  const auto& output = board.compare_b_output();
+  int pulses = 0;
+  int bad_periods = 0;
+  int bad_widths = 0;
+  for (std::size_t i = 1; i < output.size(); ++i) {
+    const std::uint64_t span = output[i].cycle - output[i - 1].cycle;
+    if (output[i - 1].high && !output[i].high) {
+      ++pulses;
+      bad_widths += within(span, width_cycles) ? 0 : 1;
+    }
+    if (output[i].high && i >= 2 && output[i - 2].high) {
+      bad_periods += within(output[i].cycle - output[i - 2].cycle, period_cycles) ? 0 : 1;
+    }
+  }
+  report.that("compare-B output pulses seen", pulses > 0);
+  report.equal("compare-B periods not " + std::to_string(expect.period_us) + " us", 0, bad_periods);
+  report.equal("compare-B pulses not " + std::to_string(expect.width_us(0)) + " us", 0, bad_widths);
+}
+
 void check_settled(const ServoBoard& board, const Waveform& waveform, const Expectations& expect,
                    Report& report, const std::string& label) {
   const std::int32_t position = waveform.position_at_us(board.now_cycles() / ServoBoard::kCyclesPerUs);

@@ -22,6 +22,10 @@ void check_configuration(const ServoBoard& board, const Expectations& expect, Re
 void check_pulse_updates(const ServoBoard& board, const Waveform& waveform, const Expectations& expect,
                          Report& report);
 
+// While the position stays 0: simavr's compare-B output (see ServoBoard::compare_b_output) rises
+// exactly once per period and every pulse is the neutral width, i.e. ICR1 + 1 and OCR1B + 1 us.
+void check_neutral_output_pulses(const ServoBoard& board, const Expectations& expect, Report& report);
+
 // The SRAM position equals the waveform's position now, and so does the last OCR1B written.
 // Call at least one full period after the last pulse.
 void check_settled(const ServoBoard& board, const Waveform& waveform, const Expectations& expect,

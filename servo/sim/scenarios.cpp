@@ -39,6 +39,7 @@ void scenario_start_up(const Expectations& expect, Report& report) {
   const Waveform idle(0);
   check_pulse_updates(board, idle, expect, report);
   check_settled(board, idle, expect, report, "idle");
+  check_neutral_output_pulses(board, expect, report);
   report.equal("period ends in 3.5 periods", std::size_t{3}, board.period_end_cycles().size());
   report.end();
 }

@@ -6,7 +6,8 @@
 
 namespace servo_sim {
 
-// Start-up: registers, fuses, neutral pulse, one OCR1B write per period, position 0.
+// Start-up: registers, fuses, neutral pulse (also timed on simavr's compare-B output), one OCR1B
+// write per period, position 0.
 void scenario_start_up(const Expectations& expect, Report& report);
 
 // A 25 kHz Stepdance stream (DIR 1 us ahead of 7 us STEP pulses) forward, then back.

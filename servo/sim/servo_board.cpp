@@ -2,6 +2,7 @@
 #include "servo_board.h"
 
 #include <simavr/avr_ioport.h>  // AVR_IOCTL_IOPORT_GETIRQ, IOPORT_IRQ_PIN*
+#include <simavr/avr_timer.h>   // AVR_IOCTL_TIMER_GETIRQ, TIMER_IRQ_OUT_COMP
 #include <simavr/sim_avr.h>     // avr_t, avr_make_mcu_by_name, avr_run
 #include <simavr/sim_elf.h>     // elf_firmware_t, elf_read_firmware
 #include <simavr/sim_io.h>      // avr_register_io_write, avr_io_getirq
@@ -50,6 +51,11 @@ ServoBoard::ServoBoard(const std::string& elf_path, const std::string& position_
   dir_irq_ = avr_io_getirq(avr_, AVR_IOCTL_IOPORT_GETIRQ('A'), IOPORT_IRQ_PIN6);
   avr_raise_irq(step_irq_, 0);
   avr_raise_irq(dir_irq_, 0);
+  avr_irq_t* compare_b = avr_io_getirq(avr_, AVR_IOCTL_TIMER_GETIRQ('1'), TIMER_IRQ_OUT_COMP + AVR_TIMER_COMPB);
+  if (compare_b == nullptr) {
+    throw std::runtime_error("this simavr has no Timer1 compare-B output");
+  }
+  avr_irq_register_notify(compare_b, &ServoBoard::on_compare_b_output, this);
   avr_register_io_write(avr_, reg::kOcr1bl, &ServoBoard::on_ocr1bl_write, this);
   avr_register_io_write(avr_, reg::kTccr1b, &ServoBoard::on_tccr1b_write, this);
 }
@@ -92,6 +98,11 @@ void ServoBoard::on_ocr1bl_write(avr_t* avr, std::uint16_t, std::uint8_t value, 
   auto* board = static_cast<ServoBoard*>(param);
   const auto high = static_cast<std::uint16_t>(avr->data[reg::kOcr1bl + 1] << 8);
   board->ocr1b_writes_.push_back({avr->cycle, static_cast<std::uint16_t>(high | value)});
+}
+
+void ServoBoard::on_compare_b_output(avr_irq_t*, std::uint32_t value, void* param) {
+  auto* board = static_cast<ServoBoard*>(param);
+  board->compare_b_output_.push_back({board->avr_->cycle, value != 0});
 }
 
 void ServoBoard::on_tccr1b_write(avr_t* avr, std::uint16_t, std::uint8_t value, void* param) {

@@ -26,6 +26,12 @@ constexpr std::uint16_t kTccr1b = 0x4E;
 constexpr std::uint16_t kTccr1a = 0x4F;
 }  // namespace reg
 
+// A level change of a digital signal.
+struct LevelChange {
+  std::uint64_t cycle;
+  bool high;
+};
+
 // A 16-bit register value, recorded when the CPU wrote its low byte (which completes the write).
 struct RegisterWrite16 {
   std::uint64_t cycle;
@@ -60,6 +66,11 @@ class ServoBoard {
   // Every write of OCR1B, in order.
   const std::vector<RegisterWrite16>& ocr1b_writes() const { return ocr1b_writes_; }
 
+  // simavr's Timer1 compare-B output: the waveform OC1B would carry (set at BOTTOM, cleared after
+  // the OCR1B match). simavr 1.6 does not route it to PA5 in mode 14, and its width does not follow
+  // later OCR1B writes; it is trustworthy only while OCR1B keeps its start-up value.
+  const std::vector<LevelChange>& compare_b_output() const { return compare_b_output_; }
+
   // Cycles at which TOV1 (counter reached TOP: end of a PWM period) was seen set.
   const std::vector<std::uint64_t>& period_end_cycles() const { return period_end_cycles_; }
 
@@ -73,6 +84,7 @@ class ServoBoard {
  private:
   static std::uint64_t on_pin_event(avr_t* avr, std::uint64_t when, void* param);
   static void on_ocr1bl_write(avr_t* avr, std::uint16_t address, std::uint8_t value, void* param);
+  static void on_compare_b_output(avr_irq_t* irq, std::uint32_t value, void* param);
   static void on_tccr1b_write(avr_t* avr, std::uint16_t address, std::uint8_t value, void* param);
 
   avr_t* avr_ = nullptr;
@@ -82,6 +94,7 @@ class ServoBoard {
   std::vector<PinEvent> pending_;
   std::size_t next_pending_ = 0;
   std::vector<RegisterWrite16> ocr1b_writes_;
+  std::vector<LevelChange> compare_b_output_;
   std::vector<std::uint64_t> period_end_cycles_;
   bool tov1_was_set_ = false;
   std::optional<std::uint64_t> timer_start_cycle_;

@@ -61,8 +61,10 @@ int main(int argc, char** argv) {
   std::cout << "servo firmware " << expect.elf_path << ": window [" << expect.bottom_limit_steps << ", "
             << expect.top_limit_steps << "] steps, neutral " << expect.neutral_width_us << " us, period "
             << expect.period_us << " us\n"
-            << "note: Debian's simavr 1.6 does not drive the OC1B pin in Timer1 fast PWM mode 14,\n"
-            << "      so the pulse is checked through OCR1B and ICR1, not through PA5.\n";
+            << "note: Debian's simavr 1.6 does not drive the OC1B pin (PA5) in Timer1 fast PWM mode 14, and\n"
+            << "      its internal compare-B output ignores OCR1B writes after start-up; the pulse is\n"
+            << "      therefore checked through the OCR1B and ICR1 registers (and the compare-B output\n"
+            << "      only at start-up).\n";
 
   servo_sim::Report report;
   try {
