@@ -8,6 +8,7 @@
 #include <simavr/sim_io.h>      // avr_register_io_write, avr_io_getirq
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -19,6 +20,18 @@ namespace {
 constexpr std::uint32_t kAvrDataSpaceTag = 0x800000;  // avr-gcc's marker for SRAM addresses
 constexpr std::uint8_t kClockSelectMask = 0x07;       // TCCR1B CS12:10
 constexpr std::uint8_t kTov1Mask = 0x01;
+
+// Frees what elf_read_firmware() allocated; simavr keeps its own copies once loaded.
+void release_firmware(elf_firmware_t& firmware) {
+  std::free(firmware.flash);
+  std::free(firmware.eeprom);
+  std::free(firmware.fuse);
+  std::free(firmware.lockbits);
+  for (std::uint32_t i = 0; i < firmware.symbolcount; ++i) {
+    std::free(firmware.symbol[i]);
+  }
+  std::free(firmware.symbol);
+}
 
 }  // namespace
 
@@ -42,10 +55,12 @@ ServoBoard::ServoBoard(const std::string& elf_path, const std::string& position_
 
   avr_ = avr_make_mcu_by_name(firmware.mmcu);
   if (avr_ == nullptr) {
+    release_firmware(firmware);
     throw std::runtime_error("this simavr has no attiny84 core");
   }
   avr_init(avr_);
   avr_load_firmware(avr_, &firmware);
+  release_firmware(firmware);
 
   step_irq_ = avr_io_getirq(avr_, AVR_IOCTL_IOPORT_GETIRQ('A'), IOPORT_IRQ_PIN7);
   dir_irq_ = avr_io_getirq(avr_, AVR_IOCTL_IOPORT_GETIRQ('A'), IOPORT_IRQ_PIN6);
@@ -63,6 +78,7 @@ ServoBoard::ServoBoard(const std::string& elf_path, const std::string& position_
 ServoBoard::~ServoBoard() {
   if (avr_ != nullptr) {
     avr_terminate(avr_);
+    std::free(avr_);  // allocated by avr_make_mcu_by_name()
   }
 }
 
