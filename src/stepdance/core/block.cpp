@@ -6,9 +6,9 @@
 
 namespace stepdance {
 
-Block::~Block() { engine().remove(this); }
+void Block::unregister(Block* block) { engine().remove(block); }
 
-double Block::read_deep(BlockPort& port) { return port.read(ABSOLUTE); }
+double Block::absolute_value(BlockPort& port) { return port.read(ABSOLUTE); }
 
 Status Block::register_in(Stage stage) { return engine().add(stage, this); }
 

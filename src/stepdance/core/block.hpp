@@ -13,7 +13,7 @@ class BlockPort;
 class Block {
  public:
   Block() = default;
-  virtual ~Block();
+  virtual ~Block() { unregister(this); }
   Block(const Block&) = delete;
   Block& operator=(const Block&) = delete;
 
@@ -33,7 +33,7 @@ class Block {
   /// Deep read: the value `port` (one of this block's INPUT ports) would hold if its state were
   /// re-derived from downstream, in the port's world units, without changing anything.
   /// Default: the port's own absolute value. Context: any.
-  virtual double read_deep(BlockPort& port);
+  virtual double read_deep(BlockPort& port) { return absolute_value(port); }
 
   /// Runs one frame (frame stages) or one tick (kilohertz). Called by the engine only.
   virtual void run() {}
@@ -46,6 +46,12 @@ class Block {
   Status register_in(Stage stage);
 
  private:
+  // Every virtual is defined inline, so Block has no key function and its vtable and type_info
+  // are emitted wherever a subclass is compiled. Code built with RTTI (tests, host sketches) can
+  // then derive from Block although the core itself is built with -fno-rtti.
+  static void unregister(Block* block);
+  static double absolute_value(BlockPort& port);
+
   bool enabled_ = true;
 };
 

@@ -1,6 +1,7 @@
 // The single fault path's state and the hand-off to the backend's safe state.
 #include "stepdance/core/fault.hpp"
 
+#include "stepdance/core/engine.hpp"
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
@@ -31,6 +32,9 @@ void fault(FaultReason reason, const char* detail) {
     first_detail = detail != nullptr ? detail : "";
   }
   hal::enter_safe_state();
+  // The safe state stopped the timers: the engine must know, or a dance_start() after
+  // clear_fault() would report kOk without restarting the frames.
+  engine().stop();
   hal::log_fault(to_string(reason), first_detail);
 }
 
