@@ -21,7 +21,7 @@ uint8_t bit(uint8_t signal) { return static_cast<uint8_t>(1u << signal); }
 
 }  // namespace
 
-OutputPort::~OutputPort() { begun_ports().remove(this); }
+void OutputPort::forget(OutputPort* port) { begun_ports().remove(port); }
 
 Status OutputPort::begin(uint8_t port) { return begin(port, OUTPUT_FRAME_32US, OUTPUT_TRANSMIT_ON_FRAME); }
 
@@ -93,8 +93,9 @@ Status OutputPort::enable_driver() {
 Status OutputPort::disable_driver() {
   const OutputPortPins* p = pins();
   if (p == nullptr || p->enable == kNoPin) return Status::kNoSuchPin;
+  // Level first, then direction: a pin that was still an input starts driving high, no glitch.
   hal::gpio_write(p->enable, true);
-  return Status::kOk;
+  return hal::gpio_mode(p->enable, hal::PinMode::kOutput);
 }
 
 float OutputPort::read_drive_current_amps() { return read_drive_current_amps(current_gain_a_per_v_); }

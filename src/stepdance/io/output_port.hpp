@@ -30,7 +30,7 @@ enum OutputTransmitMode : uint8_t { OUTPUT_TRANSMIT_ON_FRAME = 1, OUTPUT_TRANSMI
 class OutputPort : public Block {
  public:
   OutputPort() = default;
-  ~OutputPort() override;
+  ~OutputPort() override { forget(this); }
 
   /// Claims the port on the active board and transmits every frame. kNoSuchPin if the board has
   /// no such port. Context: loop.
@@ -76,6 +76,8 @@ class OutputPort : public Block {
   const char* port_name = "OUTPUT ?";
 
  private:
+  // Inline destructor: no key function, so RTTI-built code can use OutputPort (see Block).
+  static void forget(OutputPort* port);
   const OutputPortPins* pins() const;
 
   uint8_t port_ = 255;

@@ -1,0 +1,121 @@
+// AnalogInput: raw count → floor/ceiling/deadband map → mapped parameter and loop callback.
+#include "stepdance/io/analog_input.hpp"
+
+#include "stepdance/hal/hal.hpp"
+
+namespace stepdance {
+namespace {
+
+// The straight line through (x0, y0) and (x1, y1) at x; a vertical line steps from y0 to y1.
+double line(double x, double x0, double y0, double x1, double y1) {
+  if (x1 == x0) return x < x0 ? y0 : y1;
+  return y0 + (x - x0) * (y1 - y0) / (x1 - x0);
+}
+
+double clamp_between(double value, double a, double b) {
+  const double low = a < b ? a : b;
+  const double high = a < b ? b : a;
+  if (value < low) return low;
+  if (value > high) return high;
+  return value;
+}
+
+}  // namespace
+
+Status AnalogInput::begin(uint8_t pin) {
+  const Status started = hal::adc_begin(pin);
+  if (started != Status::kOk) return started;
+  pin_ = pin;
+  samples_seen_ = hal::adc_sample_count(pin);
+  const Status tick = register_in(Stage::kKilohertz);
+  if (tick != Status::kOk) return tick;
+  return register_in(Stage::kLoop);
+}
+
+void AnalogInput::map(ControlParameter* target) {
+  hal::CriticalSection guard;
+  float_target_ = target;
+  double_target_ = nullptr;
+}
+
+void AnalogInput::map(DecimalPosition* target) {
+  hal::CriticalSection guard;
+  double_target_ = target;
+  float_target_ = nullptr;
+}
+
+void AnalogInput::set_floor(double output_value, uint16_t adc_value) {
+  hal::CriticalSection guard;
+  floor_value_ = output_value;
+  adc_low_ = adc_value;
+}
+
+void AnalogInput::set_ceiling(double output_value, uint16_t adc_value) {
+  hal::CriticalSection guard;
+  ceiling_value_ = output_value;
+  adc_high_ = adc_value;
+}
+
+void AnalogInput::set_deadband(double output_value, uint16_t centre, uint16_t width) {
+  hal::CriticalSection guard;
+  deadband_value_ = output_value;
+  deadband_centre_ = centre;
+  deadband_half_width_ = (width == 1 ? 2 : width) / 2.0;
+  centre_pending_ = false;
+  deadband_enabled_ = true;
+}
+
+void AnalogInput::set_deadband_here(double output_value, uint16_t width) {
+  const bool converted = pin_ != 255 && hal::adc_sample_count(pin_) != 0;
+  if (converted) {
+    set_deadband(output_value, read_raw(), width);
+    return;
+  }
+  set_deadband(output_value, 0, width);
+  hal::CriticalSection guard;
+  deadband_enabled_ = false;  // until the first conversion gives the centre
+  centre_pending_ = true;
+}
+
+void AnalogInput::capture_pending_centre() {
+  if (!centre_pending_ || hal::adc_sample_count(pin_) == 0) return;
+  hal::CriticalSection guard;
+  deadband_centre_ = read_raw();
+  centre_pending_ = false;
+  deadband_enabled_ = true;
+}
+
+uint16_t AnalogInput::read_raw() const { return pin_ == 255 ? 0 : hal::adc_read(pin_); }
+
+double AnalogInput::mapped(double raw) const {
+  if (!deadband_enabled_) return line(raw, adc_low_, floor_value_, adc_high_, ceiling_value_);
+  const double band_low = deadband_centre_ - deadband_half_width_;
+  const double band_high = deadband_centre_ + deadband_half_width_;
+  if (raw < band_low) return line(raw, adc_low_, floor_value_, band_low, deadband_value_);
+  if (raw > band_high) return line(raw, band_high, deadband_value_, adc_high_, ceiling_value_);
+  return deadband_value_;
+}
+
+double AnalogInput::value_at(uint16_t raw) const {
+  const double value = clamp_between(mapped(raw), floor_value_, ceiling_value_);
+  return inverted_ ? -value : value;
+}
+
+void AnalogInput::write_mapped_parameter() {
+  if (pin_ == 255) return;
+  capture_pending_centre();
+  const double value = value_at(hal::adc_read(pin_));
+  if (float_target_ != nullptr) *float_target_ = static_cast<float>(value);
+  if (double_target_ != nullptr) *double_target_ = value;
+}
+
+void AnalogInput::notify_new_conversions() {
+  if (pin_ == 255) return;
+  capture_pending_centre();
+  const uint32_t samples = hal::adc_sample_count(pin_);
+  if (samples == samples_seen_) return;
+  samples_seen_ = samples;
+  if (callback_ != nullptr) callback_();
+}
+
+}  // namespace stepdance
