@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Sets up the machine, then builds and runs the whole test suite: host unit and integration
-# tests (CTest), the core's portability check and the Cortex-M7 cross-compile.
+# Sets up the machine, then builds and runs the whole test suite: the core's portability check,
+# the Cortex-M7 cross-compile, the host tests (CTest: unit, example-sketch, servo firmware under
+# simavr), and the same host tests again under AddressSanitizer and UBSan.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -8,3 +9,6 @@ scripts/check-core-portability.sh
 scripts/build-target.sh
 scripts/build-host.sh
 ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)"
+echo "== again under AddressSanitizer and UBSan"
+STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
+ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)"

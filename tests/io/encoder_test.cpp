@@ -81,7 +81,7 @@ TEST_F(EncoderTest, InvertReversesTheDirectionAndKeepsTheReading) {
   EXPECT_DOUBLE_EQ(turn_to(100), -100.0);
   EXPECT_DOUBLE_EQ(encoder.read(), -100.0);
 
-  encoder.invert();  // the hardware count is negated, so the reading stays −100
+  encoder.invert(false);  // the hardware count is negated, so the reading stays −100
   EXPECT_FALSE(encoder.is_inverted());
   EXPECT_EQ(hal::quadrature_read(ENCODER_1), -100);
   hal_manual::run_frames(1);

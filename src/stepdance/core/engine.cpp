@@ -78,6 +78,7 @@ Status Engine::start() {
   if (fault_reason() != FaultReason::kNone) return Status::kBadArgument;
   if (running_) return Status::kOk;
   running_ = true;
+  frame_budget_cycles_ = hal::cycles_per_second() / kFrameRateHz;
   const Status frame = hal::frame_timer_start(kFramePeriodUs, &frame_isr);
   if (frame != Status::kOk) {
     running_ = false;
@@ -105,8 +106,7 @@ void Engine::run_frame() {
   for (uint8_t stage = 0; stage < kNumFrameStages; ++stage) run_stage(registries_[stage]);
   for (FrameFunction function : late_functions_) function();
   frame_count_ = frame_count_ + 1;
-  const uint32_t budget = hal::cycles_per_second() / kFrameRateHz;
-  load_.record(hal::cycles_now() - started, budget);
+  load_.record(hal::cycles_now() - started, frame_budget_cycles_);
 }
 
 void Engine::run_kilohertz_tick() { run_stage(registry(Stage::kKilohertz)); }

@@ -79,6 +79,7 @@ class Engine {
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> early_functions_;
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> late_functions_;
   LoadMetrics load_;
+  uint32_t frame_budget_cycles_ = 24000;  // CPU cycles per frame, set from the HAL at start()
   volatile uint32_t frame_count_ = 0;
   volatile bool running_ = false;
 };

@@ -38,10 +38,10 @@ int32_t Encoder::latched(int32_t count) const {
   return count;
 }
 
-void Encoder::invert() {
+void Encoder::invert(bool inverted) {
   hal::CriticalSection guard;  // the frame must not see the flag and the count disagree
   const int32_t count = read_count();
-  inverted_ = !inverted_;
+  inverted_ = inverted;
   write_count(count);
 }
 

@@ -37,9 +37,12 @@ class Encoder : public Block {
   /// a knob live; the output's position is re-expressed, no motion results. Context: loop.
   void set_ratio(double world_units, double counts = 1.0) { output.set_ratio(world_units, counts); }
 
-  /// Toggles the counting direction. The current reading is kept (the hardware count is
+  /// Inverts the counting direction (calling it again changes nothing; the original toggled,
+  /// which made a re-run setup() undo it). The current reading is kept (the hardware count is
   /// negated), so inverting never moves anything downstream. Context: loop.
-  void invert();
+  void invert() { invert(true); }
+  /// Sets the counting direction: true counts backwards. Context: loop.
+  void invert(bool inverted);
   /// True while the counting direction is inverted. Context: any.
   bool is_inverted() const { return inverted_; }
 

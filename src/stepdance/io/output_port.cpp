@@ -2,6 +2,7 @@
 #include "stepdance/io/output_port.hpp"
 
 #include "stepdance/boards/board.hpp"
+#include "stepdance/core/engine.hpp"
 #include "stepdance/core/fixed_list.hpp"
 #include "stepdance/hal/hal.hpp"
 
@@ -23,6 +24,17 @@ uint8_t bit(uint8_t signal) { return static_cast<uint8_t>(1u << signal); }
 
 void OutputPort::forget(OutputPort* port) { begun_ports().remove(port); }
 
+void OutputPort::release_previous_owner(uint8_t port) {
+  OutputPort* previous = nullptr;
+  for (OutputPort* other : begun_ports()) {
+    if (other != this && other->port_ == port) previous = other;
+  }
+  if (previous == nullptr) return;
+  begun_ports().remove(previous);
+  engine().remove(previous);
+  previous->port_ = 255;
+}
+
 Status OutputPort::begin(uint8_t port) { return begin(port, OUTPUT_FRAME_32US, OUTPUT_TRANSMIT_ON_FRAME); }
 
 Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
@@ -35,6 +47,8 @@ Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
   if (claimed != Status::kOk) return claimed;
   port_ = port;
   port_name = kPortNames[port];
+  clear_statistics();
+  release_previous_owner(port);
   if (!begun_ports().contains(this) && begun_ports().push_back(this) != Status::kOk) return Status::kFull;
   if (transmit_mode == OUTPUT_TRANSMIT_MANUAL) return Status::kOk;
   return register_in(Stage::kOutputPorts);
@@ -53,23 +67,39 @@ void OutputPort::step_now(uint8_t direction, uint8_t signal) {
 void OutputPort::transmit_frame() {
   protocol::FrameRequest request;
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    if (pending_[signal] == 0) continue;
+    const int32_t pending = pending_[signal];
+    if (pending == 0) continue;
     request.active_mask |= bit(signal);
-    if (pending_[signal] > 0) request.forward_mask |= bit(signal);
+    if (pending > 0) request.forward_mask |= bit(signal);
   }
-  request.priority_mask = carried_mask_ & request.active_mask;
-  const protocol::EncodedFrame frame = protocol::encode_frame(request);
+  protocol::EncodedFrame frame;
+  if (request.active_mask != 0) {
+    request.priority_mask = carried_mask_ & request.active_mask;
+    frame = protocol::encode_frame(request);
+    account_sent(frame.sent_mask);
+    carried_mask_ = frame.carried_mask;
+    for (uint8_t carried = frame.carried_mask; carried != 0; carried &= carried - 1) ++signals_carried_;
+  }
+  if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, frame.words);
+}
+
+void OutputPort::clear_statistics() {
+  hal::CriticalSection guard;
+  carried_mask_ = 0;
+  signals_carried_ = 0;
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    if (!(frame.sent_mask & bit(signal))) continue;
+    pending_[signal] = 0;
+    sent_[signal][0] = sent_[signal][1] = 0;
+  }
+}
+
+void OutputPort::account_sent(uint8_t sent_mask) {
+  for (uint8_t signal = 0; sent_mask >> signal; ++signal) {
+    if (!(sent_mask & bit(signal))) continue;
     const bool forward = pending_[signal] > 0;
     pending_[signal] = pending_[signal] + (forward ? -1 : 1);
     ++sent_[signal][forward ? DIRECTION_FORWARD : DIRECTION_REVERSE];
   }
-  carried_mask_ = frame.carried_mask;
-  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    if (frame.carried_mask & bit(signal)) ++signals_carried_;
-  }
-  if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, frame.words);
 }
 
 const OutputPortPins* OutputPort::pins() const {

@@ -70,6 +70,8 @@ class OutputPort : public Block {
   uint32_t signals_carried() const { return signals_carried_; }
   /// Net pulses still waiting for a frame on a signal (+ forward, − reverse).
   int32_t pending(uint8_t signal) const { return signal < kNumSignals ? pending_[signal] : 0; }
+  /// Forgets pending pulses and zeroes the statistics (begin() does this). Context: loop.
+  void clear_statistics();
   /// The port index (0..3), or 255 before begin().
   uint8_t port_index() const { return port_; }
   /// "OUTPUT A" .. "OUTPUT D".
@@ -78,7 +80,11 @@ class OutputPort : public Block {
  private:
   // Inline destructor: no key function, so RTTI-built code can use OutputPort (see Block).
   static void forget(OutputPort* port);
+  // A physical port has one owner: a second begin() on the same port retires the first object.
+  void release_previous_owner(uint8_t port);
   const OutputPortPins* pins() const;
+  // Takes the pulses just placed on the wire off the pending counts and into the statistics.
+  void account_sent(uint8_t sent_mask);
 
   uint8_t port_ = 255;
   uint8_t carried_mask_ = 0;

@@ -71,9 +71,10 @@ class Channel : public Block {
   /// Steps toward target + target_2 directly again. Context: any.
   void disable_filtering() { filtering_ = false; }
 
-  /// Flips the DIR level handed to the output port (toggle, or set explicitly). The state
-  /// fields and statistics keep the channel's own direction. Context: any.
-  void invert_output() { inverted_ = !inverted_; }
+  /// Flips the DIR level handed to the output port (calling it again changes nothing; the
+  /// original toggled), or sets it explicitly. The state fields and statistics keep the
+  /// channel's own direction. Context: any.
+  void invert_output() { inverted_ = true; }
   void invert_output(bool invert) { inverted_ = invert; }
 
   /// Deep sync: makes current_position and filtered_target_position equal target + target_2,

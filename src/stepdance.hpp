@@ -1,0 +1,92 @@
+// Stepdance umbrella header: include this from a sketch, after `#define module_driver` or
+// `#define module_basic`, to get the whole public API under the original library's names.
+#pragma once
+
+#include "stepdance/boards/board.hpp"
+#include "stepdance/core/block_port.hpp"
+#include "stepdance/core/dance.hpp"
+#include "stepdance/core/engine.hpp"
+#include "stepdance/core/fault.hpp"
+#include "stepdance/core/units.hpp"
+#include "stepdance/io/analog_input.hpp"
+#include "stepdance/io/button.hpp"
+#include "stepdance/io/encoder.hpp"
+#include "stepdance/io/input_port.hpp"
+#include "stepdance/io/output_port.hpp"
+#include "stepdance/motion/channel.hpp"
+#include "stepdance/motion/kinematics_core_xy.hpp"
+#include "stepdance/motion/position_generator.hpp"
+#include "stepdance/protocol/signals.hpp"
+
+#include "stepdance/sketch_board.hpp"
+
+// The original library lived in the global namespace; sketches name its classes unqualified.
+using stepdance::AnalogInput;
+using stepdance::Block;
+using stepdance::BlockPort;
+using stepdance::Button;
+using stepdance::Channel;
+using stepdance::ControlParameter;
+using stepdance::DecimalPosition;
+using stepdance::Encoder;
+using stepdance::InputPort;
+using stepdance::KinematicsCoreXY;
+using stepdance::OutputPort;
+using stepdance::Plugin;
+using stepdance::PositionGenerator;
+using stepdance::disable_drivers;
+using stepdance::enable_drivers;
+using stepdance::iterate_across_all_output_ports;
+using stepdance::transmit_frames_on_all_output_ports;
+
+// Constants the original exposed globally.
+using stepdance::ABSOLUTE;
+using stepdance::BLOCKPORT_INPUT;
+using stepdance::BLOCKPORT_OUTPUT;
+using stepdance::BLOCKPORT_UNDEFINED;
+using stepdance::BUTTON_MODE_MULTIPRESS;
+using stepdance::BUTTON_MODE_STANDARD;
+using stepdance::BUTTON_MODE_TOGGLE;
+using stepdance::BUTTON_MODE_TOGGLE_THREE_STATE;
+using stepdance::BUTTON_STATE_PRESSED;
+using stepdance::BUTTON_STATE_RELEASED;
+using stepdance::DIRECTION_FORWARD;
+using stepdance::DIRECTION_REVERSE;
+using stepdance::ENCODER_1;
+using stepdance::ENCODER_2;
+using stepdance::ENCODER_A;
+using stepdance::GLOBAL;
+using stepdance::INCREMENTAL;
+using stepdance::INPUT_A;
+using stepdance::INPUT_B;
+using stepdance::INPUT_B_LEGACY;
+using stepdance::INPUT_C;
+using stepdance::INPUT_C_LEGACY;
+using stepdance::INPUT_D;
+using stepdance::INPUT_MODE_STEP_DIR;
+using stepdance::INPUT_MODE_STEPDANCE;
+using stepdance::MAX;
+using stepdance::MIN;
+using stepdance::NUM_AVAILABLE_INPUT_PORTS;
+using stepdance::NUM_AVAILABLE_OUTPUT_PORTS;
+using stepdance::NUM_SIGNALS;
+using stepdance::OUTPUT_A;
+using stepdance::OUTPUT_A_LEGACY;
+using stepdance::OUTPUT_B;
+using stepdance::OUTPUT_B_LEGACY;
+using stepdance::OUTPUT_C;
+using stepdance::OUTPUT_D;
+using stepdance::OUTPUT_FRAME_16US;
+using stepdance::OUTPUT_FRAME_32US;
+using stepdance::OUTPUT_FRAME_4US;
+using stepdance::OUTPUT_FRAME_8US;
+using stepdance::OUTPUT_TRANSMIT_MANUAL;
+using stepdance::OUTPUT_TRANSMIT_ON_FRAME;
+using stepdance::SIGNAL_E;
+using stepdance::SIGNAL_R;
+using stepdance::SIGNAL_T;
+using stepdance::SIGNAL_X;
+using stepdance::SIGNAL_Y;
+using stepdance::SIGNAL_Z;
+using stepdance::STANDARD_RATIO_IN;
+using stepdance::STANDARD_RATIO_MM;
