@@ -5,24 +5,13 @@
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
+#include "support/collector_block.hpp"
 #include "support/engine_fixture.hpp"
 
 namespace stepdance {
 namespace {
 
-// A pre-channel block (registered after the encoder) that adds up what the encoder pushes.
-class Collector : public Block {
- public:
-  void begin() {
-    input.begin(&position, BLOCKPORT_UNDEFINED, this);
-    register_in(Stage::kPreChannel);
-  }
-  void run() override { input.update(); }
-  // The change received in the last frame, in world units.
-  double last_change() const { return input.read(INCREMENTAL); }
-  BlockPort input;
-  DecimalPosition position = 0;
-};
+using test_support::Collector;
 
 class EncoderTest : public test_support::EngineFixture {
  protected:

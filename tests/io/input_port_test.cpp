@@ -6,6 +6,7 @@
 #include "hal_manual.hpp"
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/dance.hpp"
+#include "support/collector_block.hpp"
 #include "support/engine_fixture.hpp"
 
 namespace stepdance {
@@ -30,17 +31,7 @@ void inject(const CapturedPulse& pulse, int times = 1) {
   for (int i = 0; i < times; ++i) ASSERT_TRUE(hal_manual::inject_pulse(INPUT_A, pulse));
 }
 
-// A pre-channel block whose input adds up everything pushed into it.
-class Collector : public Block {
- public:
-  void begin() {
-    input.begin(&position, BLOCKPORT_UNDEFINED, this);
-    register_in(Stage::kPreChannel);
-  }
-  void run() override { input.update(); }
-  BlockPort input;
-  DecimalPosition position = 0;
-};
+using test_support::Collector;
 
 // A pre-channel block that injects one X-forward pulse per frame while `remaining` > 0,
 // i.e. after the input-port stage of that frame has already taken its snapshot.

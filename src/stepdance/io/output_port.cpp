@@ -161,22 +161,19 @@ void iterate_across_all_output_ports(void (*fn)(OutputPort* port)) {
   for (OutputPort* port : begun_ports()) fn(port);
 }
 
-Status enable_drivers() {
+namespace {
+// Applies a driver call to every begun port; reports the last failure (and keeps going).
+Status for_each_driver(Status (OutputPort::*call)()) {
   Status result = Status::kOk;
   for (OutputPort* port : begun_ports()) {
-    const Status status = port->enable_driver();
+    const Status status = (port->*call)();
     if (status != Status::kOk) result = status;
   }
   return result;
 }
+}  // namespace
 
-Status disable_drivers() {
-  Status result = Status::kOk;
-  for (OutputPort* port : begun_ports()) {
-    const Status status = port->disable_driver();
-    if (status != Status::kOk) result = status;
-  }
-  return result;
-}
+Status enable_drivers() { return for_each_driver(&OutputPort::enable_driver); }
+Status disable_drivers() { return for_each_driver(&OutputPort::disable_driver); }
 
 }  // namespace stepdance
