@@ -1,0 +1,67 @@
+// SVG writer: text assembled directly so the bytes depend only on the strokes and the style.
+#include "output/svg_writer.hpp"
+
+#include <fstream>
+#include <stdexcept>
+
+#include "output/number_format.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+constexpr int kDecimals = 3;
+
+std::string number(double value) { return format_trimmed(value, kDecimals); }
+
+void append_polyline(std::string& out, const Stroke& stroke) {
+  out += "<polyline points=\"";
+  for (size_t i = 0; i < stroke.points.size(); ++i) {
+    if (i > 0) out += ' ';
+    out += number(stroke.points[i].x) + "," + number(stroke.points[i].y);
+  }
+  if (stroke.points.size() == 1) out += " " + number(stroke.points[0].x) + "," + number(stroke.points[0].y);
+  out += "\"/>\n";
+}
+
+void append_group(std::string& out, const std::vector<Stroke>& strokes, bool pen_down, const std::string& attributes) {
+  bool any = false;
+  for (const Stroke& stroke : strokes) any = any || (stroke.pen_down == pen_down && !stroke.points.empty());
+  if (!any) return;
+  out += "<g " + attributes + ">\n";
+  for (const Stroke& stroke : strokes) {
+    if (stroke.pen_down == pen_down && !stroke.points.empty()) append_polyline(out, stroke);
+  }
+  out += "</g>\n";
+}
+
+}  // namespace
+
+std::string svg_document(const std::vector<Stroke>& strokes, const DrawingStyle& style) {
+  const std::string width = number(style.page_width_mm());
+  const std::string height = number(style.page_height_mm());
+  std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  out += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + width + "mm\" height=\"" + height +
+         "mm\" viewBox=\"0 0 " + width + " " + height + "\">\n";
+  out += "<rect width=\"" + width + "\" height=\"" + height + "\" fill=\"white\"/>\n";
+  out += "<g transform=\"translate(" + number(style.margin_mm) + " " + number(style.margin_mm) +
+         ")\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+  if (style.pen_up_travel) {
+    append_group(out, strokes, false,
+                 "stroke=\"#999999\" stroke-width=\"" + number(style.travel_line_width_mm) +
+                     "\" stroke-dasharray=\"" + number(style.travel_dash_mm) + " " + number(style.travel_dash_mm) + "\"");
+  }
+  append_group(out, strokes, true, "stroke=\"black\" stroke-width=\"" + number(style.pen_width_mm) + "\"");
+  out += "</g>\n</svg>\n";
+  return out;
+}
+
+void write_svg(const std::string& path, const std::vector<Stroke>& strokes, const DrawingStyle& style) {
+  const std::string text = svg_document(strokes, style);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error(path + ": cannot open for writing");
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.close();
+  if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace stepdance::sim
