@@ -3,8 +3,10 @@
 
 #include <stdint.h>
 
-#include <thread>
 #include <vector>
+#ifndef STEPDANCE_TEST_NO_THREADS  // defined by bare-metal test builds, which have no std::thread
+#include <thread>
+#endif
 
 #include "stepdance/core/spsc_queue.hpp"
 
@@ -149,6 +151,7 @@ TEST(SpscQueue, HoldsStructs) {
   EXPECT_EQ(out.steps, -4);
 }
 
+#ifndef STEPDANCE_TEST_NO_THREADS
 TEST(SpscQueue, OneProducerThreadOneConsumerThread) {
   // The producer retries on kFull (back-pressure); the consumer must see 0..N-1 exactly once each.
   constexpr int kItems = 200000;
@@ -174,6 +177,7 @@ TEST(SpscQueue, OneProducerThreadOneConsumerThread) {
   EXPECT_TRUE(queue.empty());
   EXPECT_LE(queue.high_water(), 64u);
 }
+#endif  // STEPDANCE_TEST_NO_THREADS
 
 }  // namespace
 }  // namespace stepdance
