@@ -1,0 +1,263 @@
+#!/usr/bin/env bash
+# Cross-compiles the library and every example for the Teensy 4.x against the Teensyduino stand-in,
+# links the images, reports flash/RAM use, rejects heap/exception symbols and checks the library zip.
+#
+# Usage: scripts/build-teensy.sh      (output in build-teensy/, or $STEPDANCE_TEENSY_BUILD_DIR)
+# The images link against do-nothing stand-ins for Teensyduino's core (targets/teensy/stand-in):
+# they prove the code compiles and links for the target and give its size; they are not flashable.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensy}
+stand_in=targets/teensy/stand-in
+ld_dir=targets/teensy/ld
+
+fail() {
+  echo "build-teensy: FAILED: $*" >&2
+  exit 1
+}
+
+for tool in arm-none-eabi-g++ arm-none-eabi-gcc arm-none-eabi-size arm-none-eabi-objcopy arm-none-eabi-nm cmake; do
+  command -v "$tool" >/dev/null || fail "$tool is missing (run scripts/setup.sh)"
+done
+
+mcu=(-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb)
+# What Teensyduino passes for a Teensy 4.x at 600 MHz, "Faster" optimisation, plus our warnings.
+common=("${mcu[@]}" -O2 -g -ffunction-sections -fdata-sections -Wall -Wextra -Werror -Wundef -Wshadow
+  -D__IMXRT1062__ -DF_CPU=600000000 -DARDUINO=10819 -DTEENSYDUINO=159 -Isrc "-I$stand_in")
+cxx_flags=(-std=gnu++17 -fno-exceptions -fno-rtti)
+c_flags=(-std=gnu11)
+
+# Heap, exception and personality symbols: none may be referenced or linked.
+forbidden='^(malloc|free|calloc|realloc|_malloc_r|_free_r|_calloc_r|_realloc_r|_sbrk|_sbrk_r|__cxa_allocate_exception|__cxa_throw|__gxx_personality_v0|_Znw[a-zA-Z0-9_]*|_Zna[a-zA-Z0-9_]*|_Zdl[a-zA-Z0-9_]*|_Zda[a-zA-Z0-9_]*)$'
+
+# ---- Incremental compilation ------------------------------------------------------------------
+
+# True if $1 exists and is newer than every file its dependency list names.
+up_to_date() {
+  local object=$1 deps=${1%.o}.d file
+  [[ -f $object && -f $deps ]] || return 1
+  for file in $(sed -e '/^[^ ].*:$/d' -e 's/^[^ ]*://' -e 's/\\$//' "$deps"); do
+    [[ -e $file && ! $file -nt $object ]] || return 1
+  done
+}
+
+compiled=0
+# compile SOURCE OBJECT EXTRA_FLAGS...: C or C++ by extension; .ino files are C++ with Arduino.h.
+compile() {
+  local source=$1 object=$2
+  shift 2
+  up_to_date "$object" && return 0
+  mkdir -p "$(dirname "$object")"
+  case $source in
+    *.c) arm-none-eabi-gcc "${common[@]}" "${c_flags[@]}" "$@" -MMD -MP -c "$source" -o "$object" ;;
+    *.ino) arm-none-eabi-g++ "${common[@]}" "${cxx_flags[@]}" "$@" -x c++ -include Arduino.h -MMD -MP \
+      -c "$source" -o "$object" ;;
+    *) arm-none-eabi-g++ "${common[@]}" "${cxx_flags[@]}" "$@" -MMD -MP -c "$source" -o "$object" ;;
+  esac || fail "compiling $source ($*)"
+  compiled=$((compiled + 1))
+}
+
+# ---- What to build ----------------------------------------------------------------------------
+
+mapfile -t library_sources < <(find src -type f \( -name '*.cpp' -o -name '*.c' \) | LC_ALL=C sort)
+mapfile -t stand_in_sources < <(find "$stand_in" -type f -name '*.cpp' | LC_ALL=C sort)
+mapfile -t example_dirs < <(find examples -mindepth 1 -maxdepth 1 -type d | LC_ALL=C sort)
+[ ${#example_dirs[@]} -gt 0 ] || fail "no example folders under examples/"
+
+# The Arduino IDE lists a sketch under File > Examples only as examples/<Name>/<Name>.ino.
+for dir in "${example_dirs[@]}"; do
+  name=$(basename "$dir")
+  [ -f "$dir/$name.ino" ] || fail "$dir has no $name.ino: the IDE needs examples/<Name>/<Name>.ino"
+done
+
+# board id -> Teensyduino board macro and linker script
+declare -A board_macro=([teensy41]=ARDUINO_TEENSY41 [teensy40]=ARDUINO_TEENSY40)
+declare -A board_script=([teensy41]=imxrt1062_t41.ld [teensy40]=imxrt1062_t40.ld)
+
+# Every example builds for the Teensy 4.1; Basic Module sketches also for the Teensy 4.0.
+# Sketches that print to SerialUSB1 need Tools > USB Type > Dual Serial, as in the IDE.
+declare -a builds=()
+for dir in "${example_dirs[@]}"; do
+  name=$(basename "$dir")
+  usb=serial
+  grep -q 'SerialUSB1' "$dir"/*.ino && usb=dualserial
+  builds+=("$name teensy41 $usb")
+  if grep -Eq '^[[:space:]]*#[[:space:]]*define[[:space:]]+module_basic\b' "$dir/$name.ino"; then
+    builds+=("$name teensy40 $usb")
+  fi
+done
+
+# ---- Build each configuration (board + USB type) once, then its examples ------------------------
+
+declare -A usb_macro=([serial]=USB_SERIAL [dualserial]=USB_DUAL_SERIAL)
+declare -A config_objects=()
+declare -a images=()
+declare -a all_objects=()
+
+build_configuration() {
+  local board=$1 usb=$2 dir="$out/$1-$2" source object
+  local flags=("-D${board_macro[$board]}" "-D${usb_macro[$usb]}")
+  # Start afresh when the flags or the compiler change.
+  local stamp
+  stamp="$(printf '%s ' "${common[@]}" "${cxx_flags[@]}" "${flags[@]}"; arm-none-eabi-g++ --version | head -1)"
+  if [ "$(cat "$dir/flags" 2>/dev/null)" != "$stamp" ]; then
+    rm -rf "$dir"
+    mkdir -p "$dir"
+    printf '%s' "$stamp" >"$dir/flags"
+  fi
+  local objects=()
+  for source in "${library_sources[@]}" "${stand_in_sources[@]}"; do
+    object="$dir/obj/${source%.*}.o"
+    compile "$source" "$object" "${flags[@]}"
+    objects+=("$object")
+  done
+  config_objects[$board-$usb]="${objects[*]}"
+  all_objects+=("${objects[@]}")
+}
+
+backend_present() {
+  # The Teensy backend defines the stepdance::hal functions; until it lands they stay undefined.
+  local objects=("$@")
+  arm-none-eabi-nm --defined-only "${objects[@]}" 2>/dev/null | grep -q ' T _ZN9stepdance3hal'
+}
+
+link_example() {
+  local name=$1 board=$2 usb=$3 dir="$out/$2-$3"
+  local flags=("-D${board_macro[$board]}" "-D${usb_macro[$usb]}")
+  local sketch_object="$dir/examples/$name/$name.ino.o"
+  compile "examples/$name/$name.ino" "$sketch_object" "${flags[@]}"
+  local extra_sources=() source
+  mapfile -t extra_sources < <(find "examples/$name" -maxdepth 1 -type f \( -name '*.cpp' -o -name '*.c' \) | LC_ALL=C sort)
+  local objects=("$sketch_object")
+  for source in "${extra_sources[@]}"; do
+    compile "$source" "$dir/${source%.*}.o" "${flags[@]}"
+    objects+=("$dir/${source%.*}.o")
+  done
+  local library_objects
+  read -r -a library_objects <<<"${config_objects[$board-$usb]}"
+  local link_flags=()
+  if ! backend_present "${library_objects[@]}"; then
+    link_flags=(-Wl,--unresolved-symbols=ignore-all)
+  fi
+  local elf="$dir/$name.elf"
+  arm-none-eabi-g++ "${mcu[@]}" -O2 -nostartfiles --specs=nano.specs -Wl,--gc-sections \
+    -Wl,--no-warn-rwx-segments "-L$ld_dir" "-T${board_script[$board]}" "-Wl,-Map=$dir/$name.map" \
+    "${link_flags[@]}" -o "$elf" "${objects[@]}" "${library_objects[@]}" -lm ||
+    fail "linking $name for $board"
+  if [ ${#link_flags[@]} -gt 0 ]; then
+    local missing
+    missing=$(arm-none-eabi-nm -u "$elf" | awk '{print $2}' | grep -v '^_ZN9stepdance3hal' || true)
+    [ -z "$missing" ] || fail "$name ($board) leaves symbols undefined: $missing"
+    echo "build-teensy: NOTE: no Teensy backend in src/stepdance/platform/teensy yet;" \
+      "$name ($board) links with the stepdance::hal functions left undefined"
+  fi
+  images+=("$elf")
+  all_objects+=("${objects[@]}")
+}
+
+for build in "${builds[@]}"; do
+  read -r name board usb <<<"$build"
+  [ -n "${config_objects[$board-$usb]+set}" ] || build_configuration "$board" "$usb"
+  link_example "$name" "$board" "$usb"
+done
+echo "build-teensy: ${#library_sources[@]} library sources, ${#builds[@]} example builds" \
+  "($compiled files compiled this run)"
+
+# ---- Forbidden symbols: in any object's references and in any image ---------------------------
+#
+# One narrow exception: operator delete(void*[, size_t]) may be referenced by the deleting
+# destructors ("D0") the compiler emits for classes with virtual destructors. Those run only on a
+# delete-expression; with operator new and malloc forbidden there is no heap object to delete, and
+# the stand-in defines both operator deletes as traps, so free() is never linked either.
+
+status=0
+deleting_destructors=()
+for object in "${all_objects[@]}"; do
+  hits=$(arm-none-eabi-nm -u "$object" | awk '{print $2}' | grep -E "$forbidden" | grep -Ev '^_ZdlPvj?$' || true)
+  if [ -n "$hits" ]; then
+    echo "build-teensy: FORBIDDEN: $object references" $hits >&2
+    status=1
+  fi
+  # Which sections call operator delete: all must be deleting destructors.
+  while read -r section; do
+    if [[ $section == *D0Ev ]]; then
+      deleting_destructors+=("${section#.text.}")
+    else
+      echo "build-teensy: FORBIDDEN: $object calls operator delete from $section" >&2
+      status=1
+    fi
+  done < <(arm-none-eabi-objdump -r "$object" |
+    awk '/^RELOCATION RECORDS FOR \[/ { section = $4; gsub(/^\[|\]:$/, "", section); next }
+         $3 ~ /^_ZdlPvj?$/ { print section }' | sort -u)
+done
+for elf in "${images[@]}"; do
+  hits=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -E "$forbidden" | grep -Ev '^_ZdlPvj?$' || true)
+  if [ -n "$hits" ]; then
+    echo "build-teensy: FORBIDDEN: $elf contains" $hits >&2
+    status=1
+  fi
+  if grep -Eq '^[^ ]*lib(std|sup)c\+\+[^ ]*\((del_op|del_ops)\.o\)' "${elf%.elf}.map"; then
+    echo "build-teensy: FORBIDDEN: $elf links operator delete from libstdc++ (which calls free)" >&2
+    status=1
+  fi
+done
+[ $status -eq 0 ] || fail "heap or exception symbols found (see above)"
+echo "build-teensy: no malloc/free, operator new or exception symbols in any object or image"
+if [ ${#deleting_destructors[@]} -gt 0 ]; then
+  echo "build-teensy: note: operator delete is referenced only by the deleting destructors of" \
+    "$(printf '%s\n' "${deleting_destructors[@]}" | sort -u | c++filt | sed 's/::~.*//' | sort -u | paste -sd, - |
+      sed 's/,/, /g') (virtual destructors; it resolves to the stand-in's trap)"
+fi
+
+# ---- The Step-A-Sketch firmware: hex and size report -----------------------------------------
+
+section_size() { awk -v s="$2" '$1 == s {print $2; found=1} END {if (!found) print 0}' <<<"$1"; }
+
+report_size() {
+  local elf=$1 flash_total=$2 sections
+  sections=$(arm-none-eabi-size -A -d "$elf")
+  local headers flash_code itcm data bss dma
+  headers=$(section_size "$sections" .headers)
+  itcm=$(section_size "$sections" .text.itcm)
+  flash_code=$(($(section_size "$sections" .text.flash) + $(section_size "$sections" .init_array) +
+    $(section_size "$sections" .ARM.exidx) + itcm))
+  data=$(section_size "$sections" .data)
+  bss=$(section_size "$sections" .bss)
+  dma=$(section_size "$sections" .bss.dma)
+  local banks=$(((itcm + 32767) / 32768))
+  local flash_used=$((headers + flash_code + data))
+  local ram1_used=$((banks * 32768 + data + bss))
+  printf '| Memory | Use | Bytes |\n|---|---|---:|\n'
+  printf '| Flash | code (ITCM image + flash-resident start-up) | %d |\n' "$flash_code"
+  printf '| Flash | initial values of DTCM data and constants | %d |\n' "$data"
+  printf '| Flash | boot headers | %d |\n' "$headers"
+  printf '| Flash | **total**, of %d KB | **%d** (%d.%d%%) |\n' $((flash_total / 1024)) "$flash_used" \
+    $((flash_used * 100 / flash_total)) $((flash_used * 1000 / flash_total % 10))
+  printf '| RAM1 (FlexRAM) | code in ITCM (%d x 32 KB bank, %d bytes padding) | %d |\n' "$banks" \
+    $((banks * 32768 - itcm)) "$itcm"
+  printf '| RAM1 (FlexRAM) | variables and constants in DTCM (.data %d + .bss %d) | %d |\n' "$data" "$bss" \
+    $((data + bss))
+  printf '| RAM1 (FlexRAM) | **used**, of 512 KB; the rest is stack | **%d** (%d.%d%%) |\n' "$ram1_used" \
+    $((ram1_used * 100 / 524288)) $((ram1_used * 1000 / 524288 % 10))
+  printf '| RAM2 (OCRAM) | DMA buffers; the rest is free | %d |\n' "$dma"
+}
+
+step_a_sketch="$out/teensy41-serial/StepASketch.elf"
+if [ -f "$step_a_sketch" ]; then
+  arm-none-eabi-objcopy -O ihex -R .bss -R .bss.dma "$step_a_sketch" "${step_a_sketch%.elf}.hex"
+  echo
+  echo "Step-A-Sketch for Teensy 4.1 (${step_a_sketch%.elf}.hex; stand-in core, not flashable):"
+  arm-none-eabi-size "$step_a_sketch"
+  report_size "$step_a_sketch" $((7936 * 1024))
+  echo
+else
+  fail "examples/StepASketch did not produce $step_a_sketch"
+fi
+
+# ---- Packaging: library manifests and the Arduino zip ---------------------------------------
+
+scripts/package-arduino-zip.sh "$out/Stepdance.zip" >/dev/null
+cmake -DZIP="$out/Stepdance.zip" -DOUT="$out" -P targets/teensy/check_package.cmake ||
+  fail "library package check"
+echo "build-teensy: OK"

@@ -1,0 +1,171 @@
+// Stand-in declarations of the Teensyduino services Stepdance and its sketches use, for CI builds.
+//
+// Teensyduino's core cannot be installed in CI, so scripts/build-teensy.sh compiles the library
+// and every example against this directory instead. Everything here is written from the public
+// Arduino/Teensy interfaces (names, signatures, documented constant values); nothing is taken
+// from Teensyduino's sources. The matching definitions in teensyduino_stand_in.cpp are stubs:
+// an image linked against them is a link and size check only and cannot be flashed.
+//
+// The whole surface, in one list (add to it only what the backend or a sketch really calls):
+//   Arduino.h
+//     setup(), loop()                      the sketch's entry points, called by main()
+//     HIGH, LOW                            1, 0
+//     INPUT, OUTPUT, INPUT_PULLUP, INPUT_PULLDOWN   0, 1, 2, 3 (Teensy 4 values)
+//     pinMode, digitalRead, digitalWrite, analogRead
+//     millis, micros, delay, delayMicroseconds, yield
+//     elapsedMillis                        milliseconds since it was last assigned
+//     Print, Stream                        byte output / input interfaces (print, println, write)
+//     usb_serial_class Serial              the first USB serial port
+//     SerialUSB1                           second port; only with USB_DUAL_SERIAL/TRIPLE_SERIAL
+//     F_CPU_ACTUAL, F_BUS_ACTUAL           running core and peripheral bus clocks, in Hz
+//     IRQ_NUMBER_t, attachInterruptVector  installs a handler in the RAM vector table
+//     NVIC_ENABLE_IRQ, NVIC_DISABLE_IRQ, NVIC_SET_PRIORITY, NVIC_CLEAR_PENDING
+//     __disable_irq, __enable_irq
+//   operator delete(void*), operator delete(void*, size_t)   defined as traps (the core defines
+//                                        them; only deleting destructors refer to them)
+//   startup.cpp (not a header)             vector tables, boot-header placeholders, reset handler
+#pragma once
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+// ---- Entry points and constants ----------------------------------------------------------------
+
+void setup();
+void loop();
+
+#define HIGH 1
+#define LOW 0
+
+#define INPUT 0
+#define OUTPUT 1
+#define INPUT_PULLUP 2
+#define INPUT_PULLDOWN 3
+
+#define DEC 10
+#define HEX 16
+
+// ---- Pins and time -----------------------------------------------------------------------------
+
+void pinMode(uint8_t pin, uint8_t mode);
+uint8_t digitalRead(uint8_t pin);
+void digitalWrite(uint8_t pin, uint8_t value);
+int analogRead(uint8_t pin);
+
+uint32_t millis();
+uint32_t micros();
+void delay(uint32_t ms);
+void delayMicroseconds(uint32_t us);
+void yield();
+
+/// Counts milliseconds up from the last assignment.
+class elapsedMillis {
+ public:
+  elapsedMillis() : start_(millis()) {}
+  explicit elapsedMillis(uint32_t ms) : start_(millis() - ms) {}
+  operator uint32_t() const { return millis() - start_; }
+  elapsedMillis& operator=(uint32_t ms) {
+    start_ = millis() - ms;
+    return *this;
+  }
+
+ private:
+  uint32_t start_;
+};
+
+// ---- Clocks ------------------------------------------------------------------------------------
+
+extern volatile uint32_t F_CPU_ACTUAL;
+extern volatile uint32_t F_BUS_ACTUAL;
+
+// ---- Byte streams ------------------------------------------------------------------------------
+
+/// Byte output with Arduino's print/println formatting.
+class Print {
+ public:
+  virtual size_t write(uint8_t byte) = 0;
+  virtual size_t write(const uint8_t* data, size_t length);
+  size_t write(const char* text) { return write(reinterpret_cast<const uint8_t*>(text), strlen(text)); }
+  virtual int availableForWrite() { return 0; }
+  virtual void flush() {}
+
+  size_t print(const char* text) { return write(text); }
+  size_t print(char c) { return write(static_cast<uint8_t>(c)); }
+  size_t print(int value, int base = DEC) { return print(static_cast<long>(value), base); }
+  size_t print(unsigned value, int base = DEC) {
+    return print(static_cast<unsigned long>(value), base);
+  }
+  size_t print(long value, int base = DEC);
+  size_t print(unsigned long value, int base = DEC);
+  size_t print(double value, int digits = 2);
+
+  size_t println() { return write("\r\n"); }
+  template <typename T>
+  size_t println(T value) {
+    const size_t n = print(value);
+    return n + println();
+  }
+  template <typename T>
+  size_t println(T value, int format) {
+    const size_t n = print(value, format);
+    return n + println();
+  }
+
+ protected:
+  ~Print() = default;
+};
+
+/// Byte input on top of Print.
+class Stream : public Print {
+ public:
+  virtual int available() = 0;
+  virtual int read() = 0;
+  virtual int peek() = 0;
+
+ protected:
+  ~Stream() = default;
+};
+
+/// A USB CDC serial port of the Teensy.
+class usb_serial_class : public Stream {
+ public:
+  void begin(long baud);
+  void end() {}
+  int available() override;
+  int read() override;
+  int peek() override;
+  void flush() override {}
+  size_t write(uint8_t byte) override;
+  size_t write(const uint8_t* data, size_t length) override;
+  using Print::write;
+  int availableForWrite() override;
+  explicit operator bool() const;
+};
+
+extern usb_serial_class Serial;
+#if defined(USB_DUAL_SERIAL) || defined(USB_TRIPLE_SERIAL)
+extern usb_serial_class SerialUSB1;
+#endif
+
+// ---- Interrupts --------------------------------------------------------------------------------
+
+/// i.MX RT1062 interrupt numbers (reference manual, chapter 4 "Interrupts"). The names the
+/// backend uses are listed here as it needs them.
+enum IRQ_NUMBER_t : int {};
+
+/// Puts a handler in the vector table in RAM (exception number = IRQ number + 16).
+void attachInterruptVector(IRQ_NUMBER_t irq, void (*handler)());
+
+// NVIC registers of the ARMv7-M architecture (ARMv7-M ARM, B3.4).
+#define STEPDANCE_NVIC_WORD(base, irq) (*(reinterpret_cast<volatile uint32_t*>(base) + ((irq) >> 5)))
+#define STEPDANCE_NVIC_BIT(irq) (1u << ((irq) & 31))
+#define NVIC_ENABLE_IRQ(irq) (STEPDANCE_NVIC_WORD(0xE000E100u, irq) = STEPDANCE_NVIC_BIT(irq))
+#define NVIC_DISABLE_IRQ(irq) (STEPDANCE_NVIC_WORD(0xE000E180u, irq) = STEPDANCE_NVIC_BIT(irq))
+#define NVIC_CLEAR_PENDING(irq) (STEPDANCE_NVIC_WORD(0xE000E280u, irq) = STEPDANCE_NVIC_BIT(irq))
+#define NVIC_SET_PRIORITY(irq, priority) \
+  (*(reinterpret_cast<volatile uint8_t*>(0xE000E400u) + (irq)) = static_cast<uint8_t>(priority))
+
+#define __disable_irq() __asm__ volatile("cpsid i" ::: "memory")
+#define __enable_irq() __asm__ volatile("cpsie i" ::: "memory")

@@ -1,0 +1,73 @@
+// Do-nothing definitions of the stand-in Teensyduino services, so a CI firmware image links.
+// They only make the link and the size report possible: an image built with them is not flashable.
+#include "Arduino.h"
+
+volatile uint32_t F_CPU_ACTUAL = 600000000;
+volatile uint32_t F_BUS_ACTUAL = 150000000;
+
+usb_serial_class Serial;
+#if defined(USB_DUAL_SERIAL) || defined(USB_TRIPLE_SERIAL)
+usb_serial_class SerialUSB1;
+#endif
+
+void pinMode(uint8_t, uint8_t) {}
+uint8_t digitalRead(uint8_t) { return LOW; }
+void digitalWrite(uint8_t, uint8_t) {}
+int analogRead(uint8_t) { return 0; }
+
+uint32_t millis() { return 0; }
+uint32_t micros() { return 0; }
+void delay(uint32_t) {}
+void delayMicroseconds(uint32_t) {}
+void yield() {}
+
+size_t Print::write(const uint8_t* data, size_t length) {
+  size_t written = 0;
+  while (written < length && write(data[written]) == 1) ++written;
+  return written;
+}
+size_t Print::print(long, int) { return 0; }
+size_t Print::print(unsigned long, int) { return 0; }
+size_t Print::print(double, int) { return 0; }
+
+void usb_serial_class::begin(long) {}
+int usb_serial_class::available() { return 0; }
+int usb_serial_class::read() { return -1; }
+int usb_serial_class::peek() { return -1; }
+size_t usb_serial_class::write(uint8_t) { return 1; }
+size_t usb_serial_class::write(const uint8_t*, size_t length) { return length; }
+int usb_serial_class::availableForWrite() { return 0; }
+usb_serial_class::operator bool() const { return true; }
+
+// Teensyduino's core defines the global operator delete (with free()). Classes with virtual
+// destructors need it for their deleting destructors, which run only on `delete`: Stepdance has no
+// operator new and no heap, so these traps are never reached, and malloc/free stay out of the image.
+void operator delete(void*) noexcept {
+  for (;;) {
+  }
+}
+void operator delete(void*, size_t) noexcept {
+  for (;;) {
+  }
+}
+
+namespace {
+// Cortex-M7 exceptions (16) plus the i.MX RT1062's 160 interrupts.
+constexpr int kVectorCount = 176;
+}  // namespace
+
+// The vector table the core runs from, kept in RAM so handlers can be installed at run time.
+// VTOR needs the table aligned to a power of two at least its size (704 bytes).
+alignas(1024) void (*volatile stand_in_vectors_ram[kVectorCount])();
+
+void attachInterruptVector(IRQ_NUMBER_t irq, void (*handler)()) {
+  stand_in_vectors_ram[static_cast<int>(irq) + 16] = handler;
+}
+
+int main() {
+  setup();
+  for (;;) {
+    loop();
+    yield();
+  }
+}
