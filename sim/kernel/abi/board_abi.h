@@ -1,0 +1,121 @@
+/* The C ABI between the simulator (host) and one simulated board's shared object (sketch + core).
+ *
+ * A board .so exports exactly one symbol, stepdance_board_attach(). The host passes it a table of
+ * callbacks (StepdanceHostV1) through which the board's HAL backend reaches simulated time, pins
+ * and ports; the board answers with a table of entry points (StepdanceBoardV1) the host's
+ * scheduler calls at each timer tick, loop pass and captured pulse. Plain C types only, so the
+ * two sides never share C++ objects, allocators or globals.
+ *
+ * Status codes are the values of stepdance::Status (0 = ok). Pins are Teensy pin numbers, ports
+ * 0..3 = A..D, encoders 0..1 = ENC1..ENC2. All callbacks run on the simulator's single thread. */
+#ifndef STEPDANCE_SIM_BOARD_ABI_H
+#define STEPDANCE_SIM_BOARD_ABI_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Bump when either table changes shape. The board refuses a host of another version. */
+#define STEPDANCE_BOARD_ABI_VERSION 1u
+
+/* Which hardware timer a timer_start() call is for. */
+enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
+/* The STEP edge at which an input port samples DIR. */
+enum StepdanceDirEdge { STEPDANCE_DIR_AT_RISING = 0, STEPDANCE_DIR_AT_FALLING = 1 };
+/* Digital pin configurations (same order as stepdance::hal::PinMode). */
+enum StepdancePinMode {
+  STEPDANCE_PIN_INPUT = 0,
+  STEPDANCE_PIN_INPUT_PULLUP = 1,
+  STEPDANCE_PIN_INPUT_PULLDOWN = 2,
+  STEPDANCE_PIN_OUTPUT = 3
+};
+/* How a storage file is opened (same order as stepdance::FileMode). */
+enum StepdanceFileMode { STEPDANCE_FILE_READ = 0, STEPDANCE_FILE_WRITE = 1, STEPDANCE_FILE_APPEND = 2 };
+
+/* One captured STEP pulse as the board's capture unit reports it (150 ticks per µs, 16 bits). */
+typedef struct StepdanceCapturedPulseV1 {
+  uint32_t rise_ticks;
+  uint32_t fall_ticks;
+  uint8_t dir_high;
+} StepdanceCapturedPulseV1;
+
+/* What a board reports about itself at the end of a run (or whenever asked). */
+typedef struct StepdanceBoardStatsV1 {
+  uint32_t frames;               /* frames run since dance_start() */
+  uint32_t frame_overruns;       /* frames over their CPU budget (see docs: not modelled) */
+  uint8_t fault_reason;          /* stepdance::FaultReason, 0 = none */
+  uint32_t fault_count;          /* fault() calls */
+  const char* fault_detail;      /* "" if none; valid until the next call into the board */
+  uint32_t carried[4];           /* OutputPort::signals_carried() per output port */
+  uint32_t sent[4][6][2];        /* OutputPort::pulses_sent(signal, direction) per port */
+  uint8_t output_begun[4];       /* 1 if an OutputPort object owns the port */
+} StepdanceBoardStatsV1;
+
+/* Callbacks from the board into the simulator. `context` is the host_context given to attach. */
+typedef struct StepdanceHostV1 {
+  uint32_t abi_version;
+
+  /* ---- time and timers ---- */
+  int64_t (*now_ns)(void* context);
+  int (*timer_start)(void* context, int timer_id, uint32_t period_us);
+  void (*timers_stop)(void* context);
+  /* Arduino delay(): runs the rest of the simulation for duration_ns, then returns. */
+  void (*delay_ns)(void* context, int64_t duration_ns);
+
+  /* ---- motion-stream ports ---- */
+  int (*port_out_begin)(void* context, uint8_t port);
+  /* The words of the frame just computed; played on the wire from the next frame tick. */
+  void (*port_out_frame)(void* context, uint8_t port, uint32_t step_bits, uint32_t dir_bits);
+  int (*port_in_begin)(void* context, uint8_t port, int dir_edge);
+
+  /* ---- quadrature, ADC, GPIO ---- */
+  int (*quadrature_begin)(void* context, uint8_t index);
+  int32_t (*quadrature_read)(void* context, uint8_t index);
+  void (*quadrature_write)(void* context, uint8_t index, int32_t count);
+  int (*adc_begin)(void* context, uint8_t pin);
+  uint16_t (*adc_read)(void* context, uint8_t pin);
+  uint32_t (*adc_sample_count)(void* context, uint8_t pin);
+  int (*gpio_mode)(void* context, uint8_t pin, int mode);
+  int (*gpio_read)(void* context, uint8_t pin);
+  void (*gpio_write)(void* context, uint8_t pin, int high);
+
+  /* ---- faults and console ---- */
+  void (*enter_safe_state)(void* context);
+  void (*log_fault)(void* context, const char* reason, const char* detail);
+  size_t (*console_write)(void* context, const uint8_t* data, size_t length);
+  size_t (*console_available)(void* context);
+  int (*console_read)(void* context); /* next byte, or -1 */
+
+  /* ---- file storage (a folder on the host) ---- */
+  int (*file_open)(void* context, const char* name, int mode, int* handle);
+  int (*file_read)(void* context, int handle, uint8_t* data, size_t length, size_t* read);
+  int (*file_write)(void* context, int handle, const uint8_t* data, size_t length);
+  int (*file_close)(void* context, int handle);
+} StepdanceHostV1;
+
+/* Entry points of one board, called by the simulator's scheduler. */
+typedef struct StepdanceBoardV1 {
+  uint32_t abi_version;
+  /* The module the sketch selected (`#define module_driver` / `module_basic`): 0 driver, 1 basic. */
+  int module;
+  void (*run_setup)(void);
+  void (*run_frame_tick)(void);
+  void (*run_khz_tick)(void);
+  void (*run_loop)(void);
+  /* The port's capture ISR: hands one pulse to the sink registered by port_in_begin(). */
+  void (*deliver_pulse)(uint8_t port, const StepdanceCapturedPulseV1* pulse);
+  void (*read_stats)(StepdanceBoardStatsV1* stats);
+} StepdanceBoardV1;
+
+/* The one exported symbol. Returns NULL if host->abi_version differs from the board's. */
+typedef const StepdanceBoardV1* (*StepdanceBoardAttachFn)(const StepdanceHostV1* host, void* host_context);
+#define STEPDANCE_BOARD_ATTACH_SYMBOL "stepdance_board_attach"
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* STEPDANCE_SIM_BOARD_ABI_H */

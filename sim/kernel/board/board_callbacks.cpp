@@ -1,0 +1,86 @@
+// C trampolines from the board ABI into SimBoard.
+#include "board/board_callbacks.hpp"
+
+#include "board/sim_board.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+SimBoard& of(void* context) { return *static_cast<SimBoard*>(context); }
+int ok() { return static_cast<int>(Status::kOk); }
+int no_such_pin() { return static_cast<int>(Status::kNoSuchPin); }
+
+}  // namespace
+
+StepdanceHostV1 BoardCallbacks::table() {
+  StepdanceHostV1 host{};
+  host.abi_version = STEPDANCE_BOARD_ABI_VERSION;
+  host.now_ns = [](void* c) -> int64_t { return of(c).scheduler_.now(); };
+  host.timer_start = [](void* c, int timer, uint32_t period_us) { return of(c).start_timer(timer, period_us); };
+  host.timers_stop = [](void* c) { of(c).stop_timers(); };
+  host.delay_ns = [](void* c, int64_t duration_ns) { of(c).delay(duration_ns); };
+
+  host.port_out_begin = [](void* c, uint8_t port) {
+    if (port >= SimBoard::kPorts) return no_such_pin();
+    auto& state = of(c).ports_[port];
+    if (state.output_claimed) return static_cast<int>(Status::kBusy);
+    state.output_claimed = true;
+    return ok();
+  };
+  host.port_out_frame = [](void* c, uint8_t port, uint32_t step_bits, uint32_t dir_bits) {
+    if (port >= SimBoard::kPorts) return;
+    auto& state = of(c).ports_[port];
+    state.pending = protocol::FrameWords{step_bits, dir_bits};
+    state.frame_pending = (step_bits | dir_bits) != 0;  // idle frames need no playing
+  };
+  host.port_in_begin = [](void* c, uint8_t port, int edge) {
+    if (port >= SimBoard::kPorts) return no_such_pin();
+    auto& state = of(c).ports_[port];
+    state.input_begun = true;
+    state.edge = edge == STEPDANCE_DIR_AT_RISING ? protocol::DirSampleEdge::kRising : protocol::DirSampleEdge::kFalling;
+    return ok();
+  };
+
+  host.quadrature_begin = [](void*, uint8_t index) { return index < 2 ? ok() : no_such_pin(); };
+  host.quadrature_read = [](void* c, uint8_t index) { return of(c).read_quadrature(index); };
+  host.quadrature_write = [](void* c, uint8_t index, int32_t count) { of(c).write_quadrature(index, count); };
+  host.adc_begin = [](void* c, uint8_t pin) {
+    if (pin >= SimBoard::kPins) return no_such_pin();
+    auto& adc = of(c).adcs_[pin];
+    if (!adc.begun) adc.begun_at = of(c).scheduler_.now();
+    adc.begun = true;
+    return ok();
+  };
+  host.adc_read = [](void* c, uint8_t pin) -> uint16_t {
+    if (pin >= SimBoard::kPins || !of(c).adcs_[pin].value) return 0;
+    return of(c).adcs_[pin].value(of(c).scheduler_.now());
+  };
+  host.adc_sample_count = [](void* c, uint8_t pin) { return pin < SimBoard::kPins ? of(c).adc_samples(pin) : 0u; };
+  host.gpio_mode = [](void* c, uint8_t pin, int mode) { return of(c).set_pin_mode(pin, mode); };
+  host.gpio_read = [](void* c, uint8_t pin) { return pin < SimBoard::kPins && of(c).pin_level(pin) ? 1 : 0; };
+  host.gpio_write = [](void* c, uint8_t pin, int high) { of(c).write_pin(pin, high != 0); };
+
+  host.enter_safe_state = [](void* c) { of(c).enter_safe_state(); };
+  host.log_fault = [](void* c, const char* reason, const char* detail) {
+    of(c).faults_.push_back({of(c).scheduler_.now(), std::string(reason) + ": " + detail});
+  };
+  host.console_write = [](void* c, const uint8_t* data, size_t length) { return of(c).write_console(data, length); };
+  host.console_available = [](void* c) -> size_t {
+    return of(c).console_input_.size() - of(c).console_read_position_;
+  };
+  host.console_read = [](void* c) { return of(c).read_console(); };
+
+  host.file_open = [](void* c, const char* name, int mode, int* handle) {
+    return static_cast<int>(of(c).storage_.open(name, mode, *handle));
+  };
+  host.file_read = [](void* c, int handle, uint8_t* data, size_t length, size_t* read) {
+    return static_cast<int>(of(c).storage_.read(handle, data, length, *read));
+  };
+  host.file_write = [](void* c, int handle, const uint8_t* data, size_t length) {
+    return static_cast<int>(of(c).storage_.write(handle, data, length));
+  };
+  host.file_close = [](void* c, int handle) { return static_cast<int>(of(c).storage_.close(handle)); };
+  return host;
+}
+
+}  // namespace stepdance::sim

@@ -1,0 +1,14 @@
+// The host half of the board ABI: C callbacks that forward a sketch's HAL calls to its SimBoard.
+#pragma once
+
+#include "abi/board_abi.h"
+
+namespace stepdance::sim {
+
+/// Builds the StepdanceHostV1 table every SimBoard hands to its library. Each callback casts
+/// its context back to the SimBoard and answers from simulated state.
+struct BoardCallbacks {
+  static StepdanceHostV1 table();
+};
+
+}  // namespace stepdance::sim

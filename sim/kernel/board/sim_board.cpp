@@ -1,0 +1,257 @@
+// A simulated board: timers in virtual time, pin and port state, console, and the sketch's entry points.
+#include "board/sim_board.hpp"
+
+#include "board/board_callbacks.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+constexpr SimTime kKhzOffsetNs = 20 * kMicrosecond;  // half a frame after the frame tick
+/// The simulated ADC converts every pin continuously at this period.
+constexpr SimTime kAdcConversionNs = 100 * kMicrosecond;
+/// Capture timer: 150 ticks per µs into a 16-bit counter.
+constexpr int64_t kCaptureTicksPerUs = 150;
+
+uint32_t capture_ticks(SimTime time_ns) {
+  return static_cast<uint32_t>((time_ns * kCaptureTicksPerUs / 1000) & 0xFFFF);
+}
+
+
+}  // namespace
+
+SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardLibrary> library)
+    : scheduler_(scheduler),
+      options_(std::move(options)),
+      library_(std::move(library)),
+      host_table_(std::make_unique<StepdanceHostV1>(BoardCallbacks::table())),
+      frame_timer_(scheduler, &frame_tick, this),
+      khz_timer_(scheduler, &khz_tick, this),
+      loop_event_(*this),
+      setup_event_(*this),
+      storage_(options_.storage_dir) {}
+
+SimBoard::~SimBoard() {
+  scheduler_.cancel(loop_event_);
+  scheduler_.cancel(setup_event_);
+  frame_timer_.stop();
+  khz_timer_.stop();
+  library_.reset();  // the sketch's destructors may still call back: everything else is alive
+}
+
+bool SimBoard::attach(std::string& error) {
+  board_ = library_ ? library_->attach()(host_table_.get(), this) : nullptr;
+  if (board_ == nullptr) {
+    error = options_.name + ": the board library speaks another ABI version; rebuild the sketch";
+    return false;
+  }
+  return true;
+}
+
+const BoardDefinition& SimBoard::definition() const {
+  return is_basic_module() ? kBasicModuleV1 : kDriverModuleV1;
+}
+
+void SimBoard::power_on(SimTime time_ns) { scheduler_.schedule(setup_event_, time_ns); }
+
+void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
+  SimBoard& board = static_cast<SetupEvent&>(event).owner;
+  board.board_->run_setup();
+  scheduler.schedule(board.loop_event_, scheduler.now());
+}
+
+void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
+  SimBoard& board = static_cast<LoopEvent&>(event).owner;
+  const SimTime started = event.time();
+  board.board_->run_loop();
+  const SimTime next = started + board.options_.loop_period_ns;
+  scheduler.schedule(event, next > scheduler.now() ? next : scheduler.now());
+}
+
+// ---- timers -------------------------------------------------------------------------------------
+
+SimTime SimBoard::next_aligned(SimTime offset_ns, SimTime period_ns) const {
+  const SimTime now = scheduler_.now();
+  if (now < offset_ns) return offset_ns;
+  return offset_ns + ((now - offset_ns) / period_ns + 1) * period_ns;
+}
+
+int SimBoard::start_timer(int timer_id, uint32_t period_us) {
+  if (period_us == 0) return static_cast<int>(Status::kBadArgument);
+  const SimTime period = SimTime{period_us} * kMicrosecond;
+  if (timer_id == STEPDANCE_TIMER_FRAME) {
+    frame_timer_.start(next_aligned(options_.frame_phase_ns, period), period);
+  } else if (timer_id == STEPDANCE_TIMER_KHZ) {
+    khz_timer_.start(next_aligned(options_.frame_phase_ns + kKhzOffsetNs, period), period);
+  } else {
+    return static_cast<int>(Status::kBadArgument);
+  }
+  return static_cast<int>(Status::kOk);
+}
+
+void SimBoard::stop_timers() {
+  frame_timer_.stop();
+  khz_timer_.stop();
+}
+
+void SimBoard::frame_tick(void* context, SimTime time) {
+  auto& board = *static_cast<SimBoard*>(context);
+  board.play_pending_frames(time);
+  board.in_isr_ = true;
+  board.board_->run_frame_tick();
+  board.in_isr_ = false;
+}
+
+void SimBoard::khz_tick(void* context, SimTime) {
+  auto& board = *static_cast<SimBoard*>(context);
+  board.in_isr_ = true;
+  board.board_->run_khz_tick();
+  board.in_isr_ = false;
+}
+
+// The words handed over during the previous frame go on the wire now, at the fixed phase.
+void SimBoard::play_pending_frames(SimTime start_ns) {
+  for (PortState& port : ports_) {
+    if (!port.frame_pending) continue;
+    port.frame_pending = false;
+    count_frame_pulses(port.pending, port.sent);
+    for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending);
+  }
+}
+
+void SimBoard::delay(SimTime duration_ns) {
+  if (in_isr_) {
+    ++delays_in_isr_;
+    return;
+  }
+  scheduler_.run_until(scheduler_.now() + (duration_ns > 0 ? duration_ns : 0));
+}
+
+// ---- ports --------------------------------------------------------------------------------------
+
+void SimBoard::add_wire_listener(uint8_t port, WireListener* listener) { ports_.at(port).listeners.push_back(listener); }
+
+void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
+  PortState& state = ports_.at(port);
+  if (!state.input_begun) {
+    ++state.unclaimed;
+    return;
+  }
+  const bool at_rising = state.edge == protocol::DirSampleEdge::kRising;
+  const protocol::CapturedPulse captured{capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns),
+                                         at_rising ? pulse.dir_at_rise : pulse.dir_at_fall};
+  const InputMode mode = at_rising ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
+  state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
+  const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks, captured.dir_high ? uint8_t{1} : uint8_t{0}};
+  in_isr_ = true;
+  board_->deliver_pulse(port, &delivered);
+  in_isr_ = false;
+}
+
+// ---- encoders, ADC, pins ------------------------------------------------------------------------
+
+void SimBoard::connect_encoder(uint8_t index, Source<int64_t> counts) { encoders_.at(index) = std::move(counts); }
+
+int32_t SimBoard::read_quadrature(uint8_t index) {
+  const int64_t raw = encoders_[index] ? encoders_[index](scheduler_.now()) : 0;
+  return static_cast<int32_t>(raw + encoder_offsets_[index]);
+}
+
+void SimBoard::write_quadrature(uint8_t index, int32_t count) {
+  const int64_t raw = encoders_[index] ? encoders_[index](scheduler_.now()) : 0;
+  encoder_offsets_[index] = count - raw;
+}
+
+void SimBoard::connect_adc(uint8_t pin, Source<uint16_t> value) { adcs_.at(pin).value = std::move(value); }
+
+uint32_t SimBoard::adc_samples(uint8_t pin) const {
+  const AdcState& adc = adcs_[pin];
+  if (!adc.begun) return 0;
+  return static_cast<uint32_t>(1 + (scheduler_.now() - adc.begun_at) / kAdcConversionNs);
+}
+
+void SimBoard::connect_input_pin(uint8_t pin, Source<bool> level) { pins_.at(pin).source = std::move(level); }
+
+void SimBoard::on_pin_change(uint8_t pin, PinListener listener) { pins_.at(pin).listeners.push_back(std::move(listener)); }
+
+bool SimBoard::pin_level(uint8_t pin) const {
+  const PinState& state = pins_.at(pin);
+  if (state.mode == STEPDANCE_PIN_OUTPUT) return state.driven_level;
+  if (state.source) return state.source(scheduler_.now());
+  return state.mode == STEPDANCE_PIN_INPUT_PULLUP;
+}
+
+int SimBoard::set_pin_mode(uint8_t pin, int mode) {
+  if (pin >= kPins || mode < STEPDANCE_PIN_INPUT || mode > STEPDANCE_PIN_OUTPUT) {
+    return static_cast<int>(Status::kBadArgument);
+  }
+  const bool was_output = pins_[pin].mode == STEPDANCE_PIN_OUTPUT;
+  pins_[pin].mode = mode;
+  if (was_output != (mode == STEPDANCE_PIN_OUTPUT)) notify_pin(pin);
+  return static_cast<int>(Status::kOk);
+}
+
+void SimBoard::write_pin(uint8_t pin, bool high) {
+  if (pin >= kPins) return;
+  const bool changed = pins_[pin].driven_level != high;
+  pins_[pin].driven_level = high;
+  if (changed && pins_[pin].mode == STEPDANCE_PIN_OUTPUT) notify_pin(pin);
+}
+
+void SimBoard::notify_pin(uint8_t pin) {
+  const PinState& state = pins_[pin];
+  const bool driven = state.mode == STEPDANCE_PIN_OUTPUT;
+  for (const PinListener& listener : state.listeners) listener(scheduler_.now(), state.driven_level, driven);
+}
+
+// Safe state on the hardware: frames stop (the board already stopped its timers) and every
+// driver's ENABLE is driven high.
+void SimBoard::enter_safe_state() {
+  safe_state_ = true;
+  const BoardDefinition& board = definition();
+  for (uint8_t port = 0; port < board.output_port_count; ++port) {
+    const uint8_t enable = board.output_ports[port].enable;
+    if (enable == kNoPin) continue;
+    pins_[enable].mode = STEPDANCE_PIN_OUTPUT;
+    pins_[enable].driven_level = true;
+    notify_pin(enable);
+  }
+}
+
+// ---- console ------------------------------------------------------------------------------------
+
+void SimBoard::send_console(const std::string& bytes) { console_input_.insert(console_input_.end(), bytes.begin(), bytes.end()); }
+
+void SimBoard::on_console_line(std::function<void(const std::string&)> listener) { console_listener_ = std::move(listener); }
+
+size_t SimBoard::write_console(const uint8_t* data, size_t length) {
+  console_text_.append(reinterpret_cast<const char*>(data), length);
+  for (size_t i = 0; i < length; ++i) {
+    const char c = static_cast<char>(data[i]);
+    if (c == '\r') continue;
+    if (c != '\n') {
+      console_line_ += c;
+      continue;
+    }
+    if (console_listener_) console_listener_(console_line_);
+    console_line_.clear();
+  }
+  return length;
+}
+
+int SimBoard::read_console() {
+  if (console_read_position_ >= console_input_.size()) return -1;
+  const int byte = console_input_[console_read_position_++];
+  if (console_read_position_ == console_input_.size()) {
+    console_input_.clear();
+    console_read_position_ = 0;
+  }
+  return byte;
+}
+
+StepdanceBoardStatsV1 SimBoard::stats() const {
+  StepdanceBoardStatsV1 stats{};
+  if (board_ != nullptr) board_->read_stats(&stats);
+  return stats;
+}
+
+}  // namespace stepdance::sim

@@ -1,0 +1,200 @@
+// The simulator's side of one board: its timers, pins, ports and console, and the sketch it runs.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "abi/board_abi.h"
+#include "board/board_storage.hpp"
+#include "board/pulse_counts.hpp"
+#include "board/wire.hpp"
+#include "common/sim_time.hpp"
+#include "loader/board_library.hpp"
+#include "scheduler/periodic_timer.hpp"
+#include "scheduler/scheduler.hpp"
+#include "stepdance/boards/board.hpp"
+#include "stepdance/protocol/pulse_decoder.hpp"
+
+namespace stepdance::sim {
+
+/// How a board runs in virtual time.
+struct BoardOptions {
+  std::string name = "board";
+  /// Offset of this board's frame clock: frames tick at phase + k × 40 µs (boards are not in
+  /// lock-step). The kilohertz tick runs half a frame later, at phase + 20 µs + k × 1 ms, so
+  /// it never coincides with a frame.
+  SimTime frame_phase_ns = 0;
+  /// loop() runs every this long (each pass takes no simulated time).
+  SimTime loop_period_ns = 200 * kMicrosecond;
+  /// Folder behind the board's file storage ("" = no card).
+  std::string storage_dir;
+};
+
+/// A fault the board reported through hal::log_fault().
+struct BoardFault {
+  SimTime time_ns = 0;
+  std::string text;  ///< "reason: detail"
+};
+
+/// One simulated board. It loads nothing itself: it is given a loaded BoardLibrary, attaches to
+/// it, and from power_on() on answers every HAL call of the sketch from simulated state:
+///
+///   frame timer tick ─► play last frame's words to WireListeners ─► sketch's frame ISR
+///   kHz timer tick   ─► sketch's kilohertz ISR
+///   loop timer       ─► sketch's loop()
+///   capture()        ─► sketch's capture ISR (input ports)
+///
+/// Inputs (encoders, ADC pins, input pins) are pulled from sources when the sketch reads them;
+/// outputs (pins) are pushed to listeners when the sketch writes them.
+class SimBoard {
+ public:
+  /// A source of a value as a function of simulated time.
+  template <typename T>
+  using Source = std::function<T(SimTime)>;
+  /// Told when an output pin changes: (time, level, whether the pin is driven as an output).
+  using PinListener = std::function<void(SimTime, bool level, bool driven)>;
+
+  SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardLibrary> library);
+  ~SimBoard();
+  SimBoard(const SimBoard&) = delete;
+  SimBoard& operator=(const SimBoard&) = delete;
+
+  /// Binds the library to this board. False (with `error`) if the ABI versions differ.
+  bool attach(std::string& error);
+  /// The module the sketch selected: the Driver Module unless it defines module_basic.
+  const BoardDefinition& definition() const;
+  bool is_basic_module() const { return board_ != nullptr && board_->module == 1; }
+  const std::string& name() const { return options_.name; }
+
+  /// Runs setup() at `time_ns`, then loop() every loop period.
+  void power_on(SimTime time_ns);
+
+  // ---- wiring: the world feeding the board ----
+  /// The quadrature decoder `index` (0 = ENC1) counts what `counts` says at each read.
+  void connect_encoder(uint8_t index, Source<int64_t> counts);
+  /// The ADC of `pin` converts `value` (0..1023).
+  void connect_adc(uint8_t pin, Source<uint16_t> value);
+  /// An external device drives input pin `pin`.
+  void connect_input_pin(uint8_t pin, Source<bool> level);
+  /// Calls `listener` whenever the sketch changes pin `pin`'s output.
+  void on_pin_change(uint8_t pin, PinListener listener);
+  /// Adds a listener of output port `port`'s wire (the board does not own it).
+  void add_wire_listener(uint8_t port, WireListener* listener);
+  /// A STEP pulse reaches input port `port`; call at pulse.fall_ns (when the capture ISR runs).
+  void capture(uint8_t port, const ArrivingPulse& pulse);
+  /// Queues bytes for the sketch's Serial input.
+  void send_console(const std::string& bytes);
+  /// Calls `listener` with every complete line the sketch prints (without the line ending).
+  void on_console_line(std::function<void(const std::string&)> listener);
+
+  // ---- observation ----
+  /// The level the sketch would read on `pin` now (or that it drives).
+  bool pin_level(uint8_t pin) const;
+  /// Pulses the board played on output port `port` (decoded from the wire).
+  const PulseCounts& sent(uint8_t port) const { return ports_[port].sent; }
+  /// Pulses that reached input port `port`, decoded as the port's mode does (STEP_DIR-mode
+  /// steps are tallied under SIGNAL_X: the host cannot see which signal the sketch chose).
+  const PulseCounts& received(uint8_t port) const { return ports_[port].received; }
+  /// Pulses that reached an input port no InputPort had begun (they went nowhere).
+  uint64_t unclaimed_pulses(uint8_t port) const { return ports_[port].unclaimed; }
+  bool output_claimed(uint8_t port) const { return ports_[port].output_claimed; }
+  bool input_begun(uint8_t port) const { return ports_[port].input_begun; }
+  /// The board's own counters (frames, overruns, faults, pulses sent, signals carried).
+  StepdanceBoardStatsV1 stats() const;
+  const std::vector<BoardFault>& faults() const { return faults_; }
+  bool in_safe_state() const { return safe_state_; }
+  /// Everything the sketch printed so far.
+  const std::string& console_text() const { return console_text_; }
+  /// delay() calls made from an interrupt handler (ignored: they cannot block there).
+  uint64_t delays_in_isr() const { return delays_in_isr_; }
+
+ private:
+  friend struct BoardCallbacks;
+  static constexpr uint8_t kPorts = 4;
+  static constexpr uint8_t kPins = 55;
+
+  struct PortState {
+    bool output_claimed = false;
+    bool frame_pending = false;
+    protocol::FrameWords pending{};
+    std::vector<WireListener*> listeners;
+    PulseCounts sent;
+    bool input_begun = false;
+    protocol::DirSampleEdge edge = protocol::DirSampleEdge::kFalling;
+    PulseCounts received;
+    uint64_t unclaimed = 0;
+  };
+  struct PinState {
+    int mode = STEPDANCE_PIN_INPUT;
+    bool driven_level = false;
+    Source<bool> source;
+    std::vector<PinListener> listeners;
+  };
+  struct AdcState {
+    Source<uint16_t> value;
+    bool begun = false;
+    SimTime begun_at = 0;
+  };
+  /// The loop pass: an event that requeues itself only after loop() returns, so a delay()
+  /// inside loop() can never re-enter it.
+  struct LoopEvent : Event {
+    explicit LoopEvent(SimBoard& board) : Event(&fire), owner(board) {}
+    static void fire(Event& event, Scheduler& scheduler);
+    SimBoard& owner;
+  };
+  struct SetupEvent : Event {
+    explicit SetupEvent(SimBoard& board) : Event(&fire), owner(board) {}
+    static void fire(Event& event, Scheduler& scheduler);
+    SimBoard& owner;
+  };
+
+  static void frame_tick(void* context, SimTime time);
+  static void khz_tick(void* context, SimTime time);
+  void play_pending_frames(SimTime start_ns);
+  SimTime next_aligned(SimTime offset_ns, SimTime period_ns) const;
+
+  // HAL answers (called through BoardCallbacks).
+  int start_timer(int timer_id, uint32_t period_us);
+  void stop_timers();
+  void delay(SimTime duration_ns);
+  int32_t read_quadrature(uint8_t index);
+  void write_quadrature(uint8_t index, int32_t count);
+  uint32_t adc_samples(uint8_t pin) const;
+  int set_pin_mode(uint8_t pin, int mode);
+  void write_pin(uint8_t pin, bool high);
+  void notify_pin(uint8_t pin);
+  void enter_safe_state();
+  size_t write_console(const uint8_t* data, size_t length);
+  int read_console();
+
+  Scheduler& scheduler_;
+  BoardOptions options_;
+  std::unique_ptr<BoardLibrary> library_;
+  const StepdanceBoardV1* board_ = nullptr;
+  std::unique_ptr<StepdanceHostV1> host_table_;
+  PeriodicTimer frame_timer_;
+  PeriodicTimer khz_timer_;
+  LoopEvent loop_event_;
+  SetupEvent setup_event_;
+  bool in_isr_ = false;
+  bool safe_state_ = false;
+  std::array<PortState, kPorts> ports_{};
+  std::array<PinState, kPins> pins_{};
+  std::array<AdcState, kPins> adcs_{};
+  std::array<Source<int64_t>, 2> encoders_{};
+  std::array<int64_t, 2> encoder_offsets_{};
+  std::vector<uint8_t> console_input_;
+  size_t console_read_position_ = 0;
+  std::string console_text_;
+  std::string console_line_;
+  std::function<void(const std::string&)> console_listener_;
+  BoardStorage storage_;
+  std::vector<BoardFault> faults_;
+  uint64_t delays_in_isr_ = 0;
+};
+
+}  // namespace stepdance::sim

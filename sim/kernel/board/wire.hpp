@@ -1,0 +1,28 @@
+// What travels between a board's ports and the rest of the simulation: played frames and arriving pulses.
+#pragma once
+
+#include "common/sim_time.hpp"
+#include "stepdance/protocol/signals.hpp"
+
+namespace stepdance::sim {
+
+/// Receives the frames an output port plays on its STEP/DIR lines. Only frames with at least
+/// one high bit are reported; between reported frames both lines are low.
+class WireListener {
+ public:
+  virtual ~WireListener() = default;
+  /// `words` play from `start_ns`: bit n is the level during [start + n µs, start + (n+1) µs),
+  /// and both lines are low again from start + 32 µs. Called at `start_ns`, so a listener sees
+  /// the whole frame up to 32 µs before its last edge (it must use the edge times, not now()).
+  virtual void on_frame(SimTime start_ns, const protocol::FrameWords& words) = 0;
+};
+
+/// One STEP pulse as it reaches an input port's pins, after any cable effects.
+struct ArrivingPulse {
+  SimTime rise_ns = 0;
+  SimTime fall_ns = 0;
+  bool dir_at_rise = false;  ///< DIR level at the rising edge
+  bool dir_at_fall = false;  ///< DIR level at the falling edge
+};
+
+}  // namespace stepdance::sim

@@ -1,0 +1,57 @@
+// The board-side link to the simulator: the current callback table and the detached stand-ins.
+#include "runtime/host_link.hpp"
+
+namespace stepdance::sim_runtime {
+namespace {
+
+constexpr int kUnsupported = 7;  // stepdance::Status::kUnsupported
+
+int64_t zero_time(void*) { return 0; }
+int refuse_timer(void*, int, uint32_t) { return kUnsupported; }
+void ignore(void*) {}
+void ignore_delay(void*, int64_t) {}
+int refuse_port(void*, uint8_t) { return kUnsupported; }
+void ignore_frame(void*, uint8_t, uint32_t, uint32_t) {}
+int refuse_input(void*, uint8_t, int) { return kUnsupported; }
+int32_t zero_count(void*, uint8_t) { return 0; }
+void ignore_count(void*, uint8_t, int32_t) {}
+uint16_t zero_adc(void*, uint8_t) { return 0; }
+uint32_t zero_samples(void*, uint8_t) { return 0; }
+int refuse_mode(void*, uint8_t, int) { return kUnsupported; }
+int low_pin(void*, uint8_t) { return 0; }
+void ignore_write(void*, uint8_t, int) {}
+void ignore_fault(void*, const char*, const char*) {}
+size_t swallow(void*, const uint8_t*, size_t length) { return length; }
+size_t nothing_available(void*) { return 0; }
+int no_byte(void*) { return -1; }
+int refuse_open(void*, const char*, int, int*) { return kUnsupported; }
+int refuse_read(void*, int, uint8_t*, size_t, size_t* read) {
+  *read = 0;
+  return kUnsupported;
+}
+int refuse_write(void*, int, const uint8_t*, size_t) { return kUnsupported; }
+int refuse_close(void*, int) { return kUnsupported; }
+
+const StepdanceHostV1 kDetached = {
+    STEPDANCE_BOARD_ABI_VERSION,
+    &zero_time,    &refuse_timer,     &ignore,       &ignore_delay, &refuse_port,  &ignore_frame,
+    &refuse_input, &refuse_port,      &zero_count,   &ignore_count, &refuse_port,  &zero_adc,
+    &zero_samples, &refuse_mode,      &low_pin,      &ignore_write, &ignore,       &ignore_fault,
+    &swallow,      &nothing_available, &no_byte,     &refuse_open,  &refuse_read,  &refuse_write,
+    &refuse_close,
+};
+
+const StepdanceHostV1* current = &kDetached;
+void* current_context = nullptr;
+
+}  // namespace
+
+const StepdanceHostV1& host() { return *current; }
+void* host_context() { return current_context; }
+
+void attach_host(const StepdanceHostV1* table, void* context) {
+  current = table;
+  current_context = context;
+}
+
+}  // namespace stepdance::sim_runtime

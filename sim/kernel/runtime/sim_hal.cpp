@@ -1,0 +1,142 @@
+// The simulator backend of the HAL facade: every hal:: function answered through the host table.
+//
+// Time comes from the simulator's clock (64-bit ns). cycles_now() is that clock at 600 MHz, so a
+// frame costs zero simulated CPU cycles: the simulator does not model the frame's execution
+// time, and the load figures of a simulated board are always 0.
+#include "runtime/sim_hal.hpp"
+
+#include "runtime/host_link.hpp"
+#include "stepdance/boards/board.hpp"
+#include "stepdance/hal/hal.hpp"
+
+namespace stepdance {
+namespace {
+
+constexpr uint8_t kPorts = 4;
+constexpr uint8_t kEncoders = 2;
+constexpr uint8_t kHighestPin = 54;  // Teensy 4.1
+
+struct CaptureSink {
+  hal::PulseSink sink = nullptr;
+  void* context = nullptr;
+};
+
+hal::Isr frame_isr = nullptr;
+hal::Isr khz_isr = nullptr;
+CaptureSink capture_sinks[kPorts];
+bool irq_enabled = true;
+
+const StepdanceHostV1& host() { return sim_runtime::host(); }
+void* ctx() { return sim_runtime::host_context(); }
+Status status(int code) { return static_cast<Status>(code); }
+
+// Teensy 4.1 pins with an ADC input: A0..A13 on pins 14..27, A14..A17 on pins 38..41.
+bool has_adc(uint8_t pin) { return (pin >= 14 && pin <= 27) || (pin >= 38 && pin <= 41); }
+
+}  // namespace
+
+namespace sim_runtime {
+
+void run_frame_isr() {
+  if (frame_isr != nullptr) frame_isr();
+}
+
+void run_khz_isr() {
+  if (khz_isr != nullptr) khz_isr();
+}
+
+void deliver_captured_pulse(uint8_t port, const StepdanceCapturedPulseV1& pulse) {
+  if (port >= kPorts || capture_sinks[port].sink == nullptr) return;
+  const protocol::CapturedPulse captured{pulse.rise_ticks, pulse.fall_ticks, pulse.dir_high != 0};
+  capture_sinks[port].sink(capture_sinks[port].context, captured);
+}
+
+}  // namespace sim_runtime
+
+namespace hal {
+
+uint32_t micros_now() { return static_cast<uint32_t>(host().now_ns(ctx()) / 1000); }
+uint32_t cycles_now() { return static_cast<uint32_t>(host().now_ns(ctx()) * 3 / 5); }
+uint32_t cycles_per_second() { return 600000000u; }
+
+Status frame_timer_start(uint32_t period_us, Isr on_frame) {
+  frame_isr = on_frame;
+  return status(host().timer_start(ctx(), STEPDANCE_TIMER_FRAME, period_us));
+}
+
+Status khz_timer_start(uint32_t period_us, Isr on_tick) {
+  khz_isr = on_tick;
+  return status(host().timer_start(ctx(), STEPDANCE_TIMER_KHZ, period_us));
+}
+
+void timers_stop() {
+  frame_isr = nullptr;
+  khz_isr = nullptr;
+  host().timers_stop(ctx());
+}
+
+// One thread runs everything, so "interrupts off" only has to be remembered, not enforced.
+uint32_t irq_save() {
+  const uint32_t previous = irq_enabled ? 1u : 0u;
+  irq_enabled = false;
+  return previous;
+}
+void irq_restore(uint32_t state) { irq_enabled = state != 0; }
+
+Status port_out_begin(uint8_t port) {
+  if (port >= active_board().output_port_count) return Status::kNoSuchPin;
+  return status(host().port_out_begin(ctx(), port));
+}
+
+void port_out_frame(uint8_t port, const protocol::FrameWords& words) {
+  host().port_out_frame(ctx(), port, words.step_bits, words.dir_bits);
+}
+
+Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink, void* context) {
+  if (port >= active_board().input_port_count || port >= kPorts) return Status::kNoSuchPin;
+  capture_sinks[port] = {sink, context};
+  const int dir_edge = edge == protocol::DirSampleEdge::kRising ? STEPDANCE_DIR_AT_RISING : STEPDANCE_DIR_AT_FALLING;
+  return status(host().port_in_begin(ctx(), port, dir_edge));
+}
+
+protocol::CaptureClock port_in_clock(uint8_t) { return protocol::CaptureClock{150, 0xFFFFu}; }
+
+Status quadrature_begin(uint8_t index) {
+  if (index >= kEncoders) return Status::kNoSuchPin;
+  return status(host().quadrature_begin(ctx(), index));
+}
+int32_t quadrature_read(uint8_t index) { return index < kEncoders ? host().quadrature_read(ctx(), index) : 0; }
+void quadrature_write(uint8_t index, int32_t count) {
+  if (index < kEncoders) host().quadrature_write(ctx(), index, count);
+}
+
+Status adc_begin(uint8_t pin) {
+  if (!has_adc(pin)) return Status::kNoSuchPin;
+  return status(host().adc_begin(ctx(), pin));
+}
+uint16_t adc_read(uint8_t pin) { return has_adc(pin) ? host().adc_read(ctx(), pin) : 0; }
+uint32_t adc_sample_count(uint8_t pin) { return has_adc(pin) ? host().adc_sample_count(ctx(), pin) : 0; }
+
+Status gpio_mode(uint8_t pin, PinMode mode) {
+  if (pin > kHighestPin) return Status::kNoSuchPin;
+  return status(host().gpio_mode(ctx(), pin, static_cast<int>(mode)));
+}
+bool gpio_read(uint8_t pin) { return pin <= kHighestPin && host().gpio_read(ctx(), pin) != 0; }
+void gpio_write(uint8_t pin, bool high) {
+  if (pin <= kHighestPin) host().gpio_write(ctx(), pin, high ? 1 : 0);
+}
+
+void enter_safe_state() {
+  timers_stop();
+  host().enter_safe_state(ctx());
+}
+void log_fault(const char* reason, const char* detail) { host().log_fault(ctx(), reason, detail); }
+void log_message(const char* text) {
+  const char* end = text;
+  while (*end != '\0') ++end;
+  host().console_write(ctx(), reinterpret_cast<const uint8_t*>(text), static_cast<size_t>(end - text));
+  host().console_write(ctx(), reinterpret_cast<const uint8_t*>("\r\n"), 2);
+}
+
+}  // namespace hal
+}  // namespace stepdance

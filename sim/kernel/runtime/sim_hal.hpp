@@ -1,0 +1,17 @@
+// Inside a board's shared object: what the simulator HAL backend keeps besides the host table.
+#pragma once
+
+#include <stdint.h>
+
+#include "abi/board_abi.h"
+
+namespace stepdance::sim_runtime {
+
+/// Runs the frame ISR if the frame timer was started (the host calls this at each frame tick).
+void run_frame_isr();
+/// Runs the kilohertz ISR if that timer was started.
+void run_khz_isr();
+/// Hands a captured pulse to the sink registered for `port` (ignored if none).
+void deliver_captured_pulse(uint8_t port, const StepdanceCapturedPulseV1& pulse);
+
+}  // namespace stepdance::sim_runtime

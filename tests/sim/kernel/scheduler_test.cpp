@@ -1,0 +1,119 @@
+// The discrete-event kernel: (time, sequence) order, periodic timers, pooled one-shots, nesting.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "scheduler/one_shot_pool.hpp"
+#include "scheduler/periodic_timer.hpp"
+#include "scheduler/scheduler.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+struct Recorder {
+  std::vector<std::pair<SimTime, int>> seen;
+};
+
+struct Tagged : Event {
+  Tagged(Recorder& into, int value) : Event(&fire), recorder(into), tag(value) {}
+  static void fire(Event& event, Scheduler& scheduler) {
+    auto& self = static_cast<Tagged&>(event);
+    self.recorder.seen.emplace_back(scheduler.now(), self.tag);
+  }
+  Recorder& recorder;
+  int tag;
+};
+
+TEST(SchedulerTest, RunsEventsInTimeThenInsertionOrder) {
+  Scheduler scheduler;
+  Recorder recorder;
+  Tagged a(recorder, 1), b(recorder, 2), c(recorder, 3), d(recorder, 4);
+  scheduler.schedule(a, 30);
+  scheduler.schedule(b, 10);
+  scheduler.schedule(c, 30);
+  scheduler.schedule(d, 20);
+  scheduler.run_until(100);
+  const std::vector<std::pair<SimTime, int>> expected{{10, 2}, {20, 4}, {30, 1}, {30, 3}};
+  EXPECT_EQ(recorder.seen, expected);
+  EXPECT_EQ(scheduler.now(), 100);
+}
+
+TEST(SchedulerTest, RescheduleMovesAndCancelRemoves) {
+  Scheduler scheduler;
+  Recorder recorder;
+  Tagged a(recorder, 1), b(recorder, 2), c(recorder, 3);
+  scheduler.schedule(a, 10);
+  scheduler.schedule(b, 20);
+  scheduler.schedule(c, 30);
+  scheduler.schedule(a, 40);
+  scheduler.cancel(b);
+  EXPECT_FALSE(b.scheduled());
+  scheduler.run_until(35);
+  EXPECT_EQ(recorder.seen, (std::vector<std::pair<SimTime, int>>{{30, 3}}));
+  EXPECT_EQ(scheduler.pending(), 1u);
+  scheduler.run_until(40);
+  EXPECT_EQ(recorder.seen.back(), (std::pair<SimTime, int>{40, 1}));
+}
+
+TEST(SchedulerTest, PastTimesAreRaisedToNow) {
+  Scheduler scheduler;
+  Recorder recorder;
+  Tagged a(recorder, 1);
+  scheduler.run_until(50);
+  scheduler.schedule(a, 10);
+  EXPECT_EQ(a.time(), 50);
+}
+
+TEST(PeriodicTimerTest, TicksAtEveryPeriodUntilStopped) {
+  Scheduler scheduler;
+  std::vector<SimTime> ticks;
+  PeriodicTimer timer(scheduler, [](void* context, SimTime time) {
+    static_cast<std::vector<SimTime>*>(context)->push_back(time);
+  }, &ticks);
+  timer.start(5, 40);
+  scheduler.run_until(125);
+  EXPECT_EQ(ticks, (std::vector<SimTime>{5, 45, 85, 125}));
+  timer.stop();
+  scheduler.run_until(1000);
+  EXPECT_EQ(ticks.size(), 4u);
+}
+
+TEST(OneShotPoolTest, DeliversPayloadsAndReusesEvents) {
+  Scheduler scheduler;
+  std::vector<std::pair<SimTime, int>> got;
+  OneShotPool<int> pool(scheduler, [](void* context, SimTime time, const int& value) {
+    static_cast<std::vector<std::pair<SimTime, int>>*>(context)->emplace_back(time, value);
+  }, &got);
+  for (int round = 0; round < 3; ++round) {
+    for (int i = 0; i < 300; ++i) pool.post(scheduler.now() + 1000 - i, i);
+    scheduler.run_until(scheduler.now() + 2000);
+  }
+  ASSERT_EQ(got.size(), 900u);
+  EXPECT_EQ(got.front().second, 299);  // the latest post was the earliest time
+  EXPECT_EQ(pool.capacity(), 512u);    // two chunks, reused in rounds 2 and 3
+}
+
+TEST(SchedulerTest, NestedRunUntilHandlesEventsInsideAHandler) {
+  Scheduler scheduler;
+  Recorder recorder;
+  Tagged inner(recorder, 2), after(recorder, 3);
+  struct Waiter : Event {
+    explicit Waiter(Recorder& r) : Event(&fire), recorder(r) {}
+    static void fire(Event& event, Scheduler& scheduler) {
+      auto& self = static_cast<Waiter&>(event);
+      self.recorder.seen.emplace_back(scheduler.now(), 1);
+      scheduler.run_until(scheduler.now() + 100);  // like delay(): the world moves on
+      self.recorder.seen.emplace_back(scheduler.now(), 10);
+    }
+    Recorder& recorder;
+  } waiter(recorder);
+  scheduler.schedule(waiter, 10);
+  scheduler.schedule(inner, 50);
+  scheduler.schedule(after, 200);
+  scheduler.run_until(300);
+  const std::vector<std::pair<SimTime, int>> expected{{10, 1}, {50, 2}, {110, 10}, {200, 3}};
+  EXPECT_EQ(recorder.seen, expected);
+}
+
+}  // namespace
+}  // namespace stepdance::sim
