@@ -1,0 +1,54 @@
+// Cartesian XYZE machine: one motor per axis; the pen (or nozzle) writes while Z is low enough.
+#pragma once
+
+#include "models/machine.hpp"
+#include "models/stepper_driver.hpp"
+
+namespace stepdance::sim {
+
+/// The drivers moving each axis; any may be null (that axis stays at 0).
+struct CartesianDrivers {
+  const StepperDriver* x = nullptr;
+  const StepperDriver* y = nullptr;
+  const StepperDriver* z = nullptr;
+  const StepperDriver* e = nullptr;
+};
+
+/// Settings of a cartesian machine (defaults: an Ender-3 style printer).
+struct CartesianSettings {
+  /// Motor microsteps per mm on each axis.
+  double x_steps_per_mm = 80;
+  double y_steps_per_mm = 80;
+  double z_steps_per_mm = 400;
+  double e_steps_per_mm = 93;
+  /// The pen is down while z ≤ this (mm).
+  double pen_down_at_or_below_mm = 0;
+  /// Usable XY area, if any (excursions are reported).
+  std::optional<TravelArea> travel;
+  PenTraceSettings trace;
+};
+
+/// Each axis position is its motor's steps / steps_per_mm; the pen is at (x, y) and down while
+/// z ≤ pen_down_at_or_below_mm (so a machine without a Z motor always draws).
+class CartesianMachine : public Machine {
+ public:
+  CartesianMachine(const CartesianDrivers& drivers, const CartesianSettings& settings = {});
+
+  /// x, y, z in mm at the last update.
+  std::optional<double> axis_mm(MachineAxis axis) const override;
+  /// Extruder position (mm of filament) at the last update.
+  double e_mm() const { return e_mm_; }
+  double z_mm() const { return z_mm_; }
+  const CartesianSettings& settings() const { return settings_; }
+
+ protected:
+  Sample sample(SimTime time) override;
+
+ private:
+  CartesianDrivers drivers_;
+  CartesianSettings settings_;
+  double z_mm_ = 0;
+  double e_mm_ = 0;
+};
+
+}  // namespace stepdance::sim

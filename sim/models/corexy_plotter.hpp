@@ -1,0 +1,49 @@
+// CoreXY pen plotter (AxiDraw class): two belt motors move the pen, a servo board lifts it.
+#pragma once
+
+#include "models/machine.hpp"
+#include "models/servo_board.hpp"
+#include "models/stepper_driver.hpp"
+
+namespace stepdance::sim {
+
+/// Settings of a CoreXY plotter (defaults: AxiDraw V3 at 1/16 microstepping).
+struct CorexySettings {
+  /// Motor microsteps per mm of belt.
+  double steps_per_mm = 80;
+  /// The pen touches the paper while the servo pulse is narrower than this (µs).
+  double pen_down_below_us = 1500;
+  /// Usable area from the origin (mm): [0, travel_x] × [0, travel_y].
+  double travel_x_mm = 300;
+  double travel_y_mm = 218;
+  PenTraceSettings trace;
+};
+
+/// Pen position from the motors: with a and b the motor positions in mm (steps / steps_per_mm),
+/// x = (a + b) / 2 and y = (a − b) / 2. The pen is down while the servo board's current pulse is
+/// narrower than pen_down_below_us; without a servo board the pen is always down.
+class CorexyPlotter : public Machine {
+ public:
+  CorexyPlotter(const StepperDriver& motor_a, const StepperDriver& motor_b, ServoBoard* pen_servo,
+                const CorexySettings& settings = {});
+
+  /// x, y: the pen (mm); z: none.
+  std::optional<double> axis_mm(MachineAxis axis) const override;
+  /// Motor positions at the last update (mm of belt).
+  double a_mm() const { return a_mm_; }
+  double b_mm() const { return b_mm_; }
+  const CorexySettings& settings() const { return settings_; }
+
+ protected:
+  Sample sample(SimTime time) override;
+
+ private:
+  const StepperDriver& motor_a_;
+  const StepperDriver& motor_b_;
+  ServoBoard* pen_servo_;
+  CorexySettings settings_;
+  double a_mm_ = 0;
+  double b_mm_ = 0;
+};
+
+}  // namespace stepdance::sim

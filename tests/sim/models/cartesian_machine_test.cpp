@@ -1,0 +1,81 @@
+// CartesianMachine: per-axis steps per mm and the Z pen threshold.
+#include <gtest/gtest.h>
+
+#include "models/cartesian_machine.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+StepperDriverSettings enabled() {
+  StepperDriverSettings settings;
+  settings.enabled = true;
+  return settings;
+}
+
+void steps(StepperDriver& driver, int count) {
+  for (int i = 0; i < (count < 0 ? -count : count); ++i) driver.on_step_rising(0, count > 0);
+}
+
+TEST(CartesianMachine, AxesAreStepsOverStepsPerMm) {
+  StepperDriver x(enabled()), y(enabled()), z(enabled()), e(enabled());
+  CartesianMachine machine(CartesianDrivers{&x, &y, &z, &e});  // 80, 80, 400, 93 steps/mm
+  steps(x, 800);
+  steps(y, -1600);
+  steps(z, 200);
+  steps(e, 93);
+  machine.update(1);
+  EXPECT_EQ(machine.pen_position(), (PenPoint{10, -20}));
+  EXPECT_DOUBLE_EQ(machine.z_mm(), 0.5);
+  EXPECT_DOUBLE_EQ(machine.e_mm(), 1.0);
+  EXPECT_EQ(machine.axis_mm(MachineAxis::kY), -20.0);
+  EXPECT_EQ(machine.axis_mm(MachineAxis::kZ), 0.5);
+}
+
+TEST(CartesianMachine, PenIsDownAtOrBelowTheZThreshold) {
+  StepperDriver x(enabled()), z(enabled());
+  CartesianSettings settings;
+  settings.pen_down_at_or_below_mm = 0.25;
+  CartesianDrivers drivers;
+  drivers.x = &x;
+  drivers.z = &z;
+  CartesianMachine machine(drivers, settings);
+  steps(z, 101);  // 0.2525 mm
+  machine.update(0);
+  EXPECT_FALSE(machine.pen_down());
+  steps(z, -1);  // 0.25 mm
+  machine.update(1);
+  EXPECT_TRUE(machine.pen_down());
+  steps(x, 80);
+  machine.update(2);
+  steps(z, 100);
+  machine.update(3);
+  ASSERT_EQ(machine.strokes().size(), 1u);
+  EXPECT_EQ(machine.strokes()[0], (Polyline{{0, 0}, {1, 0}}));
+}
+
+TEST(CartesianMachine, WithoutAZMotorThePenIsAlwaysDown) {
+  StepperDriver x(enabled());
+  CartesianDrivers drivers;
+  drivers.x = &x;
+  CartesianMachine machine(drivers);
+  machine.update(0);
+  EXPECT_TRUE(machine.pen_down());
+  EXPECT_EQ(machine.travel(), nullptr);
+}
+
+TEST(CartesianMachine, AnOptionalTravelAreaIsMonitored) {
+  StepperDriver x(enabled());
+  CartesianSettings settings;
+  settings.travel = TravelArea{0, 220, 0, 220};
+  CartesianDrivers drivers;
+  drivers.x = &x;
+  CartesianMachine machine(drivers, settings);
+  steps(x, -8);
+  machine.update(0);
+  ASSERT_NE(machine.travel(), nullptr);
+  EXPECT_EQ(machine.travel()->excursion_count(), 1u);
+  EXPECT_DOUBLE_EQ(machine.travel()->max_overshoot_mm(), 0.1);
+}
+
+}  // namespace
+}  // namespace stepdance::sim

@@ -1,0 +1,142 @@
+// CorexyPlotter: pen position from motor steps, servo pen state, strokes and travel limits.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "models/corexy_plotter.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+constexpr SimTime kMs = kMillisecond;
+
+/// Two enabled motors, the pen servo board and a plotter bound to them.
+struct Plotter {
+  explicit Plotter(const CorexySettings& settings = {})
+      : a(enabled()), b(enabled()), plotter(a, b, &servo, settings) {}
+  static StepperDriverSettings enabled() {
+    StepperDriverSettings settings;
+    settings.enabled = true;
+    return settings;
+  }
+  StepperDriver a;
+  StepperDriver b;
+  ServoBoard servo;
+  CorexyPlotter plotter;
+};
+
+void steps(StepperDriver& driver, int count, SimTime time) {
+  for (int i = 0; i < (count < 0 ? -count : count); ++i) driver.on_step_rising(time, count > 0);
+}
+
+void servo_steps(ServoBoard& servo, int count, SimTime time) {
+  for (int i = 0; i < (count < 0 ? -count : count); ++i) servo.on_step_rising(time, count > 0);
+}
+
+TEST(CorexyPlotter, PenPositionIsHalfTheSumAndHalfTheDifference) {
+  Plotter rig;
+  steps(rig.a, 800, 0);
+  steps(rig.b, 800, 0);
+  rig.plotter.update(1);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, 10.0);  // (10 + 10) / 2
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 0.0);
+  steps(rig.b, -1600, 2);  // a = 10 mm, b = −10 mm
+  rig.plotter.update(3);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, 0.0);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 10.0);
+  steps(rig.a, 200, 4);  // a = 12.5 mm
+  steps(rig.b, 1200, 4);  // b = 5 mm
+  rig.plotter.update(5);
+  EXPECT_DOUBLE_EQ(rig.plotter.a_mm(), 12.5);
+  EXPECT_DOUBLE_EQ(rig.plotter.b_mm(), 5.0);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, 8.75);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 3.75);
+  EXPECT_EQ(rig.plotter.axis_mm(MachineAxis::kX), 8.75);
+  EXPECT_EQ(rig.plotter.axis_mm(MachineAxis::kZ), std::nullopt);
+}
+
+TEST(CorexyPlotter, PenIsDownWhileTheServoPulseIsBelowTheThreshold) {
+  Plotter rig;
+  rig.plotter.update(0);
+  EXPECT_FALSE(rig.plotter.pen_down());  // 1540 µs
+  servo_steps(rig.servo, -200, 1 * kMs);  // 1340 µs from pulse 2 (49.7 ms)
+  rig.plotter.update(49 * kMs);
+  EXPECT_FALSE(rig.plotter.pen_down());
+  rig.plotter.update(50 * kMs);
+  EXPECT_TRUE(rig.plotter.pen_down());
+  servo_steps(rig.servo, 159, 51 * kMs);  // 1499 µs: still down
+  rig.plotter.update(100 * kMs);
+  EXPECT_TRUE(rig.plotter.pen_down());
+  servo_steps(rig.servo, 1, 101 * kMs);  // 1500 µs: not below, so up (from pulse 6, 149.1 ms)
+  rig.plotter.update(150 * kMs);
+  EXPECT_FALSE(rig.plotter.pen_down());
+}
+
+TEST(CorexyPlotter, WithoutAServoThePenIsAlwaysDown) {
+  StepperDriver a;
+  StepperDriver b;
+  CorexyPlotter plotter(a, b, nullptr);
+  plotter.update(0);
+  EXPECT_TRUE(plotter.pen_down());
+}
+
+TEST(CorexyPlotter, StrokesSplitOnPenUpAndDown) {
+  CorexySettings settings;
+  settings.trace.record_pen_up = true;
+  Plotter rig(settings);
+  CorexyPlotter& plotter = rig.plotter;
+  plotter.update(0);                      // up at (0, 0)
+  servo_steps(rig.servo, -200, 1 * kMs);  // down from pulse 2 (49.7 ms)
+  plotter.update(50 * kMs);               // stroke 1 starts at (0, 0)
+  steps(rig.a, 800, 51 * kMs);            // (5, 5)
+  plotter.update(52 * kMs);
+  servo_steps(rig.servo, 200, 53 * kMs);  // after sample 2: up from pulse 4 (99.4 ms)
+  steps(rig.b, 800, 79 * kMs);            // (10, 0)
+  plotter.update(80 * kMs);
+  plotter.update(100 * kMs);              // up
+  steps(rig.b, -800, 101 * kMs);          // (5, 5), pen up
+  plotter.update(102 * kMs);
+  servo_steps(rig.servo, -200, 103 * kMs);  // down from pulse 6 (149.1 ms)
+  plotter.update(150 * kMs);              // stroke 2 starts at (5, 5)
+  steps(rig.a, 800, 151 * kMs);           // (10, 10)
+  plotter.update(152 * kMs);
+
+  ASSERT_EQ(plotter.strokes().size(), 2u);
+  EXPECT_EQ(plotter.strokes()[0], (Polyline{{0, 0}, {5, 5}, {10, 0}}));
+  EXPECT_EQ(plotter.strokes()[1], (Polyline{{5, 5}, {10, 10}}));
+  ASSERT_EQ(plotter.pen_up_moves().size(), 1u);  // the initial pen-up wait did not move
+  EXPECT_EQ(plotter.pen_up_moves()[0], (Polyline{{10, 0}, {5, 5}}));
+  const MachineStats stats = plotter.stats();
+  EXPECT_EQ(stats.updates, 8u);
+  EXPECT_EQ(stats.moves, 4u);
+  EXPECT_EQ(stats.strokes, 2u);
+  EXPECT_NEAR(stats.pen_down_mm, 15 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(stats.pen_up_mm, 5 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(stats.travel_excursions, 0u);
+}
+
+TEST(CorexyPlotter, ReportsTravelOutsideTheArea) {
+  Plotter rig;
+  rig.plotter.update(0);
+  steps(rig.b, 800, 1 * kMs);  // a = 0, b = 10 mm: (5, −5)
+  rig.plotter.update(2 * kMs);
+  steps(rig.b, -800, 3 * kMs);
+  rig.plotter.update(4 * kMs);
+  steps(rig.a, 24000, 5 * kMs);  // a = 300 mm, b = 0: (150, 150) inside
+  rig.plotter.update(6 * kMs);
+  steps(rig.b, -24000, 7 * kMs);  // b = −300 mm: (0, 300) is 82 mm past y = 218
+  rig.plotter.update(8 * kMs);
+  ASSERT_NE(rig.plotter.travel(), nullptr);
+  const TravelMonitor& travel = *rig.plotter.travel();
+  EXPECT_EQ(travel.excursion_count(), 2u);
+  ASSERT_EQ(travel.excursions().size(), 2u);
+  EXPECT_EQ(travel.excursions()[0].start, 2 * kMs);
+  EXPECT_EQ(travel.excursions()[0].end, 4 * kMs);
+  EXPECT_EQ(travel.excursions()[0].first, (PenPoint{5, -5}));
+  EXPECT_DOUBLE_EQ(travel.excursions()[0].overshoot_mm, 5.0);
+  EXPECT_DOUBLE_EQ(travel.excursions()[1].overshoot_mm, 82.0);
+  EXPECT_EQ(rig.plotter.stats().travel_excursions, 2u);
+}
+
+}  // namespace
+}  // namespace stepdance::sim
