@@ -94,6 +94,7 @@ declare -A usb_macro=([serial]=USB_SERIAL [dualserial]=USB_DUAL_SERIAL)
 declare -A config_objects=()
 declare -a images=()
 declare -a all_objects=()
+declare -a unlinked_hal=()
 
 build_configuration() {
   local board=$1 usb=$2 dir="$out/$1-$2" source object
@@ -149,8 +150,7 @@ link_example() {
     local missing
     missing=$(arm-none-eabi-nm -u "$elf" | awk '{print $2}' | grep -v '^_ZN9stepdance3hal' || true)
     [ -z "$missing" ] || fail "$name ($board) leaves symbols undefined: $missing"
-    echo "build-teensy: NOTE: no Teensy backend in src/stepdance/platform/teensy yet;" \
-      "$name ($board) links with the stepdance::hal functions left undefined"
+    unlinked_hal+=("$name/$board")
   fi
   images+=("$elf")
   all_objects+=("${objects[@]}")
@@ -163,6 +163,10 @@ for build in "${builds[@]}"; do
 done
 echo "build-teensy: ${#library_sources[@]} library sources, ${#builds[@]} example builds" \
   "($compiled files compiled this run)"
+if [ ${#unlinked_hal[@]} -gt 0 ]; then
+  echo "build-teensy: NOTE: no Teensy backend in src/stepdance/platform/teensy yet: ${unlinked_hal[*]}" \
+    "link with the stepdance::hal functions left undefined (every other symbol must resolve)"
+fi
 
 # ---- Forbidden symbols: in any object's references and in any image ---------------------------
 #
