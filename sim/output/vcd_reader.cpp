@@ -42,6 +42,9 @@ class Tokenizer {
     }
   }
 
+  /// Drops the rest of the current line.
+  void skip_line() { pos_ = line_.size(); }
+
   /// The number of the last line read (the line an end-of-file error points at).
   size_t line() const { return line_number_ == 0 ? 1 : line_number_; }
 
@@ -163,6 +166,10 @@ class Parser {
     std::vector<Token> args;
     while (tokens_.next(token)) {
       const std::string& command = token.text;
+      if (command == "META" && capture_.wires.empty()) {
+        tokens_.skip_line();  // sigrok-cli puts "META samplerate: N" lines into converted files
+        continue;
+      }
       if (command.empty() || command[0] != '$' || command == "$end") {
         return fail(token.line, "expected a declaration command, found " + quoted(command));
       }

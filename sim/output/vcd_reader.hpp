@@ -47,7 +47,8 @@ struct VcdReadResult {
 /// nested scopes, several vars sharing one identifier, multi-character identifiers, `$dumpvars`
 /// / `$dumpall` / `$dumpon` / `$dumpoff` blocks, `x`/`z` values (read as low), `b`/`r` vector
 /// and real values (checked, ignored), `$comment`, `$date`, `$version` and unknown
-/// declaration commands, value changes before the first timestamp (taken as time 0).
+/// declaration commands, value changes before the first timestamp (taken as time 0), and the
+/// "META samplerate: N" lines sigrok-cli writes before the header when it converts a file.
 /// Rejected with an error: time going backwards, undeclared identifiers, malformed commands,
 /// a missing `$enddefinitions` or `$end`, times that overflow 64-bit ns.
 VcdReadResult read_vcd_file(const std::string& path);

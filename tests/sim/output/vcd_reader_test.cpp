@@ -165,6 +165,12 @@ TEST(VcdReader, AcceptsCrLfCommentsAndUnknownDeclarations) {
   EXPECT_EQ(pairs(capture.wires[0].edges), (EdgePairs{{30, true}}));
 }
 
+TEST(VcdReader, SkipsSigrokCliMetaLinesBeforeTheHeader) {
+  const VcdCapture capture = parse("META samplerate: 1000000000\n$timescale 1 ns $end\n$var wire 1 ! D0 $end\n"
+                                   "$enddefinitions $end\n#0 0!\n#5 1!\n");
+  EXPECT_EQ(pairs(capture.wires[0].edges), (EdgePairs{{5, true}}));
+}
+
 TEST(VcdReader, EmptyValueSectionIsFine) {
   const VcdCapture capture = parse("$var wire 1 ! A $end $enddefinitions $end");
   ASSERT_EQ(capture.wires.size(), 1u);
