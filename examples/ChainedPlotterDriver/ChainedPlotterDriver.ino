@@ -1,0 +1,77 @@
+// Chained plotter: a Driver Module draws on an AxiDraw with the X/Y motion stream it receives on
+// INPUT A (from ../ChainedKnobsBasic, a Basic Module with two knobs), and lifts and lowers the
+// pen with its own button on D1.
+//
+//   INPUT A ─► X (0.01 mm/pulse) ─► CoreXY.x ┐            ┌─► channel A ─► OUTPUT A ─► left motor
+//          └─► Y (0.01 mm/pulse) ─► CoreXY.y ┴─ a = x + y ┤
+//                                               b = x − y └─► channel B ─► OUTPUT B ─► right motor
+//   D1 button ─► pen up/down ─► PositionGenerator ─► channel C ─► OUTPUT C ─► servo board
+
+#define module_driver
+#include "stepdance.hpp"
+
+// The motion stream from the upstream module.
+InputPort input_a;
+
+// Motion-stream outputs to the two stepper drivers and the hobby-servo board.
+OutputPort output_a;
+OutputPort output_b;
+OutputPort output_c;
+
+// One channel per motor: each turns a target position into step pulses.
+Channel channel_a;
+Channel channel_b;
+Channel channel_z;
+
+KinematicsCoreXY axidraw_kinematics;
+Button button_d1;
+PositionGenerator pen_position;
+
+// Servo steps (1 step = 1 µs of servo pulse) from neutral for each pen state.
+constexpr double kPenUpSteps = 200;
+constexpr double kPenDownSteps = -200;
+constexpr double kPenSpeedStepsPerS = 2000;
+
+void pen_down() { pen_position.go(kPenDownSteps, ABSOLUTE, kPenSpeedStepsPerS); }
+void pen_up() { pen_position.go(kPenUpSteps, ABSOLUTE, kPenSpeedStepsPerS); }
+
+void setup() {
+  output_a.begin(OUTPUT_A);
+  output_b.begin(OUTPUT_B);
+  output_c.begin(OUTPUT_C);
+  enable_drivers();
+
+  // AxiDraw belts: 200-step motors at 1/16 microstepping, 40 mm per turn = 80 steps/mm.
+  channel_a.begin(&output_a, SIGNAL_E);
+  channel_a.set_ratio(25.4, 2032);
+  channel_a.invert_output();
+  channel_b.begin(&output_b, SIGNAL_E);
+  channel_b.set_ratio(25.4, 2032);
+  channel_b.invert_output();
+  // The servo board counts raw steps.
+  channel_z.begin(&output_c, SIGNAL_E);
+
+  // Every received pulse is 0.01 mm, the standard between modules.
+  input_a.begin(INPUT_A);
+  input_a.output_x.set_ratio(STANDARD_RATIO_MM, 1);
+  input_a.output_x.map(&axidraw_kinematics.input_x);
+  input_a.output_y.set_ratio(STANDARD_RATIO_MM, 1);
+  input_a.output_y.map(&axidraw_kinematics.input_y);
+
+  axidraw_kinematics.begin();
+  axidraw_kinematics.output_a.map(&channel_a.input_target_position);
+  axidraw_kinematics.output_b.map(&channel_b.input_target_position);
+
+  pen_position.output.map(&channel_z.input_target_position);
+  pen_position.begin();
+
+  // The button toggles: one press lowers the pen, the next press lifts it.
+  button_d1.begin(IO_D1, INPUT_PULLDOWN);
+  button_d1.set_mode(BUTTON_MODE_TOGGLE);
+  button_d1.set_callback_on_press(&pen_down);
+  button_d1.set_callback_on_release(&pen_up);
+
+  dance_start();
+}
+
+void loop() { dance_loop(); }

@@ -1,0 +1,15 @@
+// Internal: the reset function of each part of the host Arduino API, called by reset_state().
+#pragma once
+
+namespace stepdance::arduino::internal {
+
+/// Forgets the millis()/micros() wrap tracking (arduino_time.cpp).
+void reset_time_state();
+/// Forgets the pins analogRead() started and the analog resolution (arduino_pins.cpp).
+void reset_pin_state();
+/// Restores the random() generator's power-on seed (arduino_math.cpp).
+void reset_random_state();
+/// Drops peeked bytes and restores the timeout of every serial port (HardwareSerial.cpp).
+void reset_serial_state();
+
+}  // namespace stepdance::arduino::internal
