@@ -65,6 +65,30 @@ TEST_F(ChainedKnobsBasicTest, KnobTwoDrivesYOnly) {
   EXPECT_EQ(sent(SIGNAL_X, DIRECTION_FORWARD) + sent(SIGNAL_X, DIRECTION_REVERSE), 0u);
 }
 
+TEST_F(ChainedKnobsBasicTest, TheScenarioKnobTurnsGiveItsExpectedCounts) {
+  // The turns of examples/ChainedPlotterDriver/scenario.toml, one count every 0.5 ms:
+  // knob_x +1000, knob_y +1000, knob_x +2000, knob_y +2000, knob_x −2000, knob_y −2000.
+  const struct {
+    uint8_t knob;
+    int32_t counts;
+  } turns[] = {{0, 1000}, {1, 1000}, {0, 2000}, {1, 2000}, {0, -2000}, {1, -2000}};
+  int32_t count[2] = {0, 0};
+  for (const auto& turn : turns) {
+    const int32_t step = turn.counts > 0 ? 1 : -1;
+    for (int32_t i = 0; i != turn.counts; i += step) {
+      count[turn.knob] += step;
+      set_quadrature(turn.knob, count[turn.knob]);
+      run_frames(12);
+      if (i % 50 == 0) loop();
+    }
+    run_ms(5);
+  }
+  EXPECT_EQ(sent(SIGNAL_X, DIRECTION_FORWARD), 2000u);
+  EXPECT_EQ(sent(SIGNAL_X, DIRECTION_REVERSE), 3000u);
+  EXPECT_EQ(sent(SIGNAL_Y, DIRECTION_FORWARD), 2000u);
+  EXPECT_EQ(sent(SIGNAL_Y, DIRECTION_REVERSE), 3000u);
+}
+
 TEST_F(ChainedKnobsBasicTest, OneCountIsOneTwoMicrosecondPulseInTheNextFrame) {
   set_quadrature(0, 1);
   run_frames(1);

@@ -132,6 +132,36 @@ TEST_F(ChainedPlotterDriverTest, FramesFromTheKnobsModuleDriveMotorB) {
   EXPECT_EQ(wire(output_b, DIRECTION_REVERSE), 0u);
 }
 
+TEST_F(ChainedPlotterDriverTest, TheScenarioSquareGivesTheCountsItsScenarioExpects) {
+  // The moves of examples/ChainedPlotterDriver/scenario.toml, as pulses on INPUT A (a positive
+  // knob count arrives as a reverse pulse), one pulse every 2 frames, one axis at a time.
+  struct Move {
+    uint32_t pulses;
+    uint32_t width_ticks;
+    bool dir_high;
+  };
+  const Move moves[] = {
+      {1000, kXWidthTicks, false}, {1000, kYWidthTicks, false},  // to (10, 10), pen up
+      {2000, kXWidthTicks, false}, {2000, kYWidthTicks, false},  // the square, pen down
+      {2000, kXWidthTicks, true},  {2000, kYWidthTicks, true},
+  };
+  for (const Move& move : moves) {
+    for (uint32_t i = 0; i < move.pulses; ++i) {
+      inject(1, move.width_ticks, move.dir_high);
+      run_frames(2);
+    }
+    run_ms(5);
+  }
+  EXPECT_EQ(wire(output_a, DIRECTION_FORWARD), 4800u);
+  EXPECT_EQ(wire(output_a, DIRECTION_REVERSE), 3200u);
+  EXPECT_EQ(wire(output_b, DIRECTION_FORWARD), 4000u);
+  EXPECT_EQ(wire(output_b, DIRECTION_REVERSE), 4000u);
+  // The motors count +1 per DIR-high step: A = 1600, B = 0, so the pen is at
+  // x = (1600 + 0) / 2 / 80 = 10 mm, y = (1600 − 0) / 2 / 80 = 10 mm.
+  EXPECT_DOUBLE_EQ(channel_a.current_position, -1600.0);  // the channel's own, uninverted sense
+  EXPECT_DOUBLE_EQ(channel_b.current_position, 0.0);
+}
+
 TEST_F(ChainedPlotterDriverTest, ButtonTogglesThePenDownAndUp) {
   // Press: the pen goes to −200 servo steps at 2000 steps/s (0.1 s); the next press lifts it
   // to +200, 400 steps back.
