@@ -1,0 +1,162 @@
+// [[board]] and [board.sockets]: modules, sketches, loop timing and driver sockets.
+#include <filesystem>
+#include <map>
+
+#include "scenario/names.hpp"
+#include "scenario/parse_context.hpp"
+
+namespace stepdance::sim::scenario {
+
+namespace {
+
+constexpr int kFramePeriodUs = 40;
+
+bool valid_microsteps(int64_t value) { return value >= 1 && value <= 64 && (value & (value - 1)) == 0; }
+
+std::optional<SocketConfig> read_socket(char port, const toml::node& value, Reporter& reporter) {
+  const toml::table* table = value.as_table();
+  if (table == nullptr) {
+    reporter.error(line_of(value), std::string("socket ") + port +
+                                       " must be a table, e.g. { device = \"stepper\" }, not " +
+                                       std::string(type_phrase(value)));
+    return std::nullopt;
+  }
+  TableReader reader(*table, std::string("socket ") + port, reporter);
+  SocketConfig socket;
+  socket.port = port;
+  socket.line = reader.line();
+  bool ok = true;
+  const std::optional<std::string> device = reader.string("device", Need::kRequired);
+  if (!device) {
+    ok = false;
+  } else if (*device == "stepper") {
+    socket.device = SocketDevice::kStepper;
+    if (const auto microsteps = reader.integer("microsteps")) {
+      if (valid_microsteps(*microsteps)) {
+        socket.microsteps = static_cast<int>(*microsteps);
+      } else {
+        reader.error("microsteps",
+                     "'microsteps' must be 1, 2, 4, 8, 16, 32 or 64, got " + std::to_string(*microsteps));
+        ok = false;
+      }
+    }
+    if (const auto full_steps = reader.integer("full_steps_per_rev")) {
+      if (*full_steps > 0 && *full_steps <= 100000) {
+        socket.full_steps_per_rev = static_cast<int>(*full_steps);
+      } else {
+        reader.error("full_steps_per_rev", "'full_steps_per_rev' must be in 1..100000, got " + std::to_string(*full_steps));
+        ok = false;
+      }
+    }
+    if (reader.has("build")) {
+      reader.accept("build");
+      reader.error("build", "'build' does not apply to a stepper");
+      ok = false;
+    }
+  } else if (*device == "servo") {
+    socket.device = SocketDevice::kServo;
+    if (const auto build = reader.string("build")) {
+      if (*build == "90deg") {
+        socket.build = ServoBuild::k90deg;
+      } else if (*build == "180deg") {
+        socket.build = ServoBuild::k180deg;
+      } else {
+        reader.error("build", "'build' must be \"90deg\" or \"180deg\", got \"" + *build + "\"");
+        ok = false;
+      }
+    }
+    for (const char* key : {"microsteps", "full_steps_per_rev"}) {
+      if (reader.has(key)) {
+        reader.accept(key);
+        reader.error(key, "'" + std::string(key) + "' does not apply to a servo");
+        ok = false;
+      }
+    }
+  } else {
+    reader.error("device", "'device' must be \"stepper\" or \"servo\", got \"" + *device + "\"");
+    ok = false;
+  }
+  reader.finish();
+  if (!ok) return std::nullopt;
+  return socket;
+}
+
+void read_sockets(TableReader& board_reader, BoardConfig& board, ParseContext& context) {
+  const toml::table* sockets = board_reader.table("sockets");
+  if (sockets == nullptr) return;
+  if (board.module == Module::kBasic) {
+    context.reporter.error(line_of(*sockets), "a basic module has no driver sockets");
+    return;
+  }
+  for (const auto& [key, value] : *sockets) {
+    const std::string_view name = key.str();
+    if (name.size() != 1 || name[0] < 'A' || name[0] > 'D') {
+      context.reporter.error(static_cast<int>(key.source().begin.line),
+                             "unknown socket '" + std::string(name) + "' (sockets are A, B, C and D)");
+      continue;
+    }
+    if (const auto socket = read_socket(name[0], value, context.reporter)) board.sockets.push_back(*socket);
+  }
+}
+
+void read_board(const toml::table& table, ParseContext& context, std::map<std::string, int>& first_lines) {
+  TableReader reader(table, "[[board]]", context.reporter);
+  BoardConfig board;
+  board.line = reader.line();
+  const std::optional<std::string> name = reader.string("name", Need::kRequired);
+  bool named = false;
+  if (name) {
+    if (name->empty() || name->find(':') != std::string::npos) {
+      reader.error("name", "board name \"" + *name + "\" must be non-empty and contain no ':'");
+    } else if (const auto first = first_lines.find(*name); first != first_lines.end()) {
+      reader.error("name", "duplicate board name '" + *name + "' (first defined on line " +
+                               std::to_string(first->second) + ")");
+    } else {
+      first_lines[*name] = reader.line_of("name");
+      board.name = *name;
+      named = true;
+    }
+  }
+  if (const auto sketch = reader.string("sketch", Need::kRequired)) {
+    board.sketch = context.resolve(*sketch);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(board.sketch, error)) {
+      reader.error("sketch", "sketch not found: " + board.sketch);
+    }
+  }
+  if (const auto module = reader.string("module")) {
+    if (*module == "driver") {
+      board.module = Module::kDriver;
+    } else if (*module == "basic") {
+      board.module = Module::kBasic;
+    } else {
+      reader.error("module", "'module' must be \"driver\" or \"basic\", got \"" + *module + "\"");
+    }
+  }
+  if (const auto period = reader.integer("loop_period_us")) {
+    if (*period > 0) {
+      board.loop_period_us = *period;
+    } else {
+      reader.error("loop_period_us", "'loop_period_us' must be > 0, got " + std::to_string(*period));
+    }
+  }
+  if (const auto phase = reader.integer("frame_phase_us")) {
+    if (*phase >= 0 && *phase < kFramePeriodUs) {
+      board.frame_phase_us = static_cast<int>(*phase);
+    } else {
+      reader.error("frame_phase_us", "'frame_phase_us' must be in 0..39, got " + std::to_string(*phase));
+    }
+  }
+  read_sockets(reader, board, context);
+  reader.finish();
+  if (named) context.scenario.boards.push_back(std::move(board));
+}
+
+}  // namespace
+
+void read_boards(TableReader& top, ParseContext& context) {
+  std::map<std::string, int> first_lines;
+  for_each_table(top, "board", [&](const toml::table& table) { read_board(table, context, first_lines); });
+}
+
+}  // namespace stepdance::sim::scenario

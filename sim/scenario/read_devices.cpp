@@ -1,0 +1,191 @@
+// [[device]]: encoders, potentiometers, buttons and limit switches on board connectors.
+#include <map>
+#include <utility>
+
+#include "scenario/names.hpp"
+#include "scenario/parse_context.hpp"
+
+namespace stepdance::sim::scenario {
+
+namespace {
+
+/// Keys that belong to one device type each.
+constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
+    {"pulses_per_revolution", DeviceType::kEncoder}, {"start_count", DeviceType::kEncoder},
+    {"position", DeviceType::kPotentiometer},        {"bounce_ms", DeviceType::kButton},
+    {"pressed_level", DeviceType::kButton},          {"axis", DeviceType::kLimitSwitch},
+    {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
+};
+
+std::optional<DeviceType> parse_type(std::string_view name) {
+  for (const DeviceType type :
+       {DeviceType::kEncoder, DeviceType::kPotentiometer, DeviceType::kButton, DeviceType::kLimitSwitch}) {
+    if (device_type_name(type) == name) return type;
+  }
+  return std::nullopt;
+}
+
+/// Whether the scenario's machine has the axis, and its name for messages.
+bool machine_has_axis(const MachineConfig& machine, LimitAxis axis) {
+  if (std::holds_alternative<CartesianConfig>(machine.kind)) return true;
+  if (std::holds_alternative<PolarConfig>(machine.kind)) return axis == LimitAxis::kX;
+  return axis != LimitAxis::kZ;
+}
+
+std::string_view machine_type_name(const MachineConfig& machine) {
+  if (std::holds_alternative<CartesianConfig>(machine.kind)) return "cartesian";
+  if (std::holds_alternative<PolarConfig>(machine.kind)) return "polar";
+  return "corexy_plotter";
+}
+
+void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
+  for (const auto& [key, owner] : kTypeKeys) {
+    if (owner != device.type && reader.has(key)) {
+      reader.accept(key);
+      reader.error(key, "'" + std::string(key) + "' does not apply to " + std::string(device_with_article(device.type)));
+    }
+  }
+  switch (device.type) {
+    case DeviceType::kEncoder:
+      if (const auto pulses = reader.integer("pulses_per_revolution")) {
+        if (*pulses > 0 && *pulses <= 1000000) {
+          device.pulses_per_revolution = static_cast<int32_t>(*pulses);
+        } else {
+          reader.error("pulses_per_revolution",
+                       "'pulses_per_revolution' must be in 1..1000000, got " + std::to_string(*pulses));
+        }
+      }
+      if (const auto start = reader.integer("start_count")) device.start_count = *start;
+      break;
+    case DeviceType::kPotentiometer:
+      if (const auto position = reader.number("position")) {
+        if (*position >= 0 && *position <= 1) {
+          device.position = *position;
+        } else {
+          reader.error("position", "'position' must be in 0..1, got " + format_number(*position));
+        }
+      }
+      break;
+    case DeviceType::kButton:
+      if (const auto bounce = reader.number("bounce_ms")) {
+        if (*bounce >= 0 && *bounce <= 1000) {
+          device.bounce_ms = *bounce;
+        } else {
+          reader.error("bounce_ms", "'bounce_ms' must be in 0..1000, got " + format_number(*bounce));
+        }
+      }
+      if (const auto level = reader.string("pressed_level")) {
+        if (*level == "high" || *level == "low") {
+          device.pressed_level_high = *level == "high";
+        } else {
+          reader.error("pressed_level", "'pressed_level' must be \"high\" or \"low\", got \"" + *level + "\"");
+        }
+      }
+      break;
+    case DeviceType::kLimitSwitch: {
+      const auto axis = reader.string("axis", Need::kRequired);
+      if (axis) {
+        if (*axis == "x" || *axis == "y" || *axis == "z") {
+          device.axis = *axis == "x" ? LimitAxis::kX : (*axis == "y" ? LimitAxis::kY : LimitAxis::kZ);
+        } else {
+          reader.error("axis", "'axis' must be \"x\", \"y\" or \"z\", got \"" + *axis + "\"");
+        }
+      }
+      if (const auto at = reader.number("at_mm", Need::kRequired)) device.at_mm = *at;
+      if (const auto side = reader.string("side")) {
+        if (*side == "below" || *side == "above") {
+          device.side = *side == "below" ? LimitSide::kBelow : LimitSide::kAbove;
+        } else {
+          reader.error("side", "'side' must be \"below\" or \"above\", got \"" + *side + "\"");
+        }
+      }
+      const std::optional<MachineConfig>& machine = context.scenario.machine;
+      if (!machine) {
+        reader.reporter().error(reader.line(), "a limit_switch needs a [machine] to watch");
+      } else if (axis && !machine_has_axis(*machine, device.axis)) {
+        reader.error("axis", "the " + std::string(machine_type_name(*machine)) + " machine has no '" + *axis + "' axis");
+      }
+      break;
+    }
+  }
+}
+
+struct DeviceNames {
+  std::map<std::string, int> first_lines;
+  /// (board, connector) → device using it.
+  std::map<std::pair<std::string, Connector>, std::string> connectors;
+};
+
+void read_device(const toml::table& table, ParseContext& context, DeviceNames& names) {
+  TableReader reader(table, "[[device]]", context.reporter);
+  DeviceConfig device;
+  device.line = reader.line();
+  bool named = false;
+  if (const auto name = reader.string("name", Need::kRequired)) {
+    if (name->empty()) {
+      reader.error("name", "device name must not be empty");
+    } else if (const auto first = names.first_lines.find(*name); first != names.first_lines.end()) {
+      reader.error("name", "duplicate device name '" + *name + "' (first defined on line " +
+                               std::to_string(first->second) + ")");
+    } else {
+      names.first_lines[*name] = reader.line_of("name");
+      context.declared_devices.insert(*name);
+      device.name = *name;
+      named = true;
+    }
+  }
+  const std::optional<std::string> type_text = reader.string("type", Need::kRequired);
+  std::optional<DeviceType> type;
+  if (type_text) {
+    type = parse_type(*type_text);
+    if (!type) {
+      reader.error("type", "'type' must be \"encoder\", \"potentiometer\", \"button\" or \"limit_switch\", got \"" +
+                               *type_text + "\"");
+    }
+  }
+  const BoardConfig* board = nullptr;
+  if (const auto board_name = reader.string("board", Need::kRequired)) {
+    board = context.scenario.board(*board_name);
+    if (board == nullptr) {
+      reader.error("board", "unknown board '" + *board_name + "'");
+    } else {
+      device.board = *board_name;
+    }
+  }
+  if (const auto connector_text = reader.string("connector", Need::kRequired)) {
+    const std::optional<Connector> connector = parse_connector(*connector_text);
+    if (!connector) {
+      reader.error("connector", "unknown connector '" + *connector_text +
+                                    "' (connectors are ENC1, ENC2, A1..A4, D1, D2 and LIMIT_A..LIMIT_D)");
+    } else if (type && !device_fits_connector(*type, *connector)) {
+      reader.error("connector", std::string(device_with_article(*type)) + " cannot use connector " + *connector_text +
+                                    " (use " + std::string(connectors_for(*type)) + ")");
+    } else if (board != nullptr && !module_has_connector(board->module, *connector)) {
+      reader.error("connector", "board '" + board->name + "' (" + std::string(module_name(board->module)) +
+                                    " module) has no connector " + *connector_text);
+    } else if (board != nullptr) {
+      const auto key = std::make_pair(board->name, *connector);
+      if (const auto user = names.connectors.find(key); user != names.connectors.end()) {
+        reader.error("connector", "connector " + *connector_text + " of board '" + board->name +
+                                      "' is already used by device '" + user->second + "'");
+      } else {
+        names.connectors.emplace(key, device.name);
+      }
+      device.connector = *connector;
+    }
+  }
+  if (!type) return;  // the type-specific keys cannot be judged
+  device.type = *type;
+  read_type_keys(reader, device, context);
+  reader.finish();
+  if (named) context.scenario.devices.push_back(std::move(device));
+}
+
+}  // namespace
+
+void read_devices(TableReader& top, ParseContext& context) {
+  DeviceNames names;
+  for_each_table(top, "device", [&](const toml::table& table) { read_device(table, context, names); });
+}
+
+}  // namespace stepdance::sim::scenario

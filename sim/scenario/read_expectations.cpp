@@ -1,0 +1,216 @@
+// [[expect]]: end-of-run checks (motor steps, pen position, strokes, port pulses, cables, rejections).
+#include <utility>
+
+#include "scenario/names.hpp"
+#include "scenario/parse_context.hpp"
+
+namespace stepdance::sim::scenario {
+
+namespace {
+
+/// The key that decides each kind of check, in the order they are looked for.
+constexpr std::pair<const char*, ExpectationType> kChecks[] = {
+    {"motor", ExpectationType::kMotorSteps},
+    {"pen_mm", ExpectationType::kPenPosition},
+    {"strokes", ExpectationType::kStrokes},
+    {"cable_counts_match", ExpectationType::kCableCountsMatch},
+    {"rejected", ExpectationType::kRejected},
+    {"port", ExpectationType::kPortPulses},
+};
+
+/// Keys that only go with one check (port also goes with rejected, handled apart).
+constexpr std::pair<const char*, const char*> kDetails[] = {
+    {"steps", "motor"}, {"tolerance_mm", "pen_mm"}, {"axis", "port"}, {"forward", "port"}, {"reverse", "port"},
+};
+
+constexpr const char* kSignalLetters = "XYRTZE";
+
+std::optional<std::pair<const char*, ExpectationType>> choose_check(TableReader& reader) {
+  std::optional<std::pair<const char*, ExpectationType>> chosen;
+  for (const auto& [key, type] : kChecks) {
+    if (!reader.has(key)) continue;
+    // 'port' is the subject of a 'rejected' check, not a check of its own there.
+    if (type == ExpectationType::kPortPulses && chosen && chosen->second == ExpectationType::kRejected) continue;
+    if (chosen) {
+      reader.accept(key);
+      reader.error(key, std::string("an [[expect]] checks one thing, but has both '") + chosen->first + "' and '" +
+                            key + "'");
+      return std::nullopt;
+    }
+    chosen = std::make_pair(key, type);
+  }
+  if (!chosen) {
+    reader.reporter().error(reader.line(),
+                            "an [[expect]] needs one check: motor, pen_mm, strokes, port, cable_counts_match or rejected");
+  }
+  return chosen;
+}
+
+bool read_motor(TableReader& reader, Expectation& check, const ParseContext& context) {
+  bool ok = true;
+  const auto text = reader.string("motor");
+  if (const auto steps = reader.integer("steps", Need::kRequired)) {
+    check.steps = *steps;
+  } else {
+    ok = false;
+  }
+  if (!text) return false;
+  const std::optional<SplitRef> split = split_ref(*text);
+  if (!split || split->rest.size() != 1 || split->rest[0] < 'A' || split->rest[0] > 'D') {
+    reader.error("motor", "'motor' must look like \"board:A\" (a socket), got \"" + *text + "\"");
+    return false;
+  }
+  const BoardConfig* board = context.scenario.board(split->board);
+  if (board == nullptr) {
+    reader.error("motor", "unknown board '" + split->board + "'");
+    return false;
+  }
+  const SocketConfig* socket = board->socket(split->rest[0]);
+  if (socket == nullptr || socket->device != SocketDevice::kStepper) {
+    reader.error("motor", "socket " + split->rest + " of board '" + board->name + "' holds no stepper");
+    return false;
+  }
+  check.motor = PortRef{board->name, split->rest[0]};
+  return ok;
+}
+
+bool read_pen(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const toml::array* pair = reader.array("pen_mm");
+  bool ok = pair != nullptr && pair->size() == 2;
+  double values[2] = {0, 0};
+  for (size_t i = 0; ok && i < 2; ++i) {
+    const toml::node& item = *pair->get(i);
+    if (const auto* whole = item.as_integer()) {
+      values[i] = static_cast<double>(whole->get());
+    } else if (const auto* real = item.as_floating_point()) {
+      values[i] = real->get();
+    } else {
+      ok = false;
+    }
+  }
+  if (pair != nullptr && !ok) reader.error("pen_mm", "'pen_mm' must be two numbers [x, y]");
+  check.pen_x_mm = values[0];
+  check.pen_y_mm = values[1];
+  if (const auto tolerance = reader.number("tolerance_mm")) {
+    if (*tolerance >= 0) {
+      check.tolerance_mm = *tolerance;
+    } else {
+      reader.error("tolerance_mm", "'tolerance_mm' must be >= 0, got " + format_number(*tolerance));
+      ok = false;
+    }
+  }
+  if (!context.scenario.machine) {
+    reader.error("pen_mm", "'pen_mm' needs a [machine]");
+    ok = false;
+  }
+  return ok;
+}
+
+bool read_port_check(TableReader& reader, Expectation& check, ParseContext& context, bool rejected) {
+  bool ok = true;
+  if (const auto text = reader.string("port", Need::kRequired)) {
+    if (const auto port = parse_port_line(*text, "port", reader.line_of("port"), context)) {
+      check.port = *port;
+      if (rejected && port->output) {
+        reader.error("port", "'rejected' counts pulses an input port refused: 'port' must be \"board:IN_" +
+                                 std::string(1, port->port) + "\"");
+        ok = false;
+      }
+    } else {
+      ok = false;
+    }
+  } else {
+    ok = false;
+  }
+  if (rejected) {
+    if (const auto count = reader.integer("rejected")) {
+      check.rejected = *count;
+    } else {
+      ok = false;
+    }
+    return ok;
+  }
+  if (const auto axis = reader.string("axis", Need::kRequired)) {
+    const std::string_view letters(kSignalLetters);
+    const size_t index = axis->size() == 1 ? letters.find((*axis)[0]) : std::string_view::npos;
+    if (index == std::string_view::npos) {
+      reader.error("axis", "'axis' must be one of \"X\", \"Y\", \"R\", \"T\", \"Z\", \"E\", got \"" + *axis + "\"");
+      ok = false;
+    } else {
+      check.signal = static_cast<int>(index);
+    }
+  } else {
+    ok = false;
+  }
+  check.forward = reader.integer("forward");
+  check.reverse = reader.integer("reverse");
+  if (!reader.has("forward") && !reader.has("reverse")) {
+    reader.reporter().error(reader.line(), "a 'port' check needs 'forward', 'reverse' or both");
+    ok = false;
+  }
+  return ok;
+}
+
+void read_expectation(const toml::table& table, ParseContext& context) {
+  TableReader reader(table, "[[expect]]", context.reporter);
+  Expectation check;
+  check.line = reader.line();
+  const auto chosen = choose_check(reader);
+  if (!chosen) return;
+  check.type = chosen->second;
+  bool ok = true;
+  for (const auto& [key, owner] : kDetails) {
+    const bool belongs = std::string_view(owner) == chosen->first;
+    if (!belongs && reader.has(key)) {
+      reader.accept(key);
+      reader.error(key, "'" + std::string(key) + "' only goes with '" + owner + "'");
+      ok = false;
+    }
+  }
+  switch (check.type) {
+    case ExpectationType::kMotorSteps:
+      ok = read_motor(reader, check, context) && ok;
+      break;
+    case ExpectationType::kPenPosition:
+      ok = read_pen(reader, check, context) && ok;
+      break;
+    case ExpectationType::kStrokes:
+      if (const auto strokes = reader.integer("strokes")) {
+        check.strokes = *strokes;
+        if (!context.scenario.machine) {
+          reader.error("strokes", "'strokes' needs a [machine]");
+          ok = false;
+        }
+      } else {
+        ok = false;
+      }
+      break;
+    case ExpectationType::kCableCountsMatch:
+      if (const auto match = reader.boolean("cable_counts_match")) {
+        if (!*match) {
+          reader.error("cable_counts_match", "'cable_counts_match' can only be true");
+          ok = false;
+        } else if (context.scenario.cables.empty()) {
+          reader.error("cable_counts_match", "'cable_counts_match' needs at least one [[cable]]");
+          ok = false;
+        }
+      } else {
+        ok = false;
+      }
+      break;
+    case ExpectationType::kPortPulses:
+    case ExpectationType::kRejected:
+      ok = read_port_check(reader, check, context, check.type == ExpectationType::kRejected) && ok;
+      break;
+  }
+  reader.finish();
+  if (ok) context.scenario.expectations.push_back(std::move(check));
+}
+
+}  // namespace
+
+void read_expectations(TableReader& top, ParseContext& context) {
+  for_each_table(top, "expect", [&](const toml::table& table) { read_expectation(table, context); });
+}
+
+}  // namespace stepdance::sim::scenario

@@ -1,0 +1,80 @@
+// [output]: where the run's files go and which of them to write.
+#include <filesystem>
+
+#include "scenario/parse_context.hpp"
+
+namespace stepdance::sim::scenario {
+
+namespace {
+
+/// A file name inside the output directory ("" = do not write; absolute names stay).
+std::string output_file(const std::string& directory, const std::string& name) {
+  if (name.empty()) return {};
+  const std::filesystem::path given(name);
+  return (given.is_absolute() ? given : std::filesystem::path(directory) / given).lexically_normal().string();
+}
+
+}  // namespace
+
+void read_output(TableReader& top, ParseContext& context) {
+  OutputConfig& output = context.scenario.output;
+  std::string directory = "sim-out";
+  std::string svg = "drawing.svg";
+  std::string png = "drawing.png";
+  std::string vcd;
+  std::string csv;
+  std::string summary = "summary.json";
+  if (const toml::table* table = top.table("output")) {
+    TableReader reader(*table, "[output]", context.reporter);
+    if (const auto value = reader.string("directory")) {
+      if (value->empty()) {
+        reader.error("directory", "'directory' must not be empty (use \".\" for the scenario's folder)");
+      } else {
+        directory = *value;
+      }
+    }
+    for (const auto& [key, target] : {std::pair<const char*, std::string*>{"svg", &svg},
+                                {"png", &png},
+                                {"vcd", &vcd},
+                                {"csv", &csv},
+                                {"summary", &summary}}) {
+      if (const auto value = reader.string(key)) *target = *value;
+    }
+    if (const auto px = reader.number("png_px_per_mm")) {
+      if (*px > 0 && *px <= 100) {
+        output.png_px_per_mm = *px;
+      } else {
+        reader.error("png_px_per_mm", "'png_px_per_mm' must be in (0, 100], got " + format_number(*px));
+      }
+    }
+    if (const auto travel = reader.boolean("pen_up_travel")) output.pen_up_travel = *travel;
+    if (const auto interval = reader.number("csv_interval_ms")) {
+      if (*interval > 0) {
+        output.csv_interval_ms = *interval;
+      } else {
+        reader.error("csv_interval_ms", "'csv_interval_ms' must be > 0, got " + format_number(*interval));
+      }
+    }
+    if (const toml::array* ports = reader.array("vcd_ports")) {
+      for (const toml::node& item : *ports) {
+        if (const auto* text = item.as_string()) {
+          if (const auto line_ref = parse_port_line(text->get(), "vcd_ports", line_of(item), context)) {
+            output.vcd_ports.push_back(*line_ref);
+          }
+        } else {
+          context.reporter.error(line_of(item), "'vcd_ports' must hold strings like \"board:OUT_A\", not " +
+                                                    std::string(type_phrase(item)));
+        }
+      }
+    }
+    reader.finish();
+  }
+  output.directory = context.resolve(directory);
+  output.svg = output_file(output.directory, svg);
+  output.png = output_file(output.directory, png);
+  output.vcd = output_file(output.directory, vcd);
+  output.csv = output_file(output.directory, csv);
+  output.summary = output_file(output.directory, summary);
+}
+
+}  // namespace stepdance::sim::scenario

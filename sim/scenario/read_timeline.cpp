@@ -1,0 +1,209 @@
+// [[at]]: the timeline of user actions (turn, press, release, click, set, serial).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include "scenario/names.hpp"
+#include "scenario/parse_context.hpp"
+
+namespace stepdance::sim::scenario {
+
+namespace {
+
+constexpr std::pair<const char*, ActionType> kActions[] = {
+    {"turn", ActionType::kTurn},   {"press", ActionType::kPress}, {"release", ActionType::kRelease},
+    {"click", ActionType::kClick}, {"set", ActionType::kSet},     {"serial", ActionType::kSerial},
+};
+
+/// Keys that go with one action each.
+constexpr std::pair<const char*, ActionType> kActionKeys[] = {
+    {"counts", ActionType::kTurn}, {"over_s", ActionType::kTurn}, {"hold_ms", ActionType::kClick},
+    {"position", ActionType::kSet}, {"text", ActionType::kSerial}, {"file", ActionType::kSerial},
+};
+
+const char* action_name(ActionType type) {
+  for (const auto& [name, value] : kActions) {
+    if (value == type) return name;
+  }
+  return "?";
+}
+
+/// The device type an action works on (serial works on a board instead).
+DeviceType device_for(ActionType type) {
+  switch (type) {
+    case ActionType::kTurn:
+      return DeviceType::kEncoder;
+    case ActionType::kSet:
+      return DeviceType::kPotentiometer;
+    default:
+      return DeviceType::kButton;
+  }
+}
+
+/// Whether `end` lies within the run; reports at `key` otherwise.
+void check_end(TableReader& reader, const ParseContext& context, std::string_view key, SimTime end,
+               const std::string& what) {
+  if (!context.duration_valid || end <= context.scenario.duration) return;
+  reader.error(key, what + " at " + format_number(to_seconds(end)) + " s, after the end of the run (duration_s = " +
+                        format_number(to_seconds(context.scenario.duration)) + ")");
+}
+
+bool read_target(TableReader& reader, Action& action, const ParseContext& context) {
+  const char* key = action_name(action.type);
+  const std::optional<std::string> target = reader.string(key);
+  if (!target) return false;
+  action.target = *target;
+  if (action.type == ActionType::kSerial) {
+    if (context.scenario.board(*target) != nullptr) return true;
+    reader.error(key, "unknown board '" + *target + "'");
+    return false;
+  }
+  const DeviceConfig* device = context.scenario.device(*target);
+  if (device == nullptr) {
+    if (context.declared_devices.count(*target) == 0) reader.error(key, "unknown device '" + *target + "'");
+    return false;
+  }
+  const DeviceType wanted = device_for(action.type);
+  if (device->type != wanted) {
+    reader.error(key, "'" + std::string(key) + "' needs " + std::string(device_with_article(wanted)) + ", but '" +
+                          *target + "' is " + std::string(device_with_article(device->type)));
+    return false;
+  }
+  return true;
+}
+
+bool read_details(TableReader& reader, Action& action, ParseContext& context) {
+  bool ok = true;
+  for (const auto& [key, owner] : kActionKeys) {
+    if (owner != action.type && reader.has(key)) {
+      reader.accept(key);
+      reader.error(key, "'" + std::string(key) + "' does not go with '" + action_name(action.type) + "'");
+      ok = false;
+    }
+  }
+  switch (action.type) {
+    case ActionType::kTurn: {
+      const auto counts = reader.integer("counts", Need::kRequired);
+      ok = ok && counts.has_value();
+      if (counts) action.counts = *counts;
+      if (const auto over = reader.number("over_s")) {
+        if (*over >= 0) {
+          action.over = from_seconds(*over);
+        } else {
+          reader.error("over_s", "'over_s' must be >= 0, got " + format_number(*over));
+          ok = false;
+        }
+      }
+      check_end(reader, context, reader.has("over_s") ? "over_s" : "time_s", action.time + action.over, "the turn ends");
+      break;
+    }
+    case ActionType::kClick:
+      if (const auto hold = reader.number("hold_ms")) {
+        if (*hold >= 0) {
+          action.hold = static_cast<SimTime>(std::llround(*hold * 1e6));
+        } else {
+          reader.error("hold_ms", "'hold_ms' must be >= 0, got " + format_number(*hold));
+          ok = false;
+        }
+      }
+      check_end(reader, context, reader.has("hold_ms") ? "hold_ms" : "time_s", action.time + action.hold,
+                "the click releases");
+      break;
+    case ActionType::kSet: {
+      const auto position = reader.number("position", Need::kRequired);
+      if (position && (*position < 0 || *position > 1)) {
+        reader.error("position", "'position' must be in 0..1, got " + format_number(*position));
+        ok = false;
+      } else if (position) {
+        action.position = *position;
+      } else {
+        ok = false;
+      }
+      break;
+    }
+    case ActionType::kSerial: {
+      const auto text = reader.string("text");
+      const auto file = reader.string("file");
+      if (text && file) {
+        reader.error("file", "'serial' takes 'text' or 'file', not both");
+        ok = false;
+      } else if (text) {
+        action.serial_bytes = *text;
+      } else if (file) {
+        action.serial_file = context.resolve(*file);
+        std::error_code error;
+        std::ifstream in;
+        if (std::filesystem::is_regular_file(action.serial_file, error)) in.open(action.serial_file, std::ios::binary);
+        if (!in.is_open()) {
+          reader.error("file", "serial file not found: " + action.serial_file);
+          ok = false;
+        } else {
+          std::ostringstream bytes;
+          bytes << in.rdbuf();
+          action.serial_bytes = bytes.str();
+        }
+      } else if (!reader.has("text") && !reader.has("file")) {
+        reader.reporter().error(reader.line(), "'serial' needs 'text' or 'file'");
+        ok = false;
+      } else {
+        ok = false;
+      }
+      break;
+    }
+    case ActionType::kPress:
+    case ActionType::kRelease:
+      break;
+  }
+  return ok;
+}
+
+void read_action(const toml::table& table, ParseContext& context) {
+  TableReader reader(table, "[[at]]", context.reporter);
+  Action action;
+  action.line = reader.line();
+  bool ok = true;
+  if (const auto time = reader.number("time_s", Need::kRequired)) {
+    if (*time < 0) {
+      reader.error("time_s", "'time_s' must be >= 0, got " + format_number(*time));
+      ok = false;
+    } else if (context.duration_valid && from_seconds(*time) > context.scenario.duration) {
+      reader.error("time_s", "'time_s' = " + format_number(*time) + " is after the end of the run (duration_s = " +
+                                 format_number(to_seconds(context.scenario.duration)) + ")");
+      ok = false;
+    } else {
+      action.time = from_seconds(*time);
+    }
+  } else {
+    ok = false;
+  }
+
+  const char* chosen = nullptr;
+  for (const auto& [name, type] : kActions) {
+    if (!reader.has(name)) continue;
+    if (chosen != nullptr) {
+      reader.accept(name);
+      reader.error(name, std::string("an [[at]] entry takes one action, but has both '") + chosen + "' and '" + name + "'");
+      return;
+    }
+    chosen = name;
+    action.type = type;
+  }
+  if (chosen == nullptr) {
+    context.reporter.error(reader.line(), "an [[at]] entry needs one action: turn, press, release, click, set or serial");
+    return;
+  }
+  ok = read_target(reader, action, context) && ok;
+  ok = read_details(reader, action, context) && ok;
+  reader.finish();
+  if (ok) context.scenario.timeline.push_back(std::move(action));
+}
+
+}  // namespace
+
+void read_timeline(TableReader& top, ParseContext& context) {
+  for_each_table(top, "at", [&](const toml::table& table) { read_action(table, context); });
+}
+
+}  // namespace stepdance::sim::scenario

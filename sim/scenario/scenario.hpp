@@ -1,0 +1,253 @@
+// The scenario as plain, validated data: boards, machine, devices, cables, timeline, outputs, checks.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "common/sim_time.hpp"
+
+namespace stepdance::sim::scenario {
+
+/// Which module a sketch runs on.
+enum class Module { kDriver, kBasic };
+
+/// What sits in a driver socket.
+enum class SocketDevice { kStepper, kServo };
+
+/// Hobby-servo firmware build: ±500 steps or ±750 steps.
+enum class ServoBuild { k90deg, k180deg };
+
+/// One populated driver socket of a Driver Module.
+struct SocketConfig {
+  /// 'A'..'D'.
+  char port = 'A';
+  SocketDevice device = SocketDevice::kStepper;
+  /// Stepper only: microsteps per full step (1..64, powers of two) and full steps per revolution.
+  int microsteps = 16;
+  int full_steps_per_rev = 200;
+  /// Servo only.
+  ServoBuild build = ServoBuild::k90deg;
+  int line = 0;
+};
+
+/// One simulated module and its sketch.
+struct BoardConfig {
+  std::string name;
+  /// Absolute path of the `.ino` (checked to exist).
+  std::string sketch;
+  Module module = Module::kDriver;
+  /// How often loop() runs, in µs of virtual time (> 0).
+  int64_t loop_period_us = 200;
+  /// Offset of this board's 40 µs frame clock, µs (0..39).
+  int frame_phase_us = 0;
+  /// Populated sockets, sorted by port (Driver Module only).
+  std::vector<SocketConfig> sockets;
+  int line = 0;
+
+  /// The socket at `port`, or null if it is empty.
+  const SocketConfig* socket(char port) const;
+};
+
+/// AxiDraw-class CoreXY plotter.
+struct CorexyConfig {
+  /// Sockets of the two belt motors (steppers) and of the pen-lift servo board.
+  char motor_a = 'A';
+  char motor_b = 'B';
+  char pen_servo = 'C';
+  /// Motor microsteps per mm of belt.
+  double steps_per_mm = 80;
+  /// The pen touches the paper while the servo pulse is narrower than this (µs).
+  double pen_down_below_us = 1500;
+  /// Usable area from the origin (mm).
+  double travel_x_mm = 300;
+  double travel_y_mm = 218;
+};
+
+/// Cartesian XYZE machine. An axis without a socket stays at 0.
+struct CartesianConfig {
+  std::optional<char> x;
+  std::optional<char> y;
+  std::optional<char> z;
+  std::optional<char> e;
+  /// Microsteps per mm on each axis.
+  double x_steps_per_mm = 80;
+  double y_steps_per_mm = 80;
+  double z_steps_per_mm = 400;
+  double e_steps_per_mm = 93;
+  /// The pen is down while z ≤ this (mm).
+  double pen_down_at_or_below_mm = 0;
+};
+
+/// Polar turntable: the table turns the paper under a pen on a radial arm.
+struct PolarConfig {
+  /// Sockets of the table motor and the arm motor (steppers).
+  char angle = 'A';
+  char radius = 'B';
+  /// Optional pen-lift servo socket; without one the pen is always down.
+  std::optional<char> pen_servo;
+  /// Table motor microsteps per table revolution; arm motor microsteps per mm.
+  double steps_per_rev = 3200;
+  double steps_per_mm = 80;
+  double pen_down_below_us = 1500;
+};
+
+/// The machine and the board whose sockets drive it.
+struct MachineConfig {
+  std::string board;
+  std::variant<CorexyConfig, CartesianConfig, PolarConfig> kind;
+  int line = 0;
+};
+
+/// Input device models.
+enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch };
+
+/// Connectors on a module's edge.
+enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD };
+
+/// The connector's silkscreen name, e.g. "ENC1", "LIMIT_A".
+std::string_view connector_name(Connector connector);
+
+/// Machine axis watched by a limit switch.
+enum class LimitAxis { kX, kY, kZ };
+
+/// Which side of the trip point makes a limit switch active.
+enum class LimitSide { kBelow, kAbove };
+
+/// One input device on a board connector. Only the fields of its type are meaningful.
+struct DeviceConfig {
+  std::string name;
+  DeviceType type = DeviceType::kEncoder;
+  std::string board;
+  Connector connector = Connector::kEnc1;
+  /// Encoder: pulses per revolution per channel (counted ×4) and the count at time 0.
+  int32_t pulses_per_revolution = 600;
+  int64_t start_count = 0;
+  /// Potentiometer: initial wiper position, 0..1.
+  double position = 0.5;
+  /// Button: bounce time after each transition (ms) and the level while pressed.
+  double bounce_ms = 2;
+  bool pressed_level_high = true;
+  /// Limit switch: active while `axis` is at or beyond `at_mm` on `side`.
+  LimitAxis axis = LimitAxis::kX;
+  double at_mm = 0;
+  LimitSide side = LimitSide::kBelow;
+  int line = 0;
+};
+
+/// A board's port: "board:A".
+struct PortRef {
+  std::string board;
+  char port = 'A';
+};
+
+/// A TRRS cable from an output port to an input port.
+struct CableConfig {
+  PortRef from;
+  PortRef to;
+  int64_t delay_ns = 0;
+  int64_t stretch_ns = 0;
+  /// 0 = no glitches.
+  int64_t glitch_every_us = 0;
+  int64_t glitch_width_ns = 500;
+  int line = 0;
+};
+
+/// User actions on the timeline.
+enum class ActionType { kTurn, kPress, kRelease, kClick, kSet, kSerial };
+
+/// One timeline entry. Only the fields of its type are meaningful.
+struct Action {
+  /// When the action starts (ns, 0..duration).
+  SimTime time = 0;
+  ActionType type = ActionType::kPress;
+  /// Device name (turn, press, release, click, set) or board name (serial).
+  std::string target;
+  /// Turn: signed counts, spread evenly over `over` ns.
+  int64_t counts = 0;
+  SimTime over = 0;
+  /// Click: time between press and release (ns).
+  SimTime hold = 100 * kMillisecond;
+  /// Set: new wiper position, 0..1.
+  double position = 0;
+  /// Serial: the bytes to send (the text, or the file's contents) and the file's absolute path
+  /// (empty for text).
+  std::string serial_bytes;
+  std::string serial_file;
+  int line = 0;
+};
+
+/// One line of a port: "board:OUT_A" or "board:IN_A".
+struct PortLineRef {
+  std::string board;
+  bool output = true;
+  char port = 'A';
+};
+
+/// Which files to write. Paths are absolute; an empty path means "do not write it".
+struct OutputConfig {
+  std::string directory;
+  std::string svg;
+  std::string png;
+  double png_px_per_mm = 4;
+  bool pen_up_travel = false;
+  std::string vcd;
+  std::vector<PortLineRef> vcd_ports;
+  std::string csv;
+  double csv_interval_ms = 10;
+  std::string summary;
+};
+
+/// Kinds of end-of-run checks.
+enum class ExpectationType { kMotorSteps, kPenPosition, kStrokes, kPortPulses, kCableCountsMatch, kRejected };
+
+/// One end-of-run check. Only the fields of its type are meaningful.
+struct Expectation {
+  ExpectationType type = ExpectationType::kStrokes;
+  /// Motor steps: the stepper socket and its final position in microsteps.
+  PortRef motor;
+  int64_t steps = 0;
+  /// Pen position (mm) and tolerance.
+  double pen_x_mm = 0;
+  double pen_y_mm = 0;
+  double tolerance_mm = 0.01;
+  /// Pen-down strokes.
+  int64_t strokes = 0;
+  /// Port pulses / rejections: the port; for pulses also the signal (0..5 = X, Y, R, T, Z, E)
+  /// and the expected forward and/or reverse counts.
+  PortLineRef port;
+  int signal = 0;
+  std::optional<int64_t> forward;
+  std::optional<int64_t> reverse;
+  /// Rejected pulses on an input port.
+  int64_t rejected = 0;
+  int line = 0;
+};
+
+/// A whole scenario.
+struct Scenario {
+  /// Absolute path of the scenario file and of its folder (the base of relative paths).
+  std::string file;
+  std::string directory;
+  /// Simulated time to run (ns, > 0).
+  SimTime duration = 0;
+  /// Seed for everything random.
+  uint64_t seed = 1;
+  std::vector<BoardConfig> boards;
+  std::optional<MachineConfig> machine;
+  std::vector<DeviceConfig> devices;
+  std::vector<CableConfig> cables;
+  /// Sorted by time; entries with equal times keep their order in the file.
+  std::vector<Action> timeline;
+  OutputConfig output;
+  std::vector<Expectation> expectations;
+
+  /// The board / device with this name, or null.
+  const BoardConfig* board(std::string_view name) const;
+  const DeviceConfig* device(std::string_view name) const;
+};
+
+}  // namespace stepdance::sim::scenario

@@ -1,0 +1,107 @@
+// Bad scenario fixtures: each must fail with exactly the listed `file:line: message` errors.
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scenario/load_scenario.hpp"
+
+namespace stepdance::sim::scenario {
+namespace {
+
+const std::string kFixtures = std::string(STEPDANCE_SOURCE_DIR) + "/tests/sim/scenario/fixtures";
+const std::string kBad = kFixtures + "/bad";
+
+struct BadCase {
+  /// Fixture name under fixtures/bad/ without ".toml".
+  std::string name;
+  /// Expected errors: (line, message), in line order.
+  std::vector<std::pair<int, std::string>> errors;
+};
+
+/// Names the case in test listings instead of dumping its bytes.
+void PrintTo(const BadCase& bad, std::ostream* out) { *out << bad.name; }
+
+std::vector<BadCase> cases() {
+  return {
+      {"syntax_error", {{3, "Error while parsing key-value pair: cannot redefine existing integer 'duration_s'"}}},
+      {"unknown_key",
+       {{1, "the scenario is missing required key 'duration_s'"},
+        {2, "unknown key 'durations_s' in the scenario"},
+        {7, "unknown key 'loop_period' in [[board]]"}}},
+      {"wrong_type", {{7, "'loop_period_us' must be an integer, not a string"}}},
+      {"missing_key", {{4, "[[board]] is missing required key 'sketch'"}}},
+      {"missing_sketch", {{6, "sketch not found: " + kFixtures + "/sketches/nowhere.ino"}}},
+      {"duplicate_board", {{9, "duplicate board name 'driver' (first defined on line 5)"}}},
+      {"unknown_board", {{9, "unknown board 'drvier'"}}},
+      {"missing_port", {{14, "board 'basic' (basic module) has no output port B"}}},
+      {"basic_sockets", {{9, "a basic module has no driver sockets"}}},
+      {"negative_time", {{15, "'time_s' must be >= 0, got -1"}}},
+      {"time_after_end",
+       {{15, "'time_s' = 12 is after the end of the run (duration_s = 10)"},
+        {23, "the turn ends at 10.5 s, after the end of the run (duration_s = 10)"}}},
+      {"bad_connector",
+       {{12, "unknown connector 'ENC3' (connectors are ENC1, ENC2, A1..A4, D1, D2 and LIMIT_A..LIMIT_D)"}}},
+      {"connector_for_type",
+       {{13, "a button cannot use connector ENC1 (use D1, D2 or A1..A4)"},
+        {15, "a limit_switch needs a [machine] to watch"},
+        {19, "board 'basic' (basic module) has no connector LIMIT_A"}}},
+      {"missing_serial_file", {{11, "serial file not found: " + kBad + "/missing.gcode"}}},
+      {"wrong_device", {{16, "'turn' needs an encoder, but 'pen' is a button"}, {21, "unknown device 'buton'"}}},
+      {"machine_socket",
+       {{12, "'pen_servo' needs a servo in socket C of board 'driver', but it is empty"},
+        {15, "'motor_b' must be a socket letter A..D, got \"E\""}}},
+      {"socket_values",
+       {{7, "'frame_phase_us' must be in 0..39, got 40"},
+        {10, "'microsteps' must be 1, 2, 4, 8, 16, 32 or 64, got 3"},
+        {11, "'build' must be \"90deg\" or \"180deg\", got \"270deg\""},
+        {12, "unknown socket 'E' (sockets are A, B, C and D)"}}},
+      {"action_shape",
+       {{17, "an [[at]] entry takes one action, but has both 'turn' and 'press'"},
+        {22, "'hold_ms' does not go with 'press'"},
+        {24, "an [[at]] entry needs one action: turn, press, release, click, set or serial"}}},
+      {"cables_and_vcd",
+       {{14, "input port driver:A already has a cable (line 8)"},
+        {18, "'vcd_ports' must look like \"board:OUT_A\" or \"board:IN_A\", got \"driver:A\""}}},
+      {"board_as_table", {{4, "'board' must be written as [[board]] tables"}}},
+      {"expectations",
+       {{12, "an [[expect]] checks one thing, but has both 'motor' and 'strokes'"},
+        {15, "'pen_mm' needs a [machine]"},
+        {18, "socket B of board 'driver' holds no stepper"}}},
+  };
+}
+
+class BadScenario : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadScenario, ReportsExactlyTheseErrors) {
+  const BadCase& bad = GetParam();
+  const std::string file = kBad + "/" + bad.name + ".toml";
+  const LoadResult result = load_scenario(file);
+  ASSERT_FALSE(result.ok());
+  std::vector<std::string> expected;
+  for (const auto& [line, message] : bad.errors) expected.push_back(file + ":" + std::to_string(line) + ": " + message);
+  std::vector<std::string> actual;
+  for (const Diagnostic& error : result.errors) actual.push_back(error.to_string());
+  EXPECT_EQ(actual, expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fixtures, BadScenario, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<BadCase>& param) { return param.param.name; });
+
+TEST(BadScenarioFile, AMissingFileHasNoLine) {
+  const LoadResult result = load_scenario(kBad + "/nothing.toml");
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.errors[0].to_string(),
+            kBad + "/nothing.toml: cannot read the scenario file (missing or not a file)");
+}
+
+TEST(BadScenarioFile, AFolderWithoutScenarioToml) {
+  const LoadResult result = load_scenario(kBad);
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.errors[0].to_string(),
+            kBad + "/scenario.toml: cannot read the scenario file (missing or not a file)");
+}
+
+}  // namespace
+}  // namespace stepdance::sim::scenario
