@@ -70,10 +70,13 @@ bool Stream::parse_integer_part(bool allow_point, bool& negative, long& value) {
     negative = true;
     read();
   }
+  // Unsigned arithmetic: an absurdly long number wraps instead of overflowing.
+  unsigned long magnitude = 0;
   for (c = timedPeek(); is_digit(c); c = timedPeek()) {
-    value = value * 10 + (c - '0');
+    magnitude = magnitude * 10u + static_cast<unsigned long>(c - '0');
     read();
   }
+  value = static_cast<long>(magnitude);
   return true;
 }
 
@@ -81,7 +84,7 @@ long Stream::parseInt() {
   bool negative = false;
   long value = 0;
   if (!parse_integer_part(false, negative, value)) return 0;
-  return negative ? -value : value;
+  return negative ? static_cast<long>(0ul - static_cast<unsigned long>(value)) : value;
 }
 
 float Stream::parseFloat() {
