@@ -1,0 +1,127 @@
+// More scenario errors, written inline: each text must fail with exactly the listed errors.
+#include <gtest/gtest.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "scenario/load_scenario.hpp"
+
+namespace stepdance::sim::scenario {
+namespace {
+
+/// Inline texts read as if they sat next to the full fixture, so "../sketches/*.ino" exist.
+const std::string kFile = std::string(STEPDANCE_SOURCE_DIR) + "/tests/sim/scenario/fixtures/full/inline.toml";
+
+/// Lines 1..5 of every case: a run and a Driver Module with steppers in A and B, a servo in C.
+const std::string kDriver =
+    "duration_s = 5\n"
+    "[[board]]\n"
+    "name = \"driver\"\n"
+    "sketch = \"../sketches/driver.ino\"\n"
+    "sockets = { A = { device = \"stepper\" }, B = { device = \"stepper\" }, C = { device = \"servo\" } }\n";
+
+struct InlineCase {
+  std::string name;
+  /// Appended to kDriver, so its first line is line 6.
+  std::string text;
+  std::vector<std::pair<int, std::string>> errors;
+};
+
+void PrintTo(const InlineCase& c, std::ostream* out) { *out << c.name; }
+
+std::vector<InlineCase> cases() {
+  return {
+      {"unknown_machine_type",
+       "[machine]\ntype = \"delta\"\nboard = \"driver\"\narms = 3\n",
+       {{7, "'type' must be \"corexy_plotter\", \"cartesian\" or \"polar\", got \"delta\""}}},
+      {"machine_socket_reused_and_short_travel",
+       "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\nmotor_b = \"A\"\ntravel_mm = [300]\n",
+       {{9, "'motor_b' uses socket A, already used by 'motor_a'"},
+        {10, "'travel_mm' must be two numbers > 0, e.g. [300, 218]"}}},
+      {"machine_two_roles_one_socket",
+       "[machine]\ntype = \"polar\"\nboard = \"driver\"\nangle = \"B\"\nradius = \"B\"\n",
+       {{10, "'radius' uses socket B, already used by 'angle'"}}},
+      {"travel_and_cartesian_axes",
+       "[machine]\ntype = \"cartesian\"\nboard = \"driver\"\nx = \"C\"\nsteps_per_mm = { x = 80, w = 3 }\n",
+       {{9, "'x' needs a stepper in socket C of board 'driver', but it holds a servo"},
+        {10, "unknown key 'w' in steps_per_mm"}}},
+      {"key_of_another_device_type",
+       "[[device]]\nname = \"knob\"\ntype = \"encoder\"\nboard = \"driver\"\nconnector = \"ENC1\"\nbounce_ms = 5\n",
+       {{11, "'bounce_ms' does not apply to an encoder"}}},
+      {"connector_used_twice",
+       "[[device]]\nname = \"a\"\ntype = \"button\"\nboard = \"driver\"\nconnector = \"D1\"\n"
+       "[[device]]\nname = \"b\"\ntype = \"button\"\nboard = \"driver\"\nconnector = \"D1\"\n",
+       {{15, "connector D1 of board 'driver' is already used by device 'a'"}}},
+      {"limit_axis_the_machine_lacks",
+       "[machine]\ntype = \"polar\"\nboard = \"driver\"\n"
+       "[[device]]\nname = \"home\"\ntype = \"limit_switch\"\nboard = \"driver\"\nconnector = \"LIMIT_B\"\n"
+       "axis = \"y\"\nat_mm = 0\n",
+       {{14, "the polar machine has no 'y' axis"}}},
+      {"pot_out_of_range",
+       "[[device]]\nname = \"pot\"\ntype = \"potentiometer\"\nboard = \"driver\"\nconnector = \"A2\"\n"
+       "[[at]]\ntime_s = 1\nset = \"pot\"\nposition = 1.5\n",
+       {{14, "'position' must be in 0..1, got 1.5"}}},
+      {"serial_text_and_file",
+       "[[at]]\ntime_s = 1\nserial = \"driver\"\ntext = \"x\"\nfile = \"commands.txt\"\n",
+       {{10, "'serial' takes 'text' or 'file', not both"}}},
+      {"click_past_the_end",
+       "[[device]]\nname = \"pen\"\ntype = \"button\"\nboard = \"driver\"\nconnector = \"D2\"\n"
+       "[[at]]\ntime_s = 4.95\nclick = \"pen\"\n",
+       {{12, "the click releases at 5.05 s, after the end of the run (duration_s = 5)"}}},
+      {"cable_values",
+       "[[cable]]\nfrom = \"driver:D\"\nto = \"driver:B\"\ndelay_ns = -1\nglitch_width_ns = 0\n",
+       {{9, "'delay_ns' must be >= 0, got -1"}, {10, "'glitch_width_ns' must be > 0, got 0"}}},
+      {"cable_bad_form", "[[cable]]\nfrom = \"driver\"\nto = \"driver:E\"\n",
+       {{7, "'from' must look like \"board:A\", got \"driver\""},
+        {8, "board 'driver' (driver module) has no input port E"}}},
+      {"port_check_shape",
+       "[[expect]]\nport = \"driver:OUT_A\"\naxis = \"Q\"\n"
+       "[[expect]]\nrejected = 2\nport = \"driver:OUT_A\"\n"
+       "[[expect]]\ncable_counts_match = false\n",
+       {{6, "a 'port' check needs 'forward', 'reverse' or both"},
+        {8, "'axis' must be one of \"X\", \"Y\", \"R\", \"T\", \"Z\", \"E\", got \"Q\""},
+        {11, "'rejected' counts pulses an input port refused: 'port' must be \"board:IN_A\""},
+        {13, "'cable_counts_match' can only be true"}}},
+      {"detail_of_another_check",
+       "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n[[expect]]\nstrokes = 2\ntolerance_mm = 0.1\n",
+       {{11, "'tolerance_mm' only goes with 'pen_mm'"}}},
+      {"output_values",
+       "[output]\npng_px_per_mm = 0\ncsv_interval_ms = -5\npen_up_travel = \"yes\"\nvcd_ports = [\"ghost:IN_A\", 3]\n",
+       {{7, "'png_px_per_mm' must be in (0, 100], got 0"},
+        {8, "'csv_interval_ms' must be > 0, got -5"},
+        {9, "'pen_up_travel' must be true or false, not a string"},
+        {10, "unknown board 'ghost'"},
+        {10, "'vcd_ports' must hold strings like \"board:OUT_A\", not an integer"}}},
+  };
+}
+
+class InlineErrors : public ::testing::TestWithParam<InlineCase> {};
+
+TEST_P(InlineErrors, ReportsExactlyTheseErrors) {
+  const InlineCase& bad = GetParam();
+  const LoadResult result = parse_scenario(kDriver + bad.text, kFile);
+  std::vector<std::string> expected;
+  for (const auto& [line, message] : bad.errors) expected.push_back(kFile + ":" + std::to_string(line) + ": " + message);
+  std::vector<std::string> actual;
+  for (const Diagnostic& error : result.errors) actual.push_back(error.to_string());
+  EXPECT_EQ(actual, expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(Texts, InlineErrors, ::testing::ValuesIn(cases()),
+                         [](const ::testing::TestParamInfo<InlineCase>& param) { return param.param.name; });
+
+TEST(InlineErrors, DurationMustBePositive) {
+  const LoadResult result = parse_scenario("seed = -3\nduration_s = 0\n", kFile);
+  ASSERT_EQ(result.errors.size(), 2u);
+  EXPECT_EQ(result.errors[0].to_string(), kFile + ":1: 'seed' must be >= 0, got -3");
+  EXPECT_EQ(result.errors[1].to_string(), kFile + ":2: 'duration_s' must be > 0 and at most 86400, got 0");
+}
+
+TEST(InlineErrors, TheBaseTextIsValid) {
+  const LoadResult result = parse_scenario(kDriver, kFile);
+  EXPECT_TRUE(result.ok()) << result.error_text();
+}
+
+}  // namespace
+}  // namespace stepdance::sim::scenario
