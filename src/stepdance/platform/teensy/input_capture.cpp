@@ -1,0 +1,182 @@
+// Input ports A–D: STEP pulses timed by eFlexPWM input capture (RM chapter 55), DIR read from a
+// fast GPIO at the edge the input mode asks for.
+//
+// Each port owns one PWM submodule whose 16-bit counter runs free at the IPG clock (INIT 0,
+// VAL1 0xFFFF: it wraps every 65536 ticks). Capture circuit 0 latches the counter on the STEP
+// rising edge, circuit 1 on the falling edge; in free-running mode they alternate, so every pulse
+// yields (rise, fall). The width is fall − rise modulo 2^16, computed by the decoder.
+//
+// DIR sampling: the capture ISR runs at the highest priority we use and reads DIR as its first
+// action. Falling-edge mode (STEPDANCE) interrupts on capture 1 only, so DIR is read just after
+// the falling edge (Stepdance senders hold DIR 1 µs past it). Rising-edge mode (STEP_DIR) also
+// interrupts on capture 0 and keeps the DIR level read there for the pulse.
+#if defined(__IMXRT1062__)
+
+#include "stepdance/hal/hal.hpp"
+#include "stepdance/platform/teensy/clocks.hpp"
+#include "stepdance/platform/teensy/irq.hpp"
+#include "stepdance/platform/teensy/pins.hpp"
+#include "stepdance/platform/teensy/regs_ccm.hpp"
+#include "stepdance/platform/teensy/regs_flexpwm.hpp"
+#include "stepdance/platform/teensy/regs_nvic.hpp"
+
+namespace stepdance::platform::teensy {
+namespace {
+
+namespace pwm = regs::flexpwm;
+namespace iomuxc = regs::iomuxc;
+namespace nvic = regs::nvic;
+
+/// Wiring of one input port (reference §4.4): PWM submodule and channel, pad ALT, input select.
+struct CaptureWiring {
+  uint32_t pwm_base;
+  uint8_t submodule;
+  bool channel_b;
+  uint8_t step_pin;
+  uint8_t dir_pin;
+  uint8_t alt;
+  uint16_t select_input;
+  uint8_t select_value;
+  uint8_t irq;
+};
+
+constexpr CaptureWiring kWiring[4] = {
+    // A: pin 4 = EMC_06 → PWM2 SM0 A (ALT1), DIR pin 6
+    {pwm::kPwm2Base, 0, false, 4, 6, 1, iomuxc::kSelectFlexpwm2PwmA0, 0, nvic::kIrqFlexpwm2Sm0},
+    // B: pin 5 = EMC_08 → PWM2 SM1 A (ALT1), DIR pin 7
+    {pwm::kPwm2Base, 1, false, 5, 7, 1, iomuxc::kSelectFlexpwm2PwmA1, 0, nvic::kIrqFlexpwm2Sm1},
+    // C: pin 8 = B1_00 → PWM1 SM3 A (ALT6), DIR pin 10
+    {pwm::kPwm1Base, 3, false, 8, 10, 6, iomuxc::kSelectFlexpwm1PwmA3, 4, nvic::kIrqFlexpwm1Sm3},
+    // D: pin 9 = B0_11 → PWM2 SM2 B (ALT2), DIR pin 11
+    {pwm::kPwm2Base, 2, true, 9, 11, 2, iomuxc::kSelectFlexpwm2PwmB2, 1, nvic::kIrqFlexpwm2Sm2},
+};
+
+struct CaptureState {
+  hal::PulseSink sink = nullptr;
+  void* context = nullptr;
+  bool dir_at_rise = false;  // STEP_DIR mode: DIR is the level read at the rising edge
+  bool have_rise = false;
+  bool rise_dir_high = false;
+  uint16_t rise_ticks = 0;
+};
+
+CaptureState states[4];
+protocol::CaptureClock capture_clock{};
+volatile bool capture_clock_known = false;
+
+// The counters tick at the IPG clock: derive ticks per µs from the real bus frequency.
+void refresh_capture_clock() {
+  capture_clock.ticks_per_us = (bus_clock_hz() + 500000u) / 1000000u;
+  capture_clock.counter_mask = 0xFFFFu;
+  capture_clock_known = true;
+}
+
+// Flags, capture registers and interrupt enables of a port's channel.
+uint16_t flag_rise(const CaptureWiring& w) { return w.channel_b ? pwm::kCaptureB0 : pwm::kCaptureA0; }
+uint16_t flag_fall(const CaptureWiring& w) { return w.channel_b ? pwm::kCaptureB1 : pwm::kCaptureA1; }
+volatile uint16_t& sm(const CaptureWiring& w, uint32_t offset) { return pwm::sm_reg(w.pwm_base, w.submodule, offset); }
+
+void service(uint8_t port) {
+  const CaptureWiring& w = kWiring[port];
+  CaptureState& s = states[port];
+  const bool dir_high = pin_level(*pin_info(w.dir_pin));  // first, as close to the edge as we can
+  const uint16_t status = sm(w, pwm::kSmSts);
+  if (status & flag_rise(w)) {
+    s.rise_ticks = sm(w, w.channel_b ? pwm::kSmCval4 : pwm::kSmCval2);
+    s.rise_dir_high = dir_high;
+    s.have_rise = true;
+    sm(w, pwm::kSmSts) = flag_rise(w);
+  }
+  if (status & flag_fall(w)) {
+    const uint16_t fall_ticks = sm(w, w.channel_b ? pwm::kSmCval5 : pwm::kSmCval3);
+    sm(w, pwm::kSmSts) = flag_fall(w);
+    if (s.have_rise && s.sink != nullptr) {
+      protocol::CapturedPulse pulse;
+      pulse.rise_ticks = s.rise_ticks;
+      pulse.fall_ticks = fall_ticks;
+      pulse.dir_high = s.dir_at_rise ? s.rise_dir_high : dir_high;
+      s.sink(s.context, pulse);
+    }
+    s.have_rise = false;
+  }
+  regs::data_sync_barrier();  // flag clears land before the exception returns
+}
+
+void capture_isr_a() { service(0); }
+void capture_isr_b() { service(1); }
+void capture_isr_c() { service(2); }
+void capture_isr_d() { service(3); }
+constexpr void (*kIsrs[4])() = {capture_isr_a, capture_isr_b, capture_isr_c, capture_isr_d};
+
+// Pads: STEP to the PWM input (ALT + input select), DIR to a fast-GPIO input.
+void attach_pins(const CaptureWiring& w) {
+  const PinInfo& step = *pin_info(w.step_pin);
+  pad_configure(step, kPadInput);
+  iomuxc::select_input(w.select_input) = w.select_value;
+  pad_select(step, w.alt);
+  const PinInfo& dir = *pin_info(w.dir_pin);
+  pad_configure(dir, kPadInput);
+  pin_make_gpio(dir, false);
+}
+
+// A free-running 16-bit counter on the IPG clock with both capture circuits armed (RM §55.8).
+void start_capture(const CaptureWiring& w, bool interrupt_on_rise) {
+  const unsigned n = w.submodule;
+  volatile uint16_t& mctrl = pwm::mctrl(w.pwm_base);
+  mctrl = static_cast<uint16_t>(mctrl & ~pwm::mctrl_run(n));
+  sm(w, pwm::kSmInten) = 0;
+  sm(w, pwm::kSmCaptctrlA) = 0;
+  sm(w, pwm::kSmCaptctrlB) = 0;
+  mctrl = static_cast<uint16_t>(mctrl | pwm::mctrl_clear_load_ok(n));
+  sm(w, pwm::kSmCtrl2) = pwm::kCtrl2Independent;
+  sm(w, pwm::kSmCtrl) = pwm::kCtrlFullReload;
+  sm(w, pwm::kSmInit) = 0;
+  sm(w, pwm::kSmVal0) = 0;
+  sm(w, pwm::kSmVal1) = 0xFFFF;
+  for (uint32_t val = 0; val < 4; ++val) sm(w, pwm::kSmVal2 + 4u * val) = 0;
+  sm(w, pwm::kSmOctrl) = 0;
+  volatile uint16_t& outen = pwm::outen(w.pwm_base);
+  outen = static_cast<uint16_t>(outen & ~(w.channel_b ? pwm::outen_b(n) : pwm::outen_a(n)));
+  mctrl = static_cast<uint16_t>(mctrl | pwm::mctrl_load_ok(n));
+  sm(w, pwm::kSmSts) = 0xFFFF;
+  sm(w, w.channel_b ? pwm::kSmCaptctrlB : pwm::kSmCaptctrlA) =
+      pwm::kCaptEdge0Rising | pwm::kCaptEdge1Falling | pwm::kCaptArm;
+  mctrl = static_cast<uint16_t>(mctrl | pwm::mctrl_run(n));
+  sm(w, pwm::kSmInten) = static_cast<uint16_t>(flag_fall(w) | (interrupt_on_rise ? flag_rise(w) : 0u));
+}
+
+}  // namespace
+}  // namespace stepdance::platform::teensy
+
+namespace stepdance::hal {
+
+namespace teensy = platform::teensy;
+
+Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink, void* context) {
+  if (port >= 4) return Status::kNoSuchPin;
+  if (sink == nullptr) return Status::kBadArgument;
+  const teensy::CaptureWiring& wiring = teensy::kWiring[port];
+  teensy::irq::disable(wiring.irq);  // no capture ISR while the port is rebuilt
+  namespace ccm = teensy::regs::ccm;
+  ccm::gate_on(wiring.pwm_base == teensy::pwm::kPwm1Base ? ccm::kGatePwm1 : ccm::kGatePwm2);
+  teensy::refresh_capture_clock();
+  teensy::attach_pins(wiring);
+  teensy::CaptureState& state = teensy::states[port];
+  state = teensy::CaptureState{};
+  state.sink = sink;
+  state.context = context;
+  state.dir_at_rise = edge == protocol::DirSampleEdge::kRising;
+  teensy::start_capture(wiring, state.dir_at_rise);
+  teensy::irq::install(wiring.irq, teensy::kIsrs[port], teensy::irq::kCapturePriority);
+  return Status::kOk;
+}
+
+protocol::CaptureClock port_in_clock(uint8_t) {
+  // Computed once (and again by every port_in_begin): the decoder asks for it on every pulse.
+  if (!teensy::capture_clock_known) teensy::refresh_capture_clock();
+  return teensy::capture_clock;
+}
+
+}  // namespace stepdance::hal
+
+#endif  // __IMXRT1062__

@@ -1,0 +1,114 @@
+// Quadrature decoders: pins 0/1 → ENC1 and 2/3 → ENC2 through XBAR1 (RM chapters 56 and 61).
+#if defined(__IMXRT1062__)
+
+#include "stepdance/hal/hal.hpp"
+#include "stepdance/platform/teensy/clocks.hpp"
+#include "stepdance/platform/teensy/pins.hpp"
+#include "stepdance/platform/teensy/regs_ccm.hpp"
+#include "stepdance/platform/teensy/regs_enc.hpp"
+#include "stepdance/platform/teensy/regs_xbar.hpp"
+
+namespace stepdance::platform::teensy {
+namespace {
+
+namespace ccm = regs::ccm;
+namespace enc = regs::enc;
+namespace iomuxc = regs::iomuxc;
+namespace xbar1 = regs::xbar1;
+
+/// One phase input: Teensy pin, pad ALT that makes it XBAR1_INOUTnn, its input select.
+struct PhaseWiring {
+  uint8_t pin;
+  uint8_t alt;
+  uint8_t xbar_inout;
+  uint16_t select_input;
+  uint8_t select_value;
+  uint8_t xbar_output;
+};
+
+struct EncoderWiring {
+  PhaseWiring a;
+  PhaseWiring b;
+  ccm::ClockGate gate;
+};
+
+// Pin 0 = AD_B0_03 (ALT1, INOUT17), pin 1 = AD_B0_02 (ALT1, INOUT16), pin 2 = EMC_04 (ALT3,
+// INOUT06), pin 3 = EMC_05 (ALT3, INOUT07).
+constexpr EncoderWiring kWiring[2] = {
+    {{0, 1, 17, iomuxc::kSelectXbar1In17, 1, xbar1::kOutEnc1PhaseA},
+     {1, 1, 16, iomuxc::kNoSelectInput, 0, xbar1::kOutEnc1PhaseB},
+     ccm::kGateEnc1},
+    {{2, 3, 6, iomuxc::kSelectXbar1In06, 0, xbar1::kOutEnc2PhaseA},
+     {3, 3, 7, iomuxc::kSelectXbar1In07, 0, xbar1::kOutEnc2PhaseB},
+     ccm::kGateEnc2},
+};
+
+volatile bool begun[2] = {false, false};
+
+void attach_phase(const PhaseWiring& phase) {
+  const PinInfo& pin = *pin_info(phase.pin);
+  pad_configure(pin, kPadInput);  // the boards pull A and B up with 10 kΩ
+  if (phase.select_input != iomuxc::kNoSelectInput) iomuxc::select_input(phase.select_input) = phase.select_value;
+  iomuxc::gpr6() &= ~iomuxc::gpr6_xbar_output(phase.xbar_inout);  // INOUT as input
+  pad_select(pin, phase.alt);
+  xbar1::connect(phase.xbar_inout, phase.xbar_output);
+}
+
+// Glitch filter: 5 equal samples (FILT_CNT 2) about 0.1 µs apart, i.e. edges must hold ~0.5 µs.
+uint16_t filter_setting() {
+  uint32_t period = bus_clock_hz() / 10000000u;
+  if (period < 1) period = 1;
+  if (period > 255) period = 255;
+  return enc::filter(2, static_cast<uint16_t>(period));
+}
+
+}  // namespace
+}  // namespace stepdance::platform::teensy
+
+namespace stepdance::hal {
+
+namespace teensy = platform::teensy;
+
+Status quadrature_begin(uint8_t index) {
+  if (index >= 2) return Status::kNoSuchPin;
+  namespace enc = teensy::enc;
+  const teensy::EncoderWiring& wiring = teensy::kWiring[index];
+  teensy::ccm::gate_on(teensy::ccm::kGateXbar1);
+  teensy::ccm::gate_on(wiring.gate);
+  teensy::attach_phase(wiring.a);
+  teensy::attach_phase(wiring.b);
+  CriticalSection guard;
+  enc::ctrl(index) = 0;  // quadrature mode (x4: every edge counts), no interrupts
+  enc::ctrl2(index) = 0;  // free 32-bit position counter
+  enc::umod(index) = 0;
+  enc::lmod(index) = 0;
+  enc::filt(index) = teensy::filter_setting();
+  enc::uinit(index) = 0;
+  enc::linit(index) = 0;
+  enc::ctrl(index) = enc::kCtrlSoftwareInitPosition;
+  teensy::begun[index] = true;
+  return Status::kOk;
+}
+
+int32_t quadrature_read(uint8_t index) {
+  if (index >= 2 || !teensy::begun[index]) return 0;
+  namespace enc = teensy::enc;
+  CriticalSection guard;  // the UPOS read latches LPOSH: no other reader may come in between
+  const uint32_t upper = enc::upos(index);
+  const uint32_t lower = enc::lposh(index);
+  return static_cast<int32_t>((upper << 16) | lower);
+}
+
+void quadrature_write(uint8_t index, int32_t count) {
+  if (index >= 2 || !teensy::begun[index]) return;
+  namespace enc = teensy::enc;
+  const uint32_t value = static_cast<uint32_t>(count);
+  CriticalSection guard;
+  enc::uinit(index) = static_cast<uint16_t>(value >> 16);
+  enc::linit(index) = static_cast<uint16_t>(value & 0xFFFFu);
+  enc::ctrl(index) = enc::kCtrlSoftwareInitPosition;
+}
+
+}  // namespace stepdance::hal
+
+#endif  // __IMXRT1062__
