@@ -62,12 +62,15 @@ namespace teensy = platform::teensy;
 
 Status khz_timer_start(uint32_t period_us, Isr on_tick) {
   if (on_tick == nullptr || period_us == 0) return Status::kBadArgument;
-  const uint64_t ticks = static_cast<uint64_t>(teensy::perclk_hz()) * period_us / 1000000u;
-  if (ticks < 2u || ticks > 0xFFFFFFFFu) return Status::kBadArgument;
+  // 32-bit arithmetic only (PERCLK is a whole number of kHz): ticks = PERCLK × period.
+  const uint32_t ticks_per_ms = teensy::perclk_hz() / 1000u;
+  if (ticks_per_ms == 0 || period_us > 0xFFFFFFFFu / ticks_per_ms) return Status::kBadArgument;
+  const uint32_t ticks = ticks_per_ms * period_us / 1000u;
+  if (ticks < 2u) return Status::kBadArgument;
   teensy::khz_timer_stop();
   teensy::tick_handler = on_tick;
   teensy::irq::install(teensy::regs::nvic::kIrqGpt2, &teensy::gpt2_isr, teensy::irq::kKilohertzPriority);
-  const Status started = teensy::start_gpt2(static_cast<uint32_t>(ticks));
+  const Status started = teensy::start_gpt2(ticks);
   if (started != Status::kOk) teensy::khz_timer_stop();
   return started;
 }

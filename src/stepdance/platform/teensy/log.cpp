@@ -57,6 +57,7 @@ void log_fault(const char* reason, const char* detail) {
 }
 
 void log_message(const char* text) {
+  if (!teensy::irq::in_thread_mode()) return;  // loop only: USB code must not run inside an ISR
   teensy::flush_pending_fault();
   const char* const line[] = {text != nullptr ? text : ""};
   teensy::write_line(line, 1);  // dropped whole if the console cannot take it now

@@ -42,7 +42,7 @@ class SdStorage final : public FileStorage {
   Status close(int handle) override {
     if (!valid(handle)) return Status::kBadArgument;
     files_[handle].close();
-    files_[handle] = services::SdFile();
+    files_[handle] = services::SdFileHandle();
     return Status::kOk;
   }
 
@@ -56,7 +56,7 @@ class SdStorage final : public FileStorage {
   }
   bool valid(int handle) { return handle >= 0 && handle < kMaxOpenFiles && files_[handle]; }
 
-  services::SdFile files_[kMaxOpenFiles];
+  services::SdFileHandle files_[kMaxOpenFiles];
   bool card_started_ = false;
 };
 

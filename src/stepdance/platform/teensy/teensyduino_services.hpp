@@ -65,11 +65,11 @@ inline void set_vector(uint8_t irq, void (*handler)()) {
 }
 
 // ---- SD card ------------------------------------------------------------------------------------
-using SdFile = ::File;
+using SdFileHandle = ::File;
 inline bool sd_begin_builtin() { return SD.begin(BUILTIN_SDCARD); }
-inline SdFile sd_open_read(const char* name) { return SD.open(name, FILE_READ); }
+inline SdFileHandle sd_open_read(const char* name) { return SD.open(name, FILE_READ); }
 /// Opens for writing at the end of the file, creating it if needed.
-inline SdFile sd_open_append(const char* name) { return SD.open(name, FILE_WRITE); }
+inline SdFileHandle sd_open_append(const char* name) { return SD.open(name, FILE_WRITE); }
 inline bool sd_remove(const char* name) { return SD.remove(name); }
 
 }  // namespace stepdance::platform::teensy::services
