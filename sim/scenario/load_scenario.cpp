@@ -72,7 +72,10 @@ LoadResult parse_scenario(std::string_view text, const std::string& file) {
   }
 
   Scenario& scenario = result.scenario;
-  const std::filesystem::path absolute = std::filesystem::absolute(std::filesystem::path(file)).lexically_normal();
+  std::error_code error;
+  std::filesystem::path absolute = std::filesystem::absolute(std::filesystem::path(file), error);
+  if (error) absolute = std::filesystem::path(file);
+  absolute = absolute.lexically_normal();
   scenario.file = absolute.string();
   scenario.directory = absolute.parent_path().string();
   ParseContext context{reporter, absolute.parent_path(), scenario, false, {}};

@@ -1,5 +1,5 @@
 // [[at]]: the timeline of user actions (turn, press, release, click, set, serial).
-#include <cmath>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -22,6 +22,12 @@ constexpr std::pair<const char*, ActionType> kActionKeys[] = {
     {"counts", ActionType::kTurn}, {"over_s", ActionType::kTurn}, {"hold_ms", ActionType::kClick},
     {"position", ActionType::kSet}, {"text", ActionType::kSerial}, {"file", ActionType::kSerial},
 };
+
+/// Seconds to simulated time, saturating far beyond any valid duration so huge values cannot overflow.
+SimTime to_time(double seconds) {
+  constexpr double kLimitS = 1e6;
+  return from_seconds(std::clamp(seconds, -kLimitS, kLimitS));
+}
 
 const char* action_name(ActionType type) {
   for (const auto& [name, value] : kActions) {
@@ -90,7 +96,7 @@ bool read_details(TableReader& reader, Action& action, ParseContext& context) {
       if (counts) action.counts = *counts;
       if (const auto over = reader.number("over_s")) {
         if (*over >= 0) {
-          action.over = from_seconds(*over);
+          action.over = to_time(*over);
         } else {
           reader.error("over_s", "'over_s' must be >= 0, got " + format_number(*over));
           ok = false;
@@ -102,7 +108,7 @@ bool read_details(TableReader& reader, Action& action, ParseContext& context) {
     case ActionType::kClick:
       if (const auto hold = reader.number("hold_ms")) {
         if (*hold >= 0) {
-          action.hold = static_cast<SimTime>(std::llround(*hold * 1e6));
+          action.hold = to_time(*hold / 1000);
         } else {
           reader.error("hold_ms", "'hold_ms' must be >= 0, got " + format_number(*hold));
           ok = false;
@@ -168,12 +174,12 @@ void read_action(const toml::table& table, ParseContext& context) {
     if (*time < 0) {
       reader.error("time_s", "'time_s' must be >= 0, got " + format_number(*time));
       ok = false;
-    } else if (context.duration_valid && from_seconds(*time) > context.scenario.duration) {
+    } else if (context.duration_valid && to_time(*time) > context.scenario.duration) {
       reader.error("time_s", "'time_s' = " + format_number(*time) + " is after the end of the run (duration_s = " +
                                  format_number(to_seconds(context.scenario.duration)) + ")");
       ok = false;
     } else {
-      action.time = from_seconds(*time);
+      action.time = to_time(*time);
     }
   } else {
     ok = false;

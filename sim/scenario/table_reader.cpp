@@ -2,6 +2,7 @@
 #include "scenario/table_reader.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace stepdance::sim::scenario {
@@ -86,7 +87,11 @@ std::optional<double> TableReader::number(std::string_view key, Need need) {
   const toml::node* value = node(key, need);
   if (value == nullptr) return std::nullopt;
   if (const auto* whole = value->as_integer()) return static_cast<double>(whole->get());
-  if (const auto* real = value->as_floating_point()) return real->get();
+  if (const auto* real = value->as_floating_point()) {
+    if (std::isfinite(real->get())) return real->get();
+    reporter_.error(scenario::line_of(*value), "'" + std::string(key) + "' must be a finite number");
+    return std::nullopt;
+  }
   wrong_type(key, *value, "a number");
   return std::nullopt;
 }

@@ -53,7 +53,7 @@ class TableReader {
   const toml::node* node(std::string_view key, Need need = Need::kOptional);
   std::optional<std::string> string(std::string_view key, Need need = Need::kOptional);
   std::optional<int64_t> integer(std::string_view key, Need need = Need::kOptional);
-  /// Integers are accepted as numbers.
+  /// Integers are accepted as numbers; nan and inf are reported.
   std::optional<double> number(std::string_view key, Need need = Need::kOptional);
   std::optional<bool> boolean(std::string_view key, Need need = Need::kOptional);
   const toml::table* table(std::string_view key, Need need = Need::kOptional);

@@ -93,6 +93,11 @@ std::vector<InlineCase> cases() {
         {9, "'pen_up_travel' must be true or false, not a string"},
         {10, "unknown board 'ghost'"},
         {10, "'vcd_ports' must hold strings like \"board:OUT_A\", not an integer"}}},
+      {"non_finite_and_huge_times",
+       "[[device]]\nname = \"pen\"\ntype = \"button\"\nboard = \"driver\"\nconnector = \"D1\"\n"
+       "[[at]]\ntime_s = nan\npress = \"pen\"\n[[at]]\ntime_s = 1e300\nrelease = \"pen\"\n",
+       {{12, "'time_s' must be a finite number"},
+        {15, "'time_s' = 1e+300 is after the end of the run (duration_s = 5)"}}},
   };
 }
 
