@@ -104,8 +104,21 @@ Status frame_timer_start(uint32_t period_us, Isr on_frame) {
   teensy::irq::install(teensy::kTickIrq, &teensy::tick_isr, teensy::irq::kTickPriority);
   teensy::running = true;
   const Status started = teensy::flexio::start_frame_clock(period_us);
-  if (started != Status::kOk) teensy::frame_timer_stop();
-  return started;
+  if (started != Status::kOk) {
+    teensy::frame_timer_stop();
+    return started;
+  }
+  // Fail loudly rather than run without frames: the first tick must arrive within a few periods.
+  const uint32_t ticks_before = teensy::tick_count;
+  const uint32_t waited_from = micros_now();
+  while (teensy::tick_count == ticks_before) {
+    if (micros_now() - waited_from > 3u * period_us + 10u) {
+      teensy::frame_timer_stop();
+      log_message("frame_timer_start: the FlexIO3 frame clock does not tick");
+      return Status::kUnsupported;
+    }
+  }
+  return Status::kOk;
 }
 
 void timers_stop() {
