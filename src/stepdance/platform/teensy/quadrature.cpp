@@ -32,11 +32,11 @@ struct EncoderWiring {
   ccm::ClockGate gate;
 };
 
-// Pin 0 = AD_B0_03 (ALT1, INOUT17), pin 1 = AD_B0_02 (ALT1, INOUT16), pin 2 = EMC_04 (ALT3,
-// INOUT06), pin 3 = EMC_05 (ALT3, INOUT07).
+// Pin 0 = AD_B0_03 (ALT1, INOUT17, select 1), pin 1 = AD_B0_02 (ALT1, INOUT16, select 0),
+// pin 2 = EMC_04 (ALT3, INOUT06, select 0), pin 3 = EMC_05 (ALT3, INOUT07, select 0).
 constexpr EncoderWiring kWiring[2] = {
     {{0, 1, 17, iomuxc::kSelectXbar1In17, 1, xbar1::kOutEnc1PhaseA},
-     {1, 1, 16, iomuxc::kNoSelectInput, 0, xbar1::kOutEnc1PhaseB},
+     {1, 1, 16, iomuxc::kSelectXbar1In16, 0, xbar1::kOutEnc1PhaseB},
      ccm::kGateEnc1},
     {{2, 3, 6, iomuxc::kSelectXbar1In06, 0, xbar1::kOutEnc2PhaseA},
      {3, 3, 7, iomuxc::kSelectXbar1In07, 0, xbar1::kOutEnc2PhaseB},
@@ -48,7 +48,7 @@ volatile bool begun[2] = {false, false};
 void attach_phase(const PhaseWiring& phase) {
   const PinInfo& pin = *pin_info(phase.pin);
   pad_configure(pin, kPadInput);  // the boards pull A and B up with 10 kΩ
-  if (phase.select_input != iomuxc::kNoSelectInput) iomuxc::select_input(phase.select_input) = phase.select_value;
+  iomuxc::select_input(phase.select_input) = phase.select_value;
   iomuxc::gpr6() &= ~iomuxc::gpr6_xbar_output(phase.xbar_inout);  // INOUT as input
   pad_select(pin, phase.alt);
   xbar1::connect(phase.xbar_inout, phase.xbar_output);

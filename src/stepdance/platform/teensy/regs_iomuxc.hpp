@@ -52,8 +52,8 @@ constexpr uint16_t kSelectFlexpwm2PwmA1 = 0x47C;
 constexpr uint16_t kSelectFlexpwm2PwmB2 = 0x490;
 constexpr uint16_t kSelectXbar1In06 = 0x61C;
 constexpr uint16_t kSelectXbar1In07 = 0x620;
+constexpr uint16_t kSelectXbar1In16 = 0x64C;
 constexpr uint16_t kSelectXbar1In17 = 0x62C;
-constexpr uint16_t kNoSelectInput = 0;
 
 /// An IOMUXC_*_SELECT_INPUT register. RM §11.7.
 inline volatile uint32_t& select_input(uint16_t offset) { return reg32(kBase + offset); }
