@@ -4,6 +4,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/status.hpp"
 
 namespace stepdance {
