@@ -101,8 +101,7 @@ void VcdWriter::record_all(WireId wire, const EdgeList& edges) {
 void VcdWriter::flush_before(SimTime watermark) {
   if (closed_ || watermark <= watermark_ns_) return;
   watermark_ns_ = watermark;
-  // Edges older than the watermark in ns may round up to its unit; only strictly earlier units
-  // are certainly complete, except that later records can still share the last written unit.
+  // Every later record rounds to the watermark's unit or a later one, so earlier units are complete.
   write_pending(to_units(watermark));
   check_stream();
 }
@@ -130,10 +129,11 @@ void VcdWriter::check_stream() {
 }
 
 void VcdWriter::write_pending(SimTime before_units) {
-  // Stable: equal (time, wire) keys keep their call order.
-  std::stable_sort(buffer_.begin(), buffer_.end(), [](const Pending& a, const Pending& b) {
+  // Stable: equal (time, wire) keys keep their call order. Usually already in order.
+  const auto earlier = [](const Pending& a, const Pending& b) {
     return a.time != b.time ? a.time < b.time : a.wire < b.wire;
-  });
+  };
+  if (!std::is_sorted(buffer_.begin(), buffer_.end(), earlier)) std::stable_sort(buffer_.begin(), buffer_.end(), earlier);
   size_t done = 0;
   for (; done < buffer_.size() && buffer_[done].time < before_units; ++done) {
     const Pending& change = buffer_[done];
