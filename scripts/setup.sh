@@ -7,7 +7,7 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev valgrind
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm
   gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev
-  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev
+  libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
 )
 
 missing=()
