@@ -120,7 +120,7 @@ build_configuration() {
 backend_present() {
   # The Teensy backend defines the stepdance::hal functions; until it lands they stay undefined.
   local objects=("$@")
-  arm-none-eabi-nm --defined-only "${objects[@]}" 2>/dev/null | grep -q ' T _ZN9stepdance3hal'
+  arm-none-eabi-nm --defined-only "${objects[@]}" | grep ' T _ZN9stepdance3hal' >/dev/null
 }
 
 link_example() {

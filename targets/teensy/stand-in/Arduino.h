@@ -6,24 +6,28 @@
 // from Teensyduino's sources. The matching definitions in teensyduino_stand_in.cpp are stubs:
 // an image linked against them is a link and size check only and cannot be flashed.
 //
-// The whole surface, in one list (add to it only what the backend or a sketch really calls):
-//   Arduino.h
-//     setup(), loop()                      the sketch's entry points, called by main()
-//     HIGH, LOW                            1, 0
-//     INPUT, OUTPUT, INPUT_PULLUP, INPUT_PULLDOWN   0, 1, 2, 3 (Teensy 4 values)
-//     pinMode, digitalRead, digitalWrite, analogRead
-//     millis, micros, delay, delayMicroseconds, yield
-//     elapsedMillis                        milliseconds since it was last assigned
-//     Print, Stream                        byte output / input interfaces (print, println, write)
-//     usb_serial_class Serial              the first USB serial port
-//     SerialUSB1                           second port; only with USB_DUAL_SERIAL/TRIPLE_SERIAL
-//     F_CPU_ACTUAL, F_BUS_ACTUAL           running core and peripheral bus clocks, in Hz
-//     IRQ_NUMBER_t, attachInterruptVector  installs a handler in the RAM vector table
-//     NVIC_ENABLE_IRQ, NVIC_DISABLE_IRQ, NVIC_SET_PRIORITY, NVIC_CLEAR_PENDING
-//     __disable_irq, __enable_irq
-//   operator delete(void*), operator delete(void*, size_t)   defined as traps (the core defines
-//                                        them; only deleting destructors refer to them)
-//   startup.cpp (not a header)             vector tables, boot-header placeholders, reset handler
+// The whole surface, in one list. The backend's part is what
+// src/stepdance/platform/teensy/teensyduino_services.hpp calls; the sketches' part is what the
+// examples call. Add to it only what one of them really uses.
+//   For the backend
+//     Arduino.h  usb_serial_class Serial: available(), read(), availableForWrite(), write(data, n)
+//                micros()
+//                F_CPU_ACTUAL, F_BUS_ACTUAL       running core and peripheral bus clocks, in Hz
+//                IRQ_NUMBER_t, attachInterruptVector(irq, handler)   RAM vector table entry
+//     SD.h       BUILTIN_SDCARD, FILE_READ, FILE_WRITE
+//                File: read, write, close, operator bool; SDClass SD: begin, open, remove
+//   For sketches
+//     Arduino.h  setup(), loop()                  the sketch's entry points, called by main()
+//                HIGH, LOW                        1, 0
+//                INPUT, OUTPUT, INPUT_PULLUP, INPUT_PULLDOWN   0, 1, 2, 3 (Teensy 4 values)
+//                pinMode, digitalRead, digitalWrite, analogRead
+//                millis, delay, delayMicroseconds, yield, elapsedMillis
+//                Print, Stream: print, println, write; DEC, HEX
+//                SerialUSB1                       only with USB_DUAL_SERIAL or USB_TRIPLE_SERIAL
+//   For the image (teensyduino_stand_in.cpp, startup.cpp; Teensyduino's core has the real ones)
+//                main(), reset handler, boot headers, vector table in RAM
+//                operator delete(void*), operator delete(void*, size_t): traps; only deleting
+//                destructors of classes with virtual destructors refer to them
 #pragma once
 
 #include <math.h>
@@ -151,21 +155,9 @@ extern usb_serial_class SerialUSB1;
 
 // ---- Interrupts --------------------------------------------------------------------------------
 
-/// i.MX RT1062 interrupt numbers (reference manual, chapter 4 "Interrupts"). The names the
-/// backend uses are listed here as it needs them.
+/// i.MX RT1062 interrupt numbers 0..159 (reference manual, chapter 4 "Interrupts"). The backend
+/// casts its own numbers to this type, so no names are declared.
 enum IRQ_NUMBER_t : int {};
 
 /// Puts a handler in the vector table in RAM (exception number = IRQ number + 16).
 void attachInterruptVector(IRQ_NUMBER_t irq, void (*handler)());
-
-// NVIC registers of the ARMv7-M architecture (ARMv7-M ARM, B3.4).
-#define STEPDANCE_NVIC_WORD(base, irq) (*(reinterpret_cast<volatile uint32_t*>(base) + ((irq) >> 5)))
-#define STEPDANCE_NVIC_BIT(irq) (1u << ((irq) & 31))
-#define NVIC_ENABLE_IRQ(irq) (STEPDANCE_NVIC_WORD(0xE000E100u, irq) = STEPDANCE_NVIC_BIT(irq))
-#define NVIC_DISABLE_IRQ(irq) (STEPDANCE_NVIC_WORD(0xE000E180u, irq) = STEPDANCE_NVIC_BIT(irq))
-#define NVIC_CLEAR_PENDING(irq) (STEPDANCE_NVIC_WORD(0xE000E280u, irq) = STEPDANCE_NVIC_BIT(irq))
-#define NVIC_SET_PRIORITY(irq, priority) \
-  (*(reinterpret_cast<volatile uint8_t*>(0xE000E400u) + (irq)) = static_cast<uint8_t>(priority))
-
-#define __disable_irq() __asm__ volatile("cpsid i" ::: "memory")
-#define __enable_irq() __asm__ volatile("cpsie i" ::: "memory")

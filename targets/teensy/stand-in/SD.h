@@ -1,0 +1,37 @@
+// Stand-in declarations of the Teensy SD library, as far as the Teensy backend uses it (the list is
+// in Arduino.h). The definitions in teensyduino_stand_in.cpp behave as if no card were inserted.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define BUILTIN_SDCARD 254
+#define FILE_READ 0
+#define FILE_WRITE 1
+
+/// An open file on the card, or a closed handle (false).
+class File {
+ public:
+  File() = default;
+  File(const File&) = default;
+  File& operator=(const File&) = default;
+  ~File() = default;
+
+  size_t read(void* buffer, size_t length);
+  size_t write(const void* buffer, size_t length);
+  void close();
+  operator bool();
+
+ private:
+  bool open_ = false;
+};
+
+/// The card: start it, open and remove files.
+class SDClass {
+ public:
+  bool begin(uint8_t chip_select_pin);
+  File open(const char* path, uint8_t mode);
+  bool remove(const char* path);
+};
+
+extern SDClass SD;
