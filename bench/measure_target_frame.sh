@@ -52,6 +52,7 @@ awk -v run_frame="$run_frame_symbol" -v per_frame="$work/per_frame" '
     if (!inside) next
     ++current
     ++by_symbol[symbol]
+    if (symbol ~ /^_ZN9stepdance3hal/) ++hal
     m = mnemonic[pc]
     if (m ~ /^v(div|sqrt)/) ++fp_long
     else if (m ~ /^(vldr|vstr|vldm|vstm|vpush|vpop|vmov|vmrs|vmsr)/) ++fp_move
@@ -66,7 +67,7 @@ awk -v run_frame="$run_frame_symbol" -v per_frame="$work/per_frame" '
     printf "known_loop_instructions %d\nregion_instructions %d\nframes %d\n", known, region_total, frames
     printf "run_frame_instructions %d\nworst_frame %d\nworst_index %d\nbest_frame %d\n", total, worst, worst_index, best
     printf "mix_loads %d\nmix_stores %d\nmix_branches %d\nmix_fp_arith %d\nmix_fp_move %d\n", loads, stores, branches, fp_arith, fp_move
-    printf "mix_fp_div_sqrt %d\nmix_int_div %d\nmix_other %d\n", fp_long, int_div, other
+    printf "mix_fp_div_sqrt %d\nmix_int_div %d\nmix_other %d\nhal_instructions %d\n", fp_long, int_div, other, hal
     for (name in by_symbol) printf "symbol %d %s\n", by_symbol[name], name
   }' "$work/mnemonics" - <"$work/trace" >"$work/trace.txt" &
 counter=$!
@@ -103,6 +104,8 @@ awk -v f="$frames" -v t="$total" '
       value["mix_loads"] / f, value["mix_stores"] / f, value["mix_branches"] / f, value["mix_fp_arith"] / f, value["mix_fp_move"] / f
     printf " FP divide/sqrt %.2f, integer divide %.2f, other %.1f\n", value["mix_fp_div_sqrt"] / f, value["mix_int_div"] / f, value["mix_other"] / f
   }' "$work/trace.txt"
+echo "of which in the manual backend's HAL functions (stand-ins for the Teensy backend):" \
+  "$(awk -v h="$(value hal_instructions)" -v f="$frames" 'BEGIN { printf "%.1f", h / f }') per frame"
 echo "instructions per frame by function (own instructions, not callees):"
 sed -n 's/^symbol //p' "$work/trace.txt" | sort -rn | head -12 |
   while read -r count name; do
