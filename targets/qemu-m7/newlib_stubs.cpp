@@ -1,24 +1,12 @@
 // POSIX calls GoogleTest references that newlib + rdimon lack; each fails cleanly with ENOSYS.
 #include <errno.h>
-#include <stddef.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 
 extern "C" {
 
-char* getcwd(char*, size_t) {
-  errno = ENOSYS;
-  return nullptr;
-}
+// Used by GoogleTest only to create the directory of an XML/JSON report, which we never request.
 int mkdir(const char*, mode_t) {
-  errno = ENOSYS;
-  return -1;
-}
-int chdir(const char*) {
-  errno = ENOSYS;
-  return -1;
-}
-int rmdir(const char*) {
   errno = ENOSYS;
   return -1;
 }
