@@ -161,8 +161,11 @@ for build in "${builds[@]}"; do
   [ -n "${config_objects[$board-$usb]+set}" ] || build_configuration "$board" "$usb"
   link_example "$name" "$board" "$usb"
 done
-echo "build-teensy: ${#library_sources[@]} library sources, ${#builds[@]} example builds" \
-  "($compiled files compiled this run)"
+# The library builds for both boards even when no example needs the Teensy 4.0.
+[ -n "${config_objects[teensy40-serial]+set}" ] || build_configuration teensy40 serial
+echo "build-teensy: ${#library_sources[@]} library sources; ${#builds[@]} example images linked" \
+  "($compiled files compiled this run):"
+arm-none-eabi-size "${images[@]}" | sed 's/^/  /'
 if [ ${#unlinked_hal[@]} -gt 0 ]; then
   echo "build-teensy: NOTE: no Teensy backend in src/stepdance/platform/teensy yet: ${unlinked_hal[*]}" \
     "link with the stepdance::hal functions left undefined (every other symbol must resolve)"
