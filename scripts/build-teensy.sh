@@ -17,7 +17,8 @@ fail() {
   exit 1
 }
 
-for tool in arm-none-eabi-g++ arm-none-eabi-gcc arm-none-eabi-size arm-none-eabi-objcopy arm-none-eabi-nm cmake; do
+for tool in arm-none-eabi-g++ arm-none-eabi-gcc arm-none-eabi-size arm-none-eabi-objcopy arm-none-eabi-objdump \
+  arm-none-eabi-nm c++filt cmake; do
   command -v "$tool" >/dev/null || fail "$tool is missing (run scripts/setup.sh)"
 done
 
