@@ -37,12 +37,15 @@ struct PulseCounts {
 };
 
 /// Decodes every STEP pulse of a played frame as a Stepdance receiver would (width → signal,
-/// DIR at the falling edge) and adds it to `counts`.
-inline void count_frame_pulses(const protocol::FrameWords& words, PulseCounts& counts) {
+/// DIR at the falling edge) and adds it to `counts`. Pulses that fall more than
+/// `last_fall_us` µs after the frame start are left out (they end after the run does).
+inline void count_frame_pulses(const protocol::FrameWords& words, PulseCounts& counts,
+                               int64_t last_fall_us = protocol::kFrameBitsUs) {
   protocol::WirePulse pulses[16];
   const size_t found = protocol::read_wire_pulses(words, pulses, 16);
   const protocol::CaptureClock clock{};
   for (size_t i = 0; i < found; ++i) {
+    if (pulses[i].fall_us > last_fall_us) continue;
     const protocol::CapturedPulse captured =
         protocol::capture_wire_pulse(pulses[i], clock, 0, protocol::DirSampleEdge::kFalling);
     counts.add(protocol::decode_pulse(captured, clock, INPUT_MODE_STEPDANCE, SIGNAL_X));

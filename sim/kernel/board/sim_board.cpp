@@ -12,8 +12,10 @@ constexpr SimTime kAdcConversionNs = 100 * kMicrosecond;
 /// Capture timer: 150 ticks per µs into a 16-bit counter.
 constexpr int64_t kCaptureTicksPerUs = 150;
 
+// The capture counter at a time: ticks rounded half up (as `stepdance decode` converts edges),
+// wrapping at 16 bits.
 uint32_t capture_ticks(SimTime time_ns) {
-  return static_cast<uint32_t>((time_ns * kCaptureTicksPerUs / 1000) & 0xFFFF);
+  return static_cast<uint32_t>(((time_ns * kCaptureTicksPerUs + 500) / 1000) & 0xFFFF);
 }
 
 
@@ -96,6 +98,7 @@ void SimBoard::stop_timers() {
 void SimBoard::frame_tick(void* context, SimTime time) {
   auto& board = *static_cast<SimBoard*>(context);
   board.play_pending_frames(time);
+  if (board.tick_listener_) board.tick_listener_(time);
   board.in_isr_ = true;
   board.board_->run_frame_tick();
   board.in_isr_ = false;
@@ -111,9 +114,17 @@ void SimBoard::khz_tick(void* context, SimTime) {
 // The words handed over during the previous frame go on the wire now, at the fixed phase.
 void SimBoard::play_pending_frames(SimTime start_ns) {
   for (PortState& port : ports_) {
-    if (!port.frame_pending) continue;
+    if (!port.frame_pending) {
+      for (WireListener* listener : port.idle_listeners) listener->on_frame(start_ns, protocol::FrameWords{});
+      continue;
+    }
     port.frame_pending = false;
-    count_frame_pulses(port.pending, port.sent);
+    const SimTime frame_end_ns = start_ns + SimTime{protocol::kFrameBitsUs} * kMicrosecond;
+    if (frame_end_ns <= end_ns_) {
+      count_frame_pulses(port.pending, port.sent);
+    } else {
+      count_frame_pulses(port.pending, port.sent, (end_ns_ - start_ns) / kMicrosecond);
+    }
     for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending);
   }
 }
@@ -128,7 +139,11 @@ void SimBoard::delay(SimTime duration_ns) {
 
 // ---- ports --------------------------------------------------------------------------------------
 
-void SimBoard::add_wire_listener(uint8_t port, WireListener* listener) { ports_.at(port).listeners.push_back(listener); }
+void SimBoard::add_wire_listener(uint8_t port, WireListener* listener) {
+  PortState& state = ports_.at(port);
+  state.listeners.push_back(listener);
+  if (listener->wants_idle_frames()) state.idle_listeners.push_back(listener);
+}
 
 void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
   PortState& state = ports_.at(port);

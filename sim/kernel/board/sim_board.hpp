@@ -86,6 +86,12 @@ class SimBoard {
   void add_wire_listener(uint8_t port, WireListener* listener);
   /// A STEP pulse reaches input port `port`; call at pulse.fall_ns (when the capture ISR runs).
   void capture(uint8_t port, const ArrivingPulse& pulse);
+  /// Calls `listener` at every frame tick, after the previous frame's words were played and
+  /// before the sketch's frame ISR runs, with the tick's time.
+  void on_frames_played(std::function<void(SimTime)> listener) { tick_listener_ = std::move(listener); }
+  /// The run ends at `end_ns`: pulses falling after it are not counted as sent (they are cut
+  /// off, like the VCD). Default: never.
+  void set_end_time(SimTime end_ns) { end_ns_ = end_ns; }
   /// Queues bytes for the sketch's Serial input.
   void send_console(const std::string& bytes);
   /// Calls `listener` with every complete line the sketch prints (without the line ending).
@@ -122,6 +128,7 @@ class SimBoard {
     bool frame_pending = false;
     protocol::FrameWords pending{};
     std::vector<WireListener*> listeners;
+    std::vector<WireListener*> idle_listeners;  ///< the subset that also wants idle frames
     PulseCounts sent;
     bool input_begun = false;
     protocol::DirSampleEdge edge = protocol::DirSampleEdge::kFalling;
@@ -195,6 +202,8 @@ class SimBoard {
   BoardStorage storage_;
   std::vector<BoardFault> faults_;
   uint64_t delays_in_isr_ = 0;
+  std::function<void(SimTime)> tick_listener_;
+  SimTime end_ns_ = INT64_MAX;
 };
 
 }  // namespace stepdance::sim

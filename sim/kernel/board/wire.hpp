@@ -7,10 +7,14 @@
 namespace stepdance::sim {
 
 /// Receives the frames an output port plays on its STEP/DIR lines. Only frames with at least
-/// one high bit are reported; between reported frames both lines are low.
+/// one high bit are reported, unless the listener wants idle frames too; between reported frames
+/// both lines are low.
 class WireListener {
  public:
   virtual ~WireListener() = default;
+  /// True if on_frame() must also be called for idle frames (all-zero words) at every frame
+  /// tick, e.g. by a cable that injects glitches between frames. Asked once, when added.
+  virtual bool wants_idle_frames() const { return false; }
   /// `words` play from `start_ns`: bit n is the level during [start + n µs, start + (n+1) µs),
   /// and both lines are low again from start + 32 µs. Called at `start_ns`, so a listener sees
   /// the whole frame up to 32 µs before its last edge (it must use the edge times, not now()).

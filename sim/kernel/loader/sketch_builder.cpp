@@ -27,6 +27,19 @@ bool is_sketch_source(const fs::path& path) {
   return ext == ".h" || ext == ".hpp" || ext == ".ino" || ext == ".cpp";
 }
 
+// Every header under an include directory, sorted: a changed core header changes the cache key
+// even when the runtime library's bytes happen not to change.
+std::vector<std::string> headers_under(const std::string& directory) {
+  std::vector<std::string> paths;
+  std::error_code error;
+  for (const auto& entry : fs::recursive_directory_iterator(directory, error)) {
+    const std::string ext = entry.path().extension().string();
+    if (entry.is_regular_file(error) && (ext == ".h" || ext == ".hpp")) paths.push_back(entry.path().string());
+  }
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
 // The other sources next to the sketch, sorted so the hash does not depend on directory order.
 std::vector<std::string> neighbour_sources(const fs::path& sketch) {
   std::vector<std::string> paths;
@@ -66,7 +79,10 @@ std::string SketchBuilder::cache_key(const std::string& sketch_path) const {
   hash.add(std::to_string(STEPDANCE_BOARD_ABI_VERSION));
   hash.add(toolchain::kCompiler);
   for (const char* flag : toolchain::kFlags) hash.add(flag);
-  for (const char* dir : toolchain::kIncludeDirs) hash.add(dir);
+  for (const char* dir : toolchain::kIncludeDirs) {
+    hash.add(dir);
+    for (const std::string& header : headers_under(dir)) hash.add_file(header);
+  }
   hash.add(toolchain::kForcedInclude);
   hash.add_file(toolchain::kRuntimeLibrary);
   hash.add_file(toolchain::kExportMap);

@@ -1,4 +1,6 @@
 // Inside a board's shared object: the one exported symbol, binding the sketch to the simulator.
+#include <cstring>
+
 #include "abi/board_abi.h"
 #include "runtime/host_link.hpp"
 #include "runtime/sim_hal.hpp"
@@ -57,6 +59,7 @@ extern "C" __attribute__((visibility("default"))) const StepdanceBoardV1* stepda
   if (host == nullptr || host->abi_version != STEPDANCE_BOARD_ABI_VERSION) return nullptr;
   stepdance::sim_runtime::attach_host(host, host_context);
   auto& table = stepdance::sim_runtime::board_table;
-  table.module = &stepdance::active_board() == &stepdance::kBasicModuleV1 ? 1 : 0;
+  // Board tables are constexpr (one copy per translation unit), so compare names, not addresses.
+  table.module = std::strcmp(stepdance::active_board().name, stepdance::kBasicModuleV1.name) == 0 ? 1 : 0;
   return &table;
 }

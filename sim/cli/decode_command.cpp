@@ -1,0 +1,104 @@
+// `stepdance decode`: reads a VCD, pairs or picks STEP/DIR wires, decodes like an input port.
+#include "decode_command.hpp"
+
+#include <iostream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "exit_codes.hpp"
+#include "output/capture_decoder.hpp"
+#include "output/decode_report.hpp"
+#include "output/step_dir_pairs.hpp"
+#include "output/vcd_reader.hpp"
+
+namespace stepdance::cli {
+namespace {
+
+using sim::StepDirPair;
+using sim::VcdCapture;
+
+int bad_input(const std::string& message) {
+  std::cerr << message << "\n";
+  return kExitBadInput;
+}
+
+// The STEP/DIR pairs to decode: the two named wires, or every pair the file has.
+bool choose_pairs(const DecodeCommandOptions& options, const VcdCapture& capture, std::vector<StepDirPair>& pairs,
+                  std::string& error) {
+  if (options.step_wire.empty() != options.dir_wire.empty()) {
+    error = "--step and --dir go together";
+    return false;
+  }
+  if (options.step_wire.empty()) {
+    pairs = sim::find_step_dir_pairs(capture);
+    if (pairs.empty()) error = "no STEP/DIR wire pairs (*STEP with *DIR); name them with --step and --dir";
+    return !pairs.empty();
+  }
+  const sim::WireLookup step = sim::find_wire(capture, options.step_wire);
+  const sim::WireLookup dir = sim::find_wire(capture, options.dir_wire);
+  if (!step.ok || !dir.ok) {
+    error = !step.ok ? step.error : dir.error;
+    return false;
+  }
+  pairs.push_back({capture.wires[step.index].full_name(), step.index, dir.index});
+  return true;
+}
+
+bool decode_options(const DecodeCommandOptions& options, sim::DecodeOptions& decode, std::string& error) {
+  decode.mode = options.mode == "step_dir" ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    if (options.axis == sim::signal_name(signal)) {
+      decode.step_dir_signal = signal;
+      return true;
+    }
+  }
+  error = "--axis must be one of X, Y, R, T, Z, E";
+  return false;
+}
+
+}  // namespace
+
+CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
+  CLI::App& decode = *app.add_subcommand(
+      "decode",
+      "Decode a VCD capture of a Stepdance cable (from the simulator, or exported by PulseView/sigrok "
+      "from a logic analyzer): step counts per axis and direction, rejected pulses with reasons, "
+      "frame statistics.");
+  decode.add_option("capture", options.capture_path, "the .vcd file")->required();
+  decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
+  decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");
+  decode.add_option("--mode", options.mode, "stepdance: axis by pulse width, DIR at the falling edge; "
+                                            "step_dir: every pulse is one step, DIR at the rising edge")
+      ->check(CLI::IsMember({"stepdance", "step_dir"}))
+      ->capture_default_str();
+  decode.add_option("--axis", options.axis, "the axis step_dir pulses count as (X, Y, R, T, Z, E)")->capture_default_str();
+  decode.add_flag("--json", options.json, "print JSON instead of text");
+  return decode;
+}
+
+int run_decode_command(const DecodeCommandOptions& options) {
+  sim::DecodeOptions decode;
+  std::string error;
+  if (!decode_options(options, decode, error)) return bad_input(error);
+  const sim::VcdReadResult read = sim::read_vcd_file(options.capture_path);
+  if (!read.ok) return bad_input(read.error);
+  std::vector<StepDirPair> pairs;
+  if (!choose_pairs(options, read.capture, pairs, error)) return bad_input(options.capture_path + ": " + error);
+
+  nlohmann::json ports = nlohmann::json::object();
+  for (const StepDirPair& pair : pairs) {
+    const sim::VcdWire& step = read.capture.wires[pair.step];
+    const sim::VcdWire& dir = read.capture.wires[pair.dir];
+    const sim::DecodeResult result = sim::decode_step_dir(step.edges, dir.edges, decode, {step.initial, dir.initial});
+    if (options.json) {
+      ports[pair.label] = sim::decode_report_json(result);
+    } else {
+      std::cout << sim::format_decode_report(result, pair.label) << "\n";
+    }
+  }
+  if (options.json) std::cout << nlohmann::json{{"capture", options.capture_path}, {"ports", ports}}.dump(2) << "\n";
+  return kExitOk;
+}
+
+}  // namespace stepdance::cli

@@ -1,0 +1,24 @@
+// The `stepdance` command: simulate scenarios and decode captures.
+#include <CLI/CLI.hpp>
+
+#include "decode_command.hpp"
+#include "exit_codes.hpp"
+#include "sim_command.hpp"
+
+int main(int argc, char** argv) {
+  using namespace stepdance::cli;
+  CLI::App app{"Stepdance host tools: run sketches on simulated boards, decode motion-stream captures."};
+  app.require_subcommand(1);
+  SimCommandOptions sim;
+  CLI::App& sim_command = add_sim_command(app, sim);
+  DecodeCommandOptions decode;
+  CLI::App& decode_command = add_decode_command(app, decode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error) == 0 ? kExitOk : kExitBadInput;
+  }
+  if (sim_command.parsed()) return run_sim_command(sim);
+  if (decode_command.parsed()) return run_decode_command(decode);
+  return kExitBadInput;
+}

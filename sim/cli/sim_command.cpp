@@ -1,0 +1,98 @@
+// `stepdance sim`: scenario → Simulation → files, with a progress bar and a short report.
+#include "sim_command.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "exit_codes.hpp"
+#include "progress_bar.hpp"
+#include "scenario/load_scenario.hpp"
+#include "wiring/simulation.hpp"
+
+namespace stepdance::cli {
+namespace {
+
+sim::SimulationOptions simulation_options(const SimCommandOptions& options, ProgressBar& progress) {
+  sim::SimulationOptions sim_options;
+  sim_options.sketch_cache_dir = options.cache_directory;
+  if (options.duration_s) sim_options.duration = sim::from_seconds(*options.duration_s);
+  if (!options.output_directory.empty()) {
+    sim_options.output_directory = std::filesystem::absolute(options.output_directory).lexically_normal().string();
+  }
+  sim_options.write_vcd = !options.no_vcd;
+  sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
+  if (!options.quiet) {
+    sim_options.console = [&progress](const std::string& board, const std::string& line) {
+      progress.clear();
+      std::cout << "[" << board << "] " << line << "\n";
+    };
+    sim_options.build_diagnostics = [&progress](const std::string& sketch, const std::string& text) {
+      progress.clear();
+      std::cerr << sketch << ": compiler warnings:\n" << text;
+    };
+  }
+  return sim_options;
+}
+
+void print_report(const sim::SimulationReport& report, bool quiet) {
+  for (const sim::ExpectationResult& result : report.expectations) {
+    if (!result.met || !quiet) std::cout << (result.met ? "ok      " : "FAILED  ") << result.message << "\n";
+  }
+  if (quiet) return;
+  const double simulated_s = sim::to_seconds(report.simulated_ns);
+  char line[160];
+  std::snprintf(line, sizeof line, "simulated %.3f s in %.3f s of wall time (%.0fx real time)\n", simulated_s,
+                report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
+  std::cout << line;
+  for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
+}
+
+}  // namespace
+
+CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
+  CLI::App& sim = *app.add_subcommand(
+      "sim",
+      "Run a simulation: the boards' sketches (compiled for the host, cached), devices, cables and machine "
+      "described by a scenario file, then write the drawing, VCD, CSV and summary it asks for and check its "
+      "[[expect]] entries. Exit status: 0 ok, 1 failure, 2 bad scenario or sketch, 3 an expectation failed.");
+  sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
+      ->required();
+  sim.add_option("--out", options.output_directory, "write the output files into this folder instead");
+  sim.add_option("--duration", options.duration_s, "simulated seconds to run instead of duration_s")
+      ->check(CLI::PositiveNumber);
+  sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
+  sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
+  sim.add_option("--cache", options.cache_directory,
+                 "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)");
+  return sim;
+}
+
+int run_sim_command(const SimCommandOptions& options) {
+  const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
+  if (!loaded.ok()) {
+    std::cerr << loaded.error_text();
+    return kExitBadInput;
+  }
+  ProgressBar progress(!options.quiet);
+  sim::SimulationError error;
+  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, progress), error);
+  if (!simulation) {
+    std::cerr << error.message << (error.message.empty() || error.message.back() != '\n' ? "\n" : "");
+    return error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;
+  }
+  sim::SimulationReport report;
+  try {
+    report = simulation->finish();
+  } catch (const std::exception& failure) {
+    progress.clear();
+    std::cerr << failure.what() << "\n";
+    return kExitFailure;
+  }
+  progress.clear();
+  std::cout.flush();
+  print_report(report, options.quiet);
+  return report.all_expectations_met() ? kExitOk : kExitExpectationFailed;
+}
+
+}  // namespace stepdance::cli

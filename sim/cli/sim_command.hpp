@@ -1,0 +1,29 @@
+// `stepdance sim`: run a scenario (or an example folder's scenario.toml) and write its outputs.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace stepdance::cli {
+
+/// Options of `stepdance sim`.
+struct SimCommandOptions {
+  std::string scenario_path;
+  std::string output_directory;     ///< empty: the scenario's [output] directory
+  std::optional<double> duration_s;  ///< replaces duration_s
+  bool no_vcd = false;
+  bool quiet = false;
+  std::string cache_directory;      ///< empty: the default sketch cache
+};
+
+/// Adds the `sim` subcommand to `app`, filling `options` when it is parsed.
+CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options);
+
+/// Loads the scenario, builds the sketches, runs and writes the outputs. Returns kExitOk,
+/// kExitBadInput (scenario or sketch errors, printed as `file:line: message`), kExitFailure
+/// (an output could not be written) or kExitExpectationFailed.
+int run_sim_command(const SimCommandOptions& options);
+
+}  // namespace stepdance::cli

@@ -1,0 +1,144 @@
+// Simulation assembly, part 1: sketches → boards, driver sockets → models, and the machine.
+#include <filesystem>
+
+#include "loader/board_library.hpp"
+#include "loader/sketch_builder.hpp"
+#include "models/cartesian_machine.hpp"
+#include "models/corexy_plotter.hpp"
+#include "models/polar_turntable.hpp"
+#include "wiring/simulation.hpp"
+#include "wiring/step_feeder.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+std::string place(const scenario::Scenario& scenario, int line) {
+  return scenario.file + ":" + std::to_string(line) + ": ";
+}
+
+ServoBuild servo_build(scenario::ServoBuild build) {
+  return build == scenario::ServoBuild::k180deg ? ServoBuild::k180deg : ServoBuild::k90deg;
+}
+
+}  // namespace
+
+bool Simulation::build_boards(SimulationError& error) {
+  const SketchBuilder builder(options_.sketch_cache_dir);
+  boards_.reserve(scenario_.boards.size());
+  for (const scenario::BoardConfig& config : scenario_.boards) {
+    const SketchBuild build = builder.build(config.sketch);
+    if (!build.ok) {
+      error = {SimulationError::kBadInput, place(scenario_, config.line) + "board '" + config.name + "': " + build.error};
+      return false;
+    }
+    if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
+    std::string load_error;
+    auto library = BoardLibrary::load(build.library_path, load_error);
+    if (!library) {
+      error = {SimulationError::kFailure, load_error};
+      return false;
+    }
+    BoardOptions board_options;
+    board_options.name = config.name;
+    board_options.frame_phase_ns = SimTime{config.frame_phase_us} * kMicrosecond;
+    board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
+    board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
+    boards_.push_back(BoardSlot{&config, std::make_unique<SimBoard>(scheduler_, board_options, std::move(library)), {}});
+    BoardSlot& slot = boards_.back();
+    if (!slot.board->attach(load_error)) {
+      error = {SimulationError::kFailure, load_error};
+      return false;
+    }
+    if (!check_module(slot, error)) return false;
+    slot.board->on_console_line([this, &config](const std::string& line) {
+      if (options_.console) options_.console(config.name, line);
+    });
+    build_sockets(slot);
+  }
+  return true;
+}
+
+// The scenario's `module` must be the board the sketch selects with its #define.
+bool Simulation::check_module(const BoardSlot& slot, SimulationError& error) const {
+  const bool scenario_basic = slot.config->module == scenario::Module::kBasic;
+  if (scenario_basic == slot.board->is_basic_module()) return true;
+  error = {SimulationError::kBadInput,
+           place(scenario_, slot.config->line) + "board '" + slot.config->name + "' is a " +
+               (scenario_basic ? "Basic" : "Driver") + " Module in the scenario, but its sketch selects the " +
+               slot.board->definition().name + " (#define " + (scenario_basic ? "module_driver" : "module_basic") +
+               ")"};
+  return false;
+}
+
+// Each populated socket gets its model, fed by the port's STEP/DIR; a stepper also follows its
+// socket's ENABLE pin (active low, disabled until the sketch drives it).
+void Simulation::build_sockets(BoardSlot& slot) {
+  const BoardDefinition& definition = slot.board->definition();
+  for (const scenario::SocketConfig& config : slot.config->sockets) {
+    const uint8_t port = static_cast<uint8_t>(config.port - 'A');
+    Socket& socket = slot.sockets[port];
+    if (config.device == scenario::SocketDevice::kStepper) {
+      StepperDriverSettings settings;
+      settings.microsteps = config.microsteps;
+      settings.full_steps_per_rev = config.full_steps_per_rev;
+      socket.stepper = std::make_unique<StepperDriver>(settings);
+      socket.feeder = std::make_unique<StepFeeder<StepperDriver>>(*socket.stepper, &machine_moved_);
+      StepperDriver* stepper = socket.stepper.get();
+      slot.board->on_pin_change(definition.output_ports[port].enable,
+                                [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
+    } else {
+      socket.servo = std::make_unique<ServoBoard>(servo_build(config.build), 0);
+      socket.feeder = std::make_unique<StepFeeder<ServoBoard>>(*socket.servo, &machine_moved_);
+    }
+    slot.board->add_wire_listener(port, socket.feeder.get());
+  }
+}
+
+bool Simulation::build_machine(SimulationError& error) {
+  if (!scenario_.machine) return true;
+  const scenario::MachineConfig& config = *scenario_.machine;
+  BoardSlot& owner = slot(config.board);
+  auto stepper_at = [&owner](char port) { return owner.sockets[port - 'A'].stepper.get(); };
+  auto servo_at = [&owner](char port) { return owner.sockets[port - 'A'].servo.get(); };
+  PenTraceSettings trace;
+  trace.record_pen_up = scenario_.output.pen_up_travel;
+
+  if (const auto* corexy = std::get_if<scenario::CorexyConfig>(&config.kind)) {
+    StepperDriver* a = stepper_at(corexy->motor_a);
+    StepperDriver* b = stepper_at(corexy->motor_b);
+    if (a != nullptr && b != nullptr) {
+      const CorexySettings settings{corexy->steps_per_mm, corexy->pen_down_below_us, corexy->travel_x_mm,
+                                    corexy->travel_y_mm, trace};
+      machine_ = std::make_unique<CorexyPlotter>(*a, *b, servo_at(corexy->pen_servo), settings);
+    }
+  } else if (const auto* cartesian = std::get_if<scenario::CartesianConfig>(&config.kind)) {
+    auto optional_stepper = [&](const std::optional<char>& port) { return port ? stepper_at(*port) : nullptr; };
+    CartesianSettings settings;
+    settings.x_steps_per_mm = cartesian->x_steps_per_mm;
+    settings.y_steps_per_mm = cartesian->y_steps_per_mm;
+    settings.z_steps_per_mm = cartesian->z_steps_per_mm;
+    settings.e_steps_per_mm = cartesian->e_steps_per_mm;
+    settings.pen_down_at_or_below_mm = cartesian->pen_down_at_or_below_mm;
+    settings.trace = trace;
+    machine_ = std::make_unique<CartesianMachine>(
+        CartesianDrivers{optional_stepper(cartesian->x), optional_stepper(cartesian->y), optional_stepper(cartesian->z),
+                         optional_stepper(cartesian->e)},
+        settings);
+  } else if (const auto* polar = std::get_if<scenario::PolarConfig>(&config.kind)) {
+    StepperDriver* angle = stepper_at(polar->angle);
+    StepperDriver* radius = stepper_at(polar->radius);
+    if (angle != nullptr && radius != nullptr) {
+      const PolarSettings settings{polar->steps_per_rev, polar->steps_per_mm, polar->pen_down_below_us, trace};
+      machine_ = std::make_unique<PolarTurntable>(*angle, *radius, polar->pen_servo ? servo_at(*polar->pen_servo) : nullptr,
+                                                  settings);
+    }
+  }
+  if (!machine_) {
+    error = {SimulationError::kBadInput, place(scenario_, config.line) + "the machine's motor sockets must hold steppers"};
+    return false;
+  }
+  owner.board->on_frames_played([this](SimTime time) { after_frames(time); });
+  return true;
+}
+
+}  // namespace stepdance::sim

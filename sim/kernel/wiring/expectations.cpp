@@ -1,0 +1,135 @@
+// Evaluation of [[expect]] entries: motor steps, pen position, strokes, port pulses, cables, rejections.
+#include "wiring/expectations.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "output/pulse_counts.hpp"
+#include "wiring/simulation.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+using scenario::Expectation;
+using scenario::ExpectationType;
+
+std::string place(const scenario::Scenario& scenario, const Expectation& expectation) {
+  return scenario.file + ":" + std::to_string(expectation.line) + ": ";
+}
+
+std::string port_name(const scenario::PortLineRef& port) {
+  return port.board + (port.output ? ":OUT_" : ":IN_") + port.port;
+}
+
+std::string millimetres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", value);
+  return text;
+}
+
+ExpectationResult compare(const std::string& what, int64_t expected, int64_t actual) {
+  return {expected == actual,
+          what + ": expected " + std::to_string(expected) + ", got " + std::to_string(actual)};
+}
+
+ExpectationResult motor_steps(const Expectation& expectation, const Simulation& simulation) {
+  const std::string name = expectation.motor.board + ":" + expectation.motor.port;
+  const StepperDriver* motor = simulation.stepper(expectation.motor.board, expectation.motor.port);
+  if (motor == nullptr) return {false, "motor " + name + ": no stepper in that socket"};
+  return compare("motor " + name + " steps", expectation.steps, motor->position_steps());
+}
+
+ExpectationResult pen_position(const Expectation& expectation, const Simulation& simulation) {
+  if (simulation.machine() == nullptr) return {false, "pen_mm: the scenario has no machine"};
+  const PenPoint pen = simulation.machine()->pen_position();
+  const double off = std::hypot(pen.x_mm - expectation.pen_x_mm, pen.y_mm - expectation.pen_y_mm);
+  return {off <= expectation.tolerance_mm,
+          "pen at [" + millimetres(expectation.pen_x_mm) + ", " + millimetres(expectation.pen_y_mm) + "] mm ± " +
+              millimetres(expectation.tolerance_mm) + ": got [" + millimetres(pen.x_mm) + ", " +
+              millimetres(pen.y_mm) + "]"};
+}
+
+ExpectationResult strokes(const Expectation& expectation, const Simulation& simulation) {
+  if (simulation.machine() == nullptr) return {false, "strokes: the scenario has no machine"};
+  return compare("pen-down strokes", expectation.strokes, static_cast<int64_t>(simulation.machine()->strokes().size()));
+}
+
+const PulseCounts* counts_of(const scenario::PortLineRef& port, const Simulation& simulation) {
+  const SimBoard* board = simulation.board(port.board);
+  if (board == nullptr) return nullptr;
+  const uint8_t index = static_cast<uint8_t>(port.port - 'A');
+  return port.output ? &board->sent(index) : &board->received(index);
+}
+
+ExpectationResult port_pulses(const Expectation& expectation, const Simulation& simulation) {
+  const PulseCounts* counts = counts_of(expectation.port, simulation);
+  const std::string what = port_name(expectation.port) + " " + signal_name(static_cast<uint8_t>(expectation.signal));
+  if (counts == nullptr) return {false, what + ": no such board"};
+  const int64_t forward = static_cast<int64_t>(counts->forward[expectation.signal]);
+  const int64_t reverse = static_cast<int64_t>(counts->reverse[expectation.signal]);
+  ExpectationResult result{true, what + ":"};
+  if (expectation.forward) {
+    const ExpectationResult check = compare(" forward", *expectation.forward, forward);
+    result.met = result.met && check.met;
+    result.message += check.message;
+  }
+  if (expectation.reverse) {
+    const ExpectationResult check = compare(" reverse", *expectation.reverse, reverse);
+    result.met = result.met && check.met;
+    result.message += check.message;
+  }
+  return result;
+}
+
+ExpectationResult rejected(const Expectation& expectation, const Simulation& simulation) {
+  const PulseCounts* counts = counts_of(expectation.port, simulation);
+  if (counts == nullptr) return {false, port_name(expectation.port) + ": no such board"};
+  return compare(port_name(expectation.port) + " rejected pulses", expectation.rejected,
+                 static_cast<int64_t>(counts->rejected()));
+}
+
+// Every cable: the receiving port accepted exactly the pulses (per signal and direction) the
+// sending port put on the wire.
+ExpectationResult cable_counts(const scenario::Scenario& scenario, const Simulation& simulation) {
+  ExpectationResult result{true, "cable counts match:"};
+  for (const scenario::CableConfig& cable : scenario.cables) {
+    const PulseCounts& sent = simulation.board(cable.from.board)->sent(static_cast<uint8_t>(cable.from.port - 'A'));
+    const PulseCounts& got = simulation.board(cable.to.board)->received(static_cast<uint8_t>(cable.to.port - 'A'));
+    bool same = true;
+    for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+      same = same && sent.forward[signal] == got.forward[signal] && sent.reverse[signal] == got.reverse[signal];
+    }
+    result.met = result.met && same;
+    result.message += " " + cable.from.board + ":OUT_" + cable.from.port + " → " + cable.to.board + ":IN_" +
+                      cable.to.port + " sent " + std::to_string(sent.accepted()) + ", accepted " +
+                      std::to_string(got.accepted()) + (same ? "" : " (differs)");
+  }
+  return result;
+}
+
+ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation& expectation,
+                           const Simulation& simulation) {
+  switch (expectation.type) {
+    case ExpectationType::kMotorSteps: return motor_steps(expectation, simulation);
+    case ExpectationType::kPenPosition: return pen_position(expectation, simulation);
+    case ExpectationType::kStrokes: return strokes(expectation, simulation);
+    case ExpectationType::kPortPulses: return port_pulses(expectation, simulation);
+    case ExpectationType::kCableCountsMatch: return cable_counts(scenario, simulation);
+    case ExpectationType::kRejected: return rejected(expectation, simulation);
+  }
+  return {false, "unknown expectation"};
+}
+
+}  // namespace
+
+std::vector<ExpectationResult> evaluate_expectations(const scenario::Scenario& scenario, const Simulation& simulation) {
+  std::vector<ExpectationResult> results;
+  for (const Expectation& expectation : scenario.expectations) {
+    ExpectationResult result = evaluate(scenario, expectation, simulation);
+    result.message = place(scenario, expectation) + result.message;
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
+}  // namespace stepdance::sim

@@ -1,0 +1,168 @@
+// Simulation results: the pen drawing (SVG, PNG) and the JSON summary.
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+
+#include "output/png_writer.hpp"
+#include "output/summary_writer.hpp"
+#include "output/svg_writer.hpp"
+#include "wiring/simulation.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+constexpr const char* kFaultNames[] = {"none", "registry full", "queue full", "invariant", "hardware",
+                                       "bad configuration"};
+
+std::vector<Stroke> strokes_of(const Machine& machine) {
+  std::vector<Stroke> strokes;
+  auto add = [&strokes](const std::vector<Polyline>& lines, bool pen_down) {
+    for (const Polyline& line : lines) {
+      Stroke stroke;
+      stroke.pen_down = pen_down;
+      for (const PenPoint& point : line) stroke.points.push_back({point.x_mm, point.y_mm});
+      strokes.push_back(std::move(stroke));
+    }
+  };
+  add(machine.pen_up_moves(), false);
+  add(machine.strokes(), true);
+  return strokes;
+}
+
+// A CoreXY plotter's page is its travel area. Other machines have none: their page is the
+// drawing's bounding box, moved so it starts at the page origin.
+DrawingStyle page_for(const scenario::MachineConfig& machine, std::vector<Stroke>& strokes) {
+  DrawingStyle style;
+  if (const auto* plotter = std::get_if<scenario::CorexyConfig>(&machine.kind)) {
+    style.travel_width_mm = plotter->travel_x_mm;
+    style.travel_height_mm = plotter->travel_y_mm;
+    return style;
+  }
+  double min_x = std::numeric_limits<double>::max(), min_y = min_x, max_x = -min_x, max_y = -min_x;
+  for (const Stroke& stroke : strokes) {
+    for (const PointMm& point : stroke.points) {
+      min_x = std::min(min_x, point.x), max_x = std::max(max_x, point.x);
+      min_y = std::min(min_y, point.y), max_y = std::max(max_y, point.y);
+    }
+  }
+  if (min_x > max_x) min_x = max_x = min_y = max_y = 0;
+  for (Stroke& stroke : strokes) {
+    for (PointMm& point : stroke.points) point = {point.x - min_x, point.y - min_y};
+  }
+  style.travel_width_mm = std::max(max_x - min_x, 10.0);
+  style.travel_height_mm = std::max(max_y - min_y, 10.0);
+  return style;
+}
+
+}  // namespace
+
+void Simulation::write_drawings(SimulationReport& report) const {
+  const std::string svg = output_path(scenario_.output.svg);
+  const std::string png = output_path(scenario_.output.png);
+  if (!machine_ || (svg.empty() && png.empty())) return;
+  std::vector<Stroke> strokes = strokes_of(*machine_);
+  DrawingStyle style = page_for(*scenario_.machine, strokes);
+  style.pen_up_travel = scenario_.output.pen_up_travel;
+  for (const std::string& path : {svg, png}) {
+    if (!path.empty()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  }
+  if (!svg.empty()) {
+    write_svg(svg, strokes, style);
+    report.files.push_back(svg);
+  }
+  if (!png.empty()) {
+    write_png(png, strokes, style, scenario_.output.png_px_per_mm);
+    report.files.push_back(png);
+  }
+}
+
+nlohmann::json Simulation::summary_extra() const {
+  nlohmann::json extra = nlohmann::json::object();
+  nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
+  nlohmann::json motors = nlohmann::json::object(), cables = nlohmann::json::array();
+  for (const BoardSlot& slot : boards_) {
+    const StepdanceBoardStatsV1 stats = slot.board->stats();
+    frames[slot.config->name] = stats.frames;
+    nlohmann::json board_faults = nlohmann::json::array();
+    for (const BoardFault& fault : slot.board->faults()) {
+      board_faults.push_back({{"time_s", to_seconds(fault.time_ns)}, {"fault", fault.text}});
+    }
+    if (stats.fault_reason != 0) {
+      faults[slot.config->name] = {{"first", std::string(kFaultNames[stats.fault_reason % 6]) + ": " + stats.fault_detail},
+                                   {"count", stats.fault_count}, {"log", board_faults}};
+    }
+    for (uint8_t port = 0; port < 4; ++port) {
+      if (const StepperDriver* motor = slot.sockets[port].stepper.get()) {
+        motors[slot.config->name + ":" + static_cast<char>('A' + port)] = {
+            {"steps", motor->position_steps()}, {"forward", motor->forward_steps()},
+            {"reverse", motor->reverse_steps()}, {"ignored_while_disabled", motor->ignored_steps()}};
+      }
+    }
+  }
+  for (size_t i = 0; i < cables_.size(); ++i) {
+    const scenario::CableConfig& config = scenario_.cables[i];
+    const CableCounters& counters = cables_[i]->counters();
+    cables.push_back({{"from", config.from.board + ":OUT_" + config.from.port},
+                      {"to", config.to.board + ":IN_" + config.to.port},
+                      {"pulses_in", counters.pulses_in},
+                      {"pulses_passed", counters.pulses_passed},
+                      {"pulses_removed", counters.pulses_removed},
+                      {"pulses_merged", counters.pulses_merged},
+                      {"glitches_injected", counters.glitches_injected},
+                      {"glitches_skipped", counters.glitches_skipped}});
+  }
+  extra["faults"] = faults;
+  extra["frames"] = frames;
+  extra["motors"] = motors;
+  extra["cables"] = cables;
+  if (machine_) {
+    const MachineStats stats = machine_->stats();
+    extra["machine"] = {{"pen_mm", {machine_->pen_position().x_mm, machine_->pen_position().y_mm}},
+                        {"pen_down", machine_->pen_down()},
+                        {"strokes", stats.strokes},
+                        {"pen_down_mm", stats.pen_down_mm},
+                        {"pen_up_mm", stats.pen_up_mm},
+                        {"travel_excursions", stats.travel_excursions}};
+  }
+  return extra;
+}
+
+RunSummary Simulation::run_summary() const {
+  RunSummary summary;
+  summary.simulated_time = scheduler_.now();
+  for (const BoardSlot& slot : boards_) {
+    const StepdanceBoardStatsV1 stats = slot.board->stats();
+    summary.boards[slot.config->name].frame_overruns = stats.frame_overruns;
+    for (uint8_t port = 0; port < 4; ++port) {
+      const std::string letter(1, static_cast<char>('A' + port));
+      if (slot.board->output_claimed(port)) {
+        PortSummary& out = summary.ports[slot.config->name + ":OUT_" + letter];
+        const PulseCounts& sent = slot.board->sent(port);
+        for (uint8_t signal = 0; signal < kNumSignals; ++signal) out.pulses[signal] = {sent.forward[signal], sent.reverse[signal]};
+        out.carried = stats.carried[port];
+      }
+      if (slot.board->input_begun(port)) {
+        PortSummary& in = summary.ports[slot.config->name + ":IN_" + letter];
+        in.is_input = true;
+        const PulseCounts& got = slot.board->received(port);
+        for (uint8_t signal = 0; signal < kNumSignals; ++signal) in.pulses[signal] = {got.forward[signal], got.reverse[signal]};
+        in.rejected_too_short = got.too_short;
+        in.rejected_too_long = got.too_long;
+      }
+    }
+  }
+  summary.extra = summary_extra();
+  return summary;
+}
+
+std::string Simulation::summary_text() const { return sim::summary_text(run_summary()); }
+
+void Simulation::write_summary_file(const SimulationReport& report) const {
+  RunSummary summary = run_summary();
+  summary.wall_time_s = report.wall_s;
+  const std::string path = output_path(scenario_.output.summary);
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  write_summary(path, summary);
+}
+
+}  // namespace stepdance::sim

@@ -1,0 +1,153 @@
+// Simulation: creation order, the run loop, machine updates and the end of a run.
+#include "wiring/simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "stepdance/protocol/signals.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+/// The run advances in slices of this much simulated time, flushing the VCD and reporting
+/// progress between them.
+constexpr SimTime kSliceNs = 10 * kMillisecond;
+/// The machine is re-read at least every this many frames even when no motor stepped, so the
+/// pen follows the servo board (whose pulse changes every 24.85 ms).
+constexpr uint32_t kIdleFramesPerMachineUpdate = 25;
+/// A frame's last possible edge, after its start.
+constexpr SimTime kFrameWireNs = SimTime{protocol::kFrameBitsUs} * kMicrosecond;
+
+}  // namespace
+
+bool SimulationReport::all_expectations_met() const {
+  return std::all_of(expectations.begin(), expectations.end(), [](const ExpectationResult& r) { return r.met; });
+}
+
+Simulation::Simulation(const scenario::Scenario& scenario, const SimulationOptions& options)
+    : scenario_(scenario),
+      options_(options),
+      duration_(options.duration.value_or(scenario.duration)),
+      output_directory_(options.output_directory.value_or(scenario.output.directory)),
+      delivery_(scheduler_),
+      serial_actions_(scheduler_, &on_serial_action, this) {}
+
+Simulation::~Simulation() {
+  csv_.reset();
+  cables_.clear();
+  boards_.clear();  // unloads the sketches while the scheduler and models still exist
+}
+
+std::unique_ptr<Simulation> Simulation::create(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                               SimulationError& error) {
+  std::unique_ptr<Simulation> simulation(new Simulation(scenario, options));
+  if (!simulation->build_boards(error) || !simulation->build_machine(error)) return nullptr;
+  simulation->build_devices();
+  simulation->apply_timeline();
+  try {
+    simulation->build_vcd();
+    simulation->build_cables();
+    simulation->build_csv();
+  } catch (const std::exception& failure) {
+    error = {SimulationError::kFailure, failure.what()};
+    return nullptr;
+  }
+  for (BoardSlot& slot : simulation->boards_) {
+    slot.board->set_end_time(simulation->duration_);
+    slot.board->power_on(0);
+  }
+  return simulation;
+}
+
+// ---- running ------------------------------------------------------------------------------------
+
+void Simulation::run_until(SimTime end_ns) {
+  const SimTime end = std::min(end_ns, duration_);
+  const auto started = std::chrono::steady_clock::now();
+  for (;;) {
+    const SimTime slice_end = std::min(end, scheduler_.now() + kSliceNs);
+    scheduler_.run_until(slice_end);
+    if (vcd_) vcd_->flush(slice_end);
+    if (options_.progress) options_.progress(slice_end, duration_);
+    if (slice_end >= end) break;
+  }
+  wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+void Simulation::after_frames(SimTime frame_start_ns) {
+  ++ticks_since_machine_update_;
+  if (!machine_moved_ && ticks_since_machine_update_ < kIdleFramesPerMachineUpdate) return;
+  update_machine(frame_start_ns + kFrameWireNs);
+}
+
+void Simulation::update_machine(SimTime time_ns) {
+  machine_time_ns_ = std::max(machine_time_ns_, time_ns);
+  machine_->update(machine_time_ns_);
+  machine_moved_ = false;
+  ticks_since_machine_update_ = 0;
+}
+
+void Simulation::on_serial_action(void* context, SimTime, const size_t& action_index) {
+  auto& simulation = *static_cast<Simulation*>(context);
+  const scenario::Action& action = simulation.scenario_.timeline[action_index];
+  simulation.slot(action.target).board->send_console(action.serial_bytes);
+}
+
+SimulationReport Simulation::finish() {
+  run_until(duration_);
+  if (machine_) update_machine(duration_);
+  SimulationReport report;
+  report.simulated_ns = scheduler_.now();
+  report.wall_s = wall_s_;
+  if (vcd_) {
+    vcd_->close(duration_);
+    report.files.push_back(output_path(scenario_.output.vcd));
+  }
+  if (csv_) {
+    csv_->close();
+    report.files.push_back(output_path(scenario_.output.csv));
+  }
+  write_drawings(report);
+  if (!scenario_.output.summary.empty()) {
+    write_summary_file(report);
+    report.files.push_back(output_path(scenario_.output.summary));
+  }
+  report.expectations = evaluate_expectations(scenario_, *this);
+  return report;
+}
+
+// ---- lookups ------------------------------------------------------------------------------------
+
+std::string Simulation::output_path(const std::string& configured) const {
+  if (configured.empty() || !options_.output_directory) return configured;
+  return (std::filesystem::path(*options_.output_directory) / std::filesystem::path(configured).filename()).string();
+}
+
+Simulation::BoardSlot& Simulation::slot(const std::string& name) { return const_cast<BoardSlot&>(*find_slot(name)); }
+
+const Simulation::BoardSlot* Simulation::find_slot(const std::string& name) const {
+  for (const BoardSlot& slot : boards_) {
+    if (slot.config->name == name) return &slot;
+  }
+  return nullptr;
+}
+
+SimBoard* Simulation::board(const std::string& name) const {
+  const BoardSlot* found = find_slot(name);
+  return found != nullptr ? found->board.get() : nullptr;
+}
+
+const StepperDriver* Simulation::stepper(const std::string& board, char port) const {
+  const BoardSlot* found = find_slot(board);
+  if (found == nullptr || port < 'A' || port > 'D') return nullptr;
+  return found->sockets[port - 'A'].stepper.get();
+}
+
+const ServoBoard* Simulation::servo(const std::string& board, char port) const {
+  const BoardSlot* found = find_slot(board);
+  if (found == nullptr || port < 'A' || port > 'D') return nullptr;
+  return found->sockets[port - 'A'].servo.get();
+}
+
+}  // namespace stepdance::sim

@@ -1,0 +1,176 @@
+// A whole simulation built from a scenario: boards, devices, sockets, machine, cables, outputs, checks.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "board/sim_board.hpp"
+#include "models/bouncing_button.hpp"
+#include "models/limit_switch.hpp"
+#include "models/machine.hpp"
+#include "models/potentiometer.hpp"
+#include "models/quadrature_encoder.hpp"
+#include "models/servo_board.hpp"
+#include "models/stepper_driver.hpp"
+#include "output/summary_writer.hpp"
+#include "scenario/scenario.hpp"
+#include "scheduler/one_shot_pool.hpp"
+#include "scheduler/periodic_timer.hpp"
+#include "scheduler/scheduler.hpp"
+#include "wiring/cable_link.hpp"
+#include "wiring/csv_sampler.hpp"
+#include "wiring/expectations.hpp"
+#include "wiring/pulse_delivery.hpp"
+#include "wiring/vcd_recorder.hpp"
+
+namespace stepdance::sim {
+
+/// How to run a scenario, beyond what the scenario file says.
+struct SimulationOptions {
+  /// Where compiled sketches are cached ("" = SketchBuilder::default_cache_dir()).
+  std::string sketch_cache_dir;
+  /// Replaces the scenario's duration.
+  std::optional<SimTime> duration;
+  /// Replaces the output directory; the files keep their names.
+  std::optional<std::string> output_directory;
+  /// False skips the VCD even if the scenario asks for one.
+  bool write_vcd = true;
+  /// Called now and then with (simulated time so far, total), for a progress bar.
+  std::function<void(SimTime, SimTime)> progress;
+  /// Called with every line a sketch prints on Serial: (board name, line).
+  std::function<void(const std::string&, const std::string&)> console;
+  /// Called with compiler warnings of a freshly built sketch: (sketch path, text).
+  std::function<void(const std::string&, const std::string&)> build_diagnostics;
+};
+
+/// Why a simulation could not be built.
+struct SimulationError {
+  /// kBadInput: the scenario or a sketch is wrong (the message says where); kFailure: the
+  /// machine failed (cannot write, cannot load).
+  enum Kind { kBadInput, kFailure } kind = kBadInput;
+  std::string message;
+};
+
+/// What a finished run produced.
+struct SimulationReport {
+  SimTime simulated_ns = 0;
+  double wall_s = 0;
+  /// Files written, in the order written.
+  std::vector<std::string> files;
+  std::vector<ExpectationResult> expectations;
+  bool all_expectations_met() const;
+};
+
+/// Builds everything a scenario describes and runs it:
+///
+///   timeline ─► encoder/pot/button models ─► board inputs (read when the sketch reads them)
+///   board output ports ─► stepper / servo models ─► machine ─► pen strokes ─► SVG / PNG
+///                     └─► cables ─► other boards' input ports
+///                     └─► VCD
+///   every csv_interval ─► CSV row;  at the end ─► summary JSON, [[expect]] checks
+///
+/// Deterministic: the same scenario, sketches and options give byte-identical files (the
+/// summary's last key, wall_time_s, aside).
+class Simulation {
+ public:
+  /// Compiles and loads every sketch and wires the scenario up. Returns null and fills `error`
+  /// when something is wrong.
+  static std::unique_ptr<Simulation> create(const scenario::Scenario& scenario, const SimulationOptions& options,
+                                            SimulationError& error);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Runs from the current time up to `end_ns` (at most the duration). Context: not re-entrant.
+  void run_until(SimTime end_ns);
+  /// Runs to the end, writes every output file and evaluates the expectations. Output failures
+  /// throw std::runtime_error("path: …").
+  SimulationReport finish();
+
+  // ---- what tests and tools look at ----
+  SimTime now() const { return scheduler_.now(); }
+  SimTime duration() const { return duration_; }
+  /// A board by name (null if none).
+  SimBoard* board(const std::string& name) const;
+  /// The stepper / servo in `board`'s socket `port` (null if none).
+  const StepperDriver* stepper(const std::string& board, char port) const;
+  const ServoBoard* servo(const std::string& board, char port) const;
+  /// The machine (null if the scenario has none).
+  const Machine* machine() const { return machine_.get(); }
+  /// The cables, in scenario order.
+  const std::vector<std::unique_ptr<CableLink>>& cables() const { return cables_; }
+  /// The JSON summary text as it would be written now (wall time left out).
+  std::string summary_text() const;
+
+ private:
+  struct Socket {
+    std::unique_ptr<StepperDriver> stepper;
+    std::unique_ptr<ServoBoard> servo;
+    std::unique_ptr<WireListener> feeder;
+  };
+  struct BoardSlot {
+    const scenario::BoardConfig* config = nullptr;
+    std::unique_ptr<SimBoard> board;
+    std::array<Socket, 4> sockets;
+  };
+  Simulation(const scenario::Scenario& scenario, const SimulationOptions& options);
+
+  // Assembly (board_assembly.cpp, device_assembly.cpp, output_assembly.cpp).
+  bool build_boards(SimulationError& error);
+  bool check_module(const BoardSlot& slot, SimulationError& error) const;
+  void build_sockets(BoardSlot& slot);
+  bool build_machine(SimulationError& error);
+  void build_devices();
+  void build_device(const scenario::DeviceConfig& device, BoardSlot& slot);
+  void apply_timeline();
+  void build_cables();
+  void build_vcd();
+  void build_csv();
+  BoardSlot& slot(const std::string& name);
+  const BoardSlot* find_slot(const std::string& name) const;
+  /// A configured output file's path, moved into --out's directory when that was given.
+  std::string output_path(const std::string& configured) const;
+
+  // Running.
+  static void on_serial_action(void* context, SimTime time, const size_t& action_index);
+  void after_frames(SimTime frame_start_ns);
+  void update_machine(SimTime time_ns);
+
+  // Reporting (run_report.cpp).
+  void write_drawings(SimulationReport& report) const;
+  RunSummary run_summary() const;
+  nlohmann::json summary_extra() const;
+  void write_summary_file(const SimulationReport& report) const;
+
+  scenario::Scenario scenario_;
+  SimulationOptions options_;
+  SimTime duration_ = 0;
+  std::string output_directory_;
+
+  Scheduler scheduler_;
+  std::vector<BoardSlot> boards_;
+  std::unique_ptr<Machine> machine_;
+  bool machine_moved_ = false;
+  uint32_t ticks_since_machine_update_ = 0;
+  SimTime machine_time_ns_ = 0;
+
+  std::map<std::string, std::unique_ptr<QuadratureEncoder>> encoders_;
+  std::map<std::string, std::unique_ptr<Potentiometer>> pots_;
+  std::map<std::string, std::unique_ptr<BouncingButton>> buttons_;
+  std::vector<std::unique_ptr<LimitSwitch>> limit_switches_;
+
+  PulseDelivery delivery_;
+  std::vector<std::unique_ptr<CableLink>> cables_;
+  std::unique_ptr<VcdRecorder> vcd_;
+  std::map<std::string, size_t> vcd_inputs_;  ///< "board:IN_A" → recorder input
+  std::unique_ptr<CsvSampler> csv_;
+  OneShotPool<size_t> serial_actions_;
+  double wall_s_ = 0;
+};
+
+}  // namespace stepdance::sim
