@@ -13,7 +13,6 @@ class BlockPort;
 class Block {
  public:
   Block() = default;
-  virtual ~Block() { unregister(this); }
   Block(const Block&) = delete;
   Block& operator=(const Block&) = delete;
 
@@ -41,6 +40,10 @@ class Block {
   virtual void loop() {}
 
  protected:
+  /// Unregisters the block. Blocks are never deleted through a Block pointer (they are globals
+  /// or locals), so the destructor is not virtual: no operator delete reaches firmware images.
+  ~Block() { unregister(this); }
+
   /// Registers this block in a stage. On a full registry it reports a fault and returns kFull;
   /// registering twice in one stage is a no-op. Context: loop.
   Status register_in(Stage stage);

@@ -20,6 +20,7 @@ void BlockPort::begin(DecimalPosition* target, BlockPortDirection direction, Blo
 void BlockPort::set_ratio(double world_units, double block_units) {
   if (world_units == 0.0 || block_units == 0.0) return;
   world_per_block_ = world_units / block_units;
+  block_per_world_ = block_units / world_units;
 }
 
 void BlockPort::map(BlockPort* peer, PositionMode mode) {
@@ -34,7 +35,7 @@ void BlockPort::write(double world_value, PositionMode mode) {
     incremental_buffer = 0;
     update_has_run_ = false;
   }
-  const double block_value = world_value / world_per_block_;
+  const double block_value = world_value * block_per_world_;
   if (mode == INCREMENTAL) {
     incremental_buffer = incremental_buffer + block_value;
   } else {
@@ -73,7 +74,7 @@ void BlockPort::set(double block_value, PositionMode mode) {
 }
 
 void BlockPort::reset(double value, bool raw) {
-  const double position = raw ? value : value / world_per_block_;
+  const double position = raw ? value : value * block_per_world_;
   hal::CriticalSection guard;
   *target_ = position;
   absolute_buffer = position;

@@ -95,7 +95,7 @@ class BlockPort {
 
   /// Unit conversions with this port's ratio. Context: any.
   double convert_block_to_world_units(double block_value) const { return block_value * world_per_block_; }
-  double convert_world_to_block_units(double world_value) const { return world_value / world_per_block_; }
+  double convert_world_to_block_units(double world_value) const { return world_value * block_per_world_; }
 
   /// Sum of every change committed by update/set/reverse_update since begin, in world units.
   /// Context: any.
@@ -113,6 +113,7 @@ class BlockPort {
   DecimalPosition own_state_ = 0;
   DecimalPosition* target_;
   double world_per_block_ = 1.0;
+  double block_per_world_ = 1.0;  // the inverse, so the frame path multiplies instead of dividing
   double committed_world_ = 0;
   double pushed_total_ = 0;  // committed_world_ at the last incremental push
   double pulled_total_ = 0;  // peer's committed_total() at the last incremental pull

@@ -15,7 +15,6 @@ enum class FileMode : uint8_t { kRead, kWriteTruncate, kAppend };
 /// Minimal file access for recordings and programs. Context: loop only (it may block on I/O).
 class FileStorage {
  public:
-  virtual ~FileStorage() = default;
   /// Opens `name` (at most kMaxNameLength characters) and returns a handle ≥ 0, or a status.
   virtual Status open(const char* name, FileMode mode, int& handle) = 0;
   /// Reads up to length bytes; `read` receives the count (0 at end of file).
@@ -26,6 +25,10 @@ class FileStorage {
   virtual Status close(int handle) = 0;
   /// Longest file name accepted by open().
   static constexpr size_t kMaxNameLength = 63;
+
+ protected:
+  // Never deleted through this base (see ByteStream).
+  ~FileStorage() = default;
 };
 
 namespace hal {

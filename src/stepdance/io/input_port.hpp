@@ -37,7 +37,7 @@ constexpr uint8_t NUM_AVAILABLE_INPUT_PORTS = 4;
 class InputPort : public Block {
  public:
   InputPort();
-  ~InputPort() override { detach(); }
+  ~InputPort() { detach(); }
 
   /// Claims input port `port` (INPUT_A..INPUT_D) on the active board, enables all six signals
   /// and registers in the input-port stage. kNoSuchPin if the board has no such port (the Basic

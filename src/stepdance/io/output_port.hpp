@@ -30,7 +30,7 @@ enum OutputTransmitMode : uint8_t { OUTPUT_TRANSMIT_ON_FRAME = 1, OUTPUT_TRANSMI
 class OutputPort : public Block {
  public:
   OutputPort() = default;
-  ~OutputPort() override { forget(this); }
+  ~OutputPort() { forget(this); }
 
   /// Claims the port on the active board and transmits every frame. kNoSuchPin if the board has
   /// no such port. Context: loop.
