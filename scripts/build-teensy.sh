@@ -173,50 +173,24 @@ if [ ${#unlinked_hal[@]} -gt 0 ]; then
 fi
 
 # ---- Forbidden symbols: in any object's references and in any image ---------------------------
-#
-# One narrow exception: operator delete(void*[, size_t]) may be referenced by the deleting
-# destructors ("D0") the compiler emits for classes with virtual destructors. Those run only on a
-# delete-expression; with operator new and malloc forbidden there is no heap object to delete, and
-# the stand-in defines both operator deletes as traps, so free() is never linked either.
 
 status=0
-deleting_destructors=()
 for object in "${all_objects[@]}"; do
-  hits=$(arm-none-eabi-nm -u "$object" | awk '{print $2}' | grep -E "$forbidden" | grep -Ev '^_ZdlPvj?$' || true)
+  hits=$(arm-none-eabi-nm -u "$object" | awk '{print $2}' | grep -E "$forbidden" || true)
   if [ -n "$hits" ]; then
     echo "build-teensy: FORBIDDEN: $object references" $hits >&2
     status=1
   fi
-  # Which sections call operator delete: all must be deleting destructors.
-  while read -r section; do
-    if [[ $section == *D0Ev ]]; then
-      deleting_destructors+=("${section#.text.}")
-    else
-      echo "build-teensy: FORBIDDEN: $object calls operator delete from $section" >&2
-      status=1
-    fi
-  done < <(arm-none-eabi-objdump -r "$object" |
-    awk '/^RELOCATION RECORDS FOR \[/ { section = $4; gsub(/^\[|\]:$/, "", section); next }
-         $3 ~ /^_ZdlPvj?$/ { print section }' | sort -u)
 done
 for elf in "${images[@]}"; do
-  hits=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -E "$forbidden" | grep -Ev '^_ZdlPvj?$' || true)
+  hits=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -E "$forbidden" || true)
   if [ -n "$hits" ]; then
     echo "build-teensy: FORBIDDEN: $elf contains" $hits >&2
     status=1
   fi
-  if grep -Eq '^[^ ]*lib(std|sup)c\+\+[^ ]*\((del_op|del_ops)\.o\)' "${elf%.elf}.map"; then
-    echo "build-teensy: FORBIDDEN: $elf links operator delete from libstdc++ (which calls free)" >&2
-    status=1
-  fi
 done
 [ $status -eq 0 ] || fail "heap or exception symbols found (see above)"
-echo "build-teensy: no malloc/free, operator new or exception symbols in any object or image"
-if [ ${#deleting_destructors[@]} -gt 0 ]; then
-  echo "build-teensy: note: operator delete is referenced only by the deleting destructors of" \
-    "$(printf '%s\n' "${deleting_destructors[@]}" | sort -u | c++filt | sed 's/::~.*//' | sort -u | paste -sd, - |
-      sed 's/,/, /g') (virtual destructors; it resolves to the stand-in's trap)"
-fi
+echo "build-teensy: no malloc/free, operator new/delete or exception symbols in any object or image"
 
 # ---- The Step-A-Sketch firmware: hex and size report -----------------------------------------
 

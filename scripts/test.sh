@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Sets up the machine, then builds and runs the whole test suite: the core's portability check,
-# the Cortex-M7 cross-compile, the host tests (CTest: unit, example-sketch, servo firmware under
-# simavr), and the same host tests again under AddressSanitizer and UBSan.
+# the Cortex-M7 builds (core, Teensy backend, every example sketch, firmware image, Arduino zip),
+# the core's unit tests on a Cortex-M7 under QEMU, the host tests (CTest: unit, example sketches,
+# simulator, servo firmware under simavr), and the host tests again under AddressSanitizer + UBSan.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 scripts/check-core-portability.sh
 scripts/build-target.sh
+scripts/build-teensy.sh
+scripts/test-target-qemu.sh
 scripts/build-host.sh
 ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)"
 echo "== again under AddressSanitizer and UBSan"

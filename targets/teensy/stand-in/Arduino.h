@@ -26,8 +26,6 @@
 //                SerialUSB1                       only with USB_DUAL_SERIAL or USB_TRIPLE_SERIAL
 //   For the image (teensyduino_stand_in.cpp, startup.cpp; Teensyduino's core has the real ones)
 //                main(), reset handler, boot headers, vector table in RAM
-//                operator delete(void*), operator delete(void*, size_t): traps; only deleting
-//                destructors of classes with virtual destructors refer to them
 #pragma once
 
 #include <math.h>

@@ -40,18 +40,6 @@ size_t usb_serial_class::write(const uint8_t*, size_t length) { return length; }
 int usb_serial_class::availableForWrite() { return 0; }
 usb_serial_class::operator bool() const { return true; }
 
-// Teensyduino's core defines the global operator delete (with free()). Classes with virtual
-// destructors need it for their deleting destructors, which run only on `delete`: Stepdance has no
-// operator new and no heap, so these traps are never reached, and malloc/free stay out of the image.
-void operator delete(void*) noexcept {
-  for (;;) {
-  }
-}
-void operator delete(void*, size_t) noexcept {
-  for (;;) {
-  }
-}
-
 SDClass SD;
 
 size_t File::read(void*, size_t) { return 0; }
