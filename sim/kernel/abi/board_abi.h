@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 1u
+#define STEPDANCE_BOARD_ABI_VERSION 2u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -58,12 +58,11 @@ typedef struct StepdanceBoardStatsV1 {
 typedef struct StepdanceHostV1 {
   uint32_t abi_version;
 
-  /* ---- time and timers ---- */
-  int64_t (*now_ns)(void* context);
+  /* ---- timers (time itself comes with every entry point of StepdanceBoardV1) ---- */
   int (*timer_start)(void* context, int timer_id, uint32_t period_us);
   void (*timers_stop)(void* context);
-  /* Arduino delay(): runs the rest of the simulation for duration_ns, then returns. */
-  void (*delay_ns)(void* context, int64_t duration_ns);
+  /* Arduino delay(): runs the rest of the simulation for duration_ns; returns the time then. */
+  int64_t (*delay_ns)(void* context, int64_t duration_ns);
 
   /* ---- motion-stream ports ---- */
   int (*port_out_begin)(void* context, uint8_t port);
@@ -96,17 +95,19 @@ typedef struct StepdanceHostV1 {
   int (*file_close)(void* context, int handle);
 } StepdanceHostV1;
 
-/* Entry points of one board, called by the simulator's scheduler. */
+/* Entry points of one board, called by the simulator's scheduler. Each takes the current
+ * simulated time (ns), which the board keeps for hal::micros_now() and cycles_now() until the
+ * next entry: within one entry time only moves through delay_ns(). */
 typedef struct StepdanceBoardV1 {
   uint32_t abi_version;
   /* The module the sketch selected (`#define module_driver` / `module_basic`): 0 driver, 1 basic. */
   int module;
-  void (*run_setup)(void);
-  void (*run_frame_tick)(void);
-  void (*run_khz_tick)(void);
-  void (*run_loop)(void);
+  void (*run_setup)(int64_t now_ns);
+  void (*run_frame_tick)(int64_t now_ns);
+  void (*run_khz_tick)(int64_t now_ns);
+  void (*run_loop)(int64_t now_ns);
   /* The port's capture ISR: hands one pulse to the sink registered by port_in_begin(). */
-  void (*deliver_pulse)(uint8_t port, const StepdanceCapturedPulseV1* pulse);
+  void (*deliver_pulse)(int64_t now_ns, uint8_t port, const StepdanceCapturedPulseV1* pulse);
   void (*read_stats)(StepdanceBoardStatsV1* stats);
 } StepdanceBoardV1;
 

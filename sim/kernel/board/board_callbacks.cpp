@@ -15,10 +15,12 @@ int no_such_pin() { return static_cast<int>(Status::kNoSuchPin); }
 StepdanceHostV1 BoardCallbacks::table() {
   StepdanceHostV1 host{};
   host.abi_version = STEPDANCE_BOARD_ABI_VERSION;
-  host.now_ns = [](void* c) -> int64_t { return of(c).scheduler_.now(); };
   host.timer_start = [](void* c, int timer, uint32_t period_us) { return of(c).start_timer(timer, period_us); };
   host.timers_stop = [](void* c) { of(c).stop_timers(); };
-  host.delay_ns = [](void* c, int64_t duration_ns) { of(c).delay(duration_ns); };
+  host.delay_ns = [](void* c, int64_t duration_ns) {
+    of(c).delay(duration_ns);
+    return of(c).scheduler_.now();
+  };
 
   host.port_out_begin = [](void* c, uint8_t port) {
     if (port >= SimBoard::kPorts) return no_such_pin();

@@ -3,7 +3,6 @@
 
 #include <cstdint>
 
-#include "stepdance/protocol/frame_reader.hpp"
 #include "stepdance/protocol/pulse_decoder.hpp"
 #include "stepdance/protocol/signals.hpp"
 
@@ -39,16 +38,28 @@ struct PulseCounts {
 /// Decodes every STEP pulse of a played frame as a Stepdance receiver would (width → signal,
 /// DIR at the falling edge) and adds it to `counts`. Pulses that fall more than
 /// `last_fall_us` µs after the frame start are left out (they end after the run does).
+///
+/// Widths on the wire are whole microseconds, so this is decode_pulse() without the capture
+/// arithmetic: w µs → signal w − 2 for 2..7, too short below, too long above. A pulse still
+/// high at bit 31 ends at 32 µs, where DIR is low.
 inline void count_frame_pulses(const protocol::FrameWords& words, PulseCounts& counts,
                                int64_t last_fall_us = protocol::kFrameBitsUs) {
-  protocol::WirePulse pulses[16];
-  const size_t found = protocol::read_wire_pulses(words, pulses, 16);
-  const protocol::CaptureClock clock{};
-  for (size_t i = 0; i < found; ++i) {
-    if (pulses[i].fall_us > last_fall_us) continue;
-    const protocol::CapturedPulse captured =
-        protocol::capture_wire_pulse(pulses[i], clock, 0, protocol::DirSampleEdge::kFalling);
-    counts.add(protocol::decode_pulse(captured, clock, INPUT_MODE_STEPDANCE, SIGNAL_X));
+  const uint64_t step = words.step_bits;
+  uint64_t rises = step & ~(step << 1);
+  while (rises != 0) {
+    const int rise = __builtin_ctzll(rises);
+    rises &= rises - 1;
+    const int fall = __builtin_ctzll(~(step >> rise)) + rise;  // first low bit after the rise
+    if (fall > last_fall_us) continue;
+    const int width = fall - rise;
+    if (width < protocol::kMinPulseWidthUs) {
+      ++counts.too_short;
+    } else if (width > protocol::kMaxPulseWidthUs) {
+      ++counts.too_long;
+    } else {
+      const bool forward = ((uint64_t{words.dir_bits} >> fall) & 1u) != 0;
+      ++(forward ? counts.forward : counts.reverse)[width - protocol::kMinPulseWidthUs];
+    }
   }
 }
 

@@ -57,14 +57,14 @@ void SimBoard::power_on(SimTime time_ns) { scheduler_.schedule(setup_event_, tim
 
 void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
   SimBoard& board = static_cast<SetupEvent&>(event).owner;
-  board.board_->run_setup();
+  board.board_->run_setup(scheduler.now());
   scheduler.schedule(board.loop_event_, scheduler.now());
 }
 
 void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
   SimBoard& board = static_cast<LoopEvent&>(event).owner;
   const SimTime started = event.time();
-  board.board_->run_loop();
+  board.board_->run_loop(scheduler.now());
   const SimTime next = started + board.options_.loop_period_ns;
   scheduler.schedule(event, next > scheduler.now() ? next : scheduler.now());
 }
@@ -100,14 +100,14 @@ void SimBoard::frame_tick(void* context, SimTime time) {
   board.play_pending_frames(time);
   if (board.tick_listener_) board.tick_listener_(time);
   board.in_isr_ = true;
-  board.board_->run_frame_tick();
+  board.board_->run_frame_tick(time);
   board.in_isr_ = false;
 }
 
-void SimBoard::khz_tick(void* context, SimTime) {
+void SimBoard::khz_tick(void* context, SimTime time) {
   auto& board = *static_cast<SimBoard*>(context);
   board.in_isr_ = true;
-  board.board_->run_khz_tick();
+  board.board_->run_khz_tick(time);
   board.in_isr_ = false;
 }
 
@@ -158,7 +158,7 @@ void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
   state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
   const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks, captured.dir_high ? uint8_t{1} : uint8_t{0}};
   in_isr_ = true;
-  board_->deliver_pulse(port, &delivered);
+  board_->deliver_pulse(scheduler_.now(), port, &delivered);
   in_isr_ = false;
 }
 

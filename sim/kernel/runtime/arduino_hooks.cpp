@@ -7,7 +7,7 @@ namespace stepdance::arduino_backend {
 // The simulator runs the rest of the world (this board's interrupts included) for the delay.
 void delay_us(uint32_t us) {
   if (us == 0) return;
-  sim_runtime::host().delay_ns(sim_runtime::host_context(), int64_t{us} * 1000);
+  sim_runtime::set_now_ns(sim_runtime::host().delay_ns(sim_runtime::host_context(), int64_t{us} * 1000));
 }
 
 // Only the USB console (Serial) is simulated; other ports are unconnected.

@@ -42,12 +42,29 @@ void read_stats(StepdanceBoardStatsV1* stats) {
   stats_being_filled = nullptr;
 }
 
-void run_setup() { ::setup(); }
-void run_loop() { ::loop(); }
-void deliver_pulse(uint8_t port, const StepdanceCapturedPulseV1* pulse) { deliver_captured_pulse(port, *pulse); }
+void run_setup(int64_t now) {
+  set_now_ns(now);
+  ::setup();
+}
+void run_frame_tick(int64_t now) {
+  set_now_ns(now);
+  run_frame_isr();
+}
+void run_khz_tick(int64_t now) {
+  set_now_ns(now);
+  run_khz_isr();
+}
+void run_loop(int64_t now) {
+  set_now_ns(now);
+  ::loop();
+}
+void deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pulse) {
+  set_now_ns(now);
+  deliver_captured_pulse(port, *pulse);
+}
 
 StepdanceBoardV1 board_table = {
-    STEPDANCE_BOARD_ABI_VERSION, 0, &run_setup, &run_frame_isr, &run_khz_isr, &run_loop, &deliver_pulse, &read_stats,
+    STEPDANCE_BOARD_ABI_VERSION, 0, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
 };
 
 }  // namespace

@@ -6,10 +6,9 @@ namespace {
 
 constexpr int kUnsupported = 7;  // stepdance::Status::kUnsupported
 
-int64_t zero_time(void*) { return 0; }
 int refuse_timer(void*, int, uint32_t) { return kUnsupported; }
 void ignore(void*) {}
-void ignore_delay(void*, int64_t) {}
+int64_t ignore_delay(void*, int64_t) { return 0; }
 int refuse_port(void*, uint8_t) { return kUnsupported; }
 void ignore_frame(void*, uint8_t, uint32_t, uint32_t) {}
 int refuse_input(void*, uint8_t, int) { return kUnsupported; }
@@ -34,7 +33,7 @@ int refuse_close(void*, int) { return kUnsupported; }
 
 const StepdanceHostV1 kDetached = {
     STEPDANCE_BOARD_ABI_VERSION,
-    &zero_time,    &refuse_timer,     &ignore,       &ignore_delay, &refuse_port,  &ignore_frame,
+    &refuse_timer,     &ignore,       &ignore_delay, &refuse_port,  &ignore_frame,
     &refuse_input, &refuse_port,      &zero_count,   &ignore_count, &refuse_port,  &zero_adc,
     &zero_samples, &refuse_mode,      &low_pin,      &ignore_write, &ignore,       &ignore_fault,
     &swallow,      &nothing_available, &no_byte,     &refuse_open,  &refuse_read,  &refuse_write,
@@ -43,11 +42,15 @@ const StepdanceHostV1 kDetached = {
 
 const StepdanceHostV1* current = &kDetached;
 void* current_context = nullptr;
+int64_t current_ns = 0;
 
 }  // namespace
 
 const StepdanceHostV1& host() { return *current; }
 void* host_context() { return current_context; }
+
+int64_t now_ns() { return current_ns; }
+void set_now_ns(int64_t now) { current_ns = now; }
 
 void attach_host(const StepdanceHostV1* table, void* context) {
   current = table;

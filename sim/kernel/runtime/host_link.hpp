@@ -13,4 +13,9 @@ void* host_context();
 /// Installs the simulator's table; called once by stepdance_board_attach().
 void attach_host(const StepdanceHostV1* table, void* context);
 
+/// Simulated time (ns) as of the latest entry from the simulator (or return from delay).
+int64_t now_ns();
+/// Records the time an entry point or delay_ns() brought.
+void set_now_ns(int64_t now);
+
 }  // namespace stepdance::sim_runtime

@@ -24,6 +24,9 @@ struct CaptureSink {
 hal::Isr frame_isr = nullptr;
 hal::Isr khz_isr = nullptr;
 CaptureSink capture_sinks[kPorts];
+// Ports whose last handed-over frame had a high bit and may not have been played yet. An idle
+// frame after a played (or idle) one changes nothing on the host, so it is not sent at all.
+bool frame_pending[kPorts] = {};
 bool irq_enabled = true;
 
 const StepdanceHostV1& host() { return sim_runtime::host(); }
@@ -38,6 +41,7 @@ bool has_adc(uint8_t pin) { return (pin >= 14 && pin <= 27) || (pin >= 38 && pin
 namespace sim_runtime {
 
 void run_frame_isr() {
+  for (bool& pending : frame_pending) pending = false;  // the host has just played them
   if (frame_isr != nullptr) frame_isr();
 }
 
@@ -55,8 +59,8 @@ void deliver_captured_pulse(uint8_t port, const StepdanceCapturedPulseV1& pulse)
 
 namespace hal {
 
-uint32_t micros_now() { return static_cast<uint32_t>(host().now_ns(ctx()) / 1000); }
-uint32_t cycles_now() { return static_cast<uint32_t>(host().now_ns(ctx()) * 3 / 5); }
+uint32_t micros_now() { return static_cast<uint32_t>(sim_runtime::now_ns() / 1000); }
+uint32_t cycles_now() { return static_cast<uint32_t>(sim_runtime::now_ns() * 3 / 5); }
 uint32_t cycles_per_second() { return 600000000u; }
 
 Status frame_timer_start(uint32_t period_us, Isr on_frame) {
@@ -89,6 +93,10 @@ Status port_out_begin(uint8_t port) {
 }
 
 void port_out_frame(uint8_t port, const protocol::FrameWords& words) {
+  if (port >= kPorts) return;
+  const bool idle = (words.step_bits | words.dir_bits) == 0;
+  if (idle && !frame_pending[port]) return;
+  frame_pending[port] = !idle;
   host().port_out_frame(ctx(), port, words.step_bits, words.dir_bits);
 }
 

@@ -25,8 +25,9 @@ class Event {
 
   /// The time the event is (or was last) scheduled for, in ns.
   SimTime time() const { return time_; }
-  /// True while the event waits in a scheduler's queue.
-  bool scheduled() const { return heap_index_ != kNotQueued; }
+  /// True while the event waits in a scheduler's queue (not while its own handler runs, unless
+  /// the handler scheduled it again).
+  bool scheduled() const { return heap_index_ != kNotQueued && !in_dispatch_; }
   /// Replaces the handler (for pooled events that are reused for different jobs).
   void set_handler(Handler handler) { handler_ = handler; }
 
@@ -42,6 +43,9 @@ class Event {
   SimTime time_ = 0;
   uint64_t sequence_ = 0;
   size_t heap_index_ = kNotQueued;
+  /// True while the handler runs and the event is still parked at the heap's root (see
+  /// Scheduler::step): rescheduling it then is a cheap sift-down from the root.
+  bool in_dispatch_ = false;
   Handler handler_;
 };
 

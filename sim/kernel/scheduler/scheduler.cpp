@@ -4,7 +4,10 @@
 namespace stepdance::sim {
 
 Scheduler::~Scheduler() {
-  for (Event* event : heap_) event->heap_index_ = Event::kNotQueued;
+  for (Event* event : heap_) {
+    event->heap_index_ = Event::kNotQueued;
+    event->in_dispatch_ = false;
+  }
 }
 
 void Scheduler::place(Event* event, size_t index) {
@@ -49,8 +52,19 @@ void Scheduler::remove_at(size_t index) {
 }
 
 void Scheduler::schedule(Event& event, SimTime time) {
-  if (event.scheduled()) remove_at(event.heap_index_);
-  event.time_ = time < now_ ? now_ : time;
+  const bool parked_at_root = event.in_dispatch_;
+  event.in_dispatch_ = false;
+  const SimTime due = time < now_ ? now_ : time;
+  if (parked_at_root) {
+    // The event being handled sits at the root and its new key (due ≥ now, fresh sequence)
+    // is larger than before: one sift-down replaces a pop and a push.
+    event.time_ = due;
+    event.sequence_ = next_sequence_++;
+    sift_down(0);
+    return;
+  }
+  if (event.heap_index_ != Event::kNotQueued) remove_at(event.heap_index_);
+  event.time_ = due;
   event.sequence_ = next_sequence_++;
   heap_.push_back(&event);
   event.heap_index_ = heap_.size() - 1;
@@ -58,16 +72,23 @@ void Scheduler::schedule(Event& event, SimTime time) {
 }
 
 void Scheduler::cancel(Event& event) {
-  if (event.scheduled()) remove_at(event.heap_index_);
+  event.in_dispatch_ = false;
+  if (event.heap_index_ != Event::kNotQueued) remove_at(event.heap_index_);
 }
 
+// The event stays at the root while its handler runs (no element can sort before it: every
+// other key is later in time or in sequence). If the handler reschedules it, schedule() moves
+// it down from there; otherwise it is removed afterwards. A nested step() (a handler running
+// the world, as delay() does) first removes any such parked event.
 bool Scheduler::step(SimTime end) {
+  if (!heap_.empty() && heap_.front()->in_dispatch_) cancel(*heap_.front());
   if (heap_.empty() || heap_.front()->time_ > end) return false;
   Event* const event = heap_.front();
-  remove_at(0);
   if (event->time_ > now_) now_ = event->time_;
   ++handled_;
+  event->in_dispatch_ = true;
   if (event->handler_ != nullptr) event->handler_(*event, *this);
+  if (event->in_dispatch_) cancel(*event);
   return true;
 }
 
