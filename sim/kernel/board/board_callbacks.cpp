@@ -34,6 +34,7 @@ StepdanceHostV1 BoardCallbacks::table() {
     auto& state = of(c).ports_[port];
     state.pending = protocol::FrameWords{step_bits, dir_bits};
     state.frame_pending = (step_bits | dir_bits) != 0;  // idle frames need no playing
+    if (state.frame_pending) of(c).pending_ports_ = static_cast<uint8_t>(of(c).pending_ports_ | (1u << port));
   };
   host.port_in_begin = [](void* c, uint8_t port, int edge) {
     if (port >= SimBoard::kPorts) return no_such_pin();

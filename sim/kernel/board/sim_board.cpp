@@ -113,6 +113,7 @@ void SimBoard::khz_tick(void* context, SimTime time) {
 
 // The words handed over during the previous frame go on the wire now, at the fixed phase.
 void SimBoard::play_pending_frames(SimTime start_ns) {
+  if ((pending_ports_ | idle_listening_ports_) == 0) return;
   for (PortState& port : ports_) {
     if (!port.frame_pending) {
       for (WireListener* listener : port.idle_listeners) listener->on_frame(start_ns, protocol::FrameWords{});
@@ -127,6 +128,7 @@ void SimBoard::play_pending_frames(SimTime start_ns) {
     }
     for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending);
   }
+  pending_ports_ = 0;
 }
 
 void SimBoard::delay(SimTime duration_ns) {
@@ -142,7 +144,9 @@ void SimBoard::delay(SimTime duration_ns) {
 void SimBoard::add_wire_listener(uint8_t port, WireListener* listener) {
   PortState& state = ports_.at(port);
   state.listeners.push_back(listener);
-  if (listener->wants_idle_frames()) state.idle_listeners.push_back(listener);
+  if (!listener->wants_idle_frames()) return;
+  state.idle_listeners.push_back(listener);
+  idle_listening_ports_ = static_cast<uint8_t>(idle_listening_ports_ | (1u << port));
 }
 
 void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {

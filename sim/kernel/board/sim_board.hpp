@@ -190,6 +190,8 @@ class SimBoard {
   bool in_isr_ = false;
   bool safe_state_ = false;
   std::array<PortState, kPorts> ports_{};
+  uint8_t pending_ports_ = 0;       ///< bit p: port p has a frame to play at the next tick
+  uint8_t idle_listening_ports_ = 0;  ///< bit p: port p has listeners that want idle frames
   std::array<PinState, kPins> pins_{};
   std::array<AdcState, kPins> adcs_{};
   std::array<Source<int64_t>, 2> encoders_{};

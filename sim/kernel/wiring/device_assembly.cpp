@@ -94,7 +94,9 @@ void Simulation::apply_timeline() {
   for (size_t index = 0; index < scenario_.timeline.size(); ++index) {
     const scenario::Action& action = scenario_.timeline[index];
     switch (action.type) {
-      case scenario::ActionType::kTurn: encoders_.at(action.target)->turn(action.time, action.counts, action.over); break;
+      case scenario::ActionType::kTurn:
+        encoders_.at(action.target)->turn(action.time, action.counts, action.over);
+        break;
       case scenario::ActionType::kPress: buttons_.at(action.target)->press(action.time); break;
       case scenario::ActionType::kRelease: buttons_.at(action.target)->release(action.time); break;
       case scenario::ActionType::kClick: buttons_.at(action.target)->click(action.time, action.hold); break;
