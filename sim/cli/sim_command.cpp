@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "console_echo.hpp"
 #include "exit_codes.hpp"
 #include "progress_bar.hpp"
 #include "scenario/load_scenario.hpp"
@@ -13,7 +14,8 @@
 namespace stepdance::cli {
 namespace {
 
-sim::SimulationOptions simulation_options(const SimCommandOptions& options, ProgressBar& progress) {
+sim::SimulationOptions simulation_options(const SimCommandOptions& options, ProgressBar& progress,
+                                          ConsoleEcho& echo) {
   sim::SimulationOptions sim_options;
   sim_options.sketch_cache_dir = options.cache_directory;
   if (options.duration_s) sim_options.duration = sim::from_seconds(*options.duration_s);
@@ -23,10 +25,7 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, Prog
   sim_options.write_vcd = !options.no_vcd;
   sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
   if (!options.quiet) {
-    sim_options.console = [&progress](const std::string& board, const std::string& line) {
-      progress.clear();
-      std::cout << "[" << board << "] " << line << "\n";
-    };
+    sim_options.console = [&echo](const std::string& board, const std::string& line) { echo.line(board, line); };
     sim_options.build_diagnostics = [&progress](const std::string& sketch, const std::string& text) {
       progress.clear();
       std::cerr << sketch << ": compiler warnings:\n" << text;
@@ -75,8 +74,9 @@ int run_sim_command(const SimCommandOptions& options) {
     return kExitBadInput;
   }
   ProgressBar progress(!options.quiet);
+  ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;
-  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, progress), error);
+  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, progress, echo), error);
   if (!simulation) {
     std::cerr << error.message << (error.message.empty() || error.message.back() != '\n' ? "\n" : "");
     return error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;
@@ -89,6 +89,7 @@ int run_sim_command(const SimCommandOptions& options) {
     std::cerr << failure.what() << "\n";
     return kExitFailure;
   }
+  echo.flush();
   progress.clear();
   std::cout.flush();
   print_report(report, options.quiet);
