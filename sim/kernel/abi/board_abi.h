@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 2u
+#define STEPDANCE_BOARD_ABI_VERSION 3u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -47,6 +47,7 @@ typedef struct StepdanceBoardStatsV1 {
   uint32_t frames;               /* frames run since dance_start() */
   uint32_t frame_overruns;       /* frames over their CPU budget (see docs: not modelled) */
   uint8_t fault_reason;          /* stepdance::FaultReason, 0 = none */
+  const char* fault_name;        /* its name ("registry full", …); static */
   uint32_t fault_count;          /* fault() calls */
   const char* fault_detail;      /* "" if none; valid until the next call into the board */
   uint32_t carried[4];           /* OutputPort::signals_carried() per output port */

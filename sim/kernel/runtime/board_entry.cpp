@@ -35,6 +35,7 @@ void read_stats(StepdanceBoardStatsV1* stats) {
   stats->frames = engine().frame_count();
   stats->frame_overruns = engine().load().overruns();
   stats->fault_reason = static_cast<uint8_t>(fault_reason());
+  stats->fault_name = to_string(fault_reason());
   stats->fault_count = fault_count();
   stats->fault_detail = fault_detail();
   stats_being_filled = stats;

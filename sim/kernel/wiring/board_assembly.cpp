@@ -81,11 +81,15 @@ void Simulation::build_sockets(BoardSlot& slot) {
       StepperDriverSettings settings;
       settings.microsteps = config.microsteps;
       settings.full_steps_per_rev = config.full_steps_per_rev;
+      const uint8_t enable_pin = definition.output_ports[port].enable;
+      settings.enabled = enable_pin == kNoPin;  // a socket without an ENABLE line is always on
       socket.stepper = std::make_unique<StepperDriver>(settings);
       socket.feeder = std::make_unique<StepFeeder<StepperDriver>>(*socket.stepper, &machine_moved_);
       StepperDriver* stepper = socket.stepper.get();
-      slot.board->on_pin_change(definition.output_ports[port].enable,
-                                [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
+      if (enable_pin != kNoPin) {
+        slot.board->on_pin_change(enable_pin,
+                                  [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
+      }
     } else {
       socket.servo = std::make_unique<ServoBoard>(servo_build(config.build), 0);
       socket.feeder = std::make_unique<StepFeeder<ServoBoard>>(*socket.servo, &machine_moved_);

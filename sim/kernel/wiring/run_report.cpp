@@ -11,9 +11,6 @@
 namespace stepdance::sim {
 namespace {
 
-constexpr const char* kFaultNames[] = {"none", "registry full", "queue full", "invariant", "hardware",
-                                       "bad configuration"};
-
 std::vector<Stroke> strokes_of(const Machine& machine) {
   std::vector<Stroke> strokes;
   auto add = [&strokes](const std::vector<Polyline>& lines, bool pen_down) {
@@ -88,7 +85,7 @@ nlohmann::json Simulation::summary_extra() const {
       board_faults.push_back({{"time_s", to_seconds(fault.time_ns)}, {"fault", fault.text}});
     }
     if (stats.fault_reason != 0) {
-      faults[slot.config->name] = {{"first", std::string(kFaultNames[stats.fault_reason % 6]) + ": " + stats.fault_detail},
+      faults[slot.config->name] = {{"first", std::string(stats.fault_name) + ": " + stats.fault_detail},
                                    {"count", stats.fault_count}, {"log", board_faults}};
     }
     for (uint8_t port = 0; port < 4; ++port) {
