@@ -15,13 +15,23 @@ int no_such_pin() { return static_cast<int>(Status::kNoSuchPin); }
 StepdanceHostV1 BoardCallbacks::table() {
   StepdanceHostV1 host{};
   host.abi_version = STEPDANCE_BOARD_ABI_VERSION;
+  add_timer_callbacks(host);
+  add_port_callbacks(host);
+  add_input_callbacks(host);
+  add_console_callbacks(host);
+  return host;
+}
+
+void BoardCallbacks::add_timer_callbacks(StepdanceHostV1& host) {
   host.timer_start = [](void* c, int timer, uint32_t period_us) { return of(c).start_timer(timer, period_us); };
   host.timers_stop = [](void* c) { of(c).stop_timers(); };
   host.delay_ns = [](void* c, int64_t duration_ns) {
     of(c).delay(duration_ns);
     return of(c).scheduler_.now();
   };
+}
 
+void BoardCallbacks::add_port_callbacks(StepdanceHostV1& host) {
   host.port_out_begin = [](void* c, uint8_t port) {
     if (port >= SimBoard::kPorts) return no_such_pin();
     auto& state = of(c).ports_[port];
@@ -43,7 +53,9 @@ StepdanceHostV1 BoardCallbacks::table() {
     state.edge = edge == STEPDANCE_DIR_AT_RISING ? protocol::DirSampleEdge::kRising : protocol::DirSampleEdge::kFalling;
     return ok();
   };
+}
 
+void BoardCallbacks::add_input_callbacks(StepdanceHostV1& host) {
   host.quadrature_begin = [](void*, uint8_t index) { return index < 2 ? ok() : no_such_pin(); };
   host.quadrature_read = [](void* c, uint8_t index) { return of(c).read_quadrature(index); };
   host.quadrature_write = [](void* c, uint8_t index, int32_t count) { of(c).write_quadrature(index, count); };
@@ -62,7 +74,9 @@ StepdanceHostV1 BoardCallbacks::table() {
   host.gpio_mode = [](void* c, uint8_t pin, int mode) { return of(c).set_pin_mode(pin, mode); };
   host.gpio_read = [](void* c, uint8_t pin) { return pin < SimBoard::kPins && of(c).pin_level(pin) ? 1 : 0; };
   host.gpio_write = [](void* c, uint8_t pin, int high) { of(c).write_pin(pin, high != 0); };
+}
 
+void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
   host.enter_safe_state = [](void* c) { of(c).enter_safe_state(); };
   host.log_fault = [](void* c, const char* reason, const char* detail) {
     of(c).faults_.push_back({of(c).scheduler_.now(), std::string(reason) + ": " + detail});
@@ -83,7 +97,6 @@ StepdanceHostV1 BoardCallbacks::table() {
     return static_cast<int>(of(c).storage_.write(handle, data, length));
   };
   host.file_close = [](void* c, int handle) { return static_cast<int>(of(c).storage_.close(handle)); };
-  return host;
 }
 
 }  // namespace stepdance::sim

@@ -9,6 +9,12 @@ namespace stepdance::sim {
 /// its context back to the SimBoard and answers from simulated state.
 struct BoardCallbacks {
   static StepdanceHostV1 table();
+
+ private:
+  static void add_timer_callbacks(StepdanceHostV1& host);    ///< timers, delay()
+  static void add_port_callbacks(StepdanceHostV1& host);     ///< output and input ports
+  static void add_input_callbacks(StepdanceHostV1& host);    ///< quadrature, ADC, GPIO
+  static void add_console_callbacks(StepdanceHostV1& host);  ///< faults, console, storage
 };
 
 }  // namespace stepdance::sim

@@ -1,5 +1,6 @@
 // Simulation assembly, part 1: sketches → boards, driver sockets → models, and the machine.
 #include <filesystem>
+#include <functional>
 
 #include "loader/board_library.hpp"
 #include "loader/sketch_builder.hpp"
@@ -18,6 +19,46 @@ std::string place(const scenario::Scenario& scenario, int line) {
 
 ServoBuild servo_build(scenario::ServoBuild build) {
   return build == scenario::ServoBuild::k180deg ? ServoBuild::k180deg : ServoBuild::k90deg;
+}
+
+/// The models in the machine board's sockets, by port letter (null where there is none).
+struct SocketModels {
+  std::function<StepperDriver*(char)> stepper;
+  std::function<ServoBoard*(char)> servo;
+};
+
+std::unique_ptr<Machine> make_corexy(const scenario::CorexyConfig& config, const SocketModels& sockets,
+                                     const PenTraceSettings& trace) {
+  StepperDriver* a = sockets.stepper(config.motor_a);
+  StepperDriver* b = sockets.stepper(config.motor_b);
+  if (a == nullptr || b == nullptr) return nullptr;
+  const CorexySettings settings{config.steps_per_mm, config.pen_down_below_us, config.travel_x_mm, config.travel_y_mm,
+                                trace};
+  return std::make_unique<CorexyPlotter>(*a, *b, sockets.servo(config.pen_servo), settings);
+}
+
+std::unique_ptr<Machine> make_cartesian(const scenario::CartesianConfig& config, const SocketModels& sockets,
+                                        const PenTraceSettings& trace) {
+  auto axis = [&sockets](const std::optional<char>& port) { return port ? sockets.stepper(*port) : nullptr; };
+  CartesianSettings settings;
+  settings.x_steps_per_mm = config.x_steps_per_mm;
+  settings.y_steps_per_mm = config.y_steps_per_mm;
+  settings.z_steps_per_mm = config.z_steps_per_mm;
+  settings.e_steps_per_mm = config.e_steps_per_mm;
+  settings.pen_down_at_or_below_mm = config.pen_down_at_or_below_mm;
+  settings.trace = trace;
+  return std::make_unique<CartesianMachine>(CartesianDrivers{axis(config.x), axis(config.y), axis(config.z), axis(config.e)},
+                                            settings);
+}
+
+std::unique_ptr<Machine> make_polar(const scenario::PolarConfig& config, const SocketModels& sockets,
+                                    const PenTraceSettings& trace) {
+  StepperDriver* angle = sockets.stepper(config.angle);
+  StepperDriver* radius = sockets.stepper(config.radius);
+  if (angle == nullptr || radius == nullptr) return nullptr;
+  const PolarSettings settings{config.steps_per_rev, config.steps_per_mm, config.pen_down_below_us, trace};
+  return std::make_unique<PolarTurntable>(*angle, *radius, config.pen_servo ? sockets.servo(*config.pen_servo) : nullptr,
+                                          settings);
 }
 
 }  // namespace
@@ -102,40 +143,16 @@ bool Simulation::build_machine(SimulationError& error) {
   if (!scenario_.machine) return true;
   const scenario::MachineConfig& config = *scenario_.machine;
   BoardSlot& owner = slot(config.board);
-  auto stepper_at = [&owner](char port) { return owner.sockets[port - 'A'].stepper.get(); };
-  auto servo_at = [&owner](char port) { return owner.sockets[port - 'A'].servo.get(); };
+  const SocketModels sockets{[&owner](char port) { return owner.sockets[port - 'A'].stepper.get(); },
+                             [&owner](char port) { return owner.sockets[port - 'A'].servo.get(); }};
   PenTraceSettings trace;
   trace.record_pen_up = scenario_.output.pen_up_travel;
-
   if (const auto* corexy = std::get_if<scenario::CorexyConfig>(&config.kind)) {
-    StepperDriver* a = stepper_at(corexy->motor_a);
-    StepperDriver* b = stepper_at(corexy->motor_b);
-    if (a != nullptr && b != nullptr) {
-      const CorexySettings settings{corexy->steps_per_mm, corexy->pen_down_below_us, corexy->travel_x_mm,
-                                    corexy->travel_y_mm, trace};
-      machine_ = std::make_unique<CorexyPlotter>(*a, *b, servo_at(corexy->pen_servo), settings);
-    }
+    machine_ = make_corexy(*corexy, sockets, trace);
   } else if (const auto* cartesian = std::get_if<scenario::CartesianConfig>(&config.kind)) {
-    auto optional_stepper = [&](const std::optional<char>& port) { return port ? stepper_at(*port) : nullptr; };
-    CartesianSettings settings;
-    settings.x_steps_per_mm = cartesian->x_steps_per_mm;
-    settings.y_steps_per_mm = cartesian->y_steps_per_mm;
-    settings.z_steps_per_mm = cartesian->z_steps_per_mm;
-    settings.e_steps_per_mm = cartesian->e_steps_per_mm;
-    settings.pen_down_at_or_below_mm = cartesian->pen_down_at_or_below_mm;
-    settings.trace = trace;
-    machine_ = std::make_unique<CartesianMachine>(
-        CartesianDrivers{optional_stepper(cartesian->x), optional_stepper(cartesian->y), optional_stepper(cartesian->z),
-                         optional_stepper(cartesian->e)},
-        settings);
+    machine_ = make_cartesian(*cartesian, sockets, trace);
   } else if (const auto* polar = std::get_if<scenario::PolarConfig>(&config.kind)) {
-    StepperDriver* angle = stepper_at(polar->angle);
-    StepperDriver* radius = stepper_at(polar->radius);
-    if (angle != nullptr && radius != nullptr) {
-      const PolarSettings settings{polar->steps_per_rev, polar->steps_per_mm, polar->pen_down_below_us, trace};
-      machine_ = std::make_unique<PolarTurntable>(*angle, *radius, polar->pen_servo ? servo_at(*polar->pen_servo) : nullptr,
-                                                  settings);
-    }
+    machine_ = make_polar(*polar, sockets, trace);
   }
   if (!machine_) {
     error = {SimulationError::kBadInput, place(scenario_, config.line) + "the machine's motor sockets must hold steppers"};

@@ -73,20 +73,20 @@ void Simulation::write_drawings(SimulationReport& report) const {
   }
 }
 
-nlohmann::json Simulation::summary_extra() const {
-  nlohmann::json extra = nlohmann::json::object();
+// Per board: frames run and faults; per stepper socket: where the motor ended up.
+void Simulation::add_board_extras(nlohmann::json& extra) const {
   nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
-  nlohmann::json motors = nlohmann::json::object(), cables = nlohmann::json::array();
+  nlohmann::json motors = nlohmann::json::object();
   for (const BoardSlot& slot : boards_) {
     const StepdanceBoardStatsV1 stats = slot.board->stats();
     frames[slot.config->name] = stats.frames;
-    nlohmann::json board_faults = nlohmann::json::array();
-    for (const BoardFault& fault : slot.board->faults()) {
-      board_faults.push_back({{"time_s", to_seconds(fault.time_ns)}, {"fault", fault.text}});
-    }
     if (stats.fault_reason != 0) {
+      nlohmann::json log = nlohmann::json::array();
+      for (const BoardFault& fault : slot.board->faults()) {
+        log.push_back({{"time_s", to_seconds(fault.time_ns)}, {"fault", fault.text}});
+      }
       faults[slot.config->name] = {{"first", std::string(stats.fault_name) + ": " + stats.fault_detail},
-                                   {"count", stats.fault_count}, {"log", board_faults}};
+                                   {"count", stats.fault_count}, {"log", log}};
     }
     for (uint8_t port = 0; port < 4; ++port) {
       if (const StepperDriver* motor = slot.sockets[port].stepper.get()) {
@@ -96,6 +96,13 @@ nlohmann::json Simulation::summary_extra() const {
       }
     }
   }
+  extra["faults"] = faults;
+  extra["frames"] = frames;
+  extra["motors"] = motors;
+}
+
+nlohmann::json Simulation::cable_extras() const {
+  nlohmann::json cables = nlohmann::json::array();
   for (size_t i = 0; i < cables_.size(); ++i) {
     const scenario::CableConfig& config = scenario_.cables[i];
     const CableCounters& counters = cables_[i]->counters();
@@ -108,19 +115,24 @@ nlohmann::json Simulation::summary_extra() const {
                       {"glitches_injected", counters.glitches_injected},
                       {"glitches_skipped", counters.glitches_skipped}});
   }
-  extra["faults"] = faults;
-  extra["frames"] = frames;
-  extra["motors"] = motors;
-  extra["cables"] = cables;
-  if (machine_) {
-    const MachineStats stats = machine_->stats();
-    extra["machine"] = {{"pen_mm", {machine_->pen_position().x_mm, machine_->pen_position().y_mm}},
-                        {"pen_down", machine_->pen_down()},
-                        {"strokes", stats.strokes},
-                        {"pen_down_mm", stats.pen_down_mm},
-                        {"pen_up_mm", stats.pen_up_mm},
-                        {"travel_excursions", stats.travel_excursions}};
-  }
+  return cables;
+}
+
+nlohmann::json Simulation::machine_extra() const {
+  const MachineStats stats = machine_->stats();
+  return {{"pen_mm", {machine_->pen_position().x_mm, machine_->pen_position().y_mm}},
+          {"pen_down", machine_->pen_down()},
+          {"strokes", stats.strokes},
+          {"pen_down_mm", stats.pen_down_mm},
+          {"pen_up_mm", stats.pen_up_mm},
+          {"travel_excursions", stats.travel_excursions}};
+}
+
+nlohmann::json Simulation::summary_extra() const {
+  nlohmann::json extra = nlohmann::json::object();
+  add_board_extras(extra);
+  extra["cables"] = cable_extras();
+  if (machine_) extra["machine"] = machine_extra();
   return extra;
 }
 

@@ -145,6 +145,9 @@ class Simulation {
   void write_drawings(SimulationReport& report) const;
   RunSummary run_summary() const;
   nlohmann::json summary_extra() const;
+  void add_board_extras(nlohmann::json& extra) const;
+  nlohmann::json cable_extras() const;
+  nlohmann::json machine_extra() const;
   void write_summary_file(const SimulationReport& report) const;
 
   scenario::Scenario scenario_;
