@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <random>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -129,11 +128,21 @@ std::string fuzz_seed() {
   return out.str() + "$comment tail $end\n#300001 b1 ! r2.5 \" x#\n$dumpall 1! $end\n";
 }
 
-void check_does_not_crash(const std::string& text, const std::regex& error_form) {
+// True if `error` reads "fuzz.vcd:<line>: <message>" with a non-empty message.
+bool has_error_form(const std::string& error) {
+  const std::string prefix = "fuzz.vcd:";
+  if (error.compare(0, prefix.size(), prefix) != 0) return false;
+  size_t at = prefix.size();
+  const size_t digits_start = at;
+  while (at < error.size() && error[at] >= '0' && error[at] <= '9') ++at;
+  return at > digits_start && error.compare(at, 2, ": ") == 0 && error.size() > at + 2;
+}
+
+void check_does_not_crash(const std::string& text) {
   std::istringstream in(text);
   const VcdReadResult result = read_vcd(in, "fuzz.vcd");
   if (!result.ok) {
-    EXPECT_TRUE(std::regex_match(result.error, error_form)) << result.error;
+    EXPECT_TRUE(has_error_form(result.error)) << result.error;
     return;
   }
   for (const VcdWire& wire : result.capture.wires) {
@@ -154,13 +163,11 @@ TEST(VcdReaderErrors, EveryTruncationGivesAResultOrAnError) {
     std::istringstream in(seed);
     ASSERT_TRUE(read_vcd(in, "seed").ok);
   }
-  const std::regex error_form(R"(fuzz\.vcd:[0-9]+: .+)");
-  for (size_t length = 0; length <= seed.size(); ++length) check_does_not_crash(seed.substr(0, length), error_form);
+  for (size_t length = 0; length <= seed.size(); ++length) check_does_not_crash(seed.substr(0, length));
 }
 
 TEST(VcdReaderErrors, RandomMutationsGiveAResultOrAnError) {
   const std::string seed = fuzz_seed();
-  const std::regex error_form(R"(fuzz\.vcd:[0-9]+: .+)", std::regex::extended);
   const std::vector<std::string> dictionary = {"$end", "$var", "$scope", "$upscope", "$enddefinitions", "#", "b", "r",
                                                "x", "$dumpvars", "$comment", "#18446744073709551615", "\n", " ", "\0"};
   std::mt19937 rng(20241121);
@@ -177,7 +184,7 @@ TEST(VcdReaderErrors, RandomMutationsGiveAResultOrAnError) {
         default: text.resize(at); break;
       }
     }
-    check_does_not_crash(text, error_form);
+    check_does_not_crash(text);
   }
 }
 
