@@ -76,18 +76,8 @@ bool read_motor(TableReader& reader, Expectation& check, const ParseContext& con
 
 bool read_pen(TableReader& reader, Expectation& check, const ParseContext& context) {
   const toml::array* pair = reader.array("pen_mm");
-  bool ok = pair != nullptr && pair->size() == 2;
   double values[2] = {0, 0};
-  for (size_t i = 0; ok && i < 2; ++i) {
-    const toml::node& item = *pair->get(i);
-    if (const auto* whole = item.as_integer()) {
-      values[i] = static_cast<double>(whole->get());
-    } else if (const auto* real = item.as_floating_point()) {
-      values[i] = real->get();
-    } else {
-      ok = false;
-    }
-  }
+  bool ok = pair != nullptr && read_number_pair(*pair, values);
   if (pair != nullptr && !ok) reader.error("pen_mm", "'pen_mm' must be two numbers [x, y]");
   check.pen_x_mm = values[0];
   check.pen_y_mm = values[1];

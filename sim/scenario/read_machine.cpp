@@ -62,18 +62,7 @@ CorexyConfig read_corexy(TableReader& reader, SocketChecker& sockets) {
   positive(reader, "pen_down_below_us", config.pen_down_below_us);
   if (const toml::array* travel = reader.array("travel_mm")) {
     double values[2] = {0, 0};
-    bool ok = travel->size() == 2;
-    for (size_t i = 0; ok && i < 2; ++i) {
-      const toml::node& item = *travel->get(i);
-      if (const auto* whole = item.as_integer()) {
-        values[i] = static_cast<double>(whole->get());
-      } else if (const auto* real = item.as_floating_point()) {
-        values[i] = real->get();
-      } else {
-        ok = false;
-      }
-      ok = ok && values[i] > 0;
-    }
+    const bool ok = read_number_pair(*travel, values) && values[0] > 0 && values[1] > 0;
     if (ok) {
       config.travel_x_mm = values[0];
       config.travel_y_mm = values[1];

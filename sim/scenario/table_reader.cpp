@@ -130,4 +130,19 @@ void TableReader::finish() {
   }
 }
 
+bool read_number_pair(const toml::array& array, double (&out)[2]) {
+  if (array.size() != 2) return false;
+  for (size_t i = 0; i < 2; ++i) {
+    const toml::node& item = *array.get(i);
+    if (const auto* whole = item.as_integer()) {
+      out[i] = static_cast<double>(whole->get());
+    } else if (const auto* real = item.as_floating_point()) {
+      out[i] = real->get();
+    } else {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace stepdance::sim::scenario

@@ -77,6 +77,9 @@ class TableReader {
   std::set<std::string, std::less<>> known_;
 };
 
+/// Reads `array` as exactly two numbers (integers accepted) into `out`; false if it is not.
+bool read_number_pair(const toml::array& array, double (&out)[2]);
+
 /// "a string", "an integer", … for a node's TOML type.
 std::string_view type_phrase(const toml::node& node);
 
