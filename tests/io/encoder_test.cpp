@@ -79,6 +79,15 @@ TEST_F(EncoderTest, InvertReversesTheDirectionAndKeepsTheReading) {
   EXPECT_DOUBLE_EQ(sink.position, -90.0);
 }
 
+TEST_F(EncoderTest, InvertingTwiceStaysInverted) {
+  Encoder encoder;
+  encoder.invert();
+  encoder.invert();  // the original toggled back here
+  start(encoder);
+  EXPECT_TRUE(encoder.is_inverted());
+  EXPECT_DOUBLE_EQ(turn_to(40), -40.0);
+}
+
 TEST_F(EncoderTest, SetWithInvertProducesNoJump) {
   Encoder encoder;
   start(encoder);

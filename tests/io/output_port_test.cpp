@@ -150,6 +150,35 @@ TEST_F(OutputPortTest, ForwardAndReversePendingOnOneSignalCancel) {
   EXPECT_EQ(a.pulses_sent(SIGNAL_E, DIRECTION_REVERSE), 0u);
 }
 
+TEST_F(OutputPortTest, BeginStartsWithEmptyStatisticsAndNothingPending) {
+  OutputPort a;
+  ASSERT_EQ(a.begin(OUTPUT_A), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  a.add_signal(SIGNAL_X, DIRECTION_FORWARD);
+  hal_manual::run_frames(1);
+  a.add_signal(SIGNAL_Y, DIRECTION_REVERSE);  // left pending: no frame runs before begin()
+  ASSERT_EQ(a.pulses_sent(SIGNAL_X, DIRECTION_FORWARD), 1u);
+
+  stepdance::hal_manual::reset();  // frees the port claim, as a fresh boot would
+  ASSERT_EQ(a.begin(OUTPUT_A), Status::kOk);
+  EXPECT_EQ(a.pulses_sent(SIGNAL_X, DIRECTION_FORWARD), 0u);
+  EXPECT_EQ(a.pending(SIGNAL_Y), 0);
+  EXPECT_EQ(a.signals_carried(), 0u);
+}
+
+TEST_F(OutputPortTest, ASecondObjectOnAPortRetiresTheFirst) {
+  OutputPort first;
+  OutputPort second;
+  ASSERT_EQ(first.begin(OUTPUT_B), Status::kOk);
+  EXPECT_EQ(second.begin(OUTPUT_B), Status::kBusy);  // the hardware port is claimed
+
+  stepdance::hal_manual::reset();  // the claim is gone; the first object is still registered
+  ASSERT_EQ(second.begin(OUTPUT_B), Status::kOk);
+  EXPECT_EQ(first.port_index(), 255);
+  EXPECT_EQ(second.port_index(), OUTPUT_B);
+  EXPECT_EQ(engine().count(Stage::kOutputPorts), 1u);
+}
+
 TEST_F(OutputPortTest, StepNowIsSentWithTheNextFrame) {
   OutputPort d;
   ASSERT_EQ(d.begin(OUTPUT_D), Status::kOk);

@@ -144,6 +144,22 @@ TEST_F(ChannelTest, HalfAStepIsInsideTheDeadBand) {
 
 // ---- Output direction ---------------------------------------------------------------------------
 
+TEST_F(ChannelTest, InvertingTwiceStaysInverted) {
+  Channel channel;
+  start(channel);
+  channel.invert_output();
+  channel.invert_output();  // the original toggled back here; a re-run setup() must not undo it
+  channel.input_target_position.write(1.0, ABSOLUTE);
+  hal_manual::run_frames(1);
+  EXPECT_EQ(hal_manual::last_frame(OUTPUT_A).dir_bits, 0u);  // forward step, DIR low on the wire
+  EXPECT_EQ(sent_reverse(), 1u);
+
+  channel.invert_output(false);
+  channel.input_target_position.write(2.0, ABSOLUTE);
+  hal_manual::run_frames(1);
+  EXPECT_EQ(hal_manual::last_frame(OUTPUT_A).dir_bits, kForwardDirBitsX);
+}
+
 TEST_F(ChannelTest, InvertFlipsOnlyTheWireDirection) {
   Channel channel;
   start(channel);
