@@ -14,4 +14,5 @@ scripts/build-host.sh
 ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)"
 echo "== again under AddressSanitizer and UBSan"
 STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
-ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)"
+# Slow integration tests (live pseudo-terminals, browsers, npm clients) run once, above.
+ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)" -LE integration

@@ -9,6 +9,8 @@ namespace {
 volatile FaultReason first_reason = FaultReason::kNone;
 const char* volatile first_detail = "";
 volatile uint32_t count = 0;
+volatile uint32_t warnings = 0;
+volatile bool alarm_raised = false;
 }  // namespace
 
 const char* to_string(FaultReason reason) {
@@ -19,9 +21,38 @@ const char* to_string(FaultReason reason) {
     case FaultReason::kInvariant: return "invariant broken";
     case FaultReason::kHardware: return "hardware error";
     case FaultReason::kBadConfiguration: return "bad configuration";
+    case FaultReason::kUnreachable: return "unreachable";
+    case FaultReason::kOverrun: return "overrun";
+    case FaultReason::kRefused: return "refused";
+    case FaultReason::kLimitHit: return "limit hit";
+    case FaultReason::kTimeout: return "timeout";
+    case FaultReason::kPlanner: return "planner";
   }
   return "unknown";
 }
+
+const char* to_string(FaultLevel level) {
+  switch (level) {
+    case FaultLevel::kWarning: return "warning";
+    case FaultLevel::kAlarm: return "alarm";
+    case FaultLevel::kFatal: return "fatal";
+  }
+  return "unknown";
+}
+
+void report_fault(FaultLevel level, FaultReason reason, const char* /*source*/, const char* detail) {
+  if (level == FaultLevel::kFatal) {
+    fault(reason, detail);
+    return;
+  }
+  hal::CriticalSection guard;
+  if (level == FaultLevel::kAlarm) alarm_raised = true;
+  else warnings = warnings + 1;
+}
+
+uint32_t warning_count() { return warnings; }
+bool alarm_active() { return alarm_raised; }
+void clear_alarm() { alarm_raised = false; }
 
 void fault(FaultReason reason, const char* detail) {
   {
@@ -47,6 +78,8 @@ void clear_fault() {
   first_reason = FaultReason::kNone;
   first_detail = "";
   count = 0;
+  warnings = 0;
+  alarm_raised = false;
 }
 
 }  // namespace stepdance

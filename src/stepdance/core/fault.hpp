@@ -13,7 +13,27 @@ enum class FaultReason : uint8_t {
   kInvariant,         ///< an internal consistency check failed
   kHardware,          ///< the backend reported a hardware error
   kBadConfiguration,  ///< an impossible configuration (wrong pin, missing peripheral)
+  kUnreachable,       ///< a kinematics pose outside the machine's workspace (held at the last valid one)
+  kOverrun,           ///< a buffer or deadline was overrun (recorder, frame budget)
+  kRefused,           ///< a host or user command was refused
+  kLimitHit,          ///< a limit switch or soft limit was hit
+  kTimeout,           ///< an operation did not finish in time (homing)
+  kPlanner,           ///< the motion planner could not keep its guarantees
 };
+
+/// How serious a report is. The levels are ordered: a higher one implies the lower ones' effects.
+///  - kWarning: counted and reported; motion goes on.
+///  - kAlarm:   planned motion stops within its acceleration limit and queues are flushed; live
+///              inputs keep working; cleared explicitly by the sketch or the host.
+///  - kFatal:   outputs stop at once and drivers are disabled; cleared only by a restart.
+enum class FaultLevel : uint8_t {
+  kWarning = 1,
+  kAlarm = 2,
+  kFatal = 3,
+};
+
+/// A short name for a fault level (never null).
+const char* to_string(FaultLevel level);
 
 /// A short name for a fault reason (never null).
 const char* to_string(FaultReason reason);
@@ -23,6 +43,18 @@ const char* to_string(FaultReason reason);
 /// Context: any (frame ISR included); never returns an error and never allocates.
 /// @param detail static string naming what failed, for example "pre-channel blocks".
 void fault(FaultReason reason, const char* detail);
+
+/// Reports a problem at a level, naming its source (a block or interface, e.g. "tbi") and a
+/// reason. kFatal behaves as fault(reason, detail). Strings must be static (they are kept).
+/// Context: any (frame ISR included); never allocates, never blocks.
+void report_fault(FaultLevel level, FaultReason reason, const char* source, const char* detail = "");
+
+/// Warnings reported since start or clear_fault(). Context: any.
+uint32_t warning_count();
+/// True while an alarm is raised and not yet cleared. Context: any.
+bool alarm_active();
+/// Clears a raised alarm (the sketch's or host's explicit acknowledgement). Context: loop.
+void clear_alarm();
 
 /// The first fault since start or since clear_fault(); kNone if healthy. Context: any.
 FaultReason fault_reason();
