@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include "abi/board_abi.h"
 #include "loader/content_hash.hpp"
 #include "loader/process.hpp"
+#include "loader/sketch_sources.hpp"
 #include "loader/toolchain_config.hpp"
 
 namespace stepdance::sim {
@@ -20,11 +22,6 @@ namespace fs = std::filesystem;
 std::string env_or_empty(const char* name) {
   const char* value = std::getenv(name);
   return value != nullptr ? value : "";
-}
-
-bool is_sketch_source(const fs::path& path) {
-  const std::string ext = path.extension().string();
-  return ext == ".h" || ext == ".hpp" || ext == ".ino" || ext == ".cpp";
 }
 
 // Every header under an include directory, sorted: a changed core header changes the cache key
@@ -40,17 +37,10 @@ std::vector<std::string> headers_under(const std::string& directory) {
   return paths;
 }
 
-// The other sources next to the sketch, sorted so the hash does not depend on directory order.
-std::vector<std::string> neighbour_sources(const fs::path& sketch) {
-  std::vector<std::string> paths;
-  std::error_code error;
-  for (const auto& entry : fs::directory_iterator(sketch.parent_path(), error)) {
-    if (entry.is_regular_file(error) && is_sketch_source(entry.path()) && entry.path() != sketch) {
-      paths.push_back(entry.path().string());
-    }
-  }
-  std::sort(paths.begin(), paths.end());
-  return paths;
+bool write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  return static_cast<bool>(out.flush());
 }
 
 // Distinct per process and per call, so concurrent builders never share a temporary file.
@@ -74,11 +64,13 @@ std::string SketchBuilder::default_cache_dir() {
   return toolchain::kFallbackCacheDir;
 }
 
-std::string SketchBuilder::cache_key(const std::string& sketch_path) const {
+std::string SketchBuilder::cache_key(const SketchSources& sources) const {
   ContentHash hash;
   hash.add(std::to_string(STEPDANCE_BOARD_ABI_VERSION));
   hash.add(toolchain::kCompiler);
   for (const char* flag : toolchain::kFlags) hash.add(flag);
+  hash.add(toolchain::kCCompiler);
+  for (const char* flag : toolchain::kCFlags) hash.add(flag);
   for (const char* dir : toolchain::kIncludeDirs) {
     hash.add(dir);
     for (const std::string& header : headers_under(dir)) hash.add_file(header);
@@ -86,25 +78,40 @@ std::string SketchBuilder::cache_key(const std::string& sketch_path) const {
   hash.add(toolchain::kForcedInclude);
   hash.add_file(toolchain::kRuntimeLibrary);
   hash.add_file(toolchain::kExportMap);
-  hash.add(sketch_path);
-  hash.add_file(sketch_path);
-  for (const std::string& source : neighbour_sources(sketch_path)) {
-    hash.add(source);
-    hash.add_file(source);
+  for (const auto* group : {&sources.inos, &sources.cpp_files, &sources.c_files, &sources.headers}) {
+    hash.add(std::to_string(group->size()));
+    for (const std::string& file : *group) {
+      hash.add(file);
+      hash.add_file(file);
+    }
   }
   return hash.hex();
 }
 
-std::vector<std::string> SketchBuilder::compile_command(const std::string& sketch_path,
-                                                        const std::string& output) const {
+std::vector<std::string> SketchBuilder::c_command(const std::string& source, const std::string& object) const {
+  std::vector<std::string> command{toolchain::kCCompiler};
+  for (const char* flag : toolchain::kCFlags) command.emplace_back(flag);
+  for (const char* dir : toolchain::kIncludeDirs) command.push_back(std::string("-I") + dir);
+  command.insert(command.end(), {"-c", source, "-o", object});
+  return command;
+}
+
+std::vector<std::string> SketchBuilder::link_command(const SketchSources& sources, const std::string& assembled,
+                                                     const std::vector<std::string>& c_objects,
+                                                     const std::string& output) const {
   std::vector<std::string> command{toolchain::kCompiler};
   for (const char* flag : toolchain::kFlags) command.emplace_back(flag);
+  command.push_back("-iquote" + sources.folder);  // the generated file lives in the cache
   for (const char* dir : toolchain::kIncludeDirs) command.push_back(std::string("-I") + dir);
   if (toolchain::kForcedInclude[0] != '\0') {
     command.emplace_back("-include");
     command.emplace_back(toolchain::kForcedInclude);
   }
-  command.insert(command.end(), {"-x", "c++", sketch_path, "-x", "none", toolchain::kRuntimeLibrary});
+  command.insert(command.end(), {"-x", "c++", assembled});
+  command.insert(command.end(), sources.cpp_files.begin(), sources.cpp_files.end());
+  command.insert(command.end(), {"-x", "none"});
+  command.insert(command.end(), c_objects.begin(), c_objects.end());
+  command.push_back(toolchain::kRuntimeLibrary);
   command.push_back(std::string("-Wl,--version-script=") + toolchain::kExportMap);
   command.insert(command.end(), {"-Wl,-u,stepdance_board_attach", "-shared", "-o", output});
   return command;
@@ -112,13 +119,10 @@ std::vector<std::string> SketchBuilder::compile_command(const std::string& sketc
 
 SketchBuild SketchBuilder::build(const std::string& sketch) const {
   SketchBuild result;
+  SketchSources sources;
+  if (!find_sketch_sources(sketch, sources, result.error)) return result;
+  const std::string key = cache_key(sources);
   std::error_code error;
-  const fs::path sketch_path = fs::absolute(sketch, error);
-  if (!fs::is_regular_file(sketch_path, error)) {
-    result.error = sketch + ": sketch not found";
-    return result;
-  }
-  const std::string key = cache_key(sketch_path.string());
   const fs::path library = fs::path(cache_dir_) / (key + ".so");
   if (fs::is_regular_file(library, error)) {
     result.ok = result.from_cache = true;
@@ -130,25 +134,55 @@ SketchBuild SketchBuilder::build(const std::string& sketch) const {
     result.error = cache_dir_ + ": cannot create the sketch cache (" + error.message() + ")";
     return result;
   }
-  const std::string suffix = unique_suffix();
-  const fs::path temporary = fs::path(cache_dir_) / (key + ".tmp-" + suffix + ".so");
-  const fs::path log = fs::path(cache_dir_) / (key + ".log-" + suffix);
-  const ProcessResult compiled = run_process(compile_command(sketch_path.string(), temporary.string()), log.string());
-  fs::remove(log, error);
-  if (!compiled.started || compiled.exit_code != 0) {
-    fs::remove(temporary, error);
-    result.error = sketch + ": the sketch did not compile:\n" + compiled.output;
+  const std::string stem = (fs::path(cache_dir_) / (key + ".tmp-" + unique_suffix())).string();
+  std::vector<std::string> scratch;  // removed whatever happens
+  const bool compiled = compile(sources, stem, scratch, result);
+  for (const std::string& file : scratch) fs::remove(file, error);
+  if (!compiled) {
+    result.error = sketch + ": the sketch did not compile:\n" + result.error;
     return result;
   }
-  fs::rename(temporary, library, error);
+  fs::rename(stem + ".so", library, error);
   if (error) {
+    fs::remove(stem + ".so", error);
     result.error = library.string() + ": cannot store the compiled sketch (" + error.message() + ")";
     return result;
   }
   result.ok = true;
   result.library_path = library.string();
-  result.diagnostics = compiled.output;
   return result;
+}
+
+bool SketchBuilder::compile(const SketchSources& sources, const std::string& stem, std::vector<std::string>& scratch,
+                            SketchBuild& result) const {
+  std::string text;
+  const std::string assembled = stem + ".ino.cpp";
+  const std::string log = stem + ".log";
+  scratch = {assembled, log};
+  if (!assemble_sketch_files(sources, text, result.error)) return false;
+  if (!write_file(assembled, text)) {
+    result.error = assembled + ": cannot write the assembled sketch";
+    return false;
+  }
+  std::vector<std::string> c_objects;
+  for (const std::string& source : sources.c_files) {
+    c_objects.push_back(stem + "." + std::to_string(c_objects.size()) + ".o");
+    scratch.push_back(c_objects.back());
+    const ProcessResult c = run_process(c_command(source, c_objects.back()), log);
+    result.diagnostics += c.output;
+    if (!c.started || c.exit_code != 0) {
+      result.error = result.diagnostics;
+      return false;
+    }
+  }
+  const ProcessResult linked = run_process(link_command(sources, assembled, c_objects, stem + ".so"), log);
+  result.diagnostics += linked.output;
+  if (!linked.started || linked.exit_code != 0) {
+    scratch.push_back(stem + ".so");
+    result.error = result.diagnostics;
+    return false;
+  }
+  return true;
 }
 
 }  // namespace stepdance::sim

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "loader/sketch_sources.hpp"
+
 namespace stepdance::sim {
 
 /// The outcome of building one sketch.
@@ -15,14 +17,16 @@ struct SketchBuild {
   std::string diagnostics;   ///< when ok and freshly compiled: the compiler's warnings, if any
 };
 
-/// Builds sketches the way the Arduino IDE would, but for the host: the .ino is compiled as C++
-/// with Arduino.h force-included, by the compiler and flags that built the simulator, and
-/// linked with the board runtime (core + simulator HAL backend + host Arduino API) into a
-/// shared object that exports only stepdance_board_attach.
+/// Builds sketches the way the Arduino IDE would, but for the host: the sketch folder's .ino
+/// files are concatenated in IDE order with prototypes generated (sketch_sources.hpp), compiled
+/// as C++ with Arduino.h included, together with the folder's .cpp and .c files, by the
+/// compilers and flags that built the simulator, and linked with the board runtime (core +
+/// simulator HAL backend + host Arduino API) into a shared object that exports only
+/// stepdance_board_attach. Compiler messages name the sketch's own files and lines.
 ///
-/// The result is cached under cache_dir as <hash>.so, where the hash covers the sketch text, the
-/// other sources in the sketch's folder (.h/.hpp/.ino/.cpp), the compiler, its flags and the
-/// runtime library's contents. An edited sketch or a rebuilt runtime therefore gets a fresh
+/// The result is cached under cache_dir as <hash>.so, where the hash covers every file of the
+/// sketch (.ino, .cpp, .c and headers), the compilers, their flags and the runtime library's
+/// contents. An edited sketch or a rebuilt runtime therefore gets a fresh
 /// build, and an unchanged one is loaded without compiling. Concurrent builders are safe: each
 /// writes a temporary file and renames it into place.
 class SketchBuilder {
@@ -30,7 +34,8 @@ class SketchBuilder {
   /// `cache_dir` is created on first use. Empty means default_cache_dir().
   explicit SketchBuilder(std::string cache_dir = {});
 
-  /// Builds (or finds in the cache) the board library for `sketch_path`.
+  /// Builds (or finds in the cache) the board library for `sketch_path` (an .ino or a sketch
+  /// folder). Context: loop (runs the compiler).
   SketchBuild build(const std::string& sketch_path) const;
 
   /// $STEPDANCE_SKETCH_CACHE, else $XDG_CACHE_HOME/stepdance/sketches, else
@@ -39,8 +44,13 @@ class SketchBuilder {
   const std::string& cache_dir() const { return cache_dir_; }
 
  private:
-  std::string cache_key(const std::string& sketch_path) const;
-  std::vector<std::string> compile_command(const std::string& sketch_path, const std::string& output) const;
+  std::string cache_key(const SketchSources& sources) const;
+  std::vector<std::string> c_command(const std::string& source, const std::string& object) const;
+  std::vector<std::string> link_command(const SketchSources& sources, const std::string& assembled,
+                                        const std::vector<std::string>& c_objects, const std::string& output) const;
+  // Writes <stem>.ino.cpp, compiles and links into <stem>.so; lists its temporary files in scratch.
+  bool compile(const SketchSources& sources, const std::string& stem, std::vector<std::string>& scratch,
+               SketchBuild& result) const;
 
   std::string cache_dir_;
 };
