@@ -57,8 +57,8 @@ namespace stepdance::arduino {
 
 /// Forgets the Arduino API's own state: the millis()/micros() wrap tracking, bytes peeked but
 /// not read on every serial port, the pins analogRead() started, the analog resolution, the
-/// random() generator and every Stream timeout. Defined by the Arduino API library (not by the
-/// backend); a backend calls it when it restarts a board in the same process, and tests call it
+/// random() generator, every Stream timeout and every IntervalTimer. Defined by the Arduino
+/// API library (not by the backend); a backend calls it when it restarts a board in the same process, and tests call it
 /// after resetting the manual backend's clock. Context: loop.
 void reset_state();
 

@@ -40,3 +40,8 @@ int analogRead(uint8_t pin);
 /// shift the value left and fewer shift it right, as the Teensy's wider ADC would look.
 /// Context: loop.
 void analogReadResolution(unsigned int bits);
+
+/// Teensy's fast pin functions. On a Teensy they compile to one register access when the pin is
+/// a constant; on the host they are digitalRead/digitalWrite. Context: any.
+inline uint8_t digitalReadFast(uint8_t pin) { return static_cast<uint8_t>(digitalRead(pin)); }
+inline void digitalWriteFast(uint8_t pin, uint8_t value) { digitalWrite(pin, value); }

@@ -10,6 +10,7 @@ void reset_state() {
   internal::reset_pin_state();
   internal::reset_random_state();
   internal::reset_serial_state();
+  internal::reset_interval_timer_state();
 }
 
 }  // namespace stepdance::arduino

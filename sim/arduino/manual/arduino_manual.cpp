@@ -4,6 +4,7 @@
 #include <array>
 #include <deque>
 
+#include "IntervalTimer.h"
 #include "hal_manual.hpp"
 #include "stepdance/core/units.hpp"
 
@@ -55,8 +56,12 @@ namespace arduino_backend {
 void delay_us(uint32_t us) {
   the_state.delayed_us += us;
   ++the_state.delay_calls;
-  hal_manual::run_frames(us / kFramePeriodUs);
+  for (uint32_t frame = 0; frame < us / kFramePeriodUs; ++frame) {
+    hal_manual::run_frames(1);
+    arduino::run_interval_timers();  // as the simulator does at each frame tick
+  }
   hal_manual::advance_us(us % kFramePeriodUs);
+  arduino::run_interval_timers();
 }
 
 ByteStream* serial_stream(SerialPortId port) {

@@ -1,6 +1,7 @@
 // Inside a board's shared object: the one exported symbol, binding the sketch to the simulator.
 #include <cstring>
 
+#include "IntervalTimer.h"
 #include "abi/board_abi.h"
 #include "runtime/host_link.hpp"
 #include "runtime/sim_hal.hpp"
@@ -50,13 +51,16 @@ void run_setup(int64_t now) {
 void run_frame_tick(int64_t now) {
   set_now_ns(now);
   run_frame_isr();
+  arduino::run_interval_timers();
 }
 void run_khz_tick(int64_t now) {
   set_now_ns(now);
   run_khz_isr();
+  arduino::run_interval_timers();
 }
 void run_loop(int64_t now) {
   set_now_ns(now);
+  arduino::run_interval_timers();  // also before dance_start(), when no frame ticks run
   ::loop();
 }
 void deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pulse) {
