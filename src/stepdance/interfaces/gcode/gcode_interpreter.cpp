@@ -1,0 +1,349 @@
+// Line execution in Grbl's order: modes, feed, spindle, dwell, offsets, motion, program flow.
+#include "stepdance/interfaces/gcode/gcode_interpreter.hpp"
+
+#include <math.h>
+
+#include "stepdance/interfaces/gcode/arc_geometry.hpp"
+
+namespace stepdance::gcode {
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr char kAxisLetters[kAxisCount] = {'X', 'Y', 'Z', 'E'};
+constexpr int kMaxMotionsPerLine = 2;  // G28/G30: intermediate point, then the stored position
+
+constexpr uint32_t letter_bit(char letter) { return 1u << word_index(letter); }
+constexpr uint32_t kAxisWords = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('E');
+constexpr uint32_t kOffsetWords = letter_bit('I') | letter_bit('J') | letter_bit('K');
+
+/// Requests a validated line will make of the sink, in order.
+struct LinePlan {
+  bool spindle = false;
+  bool coolant = false;
+  bool dwell = false;
+  double dwell_s = 0.0;
+  Motion motions[kMaxMotionsPerLine];
+  int motion_count = 0;
+  bool program_flow = false;
+  CommandCode program_flow_code = 0;
+  bool coordinates_changed = false;
+};
+
+/// Everything a line may change, copied so a refused line changes nothing.
+struct MachineState {
+  ModalState modal;
+  CoordinateData coordinates;
+  double g92_mm[kAxisCount];
+  double position_mm[kAxisCount];
+};
+
+/// Validates one block against a copy of the state and plans its requests.
+class LineExecution {
+ public:
+  LineExecution(const GcodeBlock& block, MachineState& state) : block_(block), state_(state) {}
+
+  GrblError run(LinePlan& plan);
+
+ private:
+  void apply_modes();
+  GrblError apply_feed();
+  GrblError apply_spindle_and_dwell(LinePlan& plan);
+  GrblError apply_non_modal(LinePlan& plan);
+  GrblError apply_motion(LinePlan& plan);
+  GrblError plan_arc(Motion& motion);
+  void apply_program_flow(LinePlan& plan);
+
+  double unit_mm() const { return state_.modal.inches ? kMmPerInch : 1.0; }
+  double axis_mm(int axis) const { return block_.word(kAxisLetters[axis]) * unit_mm(); }
+  bool has_axis(int axis) const { return block_.has_word(kAxisLetters[axis]); }
+  double system_offset_mm(int axis) const {
+    return axis < kOffsetAxisCount ? state_.coordinates.system_offset_mm[state_.modal.coordinate_system][axis] : 0.0;
+  }
+  void use(uint32_t letters) { used_words_ |= (block_.words_present & letters); }
+  void target_mm(bool machine_coordinates, double (&out)[kAxisCount]) const;
+  Motion& add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]);
+
+  const GcodeBlock& block_;
+  MachineState& state_;
+  uint32_t used_words_ = 0;
+  bool axis_words_taken_ = false;  // a non-modal command (G10, G28, G30, G92) owns them
+  double inverse_time_f_ = 0.0;
+};
+
+void LineExecution::apply_modes() {
+  if (block_.has_g(GGroup::kFeedMode)) {
+    const bool was_inverse = state_.modal.inverse_time;
+    state_.modal.inverse_time = block_.g_code(GGroup::kFeedMode) == 930;
+    if (was_inverse && !state_.modal.inverse_time) state_.modal.feed_mm_per_min = 0.0;
+  }
+  if (block_.has_g(GGroup::kUnits)) state_.modal.inches = block_.g_code(GGroup::kUnits) == 200;
+  if (block_.has_g(GGroup::kPlane)) state_.modal.plane = block_.g_code(GGroup::kPlane);
+  if (block_.has_g(GGroup::kCoordSystem)) {
+    state_.modal.coordinate_system = static_cast<uint8_t>((block_.g_code(GGroup::kCoordSystem) - 540) / 10);
+  }
+  if (block_.has_g(GGroup::kDistance)) state_.modal.absolute = block_.g_code(GGroup::kDistance) == 900;
+  if (block_.has_m(MGroup::kExtruder)) state_.modal.extruder_relative = block_.m_code(MGroup::kExtruder) == 830;
+  use(letter_bit('N'));
+}
+
+GrblError LineExecution::apply_feed() {
+  if (!block_.has_word('F')) return GrblError::kOk;
+  use(letter_bit('F'));
+  if (state_.modal.inverse_time) {
+    inverse_time_f_ = block_.word('F');
+  } else {
+    state_.modal.feed_mm_per_min = block_.word('F') * unit_mm();
+  }
+  return GrblError::kOk;
+}
+
+GrblError LineExecution::apply_spindle_and_dwell(LinePlan& plan) {
+  if (block_.has_word('S')) state_.modal.spindle_speed = block_.word('S');
+  if (block_.has_word('T')) state_.modal.tool = static_cast<uint8_t>(block_.word('T'));
+  use(letter_bit('S') | letter_bit('T'));
+  if (block_.has_m(MGroup::kSpindle)) {
+    state_.modal.spindle = block_.m_code(MGroup::kSpindle);
+    plan.spindle = true;
+  }
+  if (block_.has_m(MGroup::kCoolant)) {
+    state_.modal.coolant = block_.m_code(MGroup::kCoolant);
+    plan.coolant = true;
+  }
+  if (block_.has_g(GGroup::kNonModal) && block_.g_code(GGroup::kNonModal) == 40) {
+    if (!block_.has_word('P')) return GrblError::kValueWordMissing;
+    use(letter_bit('P'));
+    plan.dwell = true;
+    plan.dwell_s = block_.word('P');
+  }
+  return GrblError::kOk;
+}
+
+void LineExecution::target_mm(bool machine_coordinates, double (&out)[kAxisCount]) const {
+  for (int axis = 0; axis < kAxisCount; ++axis) {
+    out[axis] = state_.position_mm[axis];
+    if (!has_axis(axis)) continue;
+    const bool relative =
+        axis == kAxisE ? (state_.modal.extruder_relative || !state_.modal.absolute) : !state_.modal.absolute;
+    if (machine_coordinates && axis != kAxisE) {
+      out[axis] = axis_mm(axis);
+    } else if (relative) {
+      out[axis] = state_.position_mm[axis] + axis_mm(axis);
+    } else {
+      out[axis] = axis_mm(axis) + system_offset_mm(axis) + state_.g92_mm[axis];
+    }
+  }
+}
+
+Motion& LineExecution::add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]) {
+  Motion& motion = plan.motions[plan.motion_count++];
+  motion.kind = kind;
+  for (int axis = 0; axis < kAxisCount; ++axis) {
+    motion.start_mm[axis] = state_.position_mm[axis];
+    motion.end_mm[axis] = end[axis];
+    state_.position_mm[axis] = end[axis];
+  }
+  return motion;
+}
+
+GrblError LineExecution::apply_non_modal(LinePlan& plan) {
+  if (!block_.has_g(GGroup::kNonModal)) return GrblError::kOk;
+  const CommandCode code = block_.g_code(GGroup::kNonModal);
+  const bool owns_axes = code == 100 || code == 280 || code == 300 || code == 920;
+  if (owns_axes && block_.has_g(GGroup::kMotion) && block_.g_code(GGroup::kMotion) != 800) {
+    return GrblError::kAxisCommandConflict;
+  }
+  axis_words_taken_ = owns_axes;
+  if (owns_axes) use(kAxisWords);
+  const bool has_axes = (block_.words_present & kAxisWords) != 0;
+  switch (code) {
+    case 100: {  // G10 L2 / L20: set a coordinate system's offset
+      if (!block_.has_word('L') || !block_.has_word('P')) return GrblError::kValueWordMissing;
+      use(letter_bit('L') | letter_bit('P'));
+      const double l = block_.word('L');
+      const double p = block_.word('P');
+      if (l != 2.0 && l != 20.0) return GrblError::kUnsupportedCommand;
+      if (p != floor(p)) return GrblError::kCommandNeedsInteger;
+      if (p > CoordinateData::kSystemCount) return GrblError::kUnsupportedCoordinateSystem;
+      if (!has_axes) return GrblError::kNoAxisWords;
+      const int system = p == 0.0 ? state_.modal.coordinate_system : static_cast<int>(p) - 1;
+      for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
+        if (!has_axis(axis)) continue;
+        double& offset = state_.coordinates.system_offset_mm[system][axis];
+        offset = (l == 2.0) ? axis_mm(axis) : state_.position_mm[axis] - state_.g92_mm[axis] - axis_mm(axis);
+      }
+      plan.coordinates_changed = true;
+      break;
+    }
+    case 280:
+    case 300: {  // G28 / G30: rapid through the optional intermediate point to the stored one
+      double end[kAxisCount];
+      if (has_axes) {
+        target_mm(false, end);
+        add_motion(plan, MotionKind::kRapid, end);
+      }
+      const double* stored = code == 280 ? state_.coordinates.g28_position_mm : state_.coordinates.g30_position_mm;
+      for (int axis = 0; axis < kAxisCount; ++axis) end[axis] = state_.position_mm[axis];
+      for (int axis = 0; axis < kOffsetAxisCount; ++axis) end[axis] = stored[axis];
+      add_motion(plan, MotionKind::kRapid, end);
+      break;
+    }
+    case 281:
+    case 301: {  // G28.1 / G30.1: remember the current position
+      double* stored = code == 281 ? state_.coordinates.g28_position_mm : state_.coordinates.g30_position_mm;
+      for (int axis = 0; axis < kOffsetAxisCount; ++axis) stored[axis] = state_.position_mm[axis];
+      plan.coordinates_changed = true;
+      break;
+    }
+    case 920:  // G92: the current position becomes the given work coordinates
+      if (!has_axes) return GrblError::kNoAxisWords;
+      for (int axis = 0; axis < kAxisCount; ++axis) {
+        if (has_axis(axis)) state_.g92_mm[axis] = state_.position_mm[axis] - system_offset_mm(axis) - axis_mm(axis);
+      }
+      break;
+    case 921:  // G92.1
+      for (double& offset : state_.g92_mm) offset = 0.0;
+      break;
+    default:  // G4 (handled with the dwell), G53 (with the motion)
+      break;
+  }
+  return GrblError::kOk;
+}
+
+GrblError LineExecution::plan_arc(Motion& motion) {
+  const CommandCode plane = state_.modal.plane;
+  motion.plane_axis_0 = plane == 170 ? kAxisX : (plane == 180 ? kAxisZ : kAxisY);
+  motion.plane_axis_1 = plane == 170 ? kAxisY : (plane == 180 ? kAxisX : kAxisZ);
+  motion.plane_normal = plane == 170 ? kAxisZ : (plane == 180 ? kAxisY : kAxisX);
+  const char offset_letters[3] = {'I', 'J', 'K'};
+  if (!has_axis(motion.plane_axis_0) && !has_axis(motion.plane_axis_1)) return GrblError::kNoInPlaneAxisWords;
+  const bool clockwise = state_.modal.motion == 20;
+  if (block_.has_word('R')) {
+    use(letter_bit('R'));
+    return complete_arc_radius(motion, clockwise, block_.word('R') * unit_mm());
+  }
+  const char letter_0 = offset_letters[motion.plane_axis_0];
+  const char letter_1 = offset_letters[motion.plane_axis_1];
+  if (!block_.has_word(letter_0) && !block_.has_word(letter_1)) return GrblError::kNoInPlaneOffsetWords;
+  use(letter_bit(letter_0) | letter_bit(letter_1));
+  return complete_arc_ijk(motion, clockwise, block_.word(letter_0) * unit_mm(), block_.word(letter_1) * unit_mm());
+}
+
+GrblError LineExecution::apply_motion(LinePlan& plan) {
+  if (block_.has_g(GGroup::kMotion)) state_.modal.motion = block_.g_code(GGroup::kMotion);
+  const bool absolute_override = block_.has_g(GGroup::kNonModal) && block_.g_code(GGroup::kNonModal) == 530;
+  const CommandCode mode = state_.modal.motion;
+  if (absolute_override && mode != 0 && mode != 10) return GrblError::kG53NeedsG0OrG1;
+  const bool has_axes = (block_.words_present & kAxisWords) != 0;
+  const bool explicit_motion = block_.has_g(GGroup::kMotion) && mode != 800;
+  if (axis_words_taken_ || (!has_axes && !explicit_motion)) return GrblError::kOk;
+  if (mode == 800) return has_axes ? GrblError::kAxisWordsUnused : GrblError::kOk;
+  use(kAxisWords);
+  if (mode != 0) {
+    const bool feed_missing = state_.modal.inverse_time ? !block_.has_word('F') || inverse_time_f_ <= 0.0
+                                                        : state_.modal.feed_mm_per_min <= 0.0;
+    if (feed_missing) return GrblError::kUndefinedFeedRate;
+  }
+  if (mode == 20 || mode == 30) {
+    double end[kAxisCount];
+    target_mm(false, end);
+    Motion arc;
+    arc.kind = MotionKind::kArc;
+    for (int axis = 0; axis < kAxisCount; ++axis) {
+      arc.start_mm[axis] = state_.position_mm[axis];
+      arc.end_mm[axis] = end[axis];
+    }
+    const GrblError error = plan_arc(arc);
+    if (error != GrblError::kOk) return error;
+    Motion& motion = add_motion(plan, MotionKind::kArc, end);
+    motion = arc;
+  } else if (has_axes) {
+    double end[kAxisCount];
+    target_mm(absolute_override, end);
+    add_motion(plan, mode == 0 ? MotionKind::kRapid : MotionKind::kLinear, end);
+  }
+  if (plan.motion_count > 0 && mode != 0) {
+    Motion& motion = plan.motions[plan.motion_count - 1];
+    if (state_.modal.inverse_time) {
+      motion.duration_min = 1.0 / inverse_time_f_;
+    } else {
+      motion.feed_mm_per_min = state_.modal.feed_mm_per_min;
+    }
+  }
+  return GrblError::kOk;
+}
+
+void LineExecution::apply_program_flow(LinePlan& plan) {
+  if (!block_.has_m(MGroup::kStopping)) return;
+  plan.program_flow = true;
+  plan.program_flow_code = block_.m_code(MGroup::kStopping);
+}
+
+GrblError LineExecution::run(LinePlan& plan) {
+  if (block_.ignored) return GrblError::kOk;
+  apply_modes();
+  GrblError error = apply_feed();
+  if (error == GrblError::kOk) error = apply_spindle_and_dwell(plan);
+  if (error == GrblError::kOk) error = apply_non_modal(plan);
+  if (error == GrblError::kOk) error = apply_motion(plan);
+  if (error != GrblError::kOk) return error;
+  if ((block_.words_present & ~used_words_) != 0) {
+    const bool only_axes_left = ((block_.words_present & ~used_words_) & ~kAxisWords) == 0;
+    return only_axes_left ? GrblError::kAxisWordsUnused : GrblError::kUnusedValueWords;
+  }
+  apply_program_flow(plan);
+  return GrblError::kOk;
+}
+
+}  // namespace
+
+GrblError GcodeInterpreter::execute(const GcodeBlock& block, GcodeSink& sink) {
+  MachineState next{modal_, coordinates_, {}, {}};
+  for (int axis = 0; axis < kAxisCount; ++axis) {
+    next.g92_mm[axis] = g92_offset_mm_[axis];
+    next.position_mm[axis] = position_mm_[axis];
+  }
+  LinePlan plan;
+  LineExecution line(block, next);
+  const GrblError error = line.run(plan);
+  if (error != GrblError::kOk) return error;
+
+  modal_ = next.modal;
+  coordinates_ = next.coordinates;
+  for (int axis = 0; axis < kAxisCount; ++axis) {
+    g92_offset_mm_[axis] = next.g92_mm[axis];
+    position_mm_[axis] = next.position_mm[axis];
+  }
+  if (plan.spindle) sink.on_spindle(modal_.spindle, modal_.spindle_speed);
+  if (plan.coolant) sink.on_coolant(modal_.coolant);
+  if (plan.dwell) sink.on_dwell(plan.dwell_s);
+  for (int i = 0; i < plan.motion_count; ++i) sink.on_motion(plan.motions[i]);
+  if (plan.coordinates_changed) sink.on_coordinate_data_changed();
+  if (plan.program_flow) {
+    const CommandCode code = plan.program_flow_code;
+    if (code == 20 || code == 300) reset_modal_for_program_end();
+    sink.on_program_flow(code);
+  }
+  return GrblError::kOk;
+}
+
+double GcodeInterpreter::work_offset_mm(int axis) const {
+  const double system = axis < kOffsetAxisCount ? coordinates_.system_offset_mm[modal_.coordinate_system][axis] : 0.0;
+  return system + g92_offset_mm_[axis];
+}
+
+void GcodeInterpreter::set_position_mm(const double (&machine_mm)[kAxisCount]) {
+  for (int axis = 0; axis < kAxisCount; ++axis) position_mm_[axis] = machine_mm[axis];
+}
+
+void GcodeInterpreter::reset_modal_for_program_end() {
+  modal_.motion = 10;
+  modal_.plane = 170;
+  modal_.absolute = true;
+  modal_.inverse_time = false;
+  modal_.coordinate_system = 0;
+  modal_.spindle = 50;
+  modal_.coolant = 90;
+  modal_.extruder_relative = false;
+}
+
+}  // namespace stepdance::gcode

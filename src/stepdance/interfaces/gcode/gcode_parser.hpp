@@ -1,0 +1,26 @@
+// Turns one line of G-code text into a GcodeBlock, checking its syntax as Grbl does.
+#pragma once
+
+#include <stddef.h>
+
+#include "stepdance/interfaces/gcode/gcode_block.hpp"
+#include "stepdance/interfaces/gcode/grbl_error.hpp"
+
+namespace stepdance::gcode {
+
+/// Choices about which dialect the parser accepts.
+struct ParserOptions {
+  /// Accept 3D-printer files: M82/M83 set the E mode, and housekeeping lines (temperatures, fans,
+  /// progress, messages: M73, M84, M104–M109, M140, M190, M106/M107, M115, M117, M201–M205,
+  /// M220/M221, M862.x, M900) are accepted without action. Off: such M codes are error 20.
+  bool accept_printer_codes = true;
+};
+
+/// Parses one line (without its line end; a trailing CR is tolerated). Whitespace, `( )` and `;`
+/// comments, a leading `/` and a lone `%` are skipped; letters are case-insensitive. Checks
+/// everything that needs no machine state: number syntax, known commands, one command per modal
+/// group, no repeated value word, N/F/P/S/T/L not negative, N ≤ 9,999,999, T ≤ 255.
+/// On error, `out` is unspecified and nothing else changes. Context: loop (pure function).
+GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const ParserOptions& options = {});
+
+}  // namespace stepdance::gcode
