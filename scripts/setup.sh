@@ -8,6 +8,7 @@ packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm
   gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
+  clang  # libFuzzer targets (scripts/fuzz.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
 )
 

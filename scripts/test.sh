@@ -2,7 +2,8 @@
 # Sets up the machine, then builds and runs the whole test suite: the core's portability check,
 # the Cortex-M7 builds (core, Teensy backend, every example sketch, firmware image, Arduino zip),
 # the core's unit tests on a Cortex-M7 under QEMU, the host tests (CTest: unit, example sketches,
-# simulator, servo firmware under simavr), and the host tests again under AddressSanitizer + UBSan.
+# simulator, servo firmware under simavr), the host tests again under AddressSanitizer + UBSan,
+# and a short smoke run of every libFuzzer target (the long runs are documented in docs/fuzzing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -16,3 +17,5 @@ echo "== again under AddressSanitizer and UBSan"
 STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
 # Slow integration tests (live pseudo-terminals, browsers, npm clients) run once, above.
 ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)" -LE integration
+echo "== fuzz smoke runs"
+scripts/fuzz.sh

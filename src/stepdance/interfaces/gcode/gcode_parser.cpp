@@ -42,6 +42,10 @@ class Cursor {
   size_t pos_ = 0;
 };
 
+/// Numbers at or beyond this magnitude are refused: no machine travels 10^12 mm, and keeping
+/// values far from the double range keeps every later product (inches, offsets) finite.
+constexpr double kLargestNumber = 1e12;
+
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 /// Reads [+|-]digits[.digits] (at least one digit). False if none or not finite.
@@ -68,7 +72,7 @@ bool read_number(Cursor& cursor, double& value) {
   }
   if (digits == 0) return false;
   value = (negative ? -magnitude : magnitude) / scale;
-  return isfinite(value) != 0;
+  return fabs(value) < kLargestNumber;
 }
 
 struct CommandEntry {
@@ -196,6 +200,11 @@ bool to_command_code(double value, CommandCode& code) {
 }
 
 }  // namespace
+
+bool parse_number(const char* text, size_t length, double& value) {
+  Cursor cursor(text, length);
+  return read_number(cursor, value) && cursor.peek() == 0;
+}
 
 GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const ParserOptions& options) {
   out = GcodeBlock{};

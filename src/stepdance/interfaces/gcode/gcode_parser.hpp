@@ -18,9 +18,14 @@ struct ParserOptions {
 
 /// Parses one line (without its line end; a trailing CR is tolerated). Whitespace, `( )` and `;`
 /// comments, a leading `/` and a lone `%` are skipped; letters are case-insensitive. Checks
-/// everything that needs no machine state: number syntax, known commands, one command per modal
-/// group, no repeated value word, N/F/P/S/T/L not negative, N ≤ 9,999,999, T ≤ 255.
-/// On error, `out` is unspecified and nothing else changes. Context: loop (pure function).
+/// everything that needs no machine state: number syntax (magnitude below 10^12), known commands,
+/// one command per modal group, no repeated value word, N/F/P/S/T/L not negative,
+/// N ≤ 9,999,999, T ≤ 255. On error, `out` is unspecified and nothing else changes.
+/// Context: loop (pure function).
 GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const ParserOptions& options = {});
+
+/// Parses a whole text as one number in G-code syntax ([+|-]digits[.digits], blanks allowed,
+/// magnitude below 10^12). False if anything else is there. Context: any (pure function).
+bool parse_number(const char* text, size_t length, double& value);
 
 }  // namespace stepdance::gcode

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets in fuzz/ with clang (ASan + UBSan) and runs them on their corpora.
+#   scripts/fuzz.sh                 short smoke run of every target (CI)
+#   scripts/fuzz.sh gcode 10000000  one target for a number of executions (the documented long run)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${STEPDANCE_FUZZ_DIR:-build-fuzz}
+mkdir -p "$build"
+
+# Portable-core folders each target links (the fuzz file plus these sources).
+declare -A target_sources=(
+  [gcode]="src/stepdance/interfaces/gcode"
+)
+
+build_target() {
+  local name=$1 sources=()
+  for folder in ${target_sources[$name]}; do sources+=("$folder"/*.cpp); done
+  clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+    -Isrc "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
+}
+
+run_target() {
+  local name=$1 runs=$2 work="$build/${name}_corpus"
+  mkdir -p "$work"
+  # The checked-in seeds stay untouched; new inputs go to the build folder.
+  local log="$build/${name}.log"
+  if ! "$build/${name}_fuzz" -runs="$runs" -max_len=4096 -timeout=10 -print_final_stats=1 \
+      -artifact_prefix="$build/${name}-" "$work" "fuzz/corpus/$name" >"$log" 2>&1; then
+    grep -A 30 -E "ERROR|runtime error|deadly signal|timeout" "$log" | head -n 60
+    echo "fuzz: $name FAILED (full log: $log; reproducer: $build/${name}-*)"
+    return 1
+  fi
+  grep -E "^Done|stat::number_of_executed_units|stat::new_units_added|stat::peak_rss_mb" "$log"
+}
+
+if [ $# -ge 1 ]; then
+  targets=("$1")
+  runs=${2:-1000000}
+else
+  targets=("${!target_sources[@]}")
+  runs=${STEPDANCE_FUZZ_SMOKE_RUNS:-20000}
+fi
+for name in "${targets[@]}"; do
+  echo "fuzz: $name, $runs executions"
+  build_target "$name"
+  run_target "$name" "$runs"
+done

@@ -1,0 +1,265 @@
+// The Grbl link's main path: realtime bytes, lines, G-code execution, replies.
+#include "stepdance/interfaces/gcode/grbl_protocol.hpp"
+
+#include "stepdance/interfaces/gcode/arc_geometry.hpp"
+
+namespace stepdance::gcode {
+namespace {
+
+constexpr size_t kLargestReplyBytes = 640;  // `$$` and `$#` with their `ok`
+constexpr size_t kStatusReportBytes = 164;  // the longest report and its line end
+constexpr int kLinesPerPoll = 4;            // bounds the time one loop pass spends here
+
+/// Holds a line's requests until its travel check passes, then hands them on in order.
+class DeferredRequests final : public GcodeSink {
+ public:
+  void on_motion(const Motion& motion) override {
+    if (motion_count_ < kMaxMotions) motions_[motion_count_++] = motion;
+  }
+  void on_dwell(double seconds) override {
+    dwell_ = true;
+    dwell_s_ = seconds;
+  }
+  void on_spindle(CommandCode code, double speed) override {
+    spindle_ = code;
+    spindle_speed_ = speed;
+  }
+  void on_coolant(CommandCode code) override { coolant_ = code; }
+  void on_program_flow(CommandCode code) override { flow_ = code; }
+  void on_coordinate_data_changed() override { coordinates_changed_ = true; }
+
+  int motion_count() const { return motion_count_; }
+  const Motion& motion(int i) const { return motions_[i]; }
+
+  /// Replays in the interpreter's order: spindle, coolant, dwell, motions, data, flow.
+  void replay(GcodeSink& sink) const {
+    if (spindle_ != 0xFFFF) sink.on_spindle(spindle_, spindle_speed_);
+    if (coolant_ != 0xFFFF) sink.on_coolant(coolant_);
+    if (dwell_) sink.on_dwell(dwell_s_);
+    for (int i = 0; i < motion_count_; ++i) sink.on_motion(motions_[i]);
+    if (coordinates_changed_) sink.on_coordinate_data_changed();
+    if (flow_ != 0xFFFF) sink.on_program_flow(flow_);
+  }
+
+ private:
+  static constexpr int kMaxMotions = 2;
+  Motion motions_[kMaxMotions];
+  int motion_count_ = 0;
+  bool dwell_ = false;
+  double dwell_s_ = 0.0;
+  CommandCode spindle_ = 0xFFFF;
+  double spindle_speed_ = 0.0;
+  CommandCode coolant_ = 0xFFFF;
+  CommandCode flow_ = 0xFFFF;
+  bool coordinates_changed_ = false;
+};
+
+const char* skip_blanks(const char* text, size_t& length) {
+  while (length > 0 && (*text == ' ' || *text == '\t')) {
+    ++text;
+    --length;
+  }
+  return text;
+}
+
+}  // namespace
+
+void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine) {
+  stream_ = &stream;
+  machine_ = &machine;
+  report_welcome();
+  flush_replies();
+}
+
+void GrblProtocol::poll() {
+  if (stream_ == nullptr) return;
+  flush_replies();
+  receiver_.pump(*stream_, *this);
+  if (reset_requested_) soft_reset();
+  if (status_requested_ && reply_space() >= kStatusReportBytes) {
+    status_requested_ = false;
+    report_status();
+  }
+  for (int i = 0; i < kLinesPerPoll; ++i) {
+    if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) break;
+    ReceivedLine line;
+    if (!receiver_.next_line(line)) break;
+    execute_line(line);
+  }
+  flush_replies();
+}
+
+void GrblProtocol::on_realtime(uint8_t byte) {
+  switch (byte) {
+    case '?': status_requested_ = true; break;
+    case 0x18: reset_requested_ = true; break;
+    case '!':
+    case 0x84:  // safety door: we have no door input, so it acts as a feed hold
+      if (machine_->motion_state() == MotionState::kJog) {
+        machine_->jog_cancel();
+      } else if (machine_->motion_state() == MotionState::kRun) {
+        machine_->feed_hold();
+      }
+      break;
+    case '~':
+      if (machine_->motion_state() == MotionState::kHolding) machine_->cycle_start();
+      break;
+    case 0x85:
+      if (machine_->motion_state() == MotionState::kJog) machine_->jog_cancel();
+      break;
+    default: handle_override(byte); break;
+  }
+}
+
+void GrblProtocol::handle_override(uint8_t byte) {
+  auto clamp = [](int percent) { return static_cast<uint8_t>(percent < 10 ? 10 : (percent > 200 ? 200 : percent)); };
+  int feed = feed_override_percent_;
+  int spindle = spindle_override_percent_;
+  switch (byte) {
+    case 0x90: feed = 100; break;
+    case 0x91: feed += 10; break;
+    case 0x92: feed -= 10; break;
+    case 0x93: feed += 1; break;
+    case 0x94: feed -= 1; break;
+    case 0x95: rapid_override_percent_ = 100; break;
+    case 0x96: rapid_override_percent_ = 50; break;
+    case 0x97: rapid_override_percent_ = 25; break;
+    case 0x99: spindle = 100; break;
+    case 0x9A: spindle += 10; break;
+    case 0x9B: spindle -= 10; break;
+    case 0x9C: spindle += 1; break;
+    case 0x9D: spindle -= 1; break;
+    default: return;  // spindle stop and coolant toggles: nothing to switch here
+  }
+  feed_override_percent_ = clamp(feed);
+  spindle_override_percent_ = clamp(spindle);
+  machine_->set_overrides(feed_override_percent_, rapid_override_percent_);
+  reports_until_overrides_ = 0;
+}
+
+void GrblProtocol::execute_line(const ReceivedLine& line) {
+  GrblError error = GrblError::kOk;
+  size_t length = line.length;
+  const char* text = skip_blanks(line.text, length);
+  if (line.overflowed) {
+    error = GrblError::kLineOverflow;
+  } else if (length > 0 && text[0] == '$') {
+    error = execute_system(text + 1, length - 1);
+  } else {
+    error = execute_gcode(text, length);
+  }
+  if (error == GrblError::kOk) {
+    send_text("ok");
+  } else {
+    char storage[16];
+    TextWriter reply(storage, sizeof(storage));
+    reply.text("error:").unsigned_number(grbl_number(error));
+    send_line(reply);
+  }
+}
+
+GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
+  GcodeBlock block;
+  const GrblError syntax = parse_line(text, length, block, parser_options_);
+  if (syntax != GrblError::kOk) return syntax;
+  const bool empty = block.words_present == 0 && block.g_groups_present == 0 && block.m_groups_present == 0;
+  if (empty) return GrblError::kOk;
+  if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) return GrblError::kLocked;
+  sync_position_when_idle();
+  GcodeInterpreter trial = interpreter_;
+  DeferredRequests requests;
+  const GrblError error = trial.execute(block, requests);
+  if (error != GrblError::kOk) return error;
+  for (int i = 0; i < requests.motion_count(); ++i) {
+    if (!within_travel(requests.motion(i))) return GrblError::kTravelExceeded;
+  }
+  interpreter_ = trial;
+  if (!check_mode_) requests.replay(*machine_);
+  return GrblError::kOk;
+}
+
+bool GrblProtocol::within_travel(const Motion& motion) const {
+  if (!settings_.soft_limits()) return true;
+  // Machine space is [0, $130..$132] from the power-on (or homed) origin.
+  auto inside = [this](const double* point_mm) {
+    for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
+      if (point_mm[axis] < 0.0 || point_mm[axis] > settings_.max_travel_mm(axis)) return false;
+    }
+    return true;
+  };
+  if (!inside(motion.end_mm)) return false;
+  if (motion.kind != MotionKind::kArc) return true;
+  ArcSegmenter chords(motion, settings_.arc_tolerance_mm());
+  for (uint32_t k = 1; k < chords.segment_count(); ++k) {
+    double point[kAxisCount];
+    chords.point_mm(k, point);
+    if (!inside(point)) return false;
+  }
+  return true;
+}
+
+void GrblProtocol::sync_position_when_idle() {
+  if (machine_->motion_state() != MotionState::kIdle) return;
+  double position[kAxisCount];
+  machine_->position_mm(position);
+  interpreter_.set_position_mm(position);
+}
+
+void GrblProtocol::raise_alarm(uint8_t code) {
+  alarm_ = code;
+  char storage[16];
+  TextWriter line(storage, sizeof(storage));
+  line.text("ALARM:").unsigned_number(code);
+  send_line(line);
+}
+
+void GrblProtocol::soft_reset() {
+  reset_requested_ = false;
+  const bool was_moving = machine_->soft_reset();
+  receiver_.clear();
+  const CoordinateData coordinates = interpreter_.coordinate_data();
+  interpreter_ = GcodeInterpreter{};
+  interpreter_.set_coordinate_data(coordinates);
+  check_mode_ = false;
+  feed_override_percent_ = rapid_override_percent_ = spindle_override_percent_ = 100;
+  status_requested_ = false;
+  if (was_moving) raise_alarm(3);  // Grbl's "reset while in motion": position may be lost
+  report_welcome();
+  if (alarm_ != 0) send_text("[MSG:'$H'|'$X' to unlock]");
+}
+
+void GrblProtocol::send_text(const char* text) {
+  char storage[96];
+  TextWriter line(storage, sizeof(storage));
+  line.text(text);
+  send_line(line);
+}
+
+void GrblProtocol::send_line(const TextWriter& line) {
+  const size_t length = line.size();
+  if (length + 2 > reply_space()) {  // callers reserve room first; never a torn line
+    ++replies_dropped_;
+    return;
+  }
+  for (size_t i = 0; i < length + 2; ++i) {
+    const char c = i < length ? line.c_str()[i] : (i == length ? '\r' : '\n');
+    replies_[(reply_head_ + reply_count_) % kReplyBufferBytes] = c;
+    ++reply_count_;
+  }
+}
+
+void GrblProtocol::flush_replies() {
+  while (reply_count_ > 0) {
+    const size_t space = stream_->write_space();
+    if (space == 0) return;
+    size_t chunk = kReplyBufferBytes - reply_head_;
+    if (chunk > reply_count_) chunk = reply_count_;
+    if (chunk > space) chunk = space;
+    const size_t written = stream_->write_bytes(reinterpret_cast<const uint8_t*>(replies_ + reply_head_), chunk);
+    if (written == 0) return;
+    reply_head_ = (reply_head_ + written) % kReplyBufferBytes;
+    reply_count_ -= written;
+  }
+}
+
+}  // namespace stepdance::gcode

@@ -1,0 +1,87 @@
+// Grbl 1.1 over a byte stream: realtime bytes, `ok`/`error:N` per line, `$` commands, reports.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "stepdance/core/byte_stream.hpp"
+#include "stepdance/interfaces/gcode/gcode_interpreter.hpp"
+#include "stepdance/interfaces/gcode/gcode_parser.hpp"
+#include "stepdance/interfaces/gcode/grbl_machine.hpp"
+#include "stepdance/interfaces/gcode/grbl_receiver.hpp"
+#include "stepdance/interfaces/gcode/grbl_settings.hpp"
+#include "stepdance/interfaces/text_writer.hpp"
+
+namespace stepdance::gcode {
+
+/// Speaks Grbl 1.1 so G-code senders work unmodified. Each poll() reads what the stream has
+/// (realtime bytes act at once, even while the motion queue is full), executes complete lines
+/// while the machine has room, and replies `ok` or `error:N` only after a line is validated.
+/// Replies wait in a fixed 1 KiB buffer; a line is taken only when its largest reply fits, so
+/// nothing is torn or dropped when the host reads slowly. Context: loop only.
+class GrblProtocol final : private RealtimeHandler {
+ public:
+  /// Starts the link: sends the welcome line. The stream and machine must outlive the protocol.
+  void begin(ByteStream& stream, GrblMachine& machine);
+  /// Serves the link once; call every loop pass.
+  void poll();
+
+  GrblSettings& settings() { return settings_; }
+  const GcodeInterpreter& interpreter() const { return interpreter_; }
+  /// True while an alarm locks out G-code (cleared by `$X`, `$H` or a reset that was not moving).
+  bool alarm_active() const { return alarm_ != 0; }
+  /// Raises a Grbl alarm (ALARM:N is sent); e.g. a limit or fault from the machine.
+  void raise_alarm(uint8_t code);
+
+  /// Replies that found no room (should stay 0: lines are taken only when their reply fits).
+  uint32_t replies_dropped() const { return replies_dropped_; }
+
+  static constexpr size_t kReplyBufferBytes = 1024;
+
+ private:
+  void on_realtime(uint8_t byte) override;
+  void handle_override(uint8_t byte);
+  void execute_line(const ReceivedLine& line);
+  GrblError execute_gcode(const char* text, size_t length);
+  GrblError execute_system(const char* text, size_t length);
+  GrblError execute_jog(const char* text, size_t length);
+  GrblError execute_setting_write(const char* text, size_t length);
+  bool within_travel(const Motion& motion) const;
+  void soft_reset();
+  void sync_position_when_idle();
+
+  void send_line(const TextWriter& line);
+  void send_text(const char* text);
+  void flush_replies();
+  size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
+
+  void report_status();
+  void report_welcome();
+  void report_settings();
+  void report_parameters();
+  void report_parser_state();
+  void report_build_info();
+  void append_axes(TextWriter& line, const double* values_mm, int count);
+
+  ByteStream* stream_ = nullptr;
+  GrblMachine* machine_ = nullptr;
+  GrblReceiver receiver_;
+  GrblSettings settings_;
+  GcodeInterpreter interpreter_;
+  ParserOptions parser_options_;
+  uint8_t alarm_ = 0;
+  bool check_mode_ = false;
+  bool status_requested_ = false;
+  bool reset_requested_ = false;
+  uint8_t feed_override_percent_ = 100;
+  uint8_t rapid_override_percent_ = 100;
+  uint8_t spindle_override_percent_ = 100;
+  uint8_t reports_until_wco_ = 0;
+  uint8_t reports_until_overrides_ = 0;
+  char replies_[kReplyBufferBytes] = {};
+  size_t reply_head_ = 0;
+  size_t reply_count_ = 0;
+  uint32_t replies_dropped_ = 0;
+};
+
+}  // namespace stepdance::gcode

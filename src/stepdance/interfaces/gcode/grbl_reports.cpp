@@ -1,0 +1,153 @@
+// The Grbl link's reports: welcome, status `<…>`, `$$`, `$#`, `$G`, `$I`.
+#include "stepdance/interfaces/gcode/grbl_protocol.hpp"
+
+namespace stepdance::gcode {
+namespace {
+
+constexpr double kMmPerInch = 25.4;
+constexpr uint8_t kWcoEveryReports = 10;
+constexpr uint8_t kOverridesEveryReports = 20;
+
+const char* state_name(MotionState state, bool hold_complete) {
+  switch (state) {
+    case MotionState::kRun: return "Run";
+    case MotionState::kHolding: return hold_complete ? "Hold:0" : "Hold:1";
+    case MotionState::kJog: return "Jog";
+    case MotionState::kIdle: break;
+  }
+  return "Idle";
+}
+
+}  // namespace
+
+void GrblProtocol::append_axes(TextWriter& line, const double* values_mm, int count) {
+  const bool inches = settings_.report_inches();
+  for (int axis = 0; axis < count; ++axis) {
+    if (axis > 0) line.character(',');
+    line.fixed(inches ? values_mm[axis] / kMmPerInch : values_mm[axis], inches ? 4 : 3);
+  }
+}
+
+void GrblProtocol::report_welcome() {
+  send_text("");
+  send_text("Grbl 1.1h ['$' for help]");
+}
+
+void GrblProtocol::report_status() {
+  char storage[160];
+  TextWriter line(storage, sizeof(storage));
+  const MotionState state = machine_->motion_state();
+  line.character('<');
+  if (alarm_ != 0) {
+    line.text("Alarm");
+  } else if (check_mode_) {
+    line.text("Check");
+  } else {
+    line.text(state_name(state, machine_->hold_complete()));
+  }
+  double position[kAxisCount];
+  machine_->position_mm(position);
+  double offset[kOffsetAxisCount];
+  for (int axis = 0; axis < kOffsetAxisCount; ++axis) offset[axis] = interpreter_.work_offset_mm(axis);
+  if (settings_.report_machine_position()) {
+    line.text("|MPos:");
+  } else {
+    for (int axis = 0; axis < kOffsetAxisCount; ++axis) position[axis] -= offset[axis];
+    line.text("|WPos:");
+  }
+  append_axes(line, position, kOffsetAxisCount);
+  if (settings_.report_buffer_state()) {
+    line.text("|Bf:").unsigned_number(machine_->queue_slots_free()).character(',').unsigned_number(
+        static_cast<uint32_t>(receiver_.bytes_free()));
+  }
+  const double feed = machine_->feed_now_mm_per_min();
+  const double speed = interpreter_.modal().spindle == 50 ? 0.0 : interpreter_.modal().spindle_speed;
+  line.text("|FS:").fixed(settings_.report_inches() ? feed / kMmPerInch : feed, 0).character(',').fixed(speed, 0);
+  if (reports_until_wco_ == 0) {
+    line.text("|WCO:");
+    append_axes(line, offset, kOffsetAxisCount);
+    reports_until_wco_ = kWcoEveryReports;
+  } else {
+    --reports_until_wco_;
+  }
+  if (reports_until_overrides_ == 0) {
+    line.text("|Ov:").unsigned_number(feed_override_percent_).character(',');
+    line.unsigned_number(rapid_override_percent_).character(',').unsigned_number(spindle_override_percent_);
+    reports_until_overrides_ = kOverridesEveryReports;
+  } else {
+    --reports_until_overrides_;
+  }
+  line.character('>');
+  send_line(line);
+}
+
+void GrblProtocol::report_settings() {
+  for (int i = 0; i < GrblSettings::kCount; ++i) {
+    const GrblSetting& setting = settings_.at(i);
+    double value = setting.value;
+    if (setting.number >= 100 && setting.number <= 102) value = machine_->steps_per_mm(setting.number - 100);
+    char storage[32];
+    TextWriter line(storage, sizeof(storage));
+    line.character('$').unsigned_number(setting.number).character('=');
+    line.fixed(value, setting.integer ? 0 : 3);
+    send_line(line);
+  }
+}
+
+void GrblProtocol::report_parameters() {
+  static const char* const kSystems[CoordinateData::kSystemCount] = {"G54", "G55", "G56", "G57", "G58", "G59"};
+  const CoordinateData& data = interpreter_.coordinate_data();
+  char storage[64];
+  TextWriter line(storage, sizeof(storage));
+  for (int system = 0; system < CoordinateData::kSystemCount; ++system) {
+    line.clear();
+    line.character('[').text(kSystems[system]).character(':');
+    append_axes(line, data.system_offset_mm[system], kOffsetAxisCount);
+    send_line(line.character(']'));
+  }
+  line.clear();
+  line.text("[G28:");
+  append_axes(line, data.g28_position_mm, kOffsetAxisCount);
+  send_line(line.character(']'));
+  line.clear();
+  line.text("[G30:");
+  append_axes(line, data.g30_position_mm, kOffsetAxisCount);
+  send_line(line.character(']'));
+  line.clear();
+  line.text("[G92:");
+  append_axes(line, interpreter_.g92_offset_mm(), kOffsetAxisCount);
+  send_line(line.character(']'));
+  send_text("[TLO:0.000]");
+  send_text("[PRB:0.000,0.000,0.000:0]");
+}
+
+void GrblProtocol::report_parser_state() {
+  const ModalState& modal = interpreter_.modal();
+  char storage[96];
+  TextWriter line(storage, sizeof(storage));
+  line.text("[GC:G").unsigned_number(modal.motion / 10u);
+  line.text(" G").unsigned_number(54u + modal.coordinate_system);
+  line.text(" G").unsigned_number(modal.plane / 10u);
+  line.text(modal.inches ? " G20" : " G21");
+  line.text(modal.absolute ? " G90" : " G91");
+  line.text(modal.inverse_time ? " G93" : " G94");
+  line.text(" M").unsigned_number(modal.spindle / 10u);
+  line.text(" M").unsigned_number(modal.coolant / 10u);
+  line.text(" T").unsigned_number(modal.tool);
+  const double feed = modal.inches ? modal.feed_mm_per_min / kMmPerInch : modal.feed_mm_per_min;
+  line.text(" F").fixed(feed, modal.inches ? 1 : 0);
+  line.text(" S").fixed(modal.spindle_speed, 0);
+  send_line(line.character(']'));
+}
+
+void GrblProtocol::report_build_info() {
+  send_text("[VER:1.1h.20190825:Stepdance]");
+  char storage[32];
+  TextWriter line(storage, sizeof(storage));
+  // No Grbl build options apply; then planner blocks and receive-buffer bytes, honestly.
+  line.text("[OPT:,").unsigned_number(machine_->queue_slots_total()).character(',');
+  line.unsigned_number(static_cast<uint32_t>(GrblReceiver::kBufferBytes)).character(']');
+  send_line(line);
+}
+
+}  // namespace stepdance::gcode

@@ -1,0 +1,36 @@
+// Builds reply lines for the host protocols in a fixed buffer (no printf, no heap).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+namespace stepdance {
+
+/// Appends text and numbers to caller-owned storage. Text that does not fit is cut off and
+/// overflowed() turns true, so a caller can refuse or report instead of sending a torn reply.
+/// Context: any (touches only its own buffer).
+class TextWriter {
+ public:
+  TextWriter(char* storage, size_t capacity) : data_(storage), capacity_(capacity) { clear(); }
+
+  void clear();
+  TextWriter& text(const char* value);
+  TextWriter& character(char value);
+  TextWriter& unsigned_number(uint32_t value);
+  TextWriter& signed_number(int32_t value);
+  /// A decimal number rounded to `decimals` places (0..6); NaN prints "nan", ±inf "inf"/"-inf",
+  /// and magnitudes of 10^9 or more print "ovf" (no host protocol expects such numbers).
+  TextWriter& fixed(double value, uint8_t decimals);
+
+  const char* c_str() const { return data_; }
+  size_t size() const { return size_; }
+  bool overflowed() const { return overflowed_; }
+
+ private:
+  char* data_;
+  size_t capacity_;
+  size_t size_ = 0;
+  bool overflowed_ = false;
+};
+
+}  // namespace stepdance
