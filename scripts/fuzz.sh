@@ -9,7 +9,8 @@ mkdir -p "$build"
 
 # Portable-core folders each target links (the fuzz file plus these sources).
 declare -A target_sources=(
-  [gcode]="src/stepdance/interfaces/gcode"
+  [gcode]="src/stepdance/interfaces/gcode src/stepdance/interfaces"
+  [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces"
 )
 
 build_target() {
