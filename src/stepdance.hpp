@@ -16,6 +16,7 @@
 #include "stepdance/motion/channel.hpp"
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"
+#include "stepdance/motion/time_based_interpolator.hpp"
 #include "stepdance/protocol/signals.hpp"
 
 #include "stepdance/sketch_board.hpp"
@@ -34,6 +35,7 @@ using stepdance::KinematicsCoreXY;
 using stepdance::OutputPort;
 using stepdance::Plugin;
 using stepdance::PositionGenerator;
+using stepdance::TimeBasedInterpolator;
 using stepdance::disable_drivers;
 using stepdance::enable_drivers;
 using stepdance::iterate_across_all_output_ports;
