@@ -37,6 +37,21 @@ TEST(SketchPrototypes, StaticInlineTemplatesAndQualifiedTypes) {
             std::vector<std::string>{"auto twice(int v) -> int;"});
 }
 
+TEST(SketchPrototypes, ReturnTypesAndAttributesAsSketchesWriteThem) {
+  const std::string text =
+      "char *name_of(int pin) { return nullptr; }\n"
+      "const String& label() { return text; }\n"
+      "unsigned long\nelapsed_since(unsigned long start)\n{\n  return millis() - start;\n}\n"
+      "FASTRUN void on_frame(void) {}\n"
+      "extern \"C\" int from_c(void) { return 1; }\n"
+      "__attribute__((noinline)) volatile float64_t *level_ptr() { return &level; }\n";
+  EXPECT_EQ(prototypes_of(text), (std::vector<std::string>{"char * name_of(int pin);", "const String & label();",
+                                                           "unsigned long elapsed_since(unsigned long start);",
+                                                           "FASTRUN void on_frame(void);", "extern \"C\" int from_c(void);",
+                                                           "__attribute__((noinline)) volatile float64_t * level_ptr();"}));
+  EXPECT_EQ(scan_sketch_functions(text).functions[2].line, 4u);  // the name's line, not the type's
+}
+
 TEST(SketchPrototypes, DefaultArgumentsStayInThePrototypeAndAreMarkedInTheDefinition) {
   const std::string text = "void move(float mm, float speed = 10.0f, int axis = max(1, 2)) {}\n";
   const SketchScan scan = scan_sketch_functions(text);
