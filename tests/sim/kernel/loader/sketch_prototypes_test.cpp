@@ -137,5 +137,28 @@ TEST(SketchPrototypes, UnbalancedTextDoesNotCrash) {
   EXPECT_EQ(prototypes_of("}}}} void g() {}\n"), std::vector<std::string>{"void g();"});
 }
 
+TEST(SketchPrototypes, RandomTokenSoupNeverCrashesAndStaysInBounds) {
+  static const char* const kPieces[] = {"void ", "int ", "f", "g", "(", ")", "{", "}", ";", ",", "=", "<", ">",
+                                        "::", "template ", "\"", "'", "/*", "*/", "//", "\n", "#if X\n",
+                                        "#else\n", "#endif\n", "\\\n", "R\"(", ")\"", "1'0", " "};
+  uint32_t state = 12345;  // a fixed linear congruential sequence: the same soup on every run
+  for (int round = 0; round < 2000; ++round) {
+    std::string text;
+    for (int i = 0; i < 40; ++i) {
+      state = state * 1664525u + 1013904223u;
+      text += kPieces[(state >> 16) % (sizeof(kPieces) / sizeof(kPieces[0]))];
+    }
+    const SketchScan scan = scan_sketch_functions(text);
+    ASSERT_LE(scan.insertion_offset, text.size()) << text;
+    for (const SketchFunction& function : scan.functions) {
+      for (const auto& [begin, end] : function.default_arguments) {
+        ASSERT_LE(begin, end) << text;
+        ASSERT_LE(end, text.size()) << text;
+      }
+      ASSERT_EQ(function.prototype.back(), ';') << text;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace stepdance::sim
