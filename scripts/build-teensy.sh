@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Cross-compiles the library and every example for the Teensy 4.x against the Teensyduino stand-in,
 # links the images, reports flash/RAM use, rejects heap/exception symbols and checks the library zip.
+# Sketch folders are prepared as the Arduino IDE does (.ino files concatenated, prototypes
+# generated, .c/.cpp beside them compiled) by the simulator's own preparation code, built here for
+# the host. The compile-only sketch fixtures under tests/sim/kernel/fixtures are compiled too.
 #
 # Usage: scripts/build-teensy.sh      (output in build-teensy/, or $STEPDANCE_TEENSY_BUILD_DIR)
 # The images link against do-nothing stand-ins for Teensyduino's core (targets/teensy/stand-in):
@@ -17,7 +20,7 @@ fail() {
   exit 1
 }
 
-for tool in arm-none-eabi-g++ arm-none-eabi-gcc arm-none-eabi-size arm-none-eabi-objcopy arm-none-eabi-objdump \
+for tool in c++ arm-none-eabi-g++ arm-none-eabi-gcc arm-none-eabi-size arm-none-eabi-objcopy arm-none-eabi-objdump \
   arm-none-eabi-nm c++filt cmake; do
   command -v "$tool" >/dev/null || fail "$tool is missing (run scripts/setup.sh)"
 done
@@ -44,7 +47,7 @@ up_to_date() {
 }
 
 compiled=0
-# compile SOURCE OBJECT EXTRA_FLAGS...: C or C++ by extension; .ino files are C++ with Arduino.h.
+# compile SOURCE OBJECT EXTRA_FLAGS...: C or C++ by extension (sketches arrive prepared, as .ino.cpp).
 compile() {
   local source=$1 object=$2
   shift 2
@@ -52,11 +55,33 @@ compile() {
   mkdir -p "$(dirname "$object")"
   case $source in
     *.c) arm-none-eabi-gcc "${common[@]}" "${c_flags[@]}" "$@" -MMD -MP -c "$source" -o "$object" ;;
-    *.ino) arm-none-eabi-g++ "${common[@]}" "${cxx_flags[@]}" "$@" -x c++ -include Arduino.h -MMD -MP \
-      -c "$source" -o "$object" ;;
     *) arm-none-eabi-g++ "${common[@]}" "${cxx_flags[@]}" "$@" -MMD -MP -c "$source" -o "$object" ;;
   esac || fail "compiling $source ($*)"
   compiled=$((compiled + 1))
+}
+
+# ---- The IDE's sketch preparation, as a host tool -------------------------------------------------
+
+prep="$out/tools/stepdance-sketch-prep"
+prep_sources=(sim/kernel/loader/sketch_prep_main.cpp sim/kernel/loader/sketch_prototypes.cpp
+  sim/kernel/loader/sketch_sources.cpp)
+prep_stale=0
+[ -x "$prep" ] || prep_stale=1
+for source in "${prep_sources[@]}" sim/kernel/loader/*.hpp; do [ "$source" -nt "$prep" ] && prep_stale=1; done
+if [ $prep_stale -eq 1 ]; then
+  mkdir -p "$out/tools"
+  c++ -std=gnu++17 -O1 -Isim/kernel "${prep_sources[@]}" -o "$prep" || fail "building the sketch preparation tool"
+fi
+
+# prepare_sketch FOLDER OUTPUT.cpp: writes the IDE's translation unit (rewritten only when it
+# changes, so unchanged sketches are not recompiled) and prints the folder's other C/C++ sources,
+# relative to the repository.
+prepare_sketch() {
+  local folder=$1 output=$2 sources
+  mkdir -p "$(dirname "$output")"
+  sources=$("$prep" "$folder" "$output.new") || fail "preparing $folder"
+  if cmp -s "$output.new" "$output"; then rm "$output.new"; else mv "$output.new" "$output"; fi
+  [ -z "$sources" ] || realpath --relative-to=. $sources
 }
 
 # ---- What to build ----------------------------------------------------------------------------
@@ -127,10 +152,9 @@ backend_present() {
 link_example() {
   local name=$1 board=$2 usb=$3 dir="$out/$2-$3"
   local flags=("-D${board_macro[$board]}" "-D${usb_macro[$usb]}")
-  local sketch_object="$dir/examples/$name/$name.ino.o"
-  compile "examples/$name/$name.ino" "$sketch_object" "${flags[@]}"
-  local extra_sources=() source
-  mapfile -t extra_sources < <(find "examples/$name" -maxdepth 1 -type f \( -name '*.cpp' -o -name '*.c' \) | LC_ALL=C sort)
+  local sketch_object="$dir/examples/$name/$name.ino.o" extra_sources=() source
+  mapfile -t extra_sources < <(prepare_sketch "examples/$name" "$dir/examples/$name/$name.ino.cpp")
+  compile "$dir/examples/$name/$name.ino.cpp" "$sketch_object" "${flags[@]}" -iquote "examples/$name"
   local objects=("$sketch_object")
   for source in "${extra_sources[@]}"; do
     compile "$source" "$dir/${source%.*}.o" "${flags[@]}"
@@ -164,7 +188,58 @@ for build in "${builds[@]}"; do
 done
 # The library builds for both boards even when no example needs the Teensy 4.0.
 [ -n "${config_objects[teensy40-serial]+set}" ] || build_configuration teensy40 serial
-echo "build-teensy: ${#library_sources[@]} library sources; ${#builds[@]} example images linked" \
+
+# ---- Compile-only sketch fixtures (tests/sim/kernel/fixtures): the IDE-style folder and the ----
+# original library's names. A fixture marked "// waits-for: NAME..." may fail only because those
+# names do not exist yet (the host test, original_api_fixtures_test.cpp, applies the same rule).
+waiting_only() {
+  local log=$1 line name explained any=1
+  shift
+  while IFS= read -r line; do
+    explained=1
+    [[ $line == *"was not declared in this scope"* ]] && explained=0
+    for name in "$@"; do
+      if [[ $name == *::* ]]; then  # quoted ‘x’ in a UTF-8 locale, 'x' in the C locale
+        [[ $line == *"has no member named "[\'‘]"${name#*::}"[\'’]* ]] && explained=0 && any=0
+      else
+        [[ $line == *[\'‘]"$name"[\'’]" does not name a type"* ]] && explained=0 && any=0
+      fi
+    done
+    [ $explained -eq 0 ] || return 1
+  done < <(grep ' error: ' "$log")
+  return $any
+}
+
+fixtures_built=0
+declare -a fixtures_waiting=()
+mapfile -t fixture_dirs < <(find tests/sim/kernel/fixtures/IdeSketch tests/sim/kernel/fixtures/original_api -name '*.ino' -printf '%h\n' | LC_ALL=C sort -u)
+for folder in "${fixture_dirs[@]}"; do
+  name=$(basename "$folder")
+  [ -f "$folder/$name.ino" ] || continue
+  object_dir="$out/teensy41-serial/fixtures/$name"
+  mapfile -t extra_sources < <(prepare_sketch "$folder" "$object_dir/$name.ino.cpp")
+  read -r -a waited <<<"$(sed -n '1s|^// waits-for:||p' "$folder/$name.ino")"
+  log="$object_dir/compile.log"
+  if ! (for source in "$object_dir/$name.ino.cpp" "${extra_sources[@]}"; do
+      object="$object_dir/$(basename "${source%.*}").o"
+      up_to_date "$object" && continue
+      case $source in
+        *.c) arm-none-eabi-gcc "${common[@]}" "${c_flags[@]}" -DARDUINO_TEENSY41 -DUSB_SERIAL -MMD -MP -c "$source" -o "$object" ;;
+        *) arm-none-eabi-g++ "${common[@]}" "${cxx_flags[@]}" -DARDUINO_TEENSY41 -DUSB_SERIAL -iquote "$folder" -MMD -MP \
+          -c "$source" -o "$object" ;;
+      esac || exit 1
+    done) >"$log" 2>&1; then
+    if [ ${#waited[@]} -gt 0 ] && waiting_only "$log" "${waited[@]}"; then
+      fixtures_waiting+=("$name")
+      continue
+    fi
+    cat "$log" >&2
+    fail "sketch fixture $folder does not compile for the Teensy 4.1"
+  fi
+  fixtures_built=$((fixtures_built + 1))
+done
+echo "build-teensy: ${#library_sources[@]} library sources; ${#builds[@]} example images linked;" \
+  "$fixtures_built sketch fixtures compiled${fixtures_waiting[*]:+ (waiting for blocks: ${fixtures_waiting[*]})}" \
   "($compiled files compiled this run):"
 arm-none-eabi-size "${images[@]}" | sed 's/^/  /'
 if [ ${#unlinked_hal[@]} -gt 0 ]; then

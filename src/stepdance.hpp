@@ -21,6 +21,14 @@
 
 #include "stepdance/sketch_board.hpp"
 
+// Teensyduino ships CMSIS's arm_math.h; sketches written for the original get float32_t and
+// float64_t from it through the library's headers. (The host Arduino API defines both itself.)
+#if defined(__IMXRT1062__) && defined(__has_include)
+#if __has_include(<arm_math.h>)
+#include <arm_math.h>
+#endif
+#endif
+
 // The original library lived in the global namespace; sketches name its classes unqualified.
 using stepdance::AnalogInput;
 using stepdance::Block;

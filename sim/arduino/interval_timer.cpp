@@ -18,6 +18,7 @@ struct TimerSlot {
 };
 
 TimerSlot timers[kTimers];
+int running = 0;  // timers in use: the frame tick returns at once when none is
 uint32_t last_micros = 0;
 double elapsed_us = 0;
 
@@ -41,6 +42,7 @@ TimerSlot* slot_of(const IntervalTimer* owner) {
 }  // namespace
 
 void run_interval_timers() {
+  if (running == 0) return;
   const double now = now_us();
   for (TimerSlot& timer : timers) {
     for (int calls = 0; timer.owner != nullptr && timer.due_us <= now && calls < kMaxCallsPerRun; ++calls) {
@@ -55,6 +57,7 @@ namespace internal {
 
 void reset_interval_timer_state() {
   for (TimerSlot& timer : timers) timer = TimerSlot{};
+  running = 0;
   last_micros = micros();
   elapsed_us = 0;
 }
@@ -62,8 +65,11 @@ void reset_interval_timer_state() {
 bool start_interval_timer(const IntervalTimer* owner, IntervalTimer::Callback callback, double period_us) {
   if (callback == nullptr || !valid_period(period_us)) return false;
   TimerSlot* timer = slot_of(owner);
-  if (timer == nullptr) timer = slot_of(nullptr);
-  if (timer == nullptr) return false;
+  if (timer == nullptr) {
+    timer = slot_of(nullptr);
+    if (timer == nullptr) return false;
+    ++running;
+  }
   *timer = {owner, callback, period_us, now_us() + period_us};
   return true;
 }
@@ -74,7 +80,10 @@ void update_interval_timer(const IntervalTimer* owner, double period_us) {
 }
 
 void stop_interval_timer(const IntervalTimer* owner) {
-  if (TimerSlot* timer = slot_of(owner)) *timer = TimerSlot{};
+  if (TimerSlot* timer = slot_of(owner)) {
+    *timer = TimerSlot{};
+    --running;
+  }
 }
 
 }  // namespace internal

@@ -365,11 +365,15 @@ class FileScopePass {
   }
 
   void set_insertion_point() {
-    std::size_t offset = tokens_[statement_[0]].begin;
-    if (!statement_conditions_.empty()) offset = statement_conditions_.front().offset;
-    while (offset > 0 && text_[offset - 1] != '\n') --offset;
-    scan_.insertion_offset = offset;
-    scan_.insertion_line = line_of(offset);
+    const std::size_t first = statement_conditions_.empty() ? tokens_[statement_[0]].begin
+                                                            : statement_conditions_.front().offset;
+    std::size_t line_start = first;
+    while (line_start > 0 && text_[line_start - 1] != '\n') --line_start;
+    const bool blanks_before =
+        text_.substr(line_start, first - line_start).find_first_not_of(" \t\r\f\v") == std::string_view::npos;
+    scan_.insertion_offset = blanks_before ? line_start : first;
+    scan_.insertion_column = blanks_before ? 0 : first - line_start;
+    scan_.insertion_line = line_of(scan_.insertion_offset);
   }
 
   std::size_t line_of(std::size_t offset) const {

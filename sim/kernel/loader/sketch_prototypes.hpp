@@ -29,12 +29,16 @@ struct SketchFunction {
 /// What scanning one sketch file found.
 struct SketchScan {
   std::vector<SketchFunction> functions;
-  /// Byte offset of the start of the line before which prototypes go: the line where the first
-  /// function definition begins, or the opening directive of the outermost conditional around
-  /// it. Meaningless when `functions` is empty.
+  /// Byte offset before which prototypes go: the start of the line where the first function
+  /// definition begins (or of the outermost conditional around it). When something other than
+  /// blanks precedes the definition on that line (the end of a comment, another declaration),
+  /// the definition's first character instead. Meaningless when `functions` is empty.
   std::size_t insertion_offset = 0;
   /// 1-based line number of insertion_offset.
   std::size_t insertion_line = 1;
+  /// 0-based column of insertion_offset (0 at a line start); the assembly pads the resumed line
+  /// with this many spaces so the compiler's columns stay right.
+  std::size_t insertion_column = 0;
 };
 
 /// Scans C++ source text (one .ino) for function definitions at file scope: not members

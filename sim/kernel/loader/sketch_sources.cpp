@@ -127,9 +127,10 @@ std::string assemble_sketch(const std::vector<InoFile>& inos) {
     }
     const SketchScan& scan = scans[file];
     out += text.substr(0, scan.insertion_offset);
+    if (scan.insertion_column > 0) out += "\n";  // mid-line: the prototypes start a line of their own
     out += prototypes(inos, scans);
     out += line_directive(scan.insertion_line, inos[file].path);
-    out += text.substr(scan.insertion_offset);
+    out += std::string(scan.insertion_column, ' ') + text.substr(scan.insertion_offset);
   }
   return out;
 }

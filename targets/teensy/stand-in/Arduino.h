@@ -19,11 +19,14 @@
 //   For sketches
 //     Arduino.h  setup(), loop()                  the sketch's entry points, called by main()
 //                HIGH, LOW                        1, 0
+//                PI, HALF_PI, TWO_PI, DEG_TO_RAD, RAD_TO_DEG   Arduino's constants (macros, as there)
 //                INPUT, OUTPUT, INPUT_PULLUP, INPUT_PULLDOWN   0, 1, 2, 3 (Teensy 4 values)
 //                pinMode, digitalRead, digitalWrite, analogRead
 //                millis, delay, delayMicroseconds, yield, elapsedMillis
 //                Print, Stream: print, println, write; DEC, HEX
 //                SerialUSB1                       only with USB_DUAL_SERIAL or USB_TRIPLE_SERIAL
+//     arm_math.h float32_t, float64_t             (CMSIS, shipped with Teensyduino)
+//     usb_names.h struct usb_string_descriptor_struct   what a sketch folder's name.c fills in
 //   For the image (teensyduino_stand_in.cpp, startup.cpp; Teensyduino's core has the real ones)
 //                main(), reset handler, boot headers, vector table in RAM
 #pragma once
@@ -48,6 +51,12 @@ void loop();
 
 #define DEC 10
 #define HEX 16
+
+#define PI 3.1415926535897932384626433832795
+#define HALF_PI 1.5707963267948966192313216916398
+#define TWO_PI 6.283185307179586476925286766559
+#define DEG_TO_RAD 0.017453292519943295769236907684886
+#define RAD_TO_DEG 57.295779513082320876798154814105
 
 // ---- Pins and time -----------------------------------------------------------------------------
 

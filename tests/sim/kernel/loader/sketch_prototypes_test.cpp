@@ -37,6 +37,21 @@ TEST(SketchPrototypes, StaticInlineTemplatesAndQualifiedTypes) {
             std::vector<std::string>{"auto twice(int v) -> int;"});
 }
 
+TEST(SketchPrototypes, ReturnTypesAndAttributesAsSketchesWriteThem) {
+  const std::string text =
+      "char *name_of(int pin) { return nullptr; }\n"
+      "const String& label() { return text; }\n"
+      "unsigned long\nelapsed_since(unsigned long start)\n{\n  return millis() - start;\n}\n"
+      "FASTRUN void on_frame(void) {}\n"
+      "extern \"C\" int from_c(void) { return 1; }\n"
+      "__attribute__((noinline)) volatile float64_t *level_ptr() { return &level; }\n";
+  EXPECT_EQ(prototypes_of(text), (std::vector<std::string>{"char * name_of(int pin);", "const String & label();",
+                                                           "unsigned long elapsed_since(unsigned long start);",
+                                                           "FASTRUN void on_frame(void);", "extern \"C\" int from_c(void);",
+                                                           "__attribute__((noinline)) volatile float64_t * level_ptr();"}));
+  EXPECT_EQ(scan_sketch_functions(text).functions[2].line, 4u);  // the name's line, not the type's
+}
+
 TEST(SketchPrototypes, DefaultArgumentsStayInThePrototypeAndAreMarkedInTheDefinition) {
   const std::string text = "void move(float mm, float speed = 10.0f, int axis = max(1, 2)) {}\n";
   const SketchScan scan = scan_sketch_functions(text);
@@ -120,6 +135,29 @@ TEST(SketchPrototypes, UnbalancedTextDoesNotCrash) {
   EXPECT_NO_FATAL_FAILURE(scan_sketch_functions("}}}} void g() {} \"unterminated\n#if X\n"));
   EXPECT_NO_FATAL_FAILURE(scan_sketch_functions("R\"x(never closed"));
   EXPECT_EQ(prototypes_of("}}}} void g() {}\n"), std::vector<std::string>{"void g();"});
+}
+
+TEST(SketchPrototypes, RandomTokenSoupNeverCrashesAndStaysInBounds) {
+  static const char* const kPieces[] = {"void ", "int ", "f", "g", "(", ")", "{", "}", ";", ",", "=", "<", ">",
+                                        "::", "template ", "\"", "'", "/*", "*/", "//", "\n", "#if X\n",
+                                        "#else\n", "#endif\n", "\\\n", "R\"(", ")\"", "1'0", " "};
+  uint32_t state = 12345;  // a fixed linear congruential sequence: the same soup on every run
+  for (int round = 0; round < 2000; ++round) {
+    std::string text;
+    for (int i = 0; i < 40; ++i) {
+      state = state * 1664525u + 1013904223u;
+      text += kPieces[(state >> 16) % (sizeof(kPieces) / sizeof(kPieces[0]))];
+    }
+    const SketchScan scan = scan_sketch_functions(text);
+    ASSERT_LE(scan.insertion_offset, text.size()) << text;
+    for (const SketchFunction& function : scan.functions) {
+      for (const auto& [begin, end] : function.default_arguments) {
+        ASSERT_LE(begin, end) << text;
+        ASSERT_LE(end, text.size()) << text;
+      }
+      ASSERT_EQ(function.prototype.back(), ';') << text;
+    }
+  }
 }
 
 }  // namespace

@@ -104,6 +104,22 @@ TEST(SketchAssembly, PrototypesGoBeforeTheFirstDefinitionUnderTheirConditionsWit
   EXPECT_EQ(text, expected);
 }
 
+TEST(SketchAssembly, ADefinitionAfterACommentOnItsLineGetsThePrototypesRightBeforeIt) {
+  const std::string text = assemble_sketch({{"a.ino", "/* first\n   ends */ void f() { g(); }\nvoid g() {}\n"}});
+  const std::string expected =
+      "#include <Arduino.h>\n"
+      "#line 1 \"a.ino\"\n"
+      "/* first\n   ends */ \n"
+      "#line 2 \"a.ino\"\n"
+      "void f();\n"
+      "#line 3 \"a.ino\"\n"
+      "void g();\n"
+      "#line 2 \"a.ino\"\n"
+      "           void f() { g(); }\n"  // padded back to column 11
+      "void g() {}\n";
+  EXPECT_EQ(text, expected);
+}
+
 TEST(SketchAssembly, ASketchWithoutFunctionsIsOnlyConcatenated) {
   EXPECT_EQ(assemble_sketch({{"a.ino", "int x;\n"}, {"b.ino", "int y;\n"}}),
             "#include <Arduino.h>\n#line 1 \"a.ino\"\nint x;\n#line 1 \"b.ino\"\nint y;\n");
