@@ -17,6 +17,7 @@
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
+#include "stepdance/interfaces/gcode_interface.hpp"
 #include "stepdance/protocol/signals.hpp"
 
 #include "stepdance/sketch_board.hpp"
@@ -38,6 +39,7 @@ using stepdance::Channel;
 using stepdance::ControlParameter;
 using stepdance::DecimalPosition;
 using stepdance::Encoder;
+using stepdance::GCodeInterface;
 using stepdance::InputPort;
 using stepdance::KinematicsCoreXY;
 using stepdance::OutputPort;

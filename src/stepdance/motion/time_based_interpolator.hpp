@@ -92,6 +92,9 @@ class TimeBasedInterpolator : public Block {
   void reset_block_queue();
   /// Stops at once and drops every queued move (no deceleration). Context: loop.
   void emergency_stop();
+  /// True from a reset_block_queue() or emergency_stop() until the stop completes (moves are
+  /// refused meanwhile). Context: loop.
+  bool stop_in_progress() const { return stop_pending_; }
 
   /// Machine limits used for planning. Context: loop (takes effect for moves added later).
   planner::MotionLimits& limits() { return limits_; }

@@ -3,39 +3,15 @@
 
 #include <gtest/gtest.h>
 
-#include <deque>
 #include <string>
 #include <vector>
+
+#include "support/fake_byte_stream.hpp"
 
 namespace stepdance::gcode {
 namespace {
 
-/// A host link: bytes the host sent wait in `to_board`; what the board wrote lands in `from_board`.
-struct FakeStream final : ByteStream {
-  std::deque<uint8_t> to_board;
-  std::string from_board;
-  size_t write_room = 1 << 20;
-  size_t bytes_available() override { return to_board.size(); }
-  int read_byte() override {
-    if (to_board.empty()) return -1;
-    const uint8_t byte = to_board.front();
-    to_board.pop_front();
-    return byte;
-  }
-  size_t write_bytes(const uint8_t* data, size_t length) override {
-    const size_t n = length < write_room ? length : write_room;
-    from_board.append(reinterpret_cast<const char*>(data), n);
-    write_room -= n;
-    return n;
-  }
-  size_t write_space() override { return write_room; }
-  void send(const std::string& text) { to_board.insert(to_board.end(), text.begin(), text.end()); }
-  std::string take() {
-    std::string out;
-    out.swap(from_board);
-    return out;
-  }
-};
+using FakeStream = test_support::FakeByteStream;
 
 /// A machine whose queue the test fills and drains by hand.
 struct FakeMachine final : GrblMachine {

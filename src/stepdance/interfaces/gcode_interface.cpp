@@ -1,0 +1,222 @@
+// GCodeInterface: Grbl requests become planned moves; arcs are fed chord by chord as room allows.
+#include "stepdance/interfaces/gcode_interface.hpp"
+
+#include <math.h>
+
+#include "stepdance/core/fault.hpp"
+#include "stepdance/core/file_storage.hpp"
+
+namespace stepdance {
+
+using gcode::kAxisCount;
+using gcode::Motion;
+using gcode::MotionKind;
+using gcode::MotionState;
+
+namespace {
+
+constexpr double kSecondsPerMinute = 60.0;
+
+}  // namespace
+
+Status GCodeInterface::begin() { return begin_stream(hal::console()); }
+
+Status GCodeInterface::begin_stream(ByteStream& stream) {
+  const Status planner = interpolator_.begin();
+  if (planner != Status::kOk) return planner;
+  const Status own = register_in(Stage::kLoop);
+  if (own != Status::kOk) return own;
+  apply_settings_to_planner();
+  protocol_.begin(stream, *this);
+  return Status::kOk;
+}
+
+void GCodeInterface::loop() {
+  drain_pending();
+  protocol_.poll();
+  drain_pending();
+  if (jogging_ && interpolator_.is_idle() && pending_count_ == 0) jogging_ = false;
+}
+
+// ---- requests from executed lines ----
+
+void GCodeInterface::on_motion(const Motion& motion) {
+  Pending request;
+  request.kind = Pending::Kind::kMotion;
+  request.motion = motion;
+  push_pending(request);
+}
+
+void GCodeInterface::on_dwell(double seconds) {
+  Pending request;
+  request.kind = Pending::Kind::kDwell;
+  request.dwell_s = seconds;
+  push_pending(request);
+}
+
+void GCodeInterface::jog(const Motion& motion) {
+  Pending request;
+  request.kind = Pending::Kind::kJog;
+  request.motion = motion;
+  jogging_ = true;
+  push_pending(request);
+}
+
+void GCodeInterface::push_pending(const Pending& request) {
+  // ready_for_line() admits a line only when the FIFO is empty, and a line asks for at most
+  // kPendingCapacity requests, so this cannot overflow; the check keeps the invariant honest.
+  if (pending_count_ == kPendingCapacity) {
+    report_fault(FaultLevel::kFatal, FaultReason::kInvariant, "gcode", "pending request FIFO overflow");
+    return;
+  }
+  pending_[(pending_head_ + pending_count_) % kPendingCapacity] = request;
+  ++pending_count_;
+  drain_pending();
+}
+
+void GCodeInterface::drain_pending() {
+  apply_settings_to_planner();
+  while (pending_count_ > 0) {
+    const Pending& request = pending_[pending_head_];
+    bool done = false;
+    switch (request.kind) {
+      case Pending::Kind::kDwell:
+        done = request.dwell_s <= 0.0 ||
+               interpolator_.add_timed_move(INCREMENTAL, static_cast<float>(request.dwell_s), 0, 0, 0, 0, 0, 0) >= 0;
+        break;
+      case Pending::Kind::kJog:
+        done = queue_line_motion(request.motion, request.motion.feed_mm_per_min / kSecondsPerMinute, 0.0);
+        break;
+      case Pending::Kind::kMotion: {
+        const Motion& motion = request.motion;
+        if (motion.kind == MotionKind::kArc) {
+          done = feed_arc(motion);
+        } else if (motion.duration_min > 0.0) {
+          done = queue_line_motion(motion, 0.0, motion.duration_min * kSecondsPerMinute);
+        } else if (motion.kind == MotionKind::kRapid) {
+          done = queue_line_motion(motion, -1.0, 0.0);
+        } else {
+          done = queue_line_motion(motion, motion.feed_mm_per_min / kSecondsPerMinute, 0.0);
+        }
+        break;
+      }
+    }
+    if (!done) return;  // the planner is full: try again next loop pass
+    pending_head_ = (pending_head_ + 1) % kPendingCapacity;
+    --pending_count_;
+  }
+}
+
+bool GCodeInterface::queue_line_motion(const Motion& motion, double speed_mm_per_s, double time_s) {
+  if (interpolator_.queue_is_full()) return false;
+  const double* end = motion.end_mm;
+  if (time_s > 0.0) {
+    return interpolator_.add_timed_move(ABSOLUTE, static_cast<float>(time_s), end[0], end[1], end[2], end[3], 0, 0) >= 0;
+  }
+  if (speed_mm_per_s < 0.0) {  // a rapid: as fast as the axis limits allow, scaled by the override
+    double delta[planner::kPlannerAxes] = {};
+    double length_sq = 0.0;
+    for (int axis = 0; axis < kAxisCount; ++axis) {
+      delta[axis] = end[axis] - interpolator_.planned_position(axis);
+      if (axis < 3) length_sq += delta[axis] * delta[axis];
+    }
+    const double length = length_sq > 0.0 ? sqrt(length_sq) : fabs(delta[3]);
+    if (length <= 0.0) return true;  // already there
+    speed_mm_per_s = interpolator_.limits().max_speed(delta, length) * rapid_percent_ / 100.0;
+  }
+  // A refusal other than a full queue (an alarm) drops the motion, as Grbl's alarm flushes it.
+  interpolator_.add_move(ABSOLUTE, static_cast<float>(speed_mm_per_s), end[0], end[1], end[2], end[3], 0, 0);
+  return true;
+}
+
+bool GCodeInterface::feed_arc(const Motion& arc) {
+  const gcode::ArcSegmenter chords(arc, settings().arc_tolerance_mm());
+  const uint32_t count = chords.segment_count();
+  while (arc_next_chord_ < count) {
+    Motion chord = arc;
+    chord.kind = MotionKind::kLinear;
+    chords.point_mm(arc_next_chord_ + 1, chord.end_mm);
+    const double time_s = arc.duration_min > 0.0 ? arc.duration_min * kSecondsPerMinute / count : 0.0;
+    if (!queue_line_motion(chord, arc.feed_mm_per_min / kSecondsPerMinute, time_s)) return false;
+    ++arc_next_chord_;
+  }
+  arc_next_chord_ = 0;
+  return true;
+}
+
+void GCodeInterface::apply_settings_to_planner() {
+  gcode::GrblSettings& grbl = settings();
+  planner::MotionLimits& limits = interpolator_.limits();
+  for (int axis = 0; axis < 3; ++axis) {
+    limits.set_axis_limit(axis, grbl.max_rate_mm_per_min(axis) / kSecondsPerMinute, grbl.acceleration_mm_per_s2(axis));
+  }
+  limits.set_axis_limit(gcode::kAxisE, grbl.max_rate_mm_per_min(0) / kSecondsPerMinute, grbl.acceleration_mm_per_s2(0));
+  interpolator_.set_junction_deviation(grbl.junction_deviation_mm());
+}
+
+// ---- state and realtime commands ----
+
+MotionState GCodeInterface::motion_state() {
+  const bool busy = !interpolator_.is_idle() || pending_count_ > 0;
+  if (holding_) return MotionState::kHolding;
+  if (!busy) return MotionState::kIdle;
+  return jogging_ ? MotionState::kJog : MotionState::kRun;
+}
+
+bool GCodeInterface::hold_complete() { return interpolator_.current_speed() == 0.0; }
+
+void GCodeInterface::position_mm(double (&out)[kAxisCount]) {
+  BlockPort* ports[kAxisCount] = {&output_x, &output_y, &output_z, &output_e};
+  for (int axis = 0; axis < kAxisCount; ++axis) out[axis] = ports[axis]->read_absolute();
+}
+
+double GCodeInterface::feed_now_mm_per_min() { return interpolator_.current_speed() * kSecondsPerMinute; }
+
+uint16_t GCodeInterface::queue_slots_free() { return interpolator_.slots_remaining; }
+
+uint16_t GCodeInterface::queue_slots_total() { return planner::LookaheadPlanner::kCapacity; }
+
+bool GCodeInterface::ready_for_line() {
+  return pending_count_ == 0 && !interpolator_.stop_in_progress() && interpolator_.slots_remaining >= 3;
+}
+
+void GCodeInterface::feed_hold() {
+  holding_ = true;
+  apply_override();
+}
+
+void GCodeInterface::cycle_start() {
+  holding_ = false;
+  apply_override();
+}
+
+bool GCodeInterface::soft_reset() {
+  const bool moving = interpolator_.current_speed() > 0.0;
+  interpolator_.emergency_stop();
+  pending_count_ = 0;
+  arc_next_chord_ = 0;
+  holding_ = false;
+  jogging_ = false;
+  feed_percent_ = rapid_percent_ = 100;
+  apply_override();
+  return moving;
+}
+
+void GCodeInterface::jog_cancel() {
+  pending_count_ = 0;
+  interpolator_.reset_block_queue();
+}
+
+void GCodeInterface::set_overrides(uint8_t feed_percent, uint8_t rapid_percent) {
+  feed_percent_ = feed_percent;
+  rapid_percent_ = rapid_percent;
+  apply_override();
+}
+
+void GCodeInterface::apply_override() {
+  interpolator_.speed_overide = holding_ ? 0.0 : feed_percent_ / 100.0;
+}
+
+double GCodeInterface::steps_per_mm(int axis) { return settings().value(100 + static_cast<uint32_t>(axis)); }
+
+}  // namespace stepdance

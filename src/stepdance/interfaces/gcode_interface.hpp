@@ -1,0 +1,122 @@
+// GCodeInterface: a Grbl 1.1 compatible G-code link driving its own TimeBasedInterpolator.
+#pragma once
+
+#include <stdint.h>
+
+#include "stepdance/core/arduino_stream_adapter.hpp"
+#include "stepdance/core/block.hpp"
+#include "stepdance/core/block_port.hpp"
+#include "stepdance/core/byte_stream.hpp"
+#include "stepdance/core/status.hpp"
+#include "stepdance/interfaces/gcode/arc_geometry.hpp"
+#include "stepdance/interfaces/gcode/grbl_machine.hpp"
+#include "stepdance/interfaces/gcode/grbl_protocol.hpp"
+#include "stepdance/motion/time_based_interpolator.hpp"
+
+namespace stepdance {
+
+/// Lets a G-code sender (gSender, cncjs, bCNC, UGS, or `screen`) drive the sketch over a serial
+/// port, speaking Grbl 1.1: `ok`/`error:N` per line after validation, `?` status reports,
+/// `!` feed hold, `~` resume, Ctrl-X reset, `$` settings and jogging (see docs/gcode.md for the
+/// codes understood). Motion goes through the interface's own TimeBasedInterpolator with
+/// look-ahead; its outputs (machine coordinates, mm) are summed with live inputs downstream.
+///
+/// Planner limits come from the Grbl settings: $110–$112 max rates (mm/min; E uses $110),
+/// $120–$122 accelerations (mm/s²), $11 junction deviation (mm), $12 arc tolerance (mm).
+/// The feed override and a feed hold act live on the planned speed; the rapid override applies
+/// to rapids queued after it changes. Context: everything from the loop (dance_loop runs it).
+class GCodeInterface : public Block, private gcode::GrblMachine {
+ public:
+  GCodeInterface() = default;
+
+  /// Starts the link on the board's console (USB Serial). kFull if a registry is full.
+  Status begin();
+  /// Starts the link on a port: `&Serial`, `&SerialUSB1` or any Arduino Stream.
+  template <class Port>
+  Status begin(Port* port) {
+    return port == nullptr ? Status::kBadArgument : begin_stream(adapter_.attach(port));
+  }
+  /// Opens a hardware UART at `baud` (format as Arduino's SERIAL_8N1…) and starts the link on it.
+  template <class Port>
+  Status begin(Port* port, uint32_t baud, uint16_t format = 0) {
+    if (port == nullptr) return Status::kBadArgument;
+    open_port(port, baud, format);
+    return begin(port);
+  }
+
+  BlockPort& output_x = interpolator_.output_x;
+  BlockPort& output_y = interpolator_.output_y;
+  BlockPort& output_z = interpolator_.output_z;
+  BlockPort& output_e = interpolator_.output_e;
+  BlockPort& output_r = interpolator_.output_r;
+  BlockPort& output_t = interpolator_.output_t;
+  /// Fraction of the current move done (0 → 1).
+  BlockPort& output_parameter = interpolator_.output_parameter;
+  /// Planned duration of the current move, seconds.
+  BlockPort& output_duration = interpolator_.output_duration;
+
+  /// The Grbl settings; the sketch may set read-only ones such as $100–$102 (steps/mm, reported
+  /// to senders) with set_from_sketch(). Context: loop.
+  gcode::GrblSettings& settings() { return protocol_.settings(); }
+  /// The planner behind the link (limits, underruns, refused moves). Context: loop.
+  TimeBasedInterpolator& interpolator() { return interpolator_; }
+  /// The protocol (alarm state, replies dropped). Context: loop.
+  const gcode::GrblProtocol& protocol() const { return protocol_; }
+
+  /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
+  void loop() override;
+
+ private:
+  struct Pending {
+    enum class Kind : uint8_t { kMotion, kDwell, kJog } kind = Kind::kMotion;
+    gcode::Motion motion;
+    double dwell_s = 0.0;
+  };
+  static constexpr int kPendingCapacity = 4;  // a line asks for at most a dwell and two motions
+
+  Status begin_stream(ByteStream& stream);
+  template <class Port>
+  static auto open_port(Port* port, uint32_t baud, uint16_t format) -> decltype(port->begin(baud, format), void()) {
+    port->begin(baud, format);
+  }
+  static void open_port(...) {}
+
+  // GrblMachine
+  void on_motion(const gcode::Motion& motion) override;
+  void on_dwell(double seconds) override;
+  gcode::MotionState motion_state() override;
+  bool hold_complete() override;
+  void position_mm(double (&out)[gcode::kAxisCount]) override;
+  double feed_now_mm_per_min() override;
+  uint16_t queue_slots_free() override;
+  uint16_t queue_slots_total() override;
+  bool ready_for_line() override;
+  void feed_hold() override;
+  void cycle_start() override;
+  bool soft_reset() override;
+  void jog(const gcode::Motion& motion) override;
+  void jog_cancel() override;
+  void set_overrides(uint8_t feed_percent, uint8_t rapid_percent) override;
+  double steps_per_mm(int axis) override;
+
+  void push_pending(const Pending& request);
+  void drain_pending();
+  bool queue_line_motion(const gcode::Motion& motion, double speed_mm_per_s, double time_s);
+  bool feed_arc(const gcode::Motion& arc);
+  void apply_settings_to_planner();
+  void apply_override();
+
+  TimeBasedInterpolator interpolator_;
+  gcode::GrblProtocol protocol_;
+  ArduinoStreamAdapter adapter_;
+  Pending pending_[kPendingCapacity];
+  int pending_head_ = 0;
+  int pending_count_ = 0;
+  uint32_t arc_next_chord_ = 0;  // chords of the pending arc already queued
+  bool holding_ = false;
+  bool jogging_ = false;
+  uint8_t feed_percent_ = 100;
+  uint8_t rapid_percent_ = 100;
+};
+
+}  // namespace stepdance

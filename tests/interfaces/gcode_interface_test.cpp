@@ -1,0 +1,200 @@
+// GCodeInterface end to end on the manual board: G-code text in, planned motion out.
+#include "stepdance/interfaces/gcode_interface.hpp"
+
+#include <gtest/gtest.h>
+
+#include <math.h>
+
+#include <string>
+#include <vector>
+
+#include "hal_manual.hpp"
+#include "stepdance/core/dance.hpp"
+#include "support/engine_fixture.hpp"
+#include "support/fake_byte_stream.hpp"
+
+namespace stepdance {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDt = 40e-6;
+
+/// An Arduino-style port that is not a ByteStream (as Teensyduino's usb_serial_class).
+struct ArduinoStylePort {
+  test_support::FakeByteStream link;
+  int began_baud = 0;
+  int available() { return static_cast<int>(link.bytes_available()); }
+  int read() { return link.read_byte(); }
+  int availableForWrite() { return static_cast<int>(link.write_space()); }
+  size_t write(const uint8_t* data, size_t length) { return link.write_bytes(data, length); }
+  void begin(uint32_t baud, uint16_t) { began_baud = static_cast<int>(baud); }
+};
+
+class GCodeInterfaceTest : public test_support::EngineFixture {
+ protected:
+  void SetUp() override {
+    EngineFixture::SetUp();
+    ASSERT_EQ(gcode.begin(&host), Status::kOk);
+    ASSERT_EQ(dance_start(), Status::kOk);
+    step();
+    ASSERT_NE(host.take().find("Grbl 1.1"), std::string::npos);
+  }
+  void step() {
+    dance_loop();
+    hal_manual::run_frames(1);
+    x.push_back(gcode.output_x.read_absolute());
+    y.push_back(gcode.output_y.read_absolute());
+  }
+  /// Runs until the planner is idle and every line is answered; returns frames run.
+  int run_until_idle(int limit = 5'000'000) {
+    int frames = 0;
+    while ((!gcode.interpolator().is_idle() || !host.to_board.empty()) && frames < limit) {
+      step();
+      ++frames;
+    }
+    for (int i = 0; i < 3; ++i) step();  // the last replies
+    return frames;
+  }
+  static int count(const std::string& text, const std::string& word) {
+    int n = 0;
+    for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) ++n;
+    return n;
+  }
+
+  test_support::FakeByteStream host;
+  GCodeInterface gcode;
+  std::vector<double> x, y;
+};
+
+TEST_F(GCodeInterfaceTest, SquareEndsWhereItStartedWithOneOkPerLine) {
+  host.send("G21 G90\nG1 X10 F600\nG1 Y10\nG1 X0\nG1 Y0\n");
+  run_until_idle();
+  const std::string replies = host.take();
+  EXPECT_EQ(count(replies, "ok\r\n"), 5) << replies;
+  EXPECT_EQ(count(replies, "error"), 0) << replies;
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 0.0);
+  EXPECT_DOUBLE_EQ(gcode.output_y.read_absolute(), 0.0);
+  double max_x = 0, max_y = 0;
+  for (size_t i = 0; i < x.size(); ++i) max_x = fmax(max_x, x[i]), max_y = fmax(max_y, y[i]);
+  EXPECT_DOUBLE_EQ(max_x, 10.0);
+  EXPECT_DOUBLE_EQ(max_y, 10.0);
+}
+
+TEST_F(GCodeInterfaceTest, RapidRunsAtTheMaxRateSetting) {
+  // $110 = 6000 mm/min = 100 mm/s, $120 = 500 mm/s²: t = L/v + v/a = 1 s + 0.2 s.
+  host.send("$110=6000\n$120=500\nG0 X100\n");
+  run_until_idle();
+  size_t first = 0, last = 0;
+  for (size_t i = 1; i < x.size(); ++i) {
+    if (x[i] == x[i - 1]) continue;
+    if (first == 0) first = i;
+    last = i;
+  }
+  EXPECT_NEAR((last - first + 1) * kDt, 100.0 / 100.0 + 100.0 / 500.0, 3 * kDt);
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 100.0);
+}
+
+TEST_F(GCodeInterfaceTest, ArcStaysWithinTheArcToleranceAndEndsExactly) {
+  // A full circle of radius 10 around (10, 0), starting at the origin; $12 = 0.01 mm.
+  host.send("$12=0.01\nG2 X0 Y0 I10 J0 F1200\n");
+  run_until_idle();
+  double worst = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) worst = fmax(worst, fabs(hypot(x[i] - 10.0, y[i]) - 10.0));
+  EXPECT_LE(worst, 0.01 + 1e-9);
+  EXPECT_GT(worst, 0.0);  // chords, not a point
+  EXPECT_NEAR(gcode.output_x.read_absolute(), 0.0, 1e-12);
+  EXPECT_NEAR(gcode.output_y.read_absolute(), 0.0, 1e-12);
+  // It went all the way round: it reached x = 20 on the far side.
+  double far = 0.0;
+  for (double value : x) far = fmax(far, value);
+  EXPECT_NEAR(far, 20.0, 0.011);
+}
+
+TEST_F(GCodeInterfaceTest, ManyMoreLinesThanThePlannerHoldsAreAllExecutedInOrder) {
+  std::string program = "G91 G1 F3000\n";
+  for (int i = 0; i < 600; ++i) program += (i % 2 == 0) ? "X0.5\n" : "Y0.25\n";
+  host.send(program);
+  run_until_idle();
+  const std::string replies = host.take();
+  EXPECT_EQ(count(replies, "ok\r\n"), 601);
+  EXPECT_EQ(count(replies, "error"), 0);
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 300 * 0.5);
+  EXPECT_DOUBLE_EQ(gcode.output_y.read_absolute(), 300 * 0.25);
+}
+
+TEST_F(GCodeInterfaceTest, DwellWaitsItsTime) {
+  host.send("G4 P0.5\nG1 X1 F600\n");
+  int frames = 0;
+  while (gcode.output_x.read_absolute() == 0.0 && frames < 100000) {
+    step();
+    ++frames;
+  }
+  // A dwell's speeds are final at once (it starts and ends at rest), so it starts without the
+  // planner's start delay; the move begins when it ends.
+  EXPECT_NEAR(frames * kDt, 0.5, 0.002);
+}
+
+TEST_F(GCodeInterfaceTest, FeedHoldDeceleratesResumeFinishes) {
+  host.send("$120=1000\n$110=3000\nG1 X100 F3000\n");
+  for (int i = 0; i < 20000; ++i) step();
+  host.send("!");
+  for (int i = 0; i < 5000; ++i) step();
+  const double held_at = gcode.output_x.read_absolute();
+  EXPECT_GT(held_at, 0.0);
+  EXPECT_LT(held_at, 100.0);
+  // Stopping from 50 mm/s at 1000 mm/s² covers 1.25 mm; nothing moves once held.
+  for (int i = 0; i < 1000; ++i) step();
+  EXPECT_EQ(gcode.output_x.read_absolute(), held_at);
+  host.take();
+  host.send("?");
+  step();
+  EXPECT_NE(host.take().find("<Hold:0|"), std::string::npos);
+  host.send("~");
+  run_until_idle();
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 100.0);
+}
+
+TEST_F(GCodeInterfaceTest, ResetWhileMovingStopsAndLocksUntilUnlocked) {
+  host.send("G1 X100 F3000\n");
+  for (int i = 0; i < 10000; ++i) step();
+  host.send("\x18");
+  for (int i = 0; i < 10; ++i) step();
+  const double stopped_at = gcode.output_x.read_absolute();
+  EXPECT_LT(stopped_at, 100.0);
+  const std::string after_reset = host.take();
+  EXPECT_NE(after_reset.find("ALARM:3"), std::string::npos) << after_reset;
+  host.send("G1 X0\n");
+  for (int i = 0; i < 10; ++i) step();
+  EXPECT_NE(host.take().find("error:9"), std::string::npos);
+  host.send("$X\nG1 X0 F3000\n");
+  run_until_idle();
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 0.0);
+}
+
+TEST_F(GCodeInterfaceTest, StatusReportsTheMachinePositionWhileRunning) {
+  host.send("G1 X5 F600\n");
+  for (int i = 0; i < 10000; ++i) step();  // 0.4 s of a 0.5 s move
+  host.take();
+  host.send("?");
+  step();
+  const std::string status = host.take();
+  ASSERT_NE(status.find("<Run|MPos:"), std::string::npos) << status;
+  const double reported = atof(status.c_str() + status.find("MPos:") + 5);
+  EXPECT_NEAR(reported, gcode.output_x.read_absolute(), 0.001);
+}
+
+TEST(GCodeInterfaceBegin, TakesArduinoStylePortsThroughTheAdapter) {
+  test_support::reset_global_state();
+  ArduinoStylePort port;
+  GCodeInterface gcode;
+  ASSERT_EQ(gcode.begin(&port, 115200), Status::kOk);
+  EXPECT_EQ(port.began_baud, 115200);
+  EXPECT_NE(port.link.take().find("Grbl 1.1"), std::string::npos);
+  port.link.send("G1 X1 F600\n");
+  dance_loop();
+  EXPECT_EQ(port.link.take(), "ok\r\n");
+  test_support::reset_global_state();
+}
+
+}  // namespace
+}  // namespace stepdance
