@@ -10,6 +10,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
   clang  # libFuzzer targets (scripts/fuzz.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
+  python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests
 )
 
 missing=()

@@ -2,17 +2,45 @@
 #include "sim_command.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
 #include "console_echo.hpp"
 #include "exit_codes.hpp"
+#include "live_run.hpp"
 #include "progress_bar.hpp"
 #include "scenario/load_scenario.hpp"
 #include "wiring/simulation.hpp"
 
 namespace stepdance::cli {
 namespace {
+
+/// A live run ends when interrupted; this bounds it (a year of simulated time).
+constexpr double kLiveDurationS = 365.0 * 86400.0;
+
+/// Reads --speed and --serial-link; false (with a message on stderr) when one is malformed.
+bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
+  if (options.speed == "max") {
+    live.speed = 0.0;
+  } else {
+    char* end = nullptr;
+    live.speed = std::strtod(options.speed.c_str(), &end);
+    if (end == options.speed.c_str() || *end != '\0' || !(live.speed > 0.0) || live.speed > 1e6) {
+      std::cerr << "--speed: '" << options.speed << "' is not a number in (0, 1e6] or 'max'\n";
+      return false;
+    }
+  }
+  for (const std::string& link : options.serial_links) {
+    const size_t equals = link.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == link.size()) {
+      std::cerr << "--serial-link: '" << link << "' is not board=path\n";
+      return false;
+    }
+    live.serial_links[link.substr(0, equals)] = link.substr(equals + 1);
+  }
+  return true;
+}
 
 sim::SimulationOptions simulation_options(const SimCommandOptions& options, ProgressBar& progress,
                                           ConsoleEcho& echo) {
@@ -23,6 +51,11 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, Prog
     sim_options.output_directory = std::filesystem::absolute(options.output_directory).lexically_normal().string();
   }
   sim_options.write_vcd = !options.no_vcd;
+  if (options.live) {
+    // Runs until interrupted (or --duration); the terminals carry the console: nothing echoed.
+    if (!options.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
+    return sim_options;
+  }
   sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
   if (!options.quiet) {
     sim_options.console = [&echo](const std::string& board, const std::string& line) { echo.line(board, line); };
@@ -62,6 +95,11 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
       ->check(CLI::PositiveNumber);
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
   sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
+  sim.add_flag("--live", options.live,
+               "run in real time until interrupted (Ctrl-C), each board's USB serial on a pseudo-terminal announced "
+               "as `serial <board>: <path>`; outputs are written when the run ends");
+  sim.add_option("--speed", options.speed, "live: simulated seconds per wall-clock second, or 'max' (default 1)");
+  sim.add_option("--serial-link", options.serial_links, "live: also make a symlink to a board's terminal (board=path)");
   sim.add_option("--cache", options.cache_directory,
                  "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)");
   return sim;
@@ -73,7 +111,9 @@ int run_sim_command(const SimCommandOptions& options) {
     std::cerr << loaded.error_text();
     return kExitBadInput;
   }
-  ProgressBar progress(!options.quiet);
+  LiveOptions live;
+  if (!parse_live_options(options, live)) return kExitBadInput;
+  ProgressBar progress(!options.quiet && !options.live);
   ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;
   auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, progress, echo), error);
@@ -83,6 +123,11 @@ int run_sim_command(const SimCommandOptions& options) {
   }
   sim::SimulationReport report;
   try {
+    if (options.live) {
+      std::vector<std::string> boards;
+      for (const auto& board : loaded.scenario.boards) boards.push_back(board.name);
+      run_live(*simulation, boards, live);
+    }
     report = simulation->finish();
   } catch (const std::exception& failure) {
     progress.clear();

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -16,6 +17,9 @@ struct SimCommandOptions {
   bool no_vcd = false;
   bool quiet = false;
   std::string cache_directory;      ///< empty: the default sketch cache
+  bool live = false;                ///< pace to the wall clock, serial ports on terminals
+  std::string speed = "1";          ///< live: simulated seconds per wall second, or "max"
+  std::vector<std::string> serial_links;  ///< live: `board=path` symlinks to the terminals
 };
 
 /// Adds the `sim` subcommand to `app`, filling `options` when it is parsed.

@@ -242,7 +242,12 @@ void SimBoard::send_console(const std::string& bytes) { console_input_.insert(co
 
 void SimBoard::on_console_line(std::function<void(const std::string&)> listener) { console_listener_ = std::move(listener); }
 
+void SimBoard::on_console_bytes(std::function<void(const uint8_t*, size_t)> listener) {
+  console_bytes_listener_ = std::move(listener);
+}
+
 size_t SimBoard::write_console(const uint8_t* data, size_t length) {
+  if (console_bytes_listener_) console_bytes_listener_(data, length);
   console_text_.append(reinterpret_cast<const char*>(data), length);
   for (size_t i = 0; i < length; ++i) {
     const char c = static_cast<char>(data[i]);

@@ -96,6 +96,9 @@ class SimBoard {
   void send_console(const std::string& bytes);
   /// Calls `listener` with every complete line the sketch prints (without the line ending).
   void on_console_line(std::function<void(const std::string&)> listener);
+  /// Calls `listener` with the sketch's console bytes as they are written, unchanged (the live
+  /// simulator forwards them to a pseudo-terminal).
+  void on_console_bytes(std::function<void(const uint8_t*, size_t)> listener);
 
   // ---- observation ----
   /// The level the sketch would read on `pin` now (or that it drives).
@@ -201,6 +204,7 @@ class SimBoard {
   std::string console_text_;
   std::string console_line_;
   std::function<void(const std::string&)> console_listener_;
+  std::function<void(const uint8_t*, size_t)> console_bytes_listener_;
   BoardStorage storage_;
   std::vector<BoardFault> faults_;
   uint64_t delays_in_isr_ = 0;

@@ -94,6 +94,12 @@ void Simulation::on_serial_action(void* context, SimTime, const size_t& action_i
   simulation.slot(action.target).board->send_console(action.serial_bytes);
 }
 
+void Simulation::end_now() {
+  duration_ = scheduler_.now();
+  for (BoardSlot& slot : boards_) slot.board->set_end_time(duration_);
+  if (vcd_) vcd_->set_end_time(duration_);
+}
+
 SimulationReport Simulation::finish() {
   run_until(duration_);
   if (machine_) update_machine(duration_);

@@ -91,6 +91,9 @@ class Simulation {
   /// Runs to the end, writes every output file and evaluates the expectations. Output failures
   /// throw std::runtime_error("path: …").
   SimulationReport finish();
+  /// Makes the current time the end of the run (a live run interrupted by the user), so
+  /// finish() writes everything up to now. Context: between run_until() calls.
+  void end_now();
 
   // ---- what tests and tools look at ----
   SimTime now() const { return scheduler_.now(); }

@@ -1,0 +1,27 @@
+// The live simulator: a run paced to the wall clock, each board's USB serial on a pseudo-terminal.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "wiring/simulation.hpp"
+
+namespace stepdance::cli {
+
+/// How a live run is paced and where its ports appear.
+struct LiveOptions {
+  /// Simulated seconds per wall-clock second; 0 runs as fast as possible.
+  double speed = 1.0;
+  /// Board name → a symlink to create to that board's terminal.
+  std::map<std::string, std::string> serial_links;
+};
+
+/// Opens a terminal per board and announces each on stdout, exactly `serial <board>: <path>`,
+/// flushed, before simulated time starts. Then runs the simulation until SIGINT or SIGTERM (or
+/// the end of its duration), moving bytes between terminals and sketches every simulated
+/// millisecond and pacing to the wall clock, and finally makes the current time the end of the
+/// run (Simulation::end_now). Throws std::runtime_error when a terminal or link cannot be made.
+void run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options);
+
+}  // namespace stepdance::cli
