@@ -113,6 +113,11 @@ int run_sim_command(const SimCommandOptions& options) {
   }
   LiveOptions live;
   if (!parse_live_options(options, live)) return kExitBadInput;
+  if (options.live && !loaded.scenario.hosts.empty()) {
+    std::cerr << loaded.scenario.file << ":" << loaded.scenario.hosts.front().line
+              << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";
+    return kExitBadInput;
+  }
   ProgressBar progress(!options.quiet && !options.live);
   ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;

@@ -88,6 +88,7 @@ LoadResult parse_scenario(std::string_view text, const std::string& file) {
   read_cables(top, context);
   read_timeline(top, context);
   read_output(top, context);
+  read_hosts(top, context);
   read_expectations(top, context);
   top.finish();
 

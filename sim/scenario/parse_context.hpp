@@ -49,6 +49,7 @@ void read_devices(TableReader& top, ParseContext& context);
 void read_cables(TableReader& top, ParseContext& context);
 void read_timeline(TableReader& top, ParseContext& context);
 void read_output(TableReader& top, ParseContext& context);
+void read_hosts(TableReader& top, ParseContext& context);  // after read_output (transcripts)
 void read_expectations(TableReader& top, ParseContext& context);
 
 }  // namespace stepdance::sim::scenario

@@ -1,4 +1,6 @@
 // [[expect]]: end-of-run checks (motor steps, pen position, strokes, port pulses, cables, rejections).
+#include <algorithm>
+#include <regex>
 #include <utility>
 
 #include "scenario/names.hpp"
@@ -16,11 +18,14 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
     {"cable_counts_match", ExpectationType::kCableCountsMatch},
     {"rejected", ExpectationType::kRejected},
     {"port", ExpectationType::kPortPulses},
+    {"host", ExpectationType::kHostReplies},
 };
 
 /// Keys that only go with one check (port also goes with rejected, handled apart).
 constexpr std::pair<const char*, const char*> kDetails[] = {
-    {"steps", "motor"}, {"tolerance_mm", "pen_mm"}, {"axis", "port"}, {"forward", "port"}, {"reverse", "port"},
+    {"steps", "motor"},  {"tolerance_mm", "pen_mm"}, {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
+    {"reply", "host"},   {"replies", "host"},        {"count", "host"},     {"within_ms", "host"}, {"after", "host"},
+    {"completed", "host"},
 };
 
 constexpr const char* kSignalLetters = "XYRTZE";
@@ -41,7 +46,7 @@ std::optional<std::pair<const char*, ExpectationType>> choose_check(TableReader&
   }
   if (!chosen) {
     reader.reporter().error(reader.line(),
-                            "an [[expect]] needs one check: motor, pen_mm, strokes, port, cable_counts_match or rejected");
+                            "an [[expect]] needs one check: motor, pen_mm, strokes, port, cable_counts_match, rejected or host");
   }
   return chosen;
 }
@@ -141,6 +146,95 @@ bool read_port_check(TableReader& reader, Expectation& check, ParseContext& cont
   return ok;
 }
 
+bool valid_pattern(TableReader& reader, const char* key, const std::string& pattern) {
+  try {
+    std::regex check(pattern, std::regex::ECMAScript);
+  } catch (const std::regex_error&) {
+    reader.error(key, "'" + std::string(key) + "' is not a valid regular expression (ECMAScript syntax)");
+    return false;
+  }
+  return true;
+}
+
+/// host = "board" with reply/replies (+ count, within_ms, after), or completed = true.
+bool read_host_check(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const auto board = reader.string("host");
+  if (!board) return false;
+  check.host = *board;
+  bool ok = true;
+  const bool has_client = std::any_of(context.scenario.hosts.begin(), context.scenario.hosts.end(),
+                                      [&](const HostClientConfig& host) { return host.board == *board; });
+  if (!has_client) {
+    reader.error("host", "no [[host]] client on board '" + *board + "'");
+    ok = false;
+  }
+  if (reader.has("completed")) {
+    check.type = ExpectationType::kHostCompleted;
+    const auto completed = reader.boolean("completed");
+    if (completed && !*completed) {
+      reader.error("completed", "'completed' can only be true");
+      ok = false;
+    }
+    for (const char* other : {"reply", "replies", "count", "within_ms", "after"}) {
+      if (!reader.has(other)) continue;
+      reader.accept(other);
+      reader.error(other, std::string("'") + other + "' does not go with 'completed'");
+      ok = false;
+    }
+    return ok && completed.has_value();
+  }
+  if (reader.has("reply") == reader.has("replies")) {
+    reader.reporter().error(reader.line(), "a 'host' check needs 'reply' (one regex) or 'replies' (regexes in order)");
+    reader.accept("reply");
+    reader.accept("replies");
+    return false;
+  }
+  if (const auto reply = reader.string("reply")) {
+    ok = valid_pattern(reader, "reply", *reply) && ok;
+    check.replies.push_back(*reply);
+  } else if (const toml::array* replies = reader.array("replies")) {
+    for (const toml::node& item : *replies) {
+      const auto* text = item.as_string();
+      if (text == nullptr) {
+        reader.error("replies", "'replies' must be a list of strings");
+        return false;
+      }
+      ok = valid_pattern(reader, "replies", text->get()) && ok;
+      check.replies.push_back(text->get());
+    }
+    if (check.replies.empty()) {
+      reader.error("replies", "'replies' must not be empty");
+      ok = false;
+    }
+  } else {
+    ok = false;
+  }
+  if (const auto count = reader.integer("count")) {
+    if (*count < 0 || check.replies.size() != 1) {
+      reader.error("count", "'count' must be >= 0 and goes with a single 'reply'");
+      ok = false;
+    }
+    check.count = *count;
+  }
+  if (const auto within = reader.number("within_ms")) {
+    if (*within > 0 && *within <= 86400e3) {
+      check.within = from_seconds(*within / 1e3);
+    } else {
+      reader.error("within_ms", "'within_ms' must be in (0, 86400000], got " + format_number(*within));
+      ok = false;
+    }
+  }
+  if (const auto after = reader.string("after")) {
+    ok = valid_pattern(reader, "after", *after) && ok;
+    check.after = *after;
+    if (!check.within) {
+      reader.error("after", "'after' goes with 'within_ms'");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 void read_expectation(const toml::table& table, ParseContext& context) {
   TableReader reader(table, "[[expect]]", context.reporter);
   Expectation check;
@@ -191,6 +285,10 @@ void read_expectation(const toml::table& table, ParseContext& context) {
     case ExpectationType::kPortPulses:
     case ExpectationType::kRejected:
       ok = read_port_check(reader, check, context, check.type == ExpectationType::kRejected) && ok;
+      break;
+    case ExpectationType::kHostReplies:
+    case ExpectationType::kHostCompleted:
+      ok = read_host_check(reader, check, context) && ok;
       break;
   }
   reader.finish();

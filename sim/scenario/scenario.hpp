@@ -180,6 +180,42 @@ struct Action {
   int line = 0;
 };
 
+/// One step of a scripted host client ([[host]] … [[host.step]]).
+struct HostStep {
+  enum class Kind { kSend, kStream, kWait, kPause } kind = Kind::kSend;
+  /// Send: bytes written at once. Stream: the text sent line by line (each line keeps its '\n').
+  std::string bytes;
+  /// Stream flow control: kAck sends a line only when the previous one was acknowledged;
+  /// kCharacterCounting keeps up to buffer_bytes of unacknowledged lines in flight (Grbl's
+  /// recommended streaming).
+  enum class Flow { kAck, kCharacterCounting } flow = Flow::kAck;
+  int64_t buffer_bytes = 128;
+  /// Stream: the ECMAScript regex a received line must match (anywhere in it; anchor with ^…$)
+  /// to acknowledge a line. Wait: the regex a received line must match to end the step.
+  std::string pattern;
+  /// Wait: the step fails (and the client stops) if no line matches for this long (ns).
+  /// Stream: … if no acknowledgement arrives for this long.
+  SimTime timeout = 60 * kSecond;
+  /// Pause: how long (ns).
+  SimTime pause = 0;
+  /// Wait: bytes to send when the step starts and again every poll_interval until a line
+  /// matches (a sender polling `?`); empty: none.
+  std::string poll;
+  SimTime poll_interval = 200 * kMillisecond;
+  int line = 0;
+};
+
+/// A program on the host end of a board's USB serial: runs its steps in order from `start`,
+/// reacting within a simulated millisecond (a USB frame), and keeps a transcript.
+struct HostClientConfig {
+  std::string board;
+  SimTime start = 0;
+  std::vector<HostStep> steps;
+  /// Absolute path of the transcript file to write (empty: none).
+  std::string transcript;
+  int line = 0;
+};
+
 /// One line of a port: "board:OUT_A" or "board:IN_A".
 struct PortLineRef {
   std::string board;
@@ -202,7 +238,16 @@ struct OutputConfig {
 };
 
 /// Kinds of end-of-run checks.
-enum class ExpectationType { kMotorSteps, kPenPosition, kStrokes, kPortPulses, kCableCountsMatch, kRejected };
+enum class ExpectationType {
+  kMotorSteps,
+  kPenPosition,
+  kStrokes,
+  kPortPulses,
+  kCableCountsMatch,
+  kRejected,
+  kHostReplies,    ///< lines a host client received (count, order, timing)
+  kHostCompleted,  ///< a host client ran all its steps without a timeout
+};
 
 /// One end-of-run check. Only the fields of its type are meaningful.
 struct Expectation {
@@ -224,6 +269,14 @@ struct Expectation {
   std::optional<int64_t> reverse;
   /// Rejected pulses on an input port.
   int64_t rejected = 0;
+  /// Host checks: the client's board; the regexes of received lines that must arrive in this
+  /// order (one regex: at least one such line, or exactly `count`); `within` bounds the time
+  /// from the first sent line matching `after` (or the client's start) to the first match.
+  std::string host;
+  std::vector<std::string> replies;
+  std::optional<int64_t> count;
+  std::optional<SimTime> within;
+  std::string after;
   int line = 0;
 };
 
@@ -242,6 +295,8 @@ struct Scenario {
   std::vector<CableConfig> cables;
   /// Sorted by time; entries with equal times keep their order in the file.
   std::vector<Action> timeline;
+  /// Scripted host clients, at most one per board.
+  std::vector<HostClientConfig> hosts;
   OutputConfig output;
   std::vector<Expectation> expectations;
 

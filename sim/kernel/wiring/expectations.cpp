@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <regex>
 
 #include "output/pulse_counts.hpp"
 #include "wiring/simulation.hpp"
@@ -107,6 +109,64 @@ ExpectationResult cable_counts(const scenario::Scenario& scenario, const Simulat
   return result;
 }
 
+/// Received lines of a host client, with their times.
+std::vector<const HostClient::Entry*> received(const HostClient& client) {
+  std::vector<const HostClient::Entry*> lines;
+  for (const HostClient::Entry& entry : client.transcript()) {
+    if (!entry.from_host) lines.push_back(&entry);
+  }
+  return lines;
+}
+
+std::string quoted_list(const std::vector<std::string>& patterns) {
+  std::string text;
+  for (const std::string& pattern : patterns) text += (text.empty() ? "\"" : ", \"") + pattern + "\"";
+  return text;
+}
+
+/// Replies in order; or one reply (count, within_ms after a sent line).
+ExpectationResult host_replies(const Expectation& expectation, const Simulation& simulation) {
+  const HostClient* client = simulation.host_client(expectation.host);
+  if (client == nullptr) return {false, "host " + expectation.host + ": no client"};
+  const std::vector<const HostClient::Entry*> lines = received(*client);
+  const std::string what = "host " + expectation.host + " received " + quoted_list(expectation.replies);
+  if (expectation.replies.size() > 1) {
+    size_t next = 0;
+    for (const HostClient::Entry* line : lines) {
+      if (next < expectation.replies.size() && line_matches(std::regex(expectation.replies[next]), line->text)) ++next;
+    }
+    return {next == expectation.replies.size(), what + " in order: matched " + std::to_string(next) + " of " +
+                                                    std::to_string(expectation.replies.size())};
+  }
+  const std::regex reply(expectation.replies[0]);
+  int64_t matches = 0;
+  for (const HostClient::Entry* line : lines) matches += line_matches(reply, line->text) ? 1 : 0;
+  if (expectation.count) return compare(what + " (lines)", *expectation.count, matches);
+  if (!expectation.within) return {matches > 0, what + ": " + std::to_string(matches) + " matching lines"};
+  // Timed: from the first sent line matching `after` (or the client's first line) to the reply.
+  const std::regex after(expectation.after.empty() ? std::string(".*") : expectation.after);
+  std::optional<SimTime> from;
+  for (const HostClient::Entry& entry : client->transcript()) {
+    if (!from && entry.from_host && line_matches(after, entry.text)) from = entry.time;
+    if (from && !entry.from_host && line_matches(reply, entry.text)) {
+      const SimTime took = entry.time - *from;
+      char text[64];
+      std::snprintf(text, sizeof text, " within %.3f ms: took %.3f ms", to_seconds(*expectation.within) * 1e3,
+                    to_seconds(took) * 1e3);
+      return {took <= *expectation.within, what + text};
+    }
+  }
+  return {false, what + ": no such reply" + (from ? "" : " (nothing sent matched 'after')")};
+}
+
+ExpectationResult host_completed(const Expectation& expectation, const Simulation& simulation) {
+  const HostClient* client = simulation.host_client(expectation.host);
+  if (client == nullptr) return {false, "host " + expectation.host + ": no client"};
+  if (client->completed()) return {true, "host " + expectation.host + " ran every step"};
+  return {false, client->failure().empty() ? "host " + expectation.host + " was still running when the run ended"
+                                           : client->failure()};
+}
+
 ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation& expectation,
                            const Simulation& simulation) {
   switch (expectation.type) {
@@ -116,6 +176,8 @@ ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation
     case ExpectationType::kPortPulses: return port_pulses(expectation, simulation);
     case ExpectationType::kCableCountsMatch: return cable_counts(scenario, simulation);
     case ExpectationType::kRejected: return rejected(expectation, simulation);
+    case ExpectationType::kHostReplies: return host_replies(expectation, simulation);
+    case ExpectationType::kHostCompleted: return host_completed(expectation, simulation);
   }
   return {false, "unknown expectation"};
 }

@@ -35,6 +35,7 @@ Simulation::Simulation(const scenario::Scenario& scenario, const SimulationOptio
 
 Simulation::~Simulation() {
   csv_.reset();
+  hosts_.clear();
   cables_.clear();
   boards_.clear();  // unloads the sketches while the scheduler and models still exist
 }
@@ -45,6 +46,7 @@ std::unique_ptr<Simulation> Simulation::create(const scenario::Scenario& scenari
   if (!simulation->build_boards(error) || !simulation->build_machine(error)) return nullptr;
   simulation->build_devices();
   simulation->apply_timeline();
+  simulation->build_hosts();
   try {
     simulation->build_vcd();
     simulation->build_cables();
@@ -88,6 +90,20 @@ void Simulation::update_machine(SimTime time_ns) {
   ticks_since_machine_update_ = 0;
 }
 
+void Simulation::build_hosts() {
+  for (const scenario::HostClientConfig& config : scenario_.hosts) {
+    hosts_.push_back(std::make_unique<HostClient>(config, *slot(config.board).board, scheduler_));
+    hosts_.back()->start();
+  }
+}
+
+const HostClient* Simulation::host_client(const std::string& board) const {
+  for (const auto& host : hosts_) {
+    if (host->board_name() == board) return host.get();
+  }
+  return nullptr;
+}
+
 void Simulation::on_serial_action(void* context, SimTime, const size_t& action_index) {
   auto& simulation = *static_cast<Simulation*>(context);
   const scenario::Action& action = simulation.scenario_.timeline[action_index];
@@ -115,6 +131,16 @@ SimulationReport Simulation::finish() {
     report.files.push_back(output_path(scenario_.output.csv));
   }
   write_drawings(report);
+  for (const auto& host : hosts_) {
+    const scenario::HostClientConfig* config = nullptr;
+    for (const auto& candidate : scenario_.hosts) {
+      if (candidate.board == host->board_name()) config = &candidate;
+    }
+    if (config == nullptr || config->transcript.empty()) continue;
+    const std::string path = output_path(config->transcript);
+    host->write_transcript(path);
+    report.files.push_back(path);
+  }
   if (!scenario_.output.summary.empty()) {
     write_summary_file(report);
     report.files.push_back(output_path(scenario_.output.summary));

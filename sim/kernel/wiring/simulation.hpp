@@ -25,6 +25,7 @@
 #include "wiring/cable_link.hpp"
 #include "wiring/csv_sampler.hpp"
 #include "wiring/expectations.hpp"
+#include "wiring/host_client.hpp"
 #include "wiring/pulse_delivery.hpp"
 #include "wiring/vcd_recorder.hpp"
 
@@ -107,6 +108,8 @@ class Simulation {
   const Machine* machine() const { return machine_.get(); }
   /// The cables, in scenario order.
   const std::vector<std::unique_ptr<CableLink>>& cables() const { return cables_; }
+  /// The scripted host client on `board` (null if none).
+  const HostClient* host_client(const std::string& board) const;
   /// The JSON summary text as it would be written now (wall time left out).
   std::string summary_text() const;
 
@@ -131,6 +134,7 @@ class Simulation {
   void build_devices();
   void build_device(const scenario::DeviceConfig& device, BoardSlot& slot);
   void apply_timeline();
+  void build_hosts();
   void build_cables();
   void build_vcd();
   void build_csv();
@@ -176,6 +180,7 @@ class Simulation {
   std::map<std::string, size_t> vcd_inputs_;  ///< "board:IN_A" → recorder input
   std::unique_ptr<CsvSampler> csv_;
   OneShotPool<size_t> serial_actions_;
+  std::vector<std::unique_ptr<HostClient>> hosts_;
   double wall_s_ = 0;
 };
 

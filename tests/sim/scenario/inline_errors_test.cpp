@@ -98,6 +98,34 @@ std::vector<InlineCase> cases() {
        "[[at]]\ntime_s = nan\npress = \"pen\"\n[[at]]\ntime_s = 1e300\nrelease = \"pen\"\n",
        {{12, "'time_s' must be a finite number"},
         {15, "'time_s' = 1e+300 is after the end of the run (duration_s = 5)"}}},
+      {"host_without_steps_and_unknown_board",
+       "[[host]]\nboard = \"driver\"\n[[host]]\nboard = \"ghost\"\n[[host.step]]\nsend = \"?\"\n",
+       {{6, "a [[host]] needs at least one [[host.step]]"}, {9, "unknown board 'ghost'"}}},
+      {"host_steps_that_are_wrong",
+       "[[host]]\nboard = \"driver\"\n"
+       "[[host.step]]\nsend = \"?\"\nwait = \"ok\"\n"
+       "[[host.step]]\nwait = \"(\"\n"
+       "[[host.step]]\nstream = \"G1 X1\"\nflow = \"xon\"\nbuffer_bytes = 0\n"
+       "[[host.step]]\npause_s = -1\n"
+       "[[host.step]]\nsend = \"x\"\ntimeout_s = 1\n"
+       "[[host.step]]\nwait = \"ok\"\ntimeout_s = inf\n",
+       {{10, "a step does one thing, but has both 'send' and 'wait'"},
+        {12, "'wait' is not a valid regular expression (ECMAScript syntax)"},
+        {15, "'flow' must be \"ack\" or \"character_counting\", got \"xon\""},
+        {16, "'buffer_bytes' must be in [1, 1048576], got 0"},
+        {18, "'pause_s' must be in [0, 86400] seconds, got -1"},
+        {21, "'timeout_s' only goes with stream or wait"},
+        {24, "'timeout_s' must be a finite number"}}},
+      {"host_checks_that_are_wrong",
+       "[[host]]\nboard = \"driver\"\n[[host.step]]\nsend = \"?\"\n"
+       "[[expect]]\nhost = \"nobody\"\ncompleted = true\n"
+       "[[expect]]\nhost = \"driver\"\n"
+       "[[expect]]\nhost = \"driver\"\nreplies = [\"a\", \"b\"]\ncount = 2\n"
+       "[[expect]]\nhost = \"driver\"\nreply = \"ok\"\nafter = \"G1\"\n",
+       {{11, "no [[host]] client on board 'nobody'"},
+        {13, "a 'host' check needs 'reply' (one regex) or 'replies' (regexes in order)"},
+        {18, "'count' must be >= 0 and goes with a single 'reply'"},
+        {22, "'after' goes with 'within_ms'"}}},
   };
 }
 

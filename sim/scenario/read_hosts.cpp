@@ -1,0 +1,230 @@
+// [[host]]: scripted host clients on boards' USB serial ports (send, stream, wait, pause).
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "scenario/parse_context.hpp"
+
+namespace stepdance::sim::scenario {
+
+namespace {
+
+/// Longest timeout or pause accepted, seconds (a day: far beyond any run).
+constexpr double kMaxStepSeconds = 86400;
+constexpr int64_t kMaxBufferBytes = 1 << 20;
+/// Grbl's acknowledgement lines.
+constexpr const char* kDefaultAck = "^(ok|error:[0-9]+)$";
+
+/// The step kinds and the keys that belong to each.
+constexpr const char* kKinds[] = {"send", "stream", "stream_file", "wait", "pause_s"};
+constexpr std::pair<const char*, const char*> kStepKeys[] = {
+    {"flow", "stream"}, {"buffer_bytes", "stream"}, {"ack", "stream"}, {"timeout_s", "stream or wait"},
+    {"poll", "wait"},   {"poll_every_s", "wait"},
+};
+
+std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool allow_zero) {
+  const auto seconds = reader.number(key);
+  if (!seconds) return std::nullopt;
+  const bool in_range = (allow_zero ? *seconds >= 0 : *seconds > 0) && *seconds <= kMaxStepSeconds;
+  if (!in_range) {
+    reader.error(key, "'" + std::string(key) + "' must be in " + (allow_zero ? "[0, " : "(0, ") +
+                          format_number(kMaxStepSeconds) + "] seconds, got " + format_number(*seconds));
+    return std::nullopt;
+  }
+  return from_seconds(*seconds);
+}
+
+bool read_pattern(TableReader& reader, const char* key, std::string& out) {
+  const auto text = reader.string(key);
+  if (!text) return false;
+  try {
+    std::regex check(*text, std::regex::ECMAScript);
+  } catch (const std::regex_error&) {
+    reader.error(key, "'" + std::string(key) + "' is not a valid regular expression (ECMAScript syntax)");
+    return false;
+  }
+  out = *text;
+  return true;
+}
+
+bool read_file_text(TableReader& reader, const char* key, const ParseContext& context, std::string& out) {
+  const auto name = reader.string(key);
+  if (!name) return false;
+  const std::string path = context.resolve(*name);
+  std::error_code error;
+  std::ifstream in;
+  if (std::filesystem::is_regular_file(path, error)) in.open(path, std::ios::binary);
+  if (!in) {
+    reader.error(key, "file not found: " + path);
+    return false;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  out = text.str();
+  return true;
+}
+
+bool read_stream_options(TableReader& reader, HostStep& step) {
+  bool ok = true;
+  if (const auto flow = reader.string("flow")) {
+    if (*flow == "ack") {
+      step.flow = HostStep::Flow::kAck;
+    } else if (*flow == "character_counting") {
+      step.flow = HostStep::Flow::kCharacterCounting;
+    } else {
+      reader.error("flow", "'flow' must be \"ack\" or \"character_counting\", got \"" + *flow + "\"");
+      ok = false;
+    }
+  }
+  if (const auto bytes = reader.integer("buffer_bytes")) {
+    if (*bytes >= 1 && *bytes <= kMaxBufferBytes) {
+      step.buffer_bytes = *bytes;
+    } else {
+      reader.error("buffer_bytes", "'buffer_bytes' must be in [1, " + std::to_string(kMaxBufferBytes) + "], got " +
+                                       std::to_string(*bytes));
+      ok = false;
+    }
+  }
+  step.pattern = kDefaultAck;
+  if (reader.has("ack")) ok = read_pattern(reader, "ack", step.pattern) && ok;
+  return ok;
+}
+
+std::optional<HostStep> read_step(const toml::table& table, const ParseContext& context) {
+  TableReader reader(table, "[[host.step]]", context.reporter);
+  HostStep step;
+  step.line = reader.line();
+  const char* kind = nullptr;
+  for (const char* candidate : kKinds) {
+    if (!reader.has(candidate)) continue;
+    if (kind != nullptr) {
+      reader.accept(kind);
+      reader.accept(candidate);
+      reader.error(candidate, std::string("a step does one thing, but has both '") + kind + "' and '" + candidate + "'");
+      reader.finish();
+      return std::nullopt;
+    }
+    kind = candidate;
+  }
+  if (kind == nullptr) {
+    reader.reporter().error(reader.line(), "a [[host.step]] needs one of send, stream, stream_file, wait or pause_s");
+    reader.finish();
+    return std::nullopt;
+  }
+  const std::string chosen(kind);
+  const bool streams = chosen == "stream" || chosen == "stream_file";
+  bool ok = true;
+  for (const auto& [key, owner] : kStepKeys) {
+    const std::string_view name(key);
+    const bool for_wait = name == "timeout_s" || name == "poll" || name == "poll_every_s";
+    const bool belongs = (streams && !(name == "poll" || name == "poll_every_s")) || (chosen == "wait" && for_wait);
+    if (!belongs && reader.has(key)) {
+      reader.accept(key);
+      reader.error(key, "'" + std::string(key) + "' only goes with " + owner);
+      ok = false;
+    }
+  }
+  if (chosen == "send") {
+    step.kind = HostStep::Kind::kSend;
+    const auto text = reader.string("send");
+    ok = text.has_value() && ok;
+    if (text) step.bytes = *text;
+  } else if (streams) {
+    step.kind = HostStep::Kind::kStream;
+    if (chosen == "stream") {
+      const auto text = reader.string("stream");
+      ok = text.has_value() && ok;
+      if (text) step.bytes = *text;
+    } else {
+      ok = read_file_text(reader, "stream_file", context, step.bytes) && ok;
+    }
+    ok = read_stream_options(reader, step) && ok;
+  } else if (chosen == "wait") {
+    step.kind = HostStep::Kind::kWait;
+    ok = read_pattern(reader, "wait", step.pattern) && ok;
+    if (const auto poll = reader.string("poll")) step.poll = *poll;
+    if (reader.has("poll_every_s")) {
+      const auto every = read_seconds(reader, "poll_every_s", false);
+      ok = every.has_value() && ok;
+      if (every) step.poll_interval = *every;
+    }
+  } else {
+    step.kind = HostStep::Kind::kPause;
+    const auto pause = read_seconds(reader, "pause_s", true);
+    ok = pause.has_value() && ok;
+    if (pause) step.pause = *pause;
+  }
+  if ((streams || chosen == "wait") && reader.has("timeout_s")) {
+    const auto timeout = read_seconds(reader, "timeout_s", false);
+    ok = timeout.has_value() && ok;
+    if (timeout) step.timeout = *timeout;
+  }
+  reader.finish();
+  if (!ok) return std::nullopt;
+  return step;
+}
+
+void read_host(const toml::table& table, ParseContext& context) {
+  TableReader reader(table, "[[host]]", context.reporter);
+  HostClientConfig host;
+  host.line = reader.line();
+  bool ok = true;
+  if (const auto board = reader.string("board", Need::kRequired)) {
+    host.board = *board;
+    if (context.scenario.board(*board) == nullptr) {
+      reader.error("board", "unknown board '" + *board + "'");
+      ok = false;
+    }
+    for (const HostClientConfig& other : context.scenario.hosts) {
+      if (other.board == *board) {
+        reader.error("board", "board '" + *board + "' already has a [[host]] (line " + std::to_string(other.line) + ")");
+        ok = false;
+      }
+    }
+  } else {
+    ok = false;
+  }
+  if (reader.has("start_s")) {
+    const auto start = read_seconds(reader, "start_s", true);
+    ok = start.has_value() && ok;
+    if (start) host.start = *start;
+    if (start && context.duration_valid && *start > context.scenario.duration) {
+      reader.error("start_s", "'start_s' is after the end of the run (duration_s = " +
+                                  format_number(to_seconds(context.scenario.duration)) + ")");
+      ok = false;
+    }
+  }
+  if (const auto transcript = reader.string("transcript")) {
+    if (transcript->empty()) {
+      reader.error("transcript", "'transcript' must name a file");
+      ok = false;
+    } else {
+      const std::filesystem::path name(*transcript);
+      host.transcript = (name.is_absolute() ? name : std::filesystem::path(context.scenario.output.directory) / name)
+                            .lexically_normal()
+                            .string();
+    }
+  }
+  for_each_table(reader, "step", [&](const toml::table& step_table) {
+    if (auto step = read_step(step_table, context)) {
+      host.steps.push_back(std::move(*step));
+    } else {
+      ok = false;
+    }
+  });
+  if (ok && host.steps.empty()) {
+    reader.reporter().error(reader.line(), "a [[host]] needs at least one [[host.step]]");
+    ok = false;
+  }
+  reader.finish();
+  if (ok) context.scenario.hosts.push_back(std::move(host));
+}
+
+}  // namespace
+
+void read_hosts(TableReader& top, ParseContext& context) {
+  for_each_table(top, "host", [&](const toml::table& table) { read_host(table, context); });
+}
+
+}  // namespace stepdance::sim::scenario

@@ -1,0 +1,59 @@
+// The G-code Step-A-Sketch example end to end: a scripted Grbl sender streams a star and a circle
+// with character counting while a knob nudges the pen; every line acknowledged, motors exact.
+#include <fstream>
+#include <sstream>
+
+#include "simulation_fixture.hpp"
+
+namespace stepdance::sim::test {
+namespace {
+
+class GcodeStepASketchScenarioTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    simulation_ = create(load(source_path("examples/GcodeStepASketch")), "gcode_step_a_sketch").release();
+    report_ = new SimulationReport(simulation_->finish());
+  }
+  static void TearDownTestSuite() {
+    delete report_;
+    delete simulation_;
+  }
+  static Simulation* simulation_;
+  static SimulationReport* report_;
+};
+Simulation* GcodeStepASketchScenarioTest::simulation_ = nullptr;
+SimulationReport* GcodeStepASketchScenarioTest::report_ = nullptr;
+
+TEST_F(GcodeStepASketchScenarioTest, EveryExpectationOfTheExampleHolds) {
+  ASSERT_EQ(report_->expectations.size(), 7u);
+  for (const ExpectationResult& result : report_->expectations) EXPECT_TRUE(result.met) << result.message;
+}
+
+TEST_F(GcodeStepASketchScenarioTest, EveryLineOfTheFileIsAcknowledgedInOrder) {
+  std::ifstream file(source_path("examples/GcodeStepASketch/star.gcode"));
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(file, line);) lines.push_back(line);
+  const HostClient* client = simulation_->host_client("driver");
+  ASSERT_NE(client, nullptr);
+  EXPECT_TRUE(client->completed()) << client->failure();
+  EXPECT_EQ(client->acknowledged_lines(), lines.size());
+  // The lines went out exactly as in the file, in order.
+  size_t next = 0;
+  for (const HostClient::Entry& entry : client->transcript()) {
+    if (entry.from_host && next < lines.size() && entry.text == lines[next]) ++next;
+  }
+  EXPECT_EQ(next, lines.size());
+}
+
+TEST_F(GcodeStepASketchScenarioTest, MotorsEndAtHomePlusTheKnobsNudge) {
+  // Pen at (5, 0) mm on CoreXY with 80 microsteps/mm: a = 80 (x + y), b = 80 (x − y).
+  EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), 400);
+  EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), 400);
+  // Z4 (pen up) at 50 servo steps per mm.
+  EXPECT_EQ(simulation_->board("driver")->sent(2).forward[SIGNAL_E] -
+                static_cast<int64_t>(simulation_->board("driver")->sent(2).reverse[SIGNAL_E]),
+            200);
+}
+
+}  // namespace
+}  // namespace stepdance::sim::test
