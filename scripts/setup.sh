@@ -11,6 +11,7 @@ packages=(
   clang  # libFuzzer targets (scripts/fuzz.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
   python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests
+  bcnc  # a real Grbl sender driving the live simulator (tests/sim/live/bcnc_sender_test.py)
 )
 
 missing=()

@@ -189,5 +189,18 @@ TEST(Rs274Conformance, EveryProgramMatchesLinuxCncInterpreter) {
   EXPECT_GE(programs, 4);
 }
 
+TEST(Rs274Conformance, EveryExampleProgramMatchesLinuxCncInterpreter) {
+  ASSERT_EQ(system("command -v rs274 >/dev/null 2>&1"), 0) << "rs274 missing: run scripts/setup.sh";
+  int programs = 0;
+  for (const fs::directory_entry& entry :
+       fs::recursive_directory_iterator(fs::path(STEPDANCE_SOURCE_DIR) / "examples")) {
+    if (entry.path().extension() != ".gcode") continue;
+    SCOPED_TRACE(entry.path().string());
+    expect_same_toolpath(entry.path());
+    ++programs;
+  }
+  EXPECT_GE(programs, 1);  // examples/GcodeStepASketch/star.gcode at least
+}
+
 }  // namespace
 }  // namespace stepdance::gcode
