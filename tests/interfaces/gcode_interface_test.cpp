@@ -45,14 +45,17 @@ class GCodeInterfaceTest : public test_support::EngineFixture {
     x.push_back(gcode.output_x.read_absolute());
     y.push_back(gcode.output_y.read_absolute());
   }
-  /// Runs until the planner is idle and every line is answered; returns frames run.
+  /// Runs until the host has nothing left to send and the planner has been idle for 100 frames
+  /// (lines may still wait in the link's receive buffer between moves); returns frames run.
   int run_until_idle(int limit = 5'000'000) {
     int frames = 0;
-    while ((!gcode.interpolator().is_idle() || !host.to_board.empty()) && frames < limit) {
+    int idle_frames = 0;
+    while (idle_frames < 100 && frames < limit) {
       step();
       ++frames;
+      const bool idle = gcode.interpolator().is_idle() && host.to_board.empty();
+      idle_frames = idle ? idle_frames + 1 : 0;
     }
-    for (int i = 0; i < 3; ++i) step();  // the last replies
     return frames;
   }
   static int count(const std::string& text, const std::string& word) {
@@ -181,6 +184,45 @@ TEST_F(GCodeInterfaceTest, StatusReportsTheMachinePositionWhileRunning) {
   ASSERT_NE(status.find("<Run|MPos:"), std::string::npos) << status;
   const double reported = atof(status.c_str() + status.find("MPos:") + 5);
   EXPECT_NEAR(reported, gcode.output_x.read_absolute(), 0.001);
+}
+
+struct SpindleEvent {
+  bool on, clockwise;
+  double speed, x_at_call;
+};
+std::vector<SpindleEvent> spindle_events;
+GCodeInterface* spindle_interface = nullptr;
+
+void record_spindle(bool on, bool clockwise, double speed) {
+  spindle_events.push_back({on, clockwise, speed, spindle_interface->output_x.read_absolute()});
+}
+
+TEST_F(GCodeInterfaceTest, SpindleChangesWaitForThePrecedingMoves) {
+  spindle_events.clear();
+  spindle_interface = &gcode;
+  gcode.set_spindle_callback(&record_spindle);
+  host.send("G1 X10 F600\nM3 S500\nG1 X20\nM4 S250\nM5\n");
+  run_until_idle();
+  ASSERT_EQ(spindle_events.size(), 3u);
+  EXPECT_TRUE(spindle_events[0].on && spindle_events[0].clockwise);
+  EXPECT_EQ(spindle_events[0].speed, 500.0);
+  EXPECT_EQ(spindle_events[0].x_at_call, 10.0);  // after the first move, before the second
+  EXPECT_TRUE(spindle_events[1].on && !spindle_events[1].clockwise);
+  EXPECT_EQ(spindle_events[1].x_at_call, 20.0);
+  EXPECT_FALSE(spindle_events[2].on);
+}
+
+TEST_F(GCodeInterfaceTest, ProgramPauseHoldsAfterItsMovesUntilCycleStart) {
+  host.send("G1 X5 F600\nM0\nG1 X10\n");
+  for (int i = 0; i < 50000; ++i) step();  // 2 s: the first move (0.5 s) is long done
+  EXPECT_EQ(gcode.output_x.read_absolute(), 5.0);
+  host.take();
+  host.send("?");
+  step();
+  EXPECT_NE(host.take().find("<Hold:0|"), std::string::npos);
+  host.send("~");
+  run_until_idle();
+  EXPECT_EQ(gcode.output_x.read_absolute(), 10.0);
 }
 
 TEST(GCodeInterfaceBegin, TakesArduinoStylePortsThroughTheAdapter) {

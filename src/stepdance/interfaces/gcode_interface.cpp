@@ -16,6 +16,10 @@ using gcode::MotionState;
 namespace {
 
 constexpr double kSecondsPerMinute = 60.0;
+// M codes as the interpreter reports them (×10).
+constexpr gcode::CommandCode kM0 = 0;
+constexpr gcode::CommandCode kM3 = 30;
+constexpr gcode::CommandCode kM5 = 50;
 
 }  // namespace
 
@@ -54,6 +58,21 @@ void GCodeInterface::on_dwell(double seconds) {
   push_pending(request);
 }
 
+void GCodeInterface::on_spindle(gcode::CommandCode m_code, double speed) {
+  Pending request;
+  request.kind = Pending::Kind::kSpindle;
+  request.code = m_code;
+  request.dwell_s = speed;
+  push_pending(request);
+}
+
+void GCodeInterface::on_program_flow(gcode::CommandCode m_code) {
+  if (m_code != kM0) return;  // M1 (no optional-stop switch), M2 and M30 need nothing here
+  Pending request;
+  request.kind = Pending::Kind::kPause;
+  push_pending(request);
+}
+
 void GCodeInterface::jog(const Motion& motion) {
   Pending request;
   request.kind = Pending::Kind::kJog;
@@ -83,6 +102,10 @@ void GCodeInterface::drain_pending() {
       case Pending::Kind::kDwell:
         done = request.dwell_s <= 0.0 ||
                interpolator_.add_timed_move(INCREMENTAL, static_cast<float>(request.dwell_s), 0, 0, 0, 0, 0, 0) >= 0;
+        break;
+      case Pending::Kind::kSpindle:
+      case Pending::Kind::kPause:
+        done = act_when_idle(request);
         break;
       case Pending::Kind::kJog:
         done = queue_line_motion(request.motion, request.motion.feed_mm_per_min / kSecondsPerMinute, 0.0);
@@ -141,6 +164,16 @@ bool GCodeInterface::feed_arc(const Motion& arc) {
     ++arc_next_chord_;
   }
   arc_next_chord_ = 0;
+  return true;
+}
+
+bool GCodeInterface::act_when_idle(const Pending& request) {
+  if (!interpolator_.is_idle()) return false;
+  if (request.kind == Pending::Kind::kPause) {
+    feed_hold();  // M0: a program pause, resumed by cycle start (`~`)
+  } else if (spindle_callback_ != nullptr) {
+    spindle_callback_(request.code != kM5, request.code == kM3, request.dwell_s);
+  }
   return true;
 }
 

@@ -63,14 +63,22 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   /// The protocol (alarm state, replies dropped). Context: loop.
   const gcode::GrblProtocol& protocol() const { return protocol_; }
 
+  /// Called for M3 (on, clockwise), M4 (on, counter-clockwise) and M5 (off) once the moves
+  /// before it have finished, as Grbl syncs spindle changes: a pen lift, a laser, a motor.
+  /// `speed` is the S word in force. Context: loop.
+  using SpindleCallback = void (*)(bool on, bool clockwise, double speed);
+  void set_spindle_callback(SpindleCallback callback) { spindle_callback_ = callback; }
+
   /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
   void loop() override;
 
  private:
   struct Pending {
-    enum class Kind : uint8_t { kMotion, kDwell, kJog } kind = Kind::kMotion;
+    /// kSpindle and kPause wait for the planner to be idle (program order), then act.
+    enum class Kind : uint8_t { kMotion, kDwell, kJog, kSpindle, kPause } kind = Kind::kMotion;
     gcode::Motion motion;
-    double dwell_s = 0.0;
+    double dwell_s = 0.0;      // kDwell; kSpindle: the speed
+    gcode::CommandCode code = 0;  // kSpindle: M3/M4/M5 (×10)
   };
   static constexpr int kPendingCapacity = 4;  // a line asks for at most a dwell and two motions
 
@@ -84,6 +92,8 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   // GrblMachine
   void on_motion(const gcode::Motion& motion) override;
   void on_dwell(double seconds) override;
+  void on_spindle(gcode::CommandCode m_code, double speed) override;
+  void on_program_flow(gcode::CommandCode m_code) override;
   gcode::MotionState motion_state() override;
   bool hold_complete() override;
   void position_mm(double (&out)[gcode::kAxisCount]) override;
@@ -103,6 +113,7 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   void drain_pending();
   bool queue_line_motion(const gcode::Motion& motion, double speed_mm_per_s, double time_s);
   bool feed_arc(const gcode::Motion& arc);
+  bool act_when_idle(const Pending& request);
   void apply_settings_to_planner();
   void apply_override();
 
@@ -117,6 +128,7 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   bool jogging_ = false;
   uint8_t feed_percent_ = 100;
   uint8_t rapid_percent_ = 100;
+  SpindleCallback spindle_callback_ = nullptr;
 };
 
 }  // namespace stepdance

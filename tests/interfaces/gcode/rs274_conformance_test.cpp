@@ -199,7 +199,7 @@ TEST(Rs274Conformance, EveryExampleProgramMatchesLinuxCncInterpreter) {
     expect_same_toolpath(entry.path());
     ++programs;
   }
-  EXPECT_GE(programs, 1);  // examples/GcodeStepASketch/star.gcode at least
+  EXPECT_GE(programs, 1);  // examples/GCodeStepASketch/star.gcode at least
 }
 
 }  // namespace

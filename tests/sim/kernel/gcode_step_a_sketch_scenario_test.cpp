@@ -8,10 +8,10 @@
 namespace stepdance::sim::test {
 namespace {
 
-class GcodeStepASketchScenarioTest : public ::testing::Test {
+class GCodeStepASketchScenarioTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    simulation_ = create(load(source_path("examples/GcodeStepASketch")), "gcode_step_a_sketch").release();
+    simulation_ = create(load(source_path("examples/GCodeStepASketch")), "gcode_step_a_sketch").release();
     report_ = new SimulationReport(simulation_->finish());
   }
   static void TearDownTestSuite() {
@@ -21,16 +21,16 @@ class GcodeStepASketchScenarioTest : public ::testing::Test {
   static Simulation* simulation_;
   static SimulationReport* report_;
 };
-Simulation* GcodeStepASketchScenarioTest::simulation_ = nullptr;
-SimulationReport* GcodeStepASketchScenarioTest::report_ = nullptr;
+Simulation* GCodeStepASketchScenarioTest::simulation_ = nullptr;
+SimulationReport* GCodeStepASketchScenarioTest::report_ = nullptr;
 
-TEST_F(GcodeStepASketchScenarioTest, EveryExpectationOfTheExampleHolds) {
+TEST_F(GCodeStepASketchScenarioTest, EveryExpectationOfTheExampleHolds) {
   ASSERT_EQ(report_->expectations.size(), 7u);
   for (const ExpectationResult& result : report_->expectations) EXPECT_TRUE(result.met) << result.message;
 }
 
-TEST_F(GcodeStepASketchScenarioTest, EveryLineOfTheFileIsAcknowledgedInOrder) {
-  std::ifstream file(source_path("examples/GcodeStepASketch/star.gcode"));
+TEST_F(GCodeStepASketchScenarioTest, EveryLineOfTheFileIsAcknowledgedInOrder) {
+  std::ifstream file(source_path("examples/GCodeStepASketch/star.gcode"));
   std::vector<std::string> lines;
   for (std::string line; std::getline(file, line);) lines.push_back(line);
   const HostClient* client = simulation_->host_client("driver");
@@ -45,7 +45,7 @@ TEST_F(GcodeStepASketchScenarioTest, EveryLineOfTheFileIsAcknowledgedInOrder) {
   EXPECT_EQ(next, lines.size());
 }
 
-TEST_F(GcodeStepASketchScenarioTest, MotorsEndAtHomePlusTheKnobsNudge) {
+TEST_F(GCodeStepASketchScenarioTest, MotorsEndAtHomePlusTheKnobsNudge) {
   // Pen at (5, 0) mm on CoreXY with 80 microsteps/mm: a = 80 (x + y), b = 80 (x − y).
   EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), 400);
   EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), 400);

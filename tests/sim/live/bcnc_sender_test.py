@@ -3,7 +3,7 @@
 
 bCNC's own Sender class (its serial thread, Grbl 1.1 controller driver, character-counting
 streaming and status polling) runs without its Tk window against the pseudo-terminal of
-`stepdance sim examples/GcodeStepASketch/live.toml --live`. Checks: every line bCNC sent was
+`stepdance sim examples/GCodeStepASketch/live.toml --live`. Checks: every line bCNC sent was
 acknowledged with `ok` and none with an error, bCNC saw the machine go Run → Idle and parsed the
 final machine position from our status reports, and after SIGINT the simulator wrote the drawing
 and met the scenario's expectations (two strokes, pen home).
@@ -21,7 +21,7 @@ import unittest
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
 BCNC = "/usr/share/bcnc/bCNC"
-EXAMPLE = os.path.join(SOURCE_DIR, "examples", "GcodeStepASketch")
+EXAMPLE = os.path.join(SOURCE_DIR, "examples", "GCodeStepASketch")
 PROGRAM = os.path.join(EXAMPLE, "star.gcode")
 
 
