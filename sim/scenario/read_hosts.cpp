@@ -20,7 +20,7 @@ constexpr const char* kDefaultAck = "^(ok|error:[0-9]+)$";
 constexpr const char* kKinds[] = {"send", "stream", "stream_file", "wait", "pause_s"};
 constexpr std::pair<const char*, const char*> kStepKeys[] = {
     {"flow", "stream"}, {"buffer_bytes", "stream"}, {"ack", "stream"}, {"timeout_s", "stream or wait"},
-    {"poll", "wait"},   {"poll_every_s", "wait"},
+    {"poll", "stream or wait"},   {"poll_every_s", "stream or wait"},
 };
 
 std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool allow_zero) {
@@ -118,7 +118,7 @@ std::optional<HostStep> read_step(const toml::table& table, const ParseContext& 
   for (const auto& [key, owner] : kStepKeys) {
     const std::string_view name(key);
     const bool for_wait = name == "timeout_s" || name == "poll" || name == "poll_every_s";
-    const bool belongs = (streams && !(name == "poll" || name == "poll_every_s")) || (chosen == "wait" && for_wait);
+    const bool belongs = streams || (chosen == "wait" && for_wait);
     if (!belongs && reader.has(key)) {
       reader.accept(key);
       reader.error(key, "'" + std::string(key) + "' only goes with " + owner);
@@ -143,17 +143,19 @@ std::optional<HostStep> read_step(const toml::table& table, const ParseContext& 
   } else if (chosen == "wait") {
     step.kind = HostStep::Kind::kWait;
     ok = read_pattern(reader, "wait", step.pattern) && ok;
+  } else {
+    step.kind = HostStep::Kind::kPause;
+    const auto pause = read_seconds(reader, "pause_s", true);
+    ok = pause.has_value() && ok;
+    if (pause) step.pause = *pause;
+  }
+  if (streams || chosen == "wait") {
     if (const auto poll = reader.string("poll")) step.poll = *poll;
     if (reader.has("poll_every_s")) {
       const auto every = read_seconds(reader, "poll_every_s", false);
       ok = every.has_value() && ok;
       if (every) step.poll_interval = *every;
     }
-  } else {
-    step.kind = HostStep::Kind::kPause;
-    const auto pause = read_seconds(reader, "pause_s", true);
-    ok = pause.has_value() && ok;
-    if (pause) step.pause = *pause;
   }
   if ((streams || chosen == "wait") && reader.has("timeout_s")) {
     const auto timeout = read_seconds(reader, "timeout_s", false);

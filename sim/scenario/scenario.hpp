@@ -198,8 +198,8 @@ struct HostStep {
   SimTime timeout = 60 * kSecond;
   /// Pause: how long (ns).
   SimTime pause = 0;
-  /// Wait: bytes to send when the step starts and again every poll_interval until a line
-  /// matches (a sender polling `?`); empty: none.
+  /// Wait and stream: bytes to send when the step starts and again every poll_interval while
+  /// it runs (a sender polling `?`); empty: none.
   std::string poll;
   SimTime poll_interval = 200 * kMillisecond;
   int line = 0;

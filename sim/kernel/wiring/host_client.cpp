@@ -119,11 +119,15 @@ bool HostClient::run_step(SimTime now) {
   return true;
 }
 
+void HostClient::poll_if_due(const scenario::HostStep& step, SimTime now) {
+  if (step.poll.empty()) return;
+  if (now != step_started_ && now - last_poll_ < step.poll_interval) return;
+  send(step.poll, now);
+  last_poll_ = now;
+}
+
 bool HostClient::run_wait(const scenario::HostStep& step, SimTime now) {
-  if (!step.poll.empty() && (now == step_started_ || now - last_progress_ >= step.poll_interval)) {
-    send(step.poll, now);
-    last_progress_ = now;
-  }
+  poll_if_due(step, now);
   while (!unread_.empty()) {
     const bool matched = line_matches(pattern_, unread_.front());
     unread_.pop_front();
@@ -136,6 +140,7 @@ bool HostClient::run_wait(const scenario::HostStep& step, SimTime now) {
 }
 
 bool HostClient::run_stream(const scenario::HostStep& step, SimTime now) {
+  poll_if_due(step, now);
   while (!unread_.empty()) {
     const bool ack = line_matches(pattern_, unread_.front());
     unread_.pop_front();

@@ -24,7 +24,8 @@ namespace stepdance::sim {
 ///            ones fit in buffer_bytes (Grbl's streaming protocol). Every received line matching
 ///            the ack pattern acknowledges the oldest line in flight; others are skipped. Fails
 ///            when no acknowledgement comes for `timeout`;
-///   wait   — consumes received lines until one matches; fails after `timeout`;
+///   wait   — consumes received lines until one matches; fails after `timeout`.
+///   Both may send `poll` bytes at their start and every poll_interval (a sender's `?`);
 ///   pause  — lets time pass.
 /// A failed step stops the client (see failure()). Every line sent and received is kept, with
 /// its time, in the transcript.
@@ -65,6 +66,7 @@ class HostClient {
   bool run_stream(const scenario::HostStep& step, SimTime now);
   bool run_wait(const scenario::HostStep& step, SimTime now);
   void enter_step(SimTime now);
+  void poll_if_due(const scenario::HostStep& step, SimTime now);
   void send(const std::string& bytes, SimTime now);
   void fail(const std::string& why);
 
@@ -78,7 +80,8 @@ class HostClient {
   size_t step_ = 0;
   bool step_entered_ = false;
   SimTime step_started_ = 0;
-  SimTime last_progress_ = 0;  // stream: the last acknowledgement; wait: the last poll sent
+  SimTime last_progress_ = 0;  // stream: the last acknowledgement
+  SimTime last_poll_ = 0;      // stream and wait: when the poll bytes last went out
   std::regex pattern_;
   // The current stream step: its lines, the next to send, the sizes of those in flight.
   std::vector<std::string> lines_;

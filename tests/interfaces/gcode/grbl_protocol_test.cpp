@@ -124,6 +124,22 @@ TEST_F(GrblLink, StatusIsAnsweredWhileTheQueueIsFull) {
   EXPECT_EQ(exchange(""), "ok\r\n");
 }
 
+TEST_F(GrblLink, RealtimeBytesPassAFullReceiveBufferAndNothingIsLost) {
+  machine.free_slots = 1;  // no line executes: the 128-byte buffer fills up
+  std::string lines;
+  for (int i = 0; i < 8; ++i) lines += "G1 X" + std::to_string(10 + i) + " F1000.00\n";  // 8 × 16 bytes
+  ASSERT_EQ(lines.size(), 128u);
+  stream.send(lines + "?G1 X18\n");
+  protocol.poll();
+  const std::string reply = stream.take();
+  EXPECT_EQ(reply.rfind("<Idle|MPos:0.000,0.000,0.000|Bf:1,0|", 0), 0u) << reply;
+  // Everything still arrives in order once the machine takes lines again.
+  machine.free_slots = 100;
+  for (int i = 0; i < 20; ++i) protocol.poll();
+  ASSERT_EQ(machine.motions.size(), 9u);
+  for (int i = 0; i < 9; ++i) EXPECT_DOUBLE_EQ(machine.motions[i].end_mm[kAxisX], 10.0 + i);
+}
+
 TEST_F(GrblLink, StatusReportFieldsFollowTheSettings) {
   exchange("G10 L2 P1 X5\n");
   machine.position[kAxisX] = 12.5;

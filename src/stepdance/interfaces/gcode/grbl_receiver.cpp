@@ -4,7 +4,12 @@
 namespace stepdance::gcode {
 
 void GrblReceiver::pump(ByteStream& stream, RealtimeHandler& handler) {
-  while (count_ < kBufferBytes) {
+  if (held_byte_ >= 0) {
+    if (count_ == kBufferBytes) return;
+    ring_[(head_ + count_++) % kBufferBytes] = static_cast<uint8_t>(held_byte_);
+    held_byte_ = -1;
+  }
+  for (;;) {
     const int value = stream.read_byte();
     if (value < 0) return;
     const uint8_t byte = static_cast<uint8_t>(value);
@@ -12,8 +17,11 @@ void GrblReceiver::pump(ByteStream& stream, RealtimeHandler& handler) {
       handler.on_realtime(byte);
       continue;
     }
-    ring_[(head_ + count_) % kBufferBytes] = byte;
-    ++count_;
+    if (count_ == kBufferBytes) {
+      held_byte_ = byte;  // stop here: the stream keeps everything after it
+      return;
+    }
+    ring_[(head_ + count_++) % kBufferBytes] = byte;
   }
 }
 
@@ -80,6 +88,7 @@ bool GrblReceiver::next_line(ReceivedLine& line) {
 void GrblReceiver::clear() {
   head_ = 0;
   count_ = 0;
+  held_byte_ = -1;
   skip_lf_ = false;
   partial_ = ReceivedLine{};
   partial_active_ = false;

@@ -33,8 +33,10 @@ struct ReceivedLine {
 };
 
 /// The receive side of a Grbl link. pump() moves bytes from the stream into a 128-byte buffer
-/// (what character-counting senders count on), handing realtime bytes over at once; it stops
-/// reading when the buffer is full, so the stream holds the rest (back-pressure, nothing is
+/// (what character-counting senders count on), handing realtime bytes over at once. When the
+/// buffer is full it keeps reading only while realtime bytes come (as Grbl's receive interrupt
+/// takes them out before they reach its buffer): the first other byte is held back in a
+/// one-byte slot and reading stops, so the stream holds the rest (back-pressure, nothing is
 /// dropped). next_line() takes one line out; CR, LF and CR LF each end one line.
 /// Context: loop only.
 class GrblReceiver {
@@ -58,6 +60,7 @@ class GrblReceiver {
   uint8_t ring_[kBufferBytes] = {};
   size_t head_ = 0;   // next byte to take
   size_t count_ = 0;  // bytes held
+  int held_byte_ = -1;             // a line byte read while the buffer was full, or −1
   bool skip_lf_ = false;           // a CR ended the last line: an LF right after belongs to it
   ReceivedLine partial_;           // a line longer than the buffer, being collected
   bool partial_active_ = false;
