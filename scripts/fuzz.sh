@@ -7,15 +7,17 @@ cd "$(dirname "$0")/.."
 build=${STEPDANCE_FUZZ_DIR:-build-fuzz}
 mkdir -p "$build"
 
-# Portable-core folders each target links (the fuzz file plus these sources).
+# Portable-core folders (every .cpp in them) or files each target links besides its fuzz file.
 declare -A target_sources=(
-  [gcode]="src/stepdance/interfaces/gcode src/stepdance/interfaces"
-  [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces"
+  [gcode]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
+  [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
 )
 
 build_target() {
   local name=$1 sources=()
-  for folder in ${target_sources[$name]}; do sources+=("$folder"/*.cpp); done
+  for entry in ${target_sources[$name]}; do
+    if [ -d "$entry" ]; then sources+=("$entry"/*.cpp); else sources+=("$entry"); fi
+  done
   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
     -Isrc "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
 }
