@@ -1,4 +1,4 @@
-// The G-code Step-A-Sketch example end to end: a scripted Grbl sender streams a star and a circle
+// The G-code Step-A-Sketch example end to end: a scripted Grbl sender streams the rosette
 // with character counting while a knob nudges the pen; every line acknowledged, motors exact.
 #include <fstream>
 #include <sstream>
@@ -30,7 +30,7 @@ TEST_F(GCodeStepASketchScenarioTest, EveryExpectationOfTheExampleHolds) {
 }
 
 TEST_F(GCodeStepASketchScenarioTest, EveryLineOfTheFileIsAcknowledgedInOrder) {
-  std::ifstream file(source_path("examples/GCodeStepASketch/star.gcode"));
+  std::ifstream file(source_path("examples/GCodeStepASketch/rosette.gcode"));
   std::vector<std::string> lines;
   for (std::string line; std::getline(file, line);) lines.push_back(line);
   const HostClient* client = simulation_->host_client("driver");
