@@ -2,8 +2,9 @@
 # Packs Stepdance.zip for the Arduino IDE's "Add .ZIP Library": library files only, in Stepdance/.
 #
 # Usage: scripts/package-arduino-zip.sh [OUTPUT.zip]      (default: build-teensy/Stepdance.zip)
-# Contents: library.properties, library.json, LICENSE, README.md, src/ and examples/ (without the
-# simulator's scenario files). Needs only cmake, which the build already uses.
+# Contents: library.properties, library.json, LICENSE, README.md, and the files git tracks in src/
+# and examples/ (without the simulator's scenario files, and without anything a run wrote there).
+# Needs git and cmake.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -21,8 +22,7 @@ while IFS= read -r -d '' file; do
   mkdir -p "$stage/Stepdance/$(dirname "$file")"
   cp "$file" "$stage/Stepdance/$file"
   count=$((count + 1))
-done < <(find src examples -type f ! -name '*.toml' ! -name '.*' ! -name '*~' ! -name '*.orig' \
-  ! -name '*.rej' -print0 | LC_ALL=C sort -z)
+done < <(git ls-files -z src examples | grep -zv -e '\.toml$' -e '/\.' | LC_ALL=C sort -z)
 
 mkdir -p "$(dirname "$zip_path")"
 rm -f "$zip_path"

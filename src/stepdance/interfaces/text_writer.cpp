@@ -52,13 +52,15 @@ TextWriter& TextWriter::fixed(double value, uint8_t decimals) {
   uint32_t scale = 1;
   for (uint8_t i = 0; i < decimals; ++i) scale *= 10;
   if (fabs(value) >= 1e9) return text("ovf");
+  // Whole units and the fraction split in double arithmetic (exact below 2^53), which keeps
+  // 64-bit integer division — a libgcc call on the M7 — out of the firmware.
   const double scaled = floor(fabs(value) * scale + 0.5);
-  const uint64_t units = static_cast<uint64_t>(scaled);
-  if (value < 0 && units != 0) character('-');
-  unsigned_number(static_cast<uint32_t>(units / scale));
+  const double whole = floor(scaled / scale);
+  if (value < 0 && scaled != 0.0) character('-');
+  unsigned_number(static_cast<uint32_t>(whole));
   if (decimals == 0) return *this;
   character('.');
-  uint32_t fraction = static_cast<uint32_t>(units % scale);
+  uint32_t fraction = static_cast<uint32_t>(scaled - whole * scale);
   for (uint32_t place = scale / 10; place > 0; place /= 10) {
     character(static_cast<char>('0' + fraction / place));
     fraction %= place;
