@@ -17,6 +17,7 @@ inline void reset_global_state(uint32_t start_us = 0) {
   stepdance::hal_manual::reset(start_us);
   stepdance::engine().clear();
   stepdance::clear_fault();
+  stepdance::clear_fault_subscribers();
 }
 
 /// Derive test fixtures from this to start and end every test on a clean board:

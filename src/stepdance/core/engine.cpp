@@ -115,6 +115,7 @@ void Engine::run_loop() {
   for (Block* block : registry(Stage::kLoop)) {
     if (block->is_enabled()) block->loop();
   }
+  deliver_fault_reports();  // subscribers run here, in the loop, never in the frame
 }
 
 void Engine::clear() {

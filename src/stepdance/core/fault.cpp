@@ -11,6 +11,28 @@ const char* volatile first_detail = "";
 volatile uint32_t count = 0;
 volatile uint32_t warnings = 0;
 volatile bool alarm_raised = false;
+
+// Report history: a ring written under a critical section from any context, read in the loop.
+FaultReport history[kFaultReportHistory];
+volatile uint32_t reports_made = 0;     // sequence number of the newest report
+uint32_t reports_delivered = 0;         // loop only: newest sequence handed to subscribers
+volatile uint32_t reports_lost = 0;
+FaultSubscriber subscribers[kMaxFaultSubscribers] = {};
+
+void fault_without_report(FaultReason reason, const char* detail);
+
+void record(FaultLevel level, FaultReason reason, const char* source, const char* detail) {
+  hal::CriticalSection guard;
+  const uint32_t sequence = reports_made + 1;
+  FaultReport& slot = history[(sequence - 1) % kFaultReportHistory];
+  slot.level = level;
+  slot.reason = reason;
+  slot.source = source != nullptr ? source : "";
+  slot.detail = detail != nullptr ? detail : "";
+  slot.time_us = hal::micros_now();
+  slot.sequence = sequence;
+  reports_made = sequence;
+}
 }  // namespace
 
 const char* to_string(FaultReason reason) {
@@ -40,9 +62,10 @@ const char* to_string(FaultLevel level) {
   return "unknown";
 }
 
-void report_fault(FaultLevel level, FaultReason reason, const char* /*source*/, const char* detail) {
+void report_fault(FaultLevel level, FaultReason reason, const char* source, const char* detail) {
+  record(level, reason, source, detail);
   if (level == FaultLevel::kFatal) {
-    fault(reason, detail);
+    fault_without_report(reason, detail);
     return;
   }
   hal::CriticalSection guard;
@@ -50,11 +73,66 @@ void report_fault(FaultLevel level, FaultReason reason, const char* /*source*/, 
   else warnings = warnings + 1;
 }
 
+bool on_fault(FaultSubscriber subscriber) {
+  if (subscriber == nullptr) return false;
+  for (FaultSubscriber& slot : subscribers) {
+    if (slot != nullptr) continue;
+    slot = subscriber;
+    return true;
+  }
+  return false;
+}
+
+void clear_fault_subscribers() {
+  for (FaultSubscriber& slot : subscribers) slot = nullptr;
+}
+
+void deliver_fault_reports() {
+  const uint32_t newest = reports_made;
+  if (newest - reports_delivered > kFaultReportHistory) {
+    hal::CriticalSection guard;
+    reports_lost = reports_lost + (newest - reports_delivered - kFaultReportHistory);
+    reports_delivered = newest - kFaultReportHistory;
+  }
+  while (reports_delivered != newest) {
+    FaultReport report;
+    {
+      hal::CriticalSection guard;
+      report = history[reports_delivered % kFaultReportHistory];
+    }
+    ++reports_delivered;
+    for (FaultSubscriber subscriber : subscribers) {
+      if (subscriber != nullptr) subscriber(report);
+    }
+  }
+}
+
+uint8_t fault_level() {
+  if (first_reason != FaultReason::kNone) return static_cast<uint8_t>(FaultLevel::kFatal);
+  if (alarm_raised) return static_cast<uint8_t>(FaultLevel::kAlarm);
+  return warnings > 0 ? static_cast<uint8_t>(FaultLevel::kWarning) : 0;
+}
+
+bool recent_fault_report(uint32_t age, FaultReport& out) {
+  hal::CriticalSection guard;
+  if (age >= kFaultReportHistory || age >= reports_made) return false;
+  out = history[(reports_made - 1 - age) % kFaultReportHistory];
+  return true;
+}
+
+uint32_t fault_reports_lost() { return reports_lost; }
+
 uint32_t warning_count() { return warnings; }
 bool alarm_active() { return alarm_raised; }
 void clear_alarm() { alarm_raised = false; }
 
 void fault(FaultReason reason, const char* detail) {
+  record(FaultLevel::kFatal, reason, "core", detail);
+  fault_without_report(reason, detail);
+}
+
+namespace {
+void fault_without_report(FaultReason reason, const char* detail) {
   {
     hal::CriticalSection guard;
     count = count + 1;
@@ -68,6 +146,7 @@ void fault(FaultReason reason, const char* detail) {
   engine().stop();
   hal::log_fault(to_string(reason), first_detail);
 }
+}  // namespace
 
 FaultReason fault_reason() { return first_reason; }
 const char* fault_detail() { return first_detail; }
@@ -80,6 +159,9 @@ void clear_fault() {
   count = 0;
   warnings = 0;
   alarm_raised = false;
+  reports_made = 0;
+  reports_delivered = 0;
+  reports_lost = 0;
 }
 
 }  // namespace stepdance

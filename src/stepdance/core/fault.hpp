@@ -38,6 +38,42 @@ const char* to_string(FaultLevel level);
 /// A short name for a fault reason (never null).
 const char* to_string(FaultReason reason);
 
+/// One report on the fault path, as subscribers and readers see it. Strings are static.
+struct FaultReport {
+  FaultLevel level = FaultLevel::kWarning;
+  FaultReason reason = FaultReason::kNone;
+  const char* source = "";  ///< the block or interface that reported, e.g. "tbi", "gcode"
+  const char* detail = "";
+  uint32_t time_us = 0;     ///< hal::micros_now() when reported
+  uint32_t sequence = 0;    ///< 1 for the first report since start or clear_fault(), then +1
+};
+
+/// Reports kept for reading and for subscribers (the newest; older ones are overwritten and
+/// counted in fault_reports_lost()).
+constexpr uint32_t kFaultReportHistory = 16;
+/// Subscribers on_fault() accepts.
+constexpr uint32_t kMaxFaultSubscribers = 4;
+
+/// Calls `subscriber` with every report from now on, in the loop (from dance_loop), never in the
+/// frame, in report order. Returns false (nothing changes) when kMaxFaultSubscribers are taken
+/// or `subscriber` is null. Context: loop.
+using FaultSubscriber = void (*)(const FaultReport& report);
+bool on_fault(FaultSubscriber subscriber);
+/// Removes every subscriber. Context: loop.
+void clear_fault_subscribers();
+/// Hands reports made since the last call to the subscribers; dance_loop calls it. Context: loop.
+void deliver_fault_reports();
+
+/// The most serious condition in force: kFatal after fault() (until restart), kAlarm while an
+/// alarm is raised, else kWarning if any warning was reported since start, else 0 (healthy).
+/// Context: any.
+uint8_t fault_level();
+/// The `age`-th newest report (0 = newest); false if there is no such report kept. Context: loop.
+bool recent_fault_report(uint32_t age, FaultReport& out);
+/// Reports dropped from the history before subscribers saw them (more than kFaultReportHistory
+/// between two dance_loop passes). Context: any.
+uint32_t fault_reports_lost();
+
 /// Records the first fault, tells the backend to put every output in its safe state
 /// (frames stop, drivers disabled) and logs `detail`. Later faults are counted, not recorded.
 /// Context: any (frame ISR included); never returns an error and never allocates.
