@@ -138,6 +138,42 @@ TEST_F(TbiTest, ThousandCollinearSegmentsFlowAtFullSpeed) {
   EXPECT_EQ(tbi.underruns(), 0u);
 }
 
+TEST_F(TbiTest, ThreeThousandShortSegmentsPerSecondNeverRunDry) {
+  // 0.02 mm segments along a gentle arc (R = 100 mm) at 60 mm/s: 3,000 segments a second, with
+  // the loop (planning) running only every fifth frame (200 µs, the simulator's loop period).
+  tbi.set_acceleration(1500.0);
+  const double radius = 100.0, v = 60.0, segment = 0.02;
+  const int count = 4000;
+  record = false;
+  int next = 1, frames = 0;
+  double peak = 0.0, slowest_cruise = 1e9;
+  while ((next <= count || !tbi.is_idle()) && frames < 1'000'000) {
+    if (frames % 5 == 0) {
+      while (next <= count && !tbi.queue_is_full()) {
+        const double angle = next * segment / radius;
+        tbi.add_move(ABSOLUTE, static_cast<float>(v), radius * sin(angle), radius * (1 - cos(angle)), 0, 0, 0, 0);
+        ++next;
+      }
+      dance_loop();
+    }
+    hal_manual::run_frames(1);
+    ++frames;
+    const double x = tbi.output_x.read_absolute(), y = tbi.output_y.read_absolute();
+    const double speed = hypot(x - last_x, y - last_y) / kDt;
+    last_x = x;
+    last_y = y;
+    peak = fmax(peak, speed);
+    // Between the ramps (0.3 s after the start delay, until 0.05 s before the end) it cruises.
+    const double t = frames * kDt;
+    if (t > 0.1 && t < count * segment / v - 0.1) slowest_cruise = fmin(slowest_cruise, speed);
+  }
+  EXPECT_EQ(tbi.underruns(), 0u);
+  EXPECT_NEAR(peak, v, 1e-6);
+  EXPECT_NEAR(slowest_cruise, v, 1e-6);
+  const double end_angle = count * segment / radius;
+  EXPECT_NEAR(tbi.output_x.read_absolute(), radius * sin(end_angle), 1e-9);
+}
+
 TEST_F(TbiTest, ThousandSegmentCircleRunsAtItsCentripetalLimit) {
   const double a = 1000.0, radius = 50.0;
   tbi.set_acceleration(a);
