@@ -150,9 +150,10 @@ TEST_F(CoreXYMachine, GlobalGoStartsFromWhereAnotherSourceLeftTheMachine) {
   const uint32_t a_before = pulses(port_a, DIRECTION_FORWARD);
   const uint32_t b_before = pulses(port_b, DIRECTION_FORWARD);
 
-  generator_x.go(15.0, GLOBAL, 100);  // adopts x = 14, then moves 1 mm
-  EXPECT_NEAR(generator_x.output.read(ABSOLUTE), 14.0, kTolerance);
-  hal_manual::run_frames(400);
+  generator_x.go(15.0, GLOBAL, 100);  // adopts x = 14 in the next frame, then moves 1 mm
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(generator_x.output.read(ABSOLUTE), 14.0 + 100 * 40e-6, kTolerance);
+  hal_manual::run_frames(399);
   EXPECT_EQ(pulses(port_a, DIRECTION_FORWARD) - a_before, 80u);
   EXPECT_EQ(pulses(port_b, DIRECTION_FORWARD) - b_before, 80u);
   EXPECT_EQ(pulses(port_a, DIRECTION_REVERSE) + pulses(port_b, DIRECTION_REVERSE), 0u);

@@ -1,6 +1,8 @@
 // Unit tests of PositionGenerator: speed-limited travel, exact arrival, go() modes, resets.
 #include <gtest/gtest.h>
 
+#include "stepdance/core/fault.hpp"
+
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
 #include "stepdance/io/output_port.hpp"
@@ -106,11 +108,28 @@ TEST_F(PositionGeneratorTest, GlobalGoAdoptsTheChannelPositionFirst) {
   EXPECT_EQ(port.pulses_sent(SIGNAL_Z, DIRECTION_FORWARD), 0u);
 
   generator.go(4.0, GLOBAL, 100);  // from 3 to 4, not from the generator's own 0
-  EXPECT_DOUBLE_EQ(generator.output.read(ABSOLUTE), 3.0);
-  hal_manual::run_frames(300);
+  EXPECT_EQ(generator.target(), 4.0);
+  // The next frame applies the command: it adopts 3 mm, then takes its first 0.004 mm step.
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(generator.output.read(ABSOLUTE), 3.004, 1e-12);
+  hal_manual::run_frames(299);
   EXPECT_EQ(port.pulses_sent(SIGNAL_Z, DIRECTION_FORWARD), 80u);
   EXPECT_EQ(port.pulses_sent(SIGNAL_Z, DIRECTION_REVERSE), 0u);
   EXPECT_DOUBLE_EQ(channel.current_position, 320.0);
+}
+
+TEST_F(PositionGeneratorTest, CommandsQueueUpToTheCapacityThenAreRefusedAndReported) {
+  start();
+  for (size_t i = 0; i < PositionGenerator::kCommandCapacity; ++i) {
+    EXPECT_EQ(generator.go(1.0, INCREMENTAL, 1000), Status::kOk);
+  }
+  EXPECT_EQ(generator.go(1.0, INCREMENTAL), Status::kFull);  // refused, nothing overwritten
+  EXPECT_EQ(warning_count(), 1u);
+  EXPECT_EQ(generator.target(), static_cast<double>(PositionGenerator::kCommandCapacity));
+  EXPECT_FALSE(generator.is_idle());
+  hal_manual::run_frames(1000);
+  EXPECT_EQ(position(), static_cast<double>(PositionGenerator::kCommandCapacity));
+  EXPECT_TRUE(generator.is_idle());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "stepdance/core/fault.hpp"
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
@@ -17,34 +18,67 @@ Status PositionGenerator::begin() {
   return register_in(Stage::kPreChannel);
 }
 
-void PositionGenerator::go(double value, PositionMode mode, double speed_units_per_s) {
-  hal::CriticalSection guard;
-  set_speed(speed_units_per_s);
-  go(value, mode);
+Status PositionGenerator::go(double value, PositionMode mode, double speed_units_per_s) {
+  GoCommand command;
+  command.value = value;
+  command.mode = mode;
+  command.set_speed = true;
+  command.speed = speed_units_per_s;
+  return queue(command);
 }
 
-void PositionGenerator::go(double value, PositionMode mode) {
-  hal::CriticalSection guard;
-  follow_output_reset();
-  const double value_block = output.convert_world_to_block_units(value);
-  if (mode == INCREMENTAL) {
+Status PositionGenerator::go(double value, PositionMode mode) {
+  GoCommand command;
+  command.value = value;
+  command.mode = mode;
+  return queue(command);
+}
+
+Status PositionGenerator::queue(const GoCommand& command) {
+  const double base = commands_.empty() ? frame_target_world() : queued_target_world_;
+  if (commands_.push(command) != Status::kOk) {
+    report_fault(FaultLevel::kWarning, FaultReason::kQueueFull, "position generator", "go() queue full");
+    return Status::kFull;
+  }
+  if (command.set_speed) set_speed(command.speed);  // readers see the new speed at once
+  queued_target_world_ = command.mode == INCREMENTAL ? base + command.value : command.value;
+  return Status::kOk;
+}
+
+void PositionGenerator::apply(const GoCommand& command) {
+  if (command.set_speed) set_speed(command.speed);
+  const double value_block = output.convert_world_to_block_units(command.value);
+  if (command.mode == INCREMENTAL) {
     target_ = target_ + value_block;
     return;
   }
-  if (mode == GLOBAL) {
+  if (command.mode == GLOBAL) {
     output.pull_deep();
     last_set_ = position_;  // the adopted position is not a reset to follow
   }
   target_ = value_block;
 }
 
-double PositionGenerator::target() const {
+double PositionGenerator::frame_target_world() const {
+  hal::CriticalSection guard;  // target_ and the reset shift change in the frame
   const double pending_shift = position_ - last_set_;  // a reset not yet seen by run()
   return output.convert_block_to_world_units(target_ + pending_shift);
 }
 
+double PositionGenerator::target() const {
+  return commands_.empty() ? frame_target_world() : queued_target_world_;
+}
+
+bool PositionGenerator::is_idle() const {
+  if (!commands_.empty()) return false;
+  hal::CriticalSection guard;
+  return last_set_ == target_;
+}
+
 void PositionGenerator::run() {
   follow_output_reset();
+  GoCommand command;
+  while (commands_.pop(command) == Status::kOk) apply(command);
   const double position = position_;
   const double remaining = target_ - position;
   const double max_step = max_step_block_units();

@@ -3,13 +3,17 @@
 
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
+#include "stepdance/core/spsc_queue.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/core/units.hpp"
 
 namespace stepdance {
 
 /// Drives `output` toward a target at up to speed_units_per_sec, one frame at a time, and
-/// lands exactly on it (constant velocity, no acceleration). Targets come from go() in the loop.
+/// lands exactly on it (constant velocity, no acceleration). Targets come from go() in the loop
+/// and reach the frame through a command queue of kCommandCapacity entries (applied at the start
+/// of the next frame, in order); a go() that finds the queue full is refused and reported as a
+/// warning (FaultReason::kQueueFull), never blocking and never overwriting.
 ///
 /// Units: positions and speeds are in the output port's world units (its ratio converts them
 /// into the generator's own state).
@@ -19,6 +23,9 @@ namespace stepdance {
 class PositionGenerator : public Block {
  public:
   PositionGenerator();
+
+  /// go() commands that may wait for the next frame.
+  static constexpr size_t kCommandCapacity = 8;
 
   /// Begins the output (OUTPUT, for deep sync) and registers the block in the pre-channel
   /// stage. The state and target start at 0. kFull if that registry is full. Context: loop.
@@ -31,18 +38,21 @@ class PositionGenerator : public Block {
   ///   ABSOLUTE:    target = value, in the generator's own coordinates;
   ///   GLOBAL:      output.pull_deep() first (adopt the downstream machine position), then
   ///                target = value.
-  /// Safe against the frame ISR (interrupts are held off while it runs). Context: loop.
-  void go(double value, PositionMode mode, double speed_units_per_s);
-  /// As go(value, mode, speed) with the stored speed. Context: loop.
-  void go(double value, PositionMode mode);
+  /// Queued for the frame; returns kFull (and reports a warning) when kCommandCapacity commands
+  /// are already waiting. Context: loop.
+  Status go(double value, PositionMode mode, double speed_units_per_s);
+  /// As go(value, mode, speed) with the speed in force then. Context: loop.
+  Status go(double value, PositionMode mode);
 
-  /// The current target in world units (including the shift of a reset). Context: any.
+  /// The target in world units once every queued go() has been applied (including the shift of
+  /// a reset; a queued GLOBAL target counts as given). Context: loop.
   double target() const;
-  /// True when the output sits on the target (a reset does not change this). Context: any.
-  bool is_idle() const { return last_set_ == target_; }
+  /// True when no go() waits and the output sits on the target (a reset does not change this).
+  /// Context: loop.
+  bool is_idle() const;
 
-  /// One frame: step toward the target by at most speed × 40 µs, then set and push the output.
-  /// Context: frame ISR.
+  /// One frame: apply the queued go() commands, step toward the target by at most
+  /// speed × 40 µs, then set and push the output. Context: frame ISR.
   void run() override;
 
   /// The generated position (OUTPUT port; world units).
@@ -51,9 +61,21 @@ class PositionGenerator : public Block {
   ControlParameter speed_units_per_sec = 0;
 
  private:
+  struct GoCommand {
+    double value = 0.0;      // world units
+    PositionMode mode = ABSOLUTE;
+    bool set_speed = false;  // apply `speed` (world units/s) with the target
+    double speed = 0.0;
+  };
+
+  Status queue(const GoCommand& command);
+  void apply(const GoCommand& command);
   double max_step_block_units() const;
   void follow_output_reset();
+  double frame_target_world() const;
 
+  SpscQueue<GoCommand, kCommandCapacity> commands_;
+  double queued_target_world_ = 0.0;  // loop only: the target after the last queued go()
   DecimalPosition position_ = 0;  // the output's state, block units
   DecimalPosition target_ = 0;    // block units
   DecimalPosition last_set_ = 0;  // position_ as this block last set it

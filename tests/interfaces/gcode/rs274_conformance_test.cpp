@@ -113,9 +113,14 @@ struct CollectingSink final : GcodeSink {
 };
 
 std::vector<ReferenceMotion> run_rs274(const fs::path& program) {
-  const fs::path scratch = fs::temp_directory_path() / ("stepdance-rs274-" + std::to_string(getpid()));
+  static int runs = 0;
+  const fs::path scratch =
+      fs::temp_directory_path() / ("stepdance-rs274-" + std::to_string(getpid()) + "-" + std::to_string(++runs));
   fs::create_directories(scratch);
-  const std::string command = "cd '" + scratch.string() + "' && rs274 -g '" + program.string() + "' 2>&1";
+  // rs274 keeps its tool table in $HOME/.tool.mmap: each run gets its own HOME, or two tests
+  // running at once truncate each other's table and one of them sees no motion.
+  const std::string command = "cd '" + scratch.string() + "' && HOME='" + scratch.string() + "' rs274 -g '" +
+                              program.string() + "' 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   CanonReader reader;
   if (pipe != nullptr) {
