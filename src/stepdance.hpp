@@ -18,6 +18,7 @@
 #include "stepdance/motion/position_generator.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
 #include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/interfaces/eibotboard.hpp"
 #include "stepdance/protocol/signals.hpp"
 
 #include "stepdance/sketch_board.hpp"
@@ -39,6 +40,7 @@ using stepdance::Channel;
 using stepdance::ControlParameter;
 using stepdance::DecimalPosition;
 using stepdance::Encoder;
+using stepdance::Eibotboard;
 using stepdance::GCodeInterface;
 using stepdance::InputPort;
 using stepdance::KinematicsCoreXY;

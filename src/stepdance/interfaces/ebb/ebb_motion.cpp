@@ -1,0 +1,161 @@
+// EbbMotionExecutor: the EBB's 25 kHz accumulator algorithm, servo slewing and FIFO entry effects.
+#include "stepdance/interfaces/ebb/ebb_motion.hpp"
+
+namespace stepdance::ebb {
+namespace {
+
+constexpr double kTicksPerServoPeriod = 600.0;  // the servo rate is given per 24 ms pulse period
+
+int64_t abs64(int64_t value) { return value < 0 ? -value : value; }
+
+/// ⌈a / b⌉ for a ≥ 0, b > 0.
+int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
+
+}  // namespace
+
+void EbbMotionExecutor::reset(uint16_t servo_reset) {
+  *this = EbbMotionExecutor{};
+  servo_position_ = servo_reset;
+  servo_target_ = servo_reset;
+}
+
+void EbbMotionExecutor::clear_global_steps() {
+  global_steps_[0] = global_steps_[1] = 0;
+  accumulator_[0] = accumulator_[1] = 0;
+}
+
+void EbbMotionExecutor::start(const EbbMove& move) {
+  move_ = move;
+  busy_ = false;
+  axis_active_[0] = axis_active_[1] = false;
+  ticks_left_ = move.ticks;
+  switch (move.kind) {
+    case EbbMove::Kind::kSteps:
+    case EbbMove::Kind::kTime:
+      begin_accumulated(move);
+      break;
+    case EbbMove::Kind::kHome: {
+      EbbMove line = move;
+      line.kind = EbbMove::Kind::kSteps;
+      line.clear = 3;  // a straight line from a clean start
+      int64_t distance[2];
+      int64_t longest = 0;
+      for (int axis = 0; axis < 2; ++axis) {
+        distance[axis] = int64_t{move.target[axis]} - global_steps_[axis];
+        if (abs64(distance[axis]) > longest) longest = abs64(distance[axis]);
+      }
+      if (longest == 0 || move.frequency == 0) return;
+      const int64_t ticks = ceil_div(longest * kTicksPerSecond, move.frequency);
+      for (int axis = 0; axis < 2; ++axis) {
+        line.steps[axis] = static_cast<uint32_t>(abs64(distance[axis]));
+        line.direction[axis] = distance[axis] < 0 ? -1 : 1;
+        line.rate[axis] = ceil_div(abs64(distance[axis]) * kStepThreshold, ticks);
+        line.accel[axis] = 0;
+      }
+      move_ = line;
+      begin_accumulated(line);
+      break;
+    }
+    case EbbMove::Kind::kDelay:
+      busy_ = ticks_left_ > 0;
+      break;
+    case EbbMove::Kind::kServo:
+      servo_target_ = move.servo_target;
+      servo_rate_per_tick_ = move.servo_rate / kTicksPerServoPeriod;
+      if (move.servo_rate == 0) servo_position_ = servo_target_;
+      pen_up_ = move.pen_up;
+      busy_ = ticks_left_ > 0;
+      break;
+    case EbbMove::Kind::kEnable:
+      if (move.microstep_mode >= 1 && move.microstep_mode <= 5) microstep_mode_ = move.microstep_mode;
+      enabled_[0] = move.enable[0];
+      enabled_[1] = move.enable[1];
+      global_steps_[0] = global_steps_[1] = 0;
+      break;
+  }
+}
+
+void EbbMotionExecutor::begin_accumulated(const EbbMove& move) {
+  enabled_[0] = enabled_[1] = true;  // motion commands enable both drivers, as the EBB does
+  for (int axis = 0; axis < 2; ++axis) {
+    if ((move.clear >> axis) & 1) accumulator_[axis] = 0;
+    rate_[axis] = move.rate[axis] - move.accel[axis] / 2;
+    steps_left_[axis] = move.steps[axis];
+    const bool can_step = move.rate[axis] != 0 || move.accel[axis] != 0;
+    axis_active_[axis] = can_step && (move.kind == EbbMove::Kind::kTime || steps_left_[axis] > 0);
+  }
+  busy_ = move.kind == EbbMove::Kind::kTime ? ticks_left_ > 0 : (axis_active_[0] || axis_active_[1]);
+}
+
+bool EbbMotionExecutor::tick() {
+  slew_servo();
+  if (!busy_) return false;
+  switch (move_.kind) {
+    case EbbMove::Kind::kSteps:
+    case EbbMove::Kind::kHome:
+      for (int axis = 0; axis < 2; ++axis) {
+        if (axis_active_[axis]) step_axis(axis);
+      }
+      busy_ = axis_active_[0] || axis_active_[1];
+      break;
+    case EbbMove::Kind::kTime:
+      for (int axis = 0; axis < 2; ++axis) {
+        if (axis_active_[axis]) step_axis(axis);
+      }
+      busy_ = --ticks_left_ > 0;
+      break;
+    default:
+      busy_ = --ticks_left_ > 0;
+      break;
+  }
+  return busy_;
+}
+
+void EbbMotionExecutor::step_axis(int axis) {
+  int64_t rate = rate_[axis] + move_.accel[axis];
+  if (rate < 0) rate += kStepThreshold;  // the EBB rolls a negative rate over
+  rate_[axis] = rate;
+  accumulator_[axis] += rate;
+  if (accumulator_[axis] >= kStepThreshold) {
+    accumulator_[axis] -= kStepThreshold;
+    const int direction = move_.direction[axis];
+    global_steps_[axis] += direction;
+    position_16_[axis] += direction * sixteenths_per_step();
+    if (move_.kind != EbbMove::Kind::kTime && --steps_left_[axis] == 0) axis_active_[axis] = false;
+  }
+  // A step-limited axis whose rate and acceleration are both zero can never finish: drop it
+  // rather than hang the FIFO (a real EBB would wait for ever; ES would be the only way out).
+  if (move_.kind != EbbMove::Kind::kTime && rate_[axis] == 0 && move_.accel[axis] == 0) axis_active_[axis] = false;
+}
+
+void EbbMotionExecutor::slew_servo() {
+  if (servo_position_ == servo_target_) return;
+  if (servo_rate_per_tick_ <= 0.0) {
+    servo_position_ = servo_target_;
+    return;
+  }
+  const double gap = servo_target_ - servo_position_;
+  if (gap > servo_rate_per_tick_) {
+    servo_position_ += servo_rate_per_tick_;
+  } else if (gap < -servo_rate_per_tick_) {
+    servo_position_ -= servo_rate_per_tick_;
+  } else {
+    servo_position_ = servo_target_;
+  }
+}
+
+void EbbMotionExecutor::servo_now(uint16_t target, uint16_t rate, bool pen_up) {
+  servo_target_ = target;
+  servo_rate_per_tick_ = rate / kTicksPerServoPeriod;
+  if (rate == 0) servo_position_ = servo_target_;
+  pen_up_ = pen_up;
+}
+
+bool EbbMotionExecutor::stop() {
+  const bool was_busy = busy_;
+  busy_ = false;
+  axis_active_[0] = axis_active_[1] = false;
+  return was_busy;
+}
+
+}  // namespace stepdance::ebb

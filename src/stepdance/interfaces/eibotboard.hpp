@@ -1,0 +1,181 @@
+// Eibotboard: an EiBotBoard (AxiDraw controller) that plotter software drives over USB serial.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "stepdance/core/arduino_stream_adapter.hpp"
+#include "stepdance/core/block.hpp"
+#include "stepdance/core/block_port.hpp"
+#include "stepdance/core/byte_stream.hpp"
+#include "stepdance/core/spsc_queue.hpp"
+#include "stepdance/core/status.hpp"
+#include "stepdance/interfaces/ebb/ebb_motion.hpp"
+#include "stepdance/interfaces/ebb/ebb_parameters.hpp"
+#include "stepdance/interfaces/text_writer.hpp"
+
+namespace stepdance {
+
+/// How the EBB's two motors make X and Y.
+enum EbbKinematics : uint8_t {
+  EBB_KINEMATICS_COREXY = 0,  ///< AxiDraw: motor1 = x + y, motor2 = x − y (default)
+  EBB_KINEMATICS_XY = 1,      ///< motor1 = x, motor2 = y
+};
+
+/// Speaks the EiBotBoard (EBB) command set so the AxiDraw software (Inkscape extension, Python
+/// API), saxi and other plotter programs drive a Stepdance machine, while live inputs mix in.
+///
+/// Motion commands (SM, XM, LM, LT, HM, EM, SP, S2, TP) go through a FIFO to the frame, which
+/// executes them tick for tick as an EBB does (the 40 µs accumulator algorithm, not re-planned);
+/// queries and settings act at once. While the FIFO is full the next motion command waits and
+/// nothing more is read (USB flow control), so no command is ever dropped. Both reply syntaxes
+/// (legacy and CU,10,1 "future") and the EBB's error replies are exact. See docs/axidraw.md.
+///
+/// Outputs: x and y in mm from the motors' positions through the chosen kinematics and steps/mm
+/// (80 steps/mm at 1/16 microstepping by default, scaled by the EM mode), z the pen servo as
+/// pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs) times the z ratio.
+/// Context: the loop (dance_loop serves the link); run() is the frame.
+class Eibotboard : public Block {
+ public:
+  /// Motion FIFO capacity (QU,2); the EBB starts with a depth of 1 (CU,4 changes it).
+  static constexpr uint32_t kFifoCapacity = 64;
+  /// Longest command accepted, bytes (without the line ending).
+  static constexpr size_t kMaxLineBytes = 255;
+  /// The version reply: ≥ 2.5.3 makes clients use LM, ≥ 2.6.0 SR (see set_version_string()).
+  static constexpr const char* kDefaultVersion = "EBBv13_and_above EB Firmware Version 2.8.1";
+
+  Eibotboard();
+
+  /// Starts on the board's console (USB Serial). kFull if a registry is full. Context: loop.
+  Status begin();
+  /// Starts on a port (`&Serial`, `&SerialUSB1`, any Arduino Stream). Context: loop.
+  template <class Port>
+  Status begin(Port* port) {
+    return port == nullptr ? Status::kBadArgument : begin_stream(adapter_.attach(port));
+  }
+
+  /// mm per motor step at 1/16 microstepping, as output_units_mm per input_units_steps
+  /// (default 25.4 mm per 2032 steps = 80 steps/mm; the original library used 2874). Context: loop.
+  void set_ratio_xy(float output_units_mm, float input_units_steps);
+  /// Output units of z per servo step (µs of pulse width); default 1 per 50 (the original's).
+  void set_ratio_z(float output_units_mm, float input_units_steps);
+  /// How motor positions become X and Y (default CoreXY). Context: loop, while idle.
+  void set_kinematics(EbbKinematics kinematics) { kinematics_ = kinematics; }
+  /// The V reply (without line ending); e.g. "... Firmware Version 2.5.2" makes saxi use XM.
+  /// The text must outlive the block. Context: loop.
+  void set_version_string(const char* version) { version_ = version; }
+
+  BlockPort output_x;
+  BlockPort output_y;
+  BlockPort output_z;
+  BlockPort output_e;
+  BlockPort output_r;
+  BlockPort output_t;
+  /// Fraction of the current move done (0 → 1).
+  BlockPort output_parameter;
+  /// Duration of the current move, seconds.
+  BlockPort output_duration;
+
+  /// Commands refused with an error reply since begin. Context: any.
+  uint32_t errors_replied() const { return errors_replied_; }
+  /// Replies that found no room (should stay 0: a line is taken only when its reply fits).
+  uint32_t replies_dropped() const { return replies_dropped_; }
+
+  /// Serves the link: reads commands while the FIFO has room, replies. Context: loop.
+  void loop() override;
+  /// One tick of EBB motion; sets and pushes the outputs. Context: frame ISR.
+  void run() override;
+
+ private:
+  enum class Control : uint8_t { kStop, kStopDisable, kClearSteps, kReset, kPenUpNow };
+  static constexpr size_t kReplyBufferBytes = 512;
+  static constexpr size_t kLargestReplyBytes = 160;
+
+  Status begin_stream(ByteStream& stream);
+  // Link (eibotboard.cpp)
+  void read_lines();
+  bool take_byte(uint8_t byte);
+  void execute_line();
+  void flush_replies();
+  // Commands (eibotboard_commands.cpp)
+  bool dispatch(const char* name, ebb::EbbParameters& parameters);
+  bool queue(const ebb::EbbMove& move);
+  bool command_sm(ebb::EbbParameters& p, bool mixed);
+  void servo_now(uint16_t target, uint16_t rate);
+  bool command_lm(ebb::EbbParameters& p, bool timed);
+  bool command_hm(ebb::EbbParameters& p);
+  bool command_em(ebb::EbbParameters& p);
+  bool command_sp(ebb::EbbParameters& p);
+  bool command_s2(ebb::EbbParameters& p);
+  bool command_tp(ebb::EbbParameters& p);
+  bool command_sc(ebb::EbbParameters& p);
+  bool command_cu(ebb::EbbParameters& p);
+  bool command_qu(ebb::EbbParameters& p);
+  void command_es(ebb::EbbParameters& p);
+  void query_motion();
+  ebb::EbbMove servo_move(bool up, uint32_t delay_ms) const;
+  // Replies (eibotboard_replies.cpp)
+  void reply_ok();
+  void reply_data(const char* data, bool ok_after, const char* legacy_ending = "\r\n");
+  void reply_error(ebb::EbbError error, const char* name, char offending = ' ');
+  bool reply_parameter_error(const ebb::EbbParameters& parameters);
+  void send(const char* text);
+  size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
+  // Frame (eibotboard.cpp)
+  void apply_controls();
+  void load_next_move();
+  void update_outputs();
+  double move_duration_s(const ebb::EbbMove& move) const;
+
+  ByteStream* stream_ = nullptr;
+  ArduinoStreamAdapter adapter_;
+  // loop side
+  char line_[kMaxLineBytes + 1] = {};
+  size_t line_length_ = 0;
+  bool line_overrun_ = false;
+  bool line_ready_ = false;      // a complete line waits (its motion command found the FIFO full)
+  bool last_was_terminator_ = false;
+  char command_name_[3] = {};
+  bool future_syntax_ = false;
+  bool ack_enabled_ = true;
+  uint32_t fifo_depth_ = 1;
+  uint16_t servo_up_ = 20000;    // SC,4 (1/12 µs): 1.667 ms, pen up on an AxiDraw-style lift
+  uint16_t servo_down_ = 16000;  // SC,5: 1.333 ms
+  uint16_t servo_rate_up_ = 0;   // SC,11 / SC,10 (1/12 µs per 24 ms; 0 = at once)
+  uint16_t servo_rate_down_ = 0; // SC,12 / SC,10
+  bool pen_commanded_up_ = true;  // the pen state the last queued pen command asked for
+  bool button_pressed_ = false;
+  uint8_t variables_[32] = {};
+  char tag_[17] = {};
+  uint32_t servo_timeout_ms_ = 60000;
+  uint8_t microstep_mode_ = 1;   // as EM set it (loop copy, for QE)
+  bool motors_enabled_[2] = {};
+  const char* version_ = kDefaultVersion;
+  EbbKinematics kinematics_ = EBB_KINEMATICS_COREXY;
+  char replies_[kReplyBufferBytes] = {};
+  size_t reply_head_ = 0;
+  size_t reply_count_ = 0;
+  uint32_t replies_dropped_ = 0;
+  uint32_t errors_replied_ = 0;
+  // loop → frame
+  SpscQueue<ebb::EbbMove, kFifoCapacity> fifo_;
+  SpscQueue<Control, 8> controls_;
+  volatile uint32_t moves_queued_ = 0;    // loop: moves pushed
+  volatile uint32_t moves_started_ = 0;   // frame: moves taken from the FIFO
+  // frame side
+  ebb::EbbMotionExecutor executor_;
+  double mm_per_sixteenth_ = 25.4 / 2032.0;
+  double z_units_per_step_ = 1.0 / 50.0;
+  uint32_t move_ticks_done_ = 0;
+  double move_duration_s_ = 0.0;
+  volatile bool frame_busy_ = false;
+  volatile bool frame_motor_moving_[2] = {};
+  volatile int32_t frame_global_steps_[2] = {};
+  volatile bool frame_pen_up_ = true;
+  volatile uint16_t pen_now_target_ = 0;  // SP,2/3: written before kPenUpNow is queued
+  volatile uint16_t pen_now_rate_ = 0;
+  double last_output_[3] = {};  // x, y, z as last set, world units
+  DecimalPosition state_[8] = {};
+};
+
+}  // namespace stepdance
