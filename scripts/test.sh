@@ -7,6 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
+scripts/setup-npm-clients.sh
 scripts/check-core-portability.sh
 scripts/build-target.sh
 scripts/build-teensy.sh
