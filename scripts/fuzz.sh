@@ -25,6 +25,11 @@ build_target() {
 run_target() {
   local name=$1 runs=$2 work="$build/${name}_corpus"
   mkdir -p "$work"
+  # Inputs that once failed (fuzz/regressions/<target>/) must keep passing.
+  if compgen -G "fuzz/regressions/$name/*" >/dev/null; then
+    "$build/${name}_fuzz" fuzz/regressions/"$name"/* >"$build/${name}-regressions.log" 2>&1 ||
+      { cat "$build/${name}-regressions.log"; echo "fuzz: $name regression inputs FAILED"; return 1; }
+  fi
   # The checked-in seeds stay untouched; new inputs go to the build folder.
   local log="$build/${name}.log"
   if ! "$build/${name}_fuzz" -runs="$runs" -max_len=4096 -timeout=10 -print_final_stats=1 \

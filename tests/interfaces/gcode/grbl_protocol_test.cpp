@@ -140,6 +140,13 @@ TEST_F(GrblLink, RealtimeBytesPassAFullReceiveBufferAndNothingIsLost) {
   for (int i = 0; i < 9; ++i) EXPECT_DOUBLE_EQ(machine.motions[i].end_mm[kAxisX], 10.0 + i);
 }
 
+TEST_F(GrblLink, SettingNumbersBeyondTheTableAreRefusedWithoutConversion) {
+  // Found by fuzzing: a setting number too large for an integer was converted before the check.
+  EXPECT_EQ(exchange("$111111111111=2\n"), "error:3\r\n");
+  EXPECT_EQ(exchange("$-1=2\n"), "error:3\r\n");
+  EXPECT_EQ(exchange("$1.5=2\n"), "error:3\r\n");
+}
+
 TEST_F(GrblLink, StatusReportFieldsFollowTheSettings) {
   exchange("G10 L2 P1 X5\n");
   machine.position[kAxisX] = 12.5;

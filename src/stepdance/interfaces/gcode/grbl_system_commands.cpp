@@ -61,7 +61,10 @@ GrblError GrblProtocol::execute_setting_write(const char* text, size_t length) {
   double number = 0.0;
   double value = 0.0;
   const size_t number_length = static_cast<size_t>(equals_sign - text);
-  if (!parse_number(text, number_length, number) || number != static_cast<uint32_t>(number)) {
+  // A setting number is a whole number below 1000 (checked before any conversion: casting a
+  // larger double to an integer would be undefined behaviour).
+  if (!parse_number(text, number_length, number) || !(number >= 0.0 && number < 1000.0) ||
+      number != static_cast<double>(static_cast<uint32_t>(number))) {
     return GrblError::kInvalidDollarStatement;
   }
   if (!parse_number(equals_sign + 1, length - number_length - 1, value)) return GrblError::kBadNumberFormat;
