@@ -8,18 +8,27 @@ build=${STEPDANCE_FUZZ_DIR:-build-fuzz}
 mkdir -p "$build"
 
 # Portable-core folders (every .cpp in them) or files each target links besides its fuzz file.
+# "core" stands for the whole portable core and the manual board (hosts whole blocks).
 declare -A target_sources=(
   [gcode]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
   [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
+  [ebb]="core"
 )
 
 build_target() {
   local name=$1 sources=()
   for entry in ${target_sources[$name]}; do
-    if [ -d "$entry" ]; then sources+=("$entry"/*.cpp); else sources+=("$entry"); fi
+    if [ "$entry" = core ]; then
+      mapfile -t -O "${#sources[@]}" sources < <(find src/stepdance -name '*.cpp' -not -path '*/platform/*' | sort)
+      sources+=(host/hal_manual/hal_manual.cpp)
+    elif [ -d "$entry" ]; then
+      sources+=("$entry"/*.cpp)
+    else
+      sources+=("$entry")
+    fi
   done
   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-    -Isrc "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
+    -Isrc -Ihost/hal_manual "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
 }
 
 run_target() {
