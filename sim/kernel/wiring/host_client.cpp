@@ -66,6 +66,7 @@ void HostClient::on_tick(void* context, SimTime time) { static_cast<HostClient*>
 void HostClient::receive(const uint8_t* data, size_t length) {
   for (size_t i = 0; i < length; ++i) {
     const char c = static_cast<char>(data[i]);
+    if (c == '\r' && partial_line_.empty()) continue;  // the EBB ends some lines "\n\r"
     if (c != '\n') {
       partial_line_ += c;
       continue;

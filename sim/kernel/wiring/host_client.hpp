@@ -15,7 +15,7 @@ namespace stepdance::sim {
 /// Runs a [[host]] client's steps against one board, deterministically in simulated time.
 ///
 /// The client looks at the link once per simulated millisecond (a USB full-speed frame): it takes
-/// the lines the board printed since (split at '\n', a trailing '\r' dropped), then advances its
+/// the lines the board printed since (split at '\n', a '\r' at either end dropped), then advances its
 /// steps as far as they can go. A line matches a pattern when the regex finds a match anywhere in
 /// it (anchor with ^…$ for whole lines). Steps:
 ///   send   — writes bytes at once;

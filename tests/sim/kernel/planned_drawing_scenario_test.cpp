@@ -12,15 +12,6 @@ PenPoint pen_at(Simulation& simulation, double seconds) {
   return simulation.machine()->pen_position();
 }
 
-TEST(PlannedDrawingScenario, EveryExpectationOfBothScenariosHolds) {
-  for (const char* file : {"examples/PlannedDrawing/scenario.toml", "examples/PlannedDrawing/pause.toml"}) {
-    auto simulation = create(load(source_path(file)), "planned_drawing", false);
-    const SimulationReport report = simulation->finish();
-    ASSERT_EQ(report.expectations.size(), 4u) << file;
-    for (const ExpectationResult& result : report.expectations) EXPECT_TRUE(result.met) << result.message;
-  }
-}
-
 TEST(PlannedDrawingScenario, TheFeedKnobPausesThePenOnThePathAndResumes) {
   auto simulation = create(load(source_path("examples/PlannedDrawing/pause.toml")), "planned_drawing_pause", false);
   // Override 0 from t = 3 s: stopping from 60 mm/s at 1500 mm/s² takes 40 ms.
