@@ -19,6 +19,7 @@
 #include "stepdance/motion/time_based_interpolator.hpp"
 #include "stepdance/interfaces/gcode_interface.hpp"
 #include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/rpc.hpp"
 #include "stepdance/protocol/signals.hpp"
 
 #include "stepdance/sketch_board.hpp"
@@ -47,6 +48,7 @@ using stepdance::KinematicsCoreXY;
 using stepdance::OutputPort;
 using stepdance::Plugin;
 using stepdance::PositionGenerator;
+using stepdance::RPC;
 using stepdance::TimeBasedInterpolator;
 using stepdance::disable_drivers;
 using stepdance::enable_drivers;

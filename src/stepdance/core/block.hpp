@@ -7,6 +7,7 @@
 namespace stepdance {
 
 class BlockPort;
+class RPC;
 
 /// A unit of work the engine runs in one context. Blocks register themselves in begin() and
 /// run in registration order within their stage. Destroying a block unregisters it.
@@ -33,6 +34,13 @@ class Block {
   /// re-derived from downstream, in the port's world units, without changing anything.
   /// Default: the port's own absolute value. Context: any.
   virtual double read_deep(BlockPort& port) { return absolute_value(port); }
+
+  /// Enrolls this block's remotely callable names under "<instance_name>." (rpc.enroll(name,
+  /// block) calls it). Default: nothing. Context: loop (setup).
+  virtual void enroll(RPC* rpc, const char* instance_name) {
+    (void)rpc;
+    (void)instance_name;
+  }
 
   /// Runs one frame (frame stages) or one tick (kilohertz). Called by the engine only.
   virtual void run() {}

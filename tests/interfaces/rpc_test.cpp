@@ -1,0 +1,160 @@
+// RPC as a host sees it: the original's reply format, ids, every error, parameters, blocks, index.
+#include "stepdance/interfaces/rpc.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "hal_manual.hpp"
+#include "stepdance/core/dance.hpp"
+#include "stepdance/core/fault.hpp"
+#include "stepdance/motion/time_based_interpolator.hpp"
+#include "support/engine_fixture.hpp"
+#include "support/fake_byte_stream.hpp"
+
+namespace stepdance {
+namespace {
+
+int hellos = 0;
+void hello() { ++hellos; }
+double add(double a, double b) { return a + b; }
+int8_t small(int8_t value) { return value; }
+bool is_positive(float value) { return value > 0; }
+const char* echo(const char* text) { return text; }
+int sum6(int a, int b, int c, int d, int e, int f) { return a + b + c + d + e + f; }
+
+class RpcTest : public test_support::EngineFixture {
+ protected:
+  void SetUp() override {
+    EngineFixture::SetUp();
+    hellos = 0;
+    ASSERT_EQ(rpc.begin(&host), Status::kOk);
+    rpc.enroll("hello", hello);
+    rpc.enroll("add", add);
+    rpc.enroll("small", small);
+    rpc.enroll("is_positive", is_positive);
+    rpc.enroll("echo", echo);
+    rpc.enroll("sum6", sum6);
+    rpc.enroll("gain", gain);
+    rpc.enroll("count", count);
+    rpc.enroll("armed", armed);
+    ASSERT_EQ(tbi.begin(), Status::kOk);
+    rpc.enroll("tbi", tbi);
+    ASSERT_EQ(dance_start(), Status::kOk);
+  }
+  std::string call(const std::string& line) {
+    host.take();
+    host.send(line + "\n");
+    dance_loop();
+    return host.take();
+  }
+
+  test_support::FakeByteStream host;
+  RPC rpc;
+  double gain = 1.5;
+  int count = 7;
+  bool armed = false;
+  TimeBasedInterpolator tbi;
+};
+
+TEST_F(RpcTest, RepliesInTheOriginalFormatWithOptionalIds) {
+  EXPECT_EQ(call(R"({"name": "hello"})"), "{\"result\":\"ok\"}\r\n");
+  EXPECT_EQ(hellos, 1);
+  EXPECT_EQ(call(R"({"name":"add","args":[2, 0.5]})"), "{\"result\":\"ok\",\"return\":2.5}\r\n");
+  EXPECT_EQ(call(R"({"name":"add","args":[2,3],"id":17})"), "{\"result\":\"ok\",\"return\":5,\"id\":17}\r\n");
+  EXPECT_EQ(call(R"({"id":"a\"b","name":"hello","args":[]})"), "{\"result\":\"ok\",\"id\":\"a\\\"b\"}\r\n");
+  EXPECT_EQ(call(R"({"name":"is_positive","args":[-1]})"), "{\"result\":\"ok\",\"return\":false}\r\n");
+  EXPECT_EQ(call(R"({"name":"echo","args":["pen \"up\""]})"), "{\"result\":\"ok\",\"return\":\"pen \\\"up\\\"\"}\r\n");
+  EXPECT_EQ(call(R"({"name":"sum6","args":[1,2,3,4,5,6]})"), "{\"result\":\"ok\",\"return\":21}\r\n");
+  EXPECT_EQ(call(""), "");  // blank lines are ignored
+}
+
+TEST_F(RpcTest, ParametersReadWithNoArgumentAndWriteWithOne) {
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":1.5}\r\n");
+  EXPECT_EQ(call(R"({"name":"gain","args":[-2.25]})"), "{\"result\":\"ok\"}\r\n");
+  EXPECT_EQ(gain, -2.25);
+  EXPECT_EQ(call(R"({"name":"count","args":[42]})"), "{\"result\":\"ok\"}\r\n");
+  EXPECT_EQ(count, 42);
+  EXPECT_EQ(call(R"({"name":"armed","args":[true]})"), "{\"result\":\"ok\"}\r\n");
+  EXPECT_TRUE(armed);
+  EXPECT_EQ(call(R"({"name":"count"})"), "{\"result\":\"ok\",\"return\":42}\r\n");
+}
+
+TEST_F(RpcTest, EveryErrorIsAJsonReplyWithACodeAndChangesNothing) {
+  auto error = [](int code, const std::string& message, const std::string& id = "") {
+    return "{\"result\":\"error\",\"error\":\"" + message + "\",\"code\":" + std::to_string(code) +
+           (id.empty() ? "" : ",\"id\":" + id) + "}\r\n";
+  };
+  EXPECT_EQ(call("{\"name\": \"hello\""), error(1, "malformed JSON request"));
+  EXPECT_EQ(call("not json at all"), error(1, "malformed JSON request"));
+  EXPECT_EQ(call(R"({"args":[1]})"), error(2, "request has no \\\"name\\\" string"));
+  EXPECT_EQ(call(R"({"name":"add","args":[[1],2]})"),
+            error(3, "too many arguments, or an argument that is not a number, string, boolean or null"));
+  EXPECT_EQ(call(R"({"name":"nothing","id":5})"), error(10, "Unknown Function or Parameter", "5"));
+  EXPECT_EQ(call(R"({"name":"add","args":[1]})"), error(11, "wrong number of arguments"));
+  EXPECT_EQ(call(R"({"name":"add","args":[1,"two"]})"), error(12, "wrong argument type"));
+  EXPECT_EQ(call(R"({"name":"small","args":[300]})"), error(13, "argument out of range"));
+  EXPECT_EQ(call(R"({"name":"count","args":[1e20]})"), error(13, "argument out of range"));
+  EXPECT_EQ(call(R"({"name":"count","args":[1,2]})"), error(11, "a parameter takes no argument (read) or one (write)"));
+  EXPECT_EQ(call("{\"name\":\"hello\",\"args\":[\"" + std::string(600, 'x') + "\"]}"), error(14, "line too long"));
+  EXPECT_EQ(count, 7);
+  EXPECT_EQ(hellos, 0);
+  EXPECT_EQ(call(R"({"name":"hello"})"), "{\"result\":\"ok\"}\r\n");  // and all is well after
+}
+
+TEST_F(RpcTest, IndexListsExactlyTheEnrolledNames) {
+  const std::string index = call(R"({"name":"__index__","id":1})");
+  ASSERT_EQ(index.substr(0, 25), "{\"result\":\"ok\",\"return\":{");
+  EXPECT_EQ(index.substr(index.size() - 11), "},\"id\":1}\r\n");
+  for (const char* name : {"\"hello\":\"function\"", "\"gain\":\"parameter\"", "\"tbi.add_move\":\"function\"",
+                           "\"tbi.speed_override\":\"parameter\"", "\"tbi.output_x.read\":\"function\""}) {
+    EXPECT_NE(index.find(name), std::string::npos) << name;
+  }
+  size_t entries = 0;
+  for (size_t at = index.find("\":\""); at != std::string::npos; at = index.find("\":\"", at + 1)) ++entries;
+  EXPECT_EQ(entries, rpc.enrolled() + 1);  // each name once, plus "result":"ok"
+}
+
+TEST_F(RpcTest, BlocksAreCallableByTheirDottedNames) {
+  EXPECT_EQ(call(R"({"name":"tbi.add_move","args":[1, 50, 10, 0, 0, 0, 0, 0]})"),
+            "{\"result\":\"ok\",\"return\":127}\r\n");  // the planner's slots left
+  EXPECT_EQ(call(R"({"name":"tbi.is_idle"})"), "{\"result\":\"ok\",\"return\":false}\r\n");
+  for (int i = 0; i < 25000; ++i) {
+    dance_loop();
+    hal_manual::run_frames(1);
+  }
+  EXPECT_EQ(call(R"({"name":"tbi.output_x.read"})"), "{\"result\":\"ok\",\"return\":10}\r\n");
+  EXPECT_EQ(call(R"({"name":"tbi.speed_override","args":[0.5]})"), "{\"result\":\"ok\"}\r\n");
+  EXPECT_EQ(static_cast<float>(tbi.speed_overide), 0.5f);
+}
+
+TEST_F(RpcTest, NumbersComeBackWithNineSignificantDigits) {
+  gain = 0.1;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":0.1}\r\n");
+  gain = -1234.5678;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":-1234.5678}\r\n");
+  gain = 0.000012345;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":1.2345e-5}\r\n");
+  gain = 2.5e20;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":2.5e20}\r\n");
+  gain = 1.0 / 3.0;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":0.333333333}\r\n");
+}
+
+TEST(RpcRegistry, OverflowIsRefusedCountedAndReported) {
+  test_support::reset_global_state();
+  RPC rpc;
+  static double value = 0;
+  char name[16];
+  for (size_t i = 0; i < RPC::kMaxEntries + 3; ++i) {
+    snprintf(name, sizeof name, "v%zu", i);
+    rpc.enroll(static_cast<const char*>(name), value);
+  }
+  EXPECT_EQ(rpc.enrolled(), RPC::kMaxEntries);
+  EXPECT_EQ(rpc.enroll_failures(), 3u);
+  EXPECT_EQ(warning_count(), 3u);
+  test_support::reset_global_state();
+}
+
+}  // namespace
+}  // namespace stepdance
