@@ -13,6 +13,7 @@ declare -A target_sources=(
   [gcode]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
   [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
   [ebb]="core"
+  [rpc]="core"
 )
 
 build_target() {
