@@ -1,0 +1,32 @@
+// AngleSource: the advancing angle behind the circle and wave generators (time or an input).
+#pragma once
+
+#include <math.h>
+
+#include "stepdance/core/block_port.hpp"
+#include "stepdance/core/units.hpp"
+
+namespace stepdance {
+
+/// An angle that advances by rate × 40 µs per frame (no input) or by rate × the input's change
+/// (rad per input unit), kept in [0, 2π) so it never loses precision however long it runs.
+/// Context: frame ISR (owned by one block).
+class AngleSource {
+ public:
+  /// Advances and returns the new angle, radians. `input` has been pulled and updated.
+  double advance(double rate, bool use_input, const BlockPort& input) {
+    const double step = use_input ? rate * input.read(INCREMENTAL) : rate * kFramePeriodS;
+    theta_ = fmod(theta_ + step, kTwoPi);
+    if (theta_ < 0.0) theta_ += kTwoPi;
+    return theta_;
+  }
+  double angle() const { return theta_; }
+  void reset() { theta_ = 0.0; }
+
+  static constexpr double kTwoPi = 6.283185307179586476925;
+
+ private:
+  double theta_ = 0.0;
+};
+
+}  // namespace stepdance

@@ -1,0 +1,31 @@
+// CircleGenerator: increments from the closed-form circle.
+#include "stepdance/motion/circle_generator.hpp"
+
+#include <math.h>
+
+namespace stepdance {
+
+Status CircleGenerator::begin() {
+  input_state_ = x_ = y_ = 0;
+  angle_.reset();
+  input.begin(&input_state_, BLOCKPORT_INPUT, this);
+  output_x.begin(&x_, BLOCKPORT_OUTPUT, this);
+  output_y.begin(&y_, BLOCKPORT_OUTPUT, this);
+  return register_in(Stage::kPreChannel);
+}
+
+void CircleGenerator::run() {
+  input.pull();
+  input.update();
+  const double before = angle_.angle();
+  const double after = angle_.advance(rotational_speed_rev_per_sec, !no_input_, input);
+  const double r = radius;
+  const double dx = r * (sin(after) - sin(before));
+  const double dy = r * (cos(before) - cos(after));
+  output_x.set(output_x.convert_world_to_block_units(dx), INCREMENTAL);
+  output_y.set(output_y.convert_world_to_block_units(dy), INCREMENTAL);
+  output_x.push();
+  output_y.push();
+}
+
+}  // namespace stepdance

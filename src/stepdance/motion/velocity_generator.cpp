@@ -1,0 +1,18 @@
+// VelocityGenerator: one increment per frame.
+#include "stepdance/motion/velocity_generator.hpp"
+
+namespace stepdance {
+
+Status VelocityGenerator::begin() {
+  position_ = 0;
+  output.begin(&position_, BLOCKPORT_OUTPUT, this);
+  return register_in(Stage::kPreChannel);
+}
+
+void VelocityGenerator::run() {
+  const double step_world = static_cast<double>(speed_units_per_sec) * kFramePeriodS;
+  output.set(output.convert_world_to_block_units(step_world), INCREMENTAL);
+  output.push();
+}
+
+}  // namespace stepdance

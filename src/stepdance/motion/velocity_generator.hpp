@@ -1,0 +1,28 @@
+// VelocityGenerator: an output that moves at a set speed, forever.
+#pragma once
+
+#include "stepdance/core/block.hpp"
+#include "stepdance/core/block_port.hpp"
+#include "stepdance/core/status.hpp"
+#include "stepdance/core/units.hpp"
+
+namespace stepdance {
+
+/// Adds speed_units_per_sec × 40 µs to `output` every frame (world units of the output's ratio).
+/// A knob mapped to speed_units_per_sec makes a jog wheel that keeps going.
+class VelocityGenerator : public Block {
+ public:
+  /// Begins the output and registers in the pre-channel stage. kFull if full. Context: loop.
+  Status begin();
+  /// One frame: output += speed × 40 µs, pushed. Context: frame ISR.
+  void run() override;
+
+  BlockPort output;
+  /// Speed, output world units per second. Context: any.
+  ControlParameter speed_units_per_sec = 0;
+
+ private:
+  DecimalPosition position_ = 0;
+};
+
+}  // namespace stepdance

@@ -1,0 +1,28 @@
+// WaveGenerator1D: increments from the closed-form wave.
+#include "stepdance/motion/wave_generator_1d.hpp"
+
+#include <math.h>
+
+namespace stepdance {
+
+Status WaveGenerator1D::begin() {
+  input_state_ = output_state_ = 0;
+  angle_.reset();
+  input.begin(&input_state_, BLOCKPORT_INPUT, this);
+  output.begin(&output_state_, BLOCKPORT_OUTPUT, this);
+  return register_in(Stage::kPreChannel);
+}
+
+void WaveGenerator1D::run() {
+  input.pull();
+  input.update();
+  const double before = angle_.angle();
+  // The angle source wraps into [0, 2π); the sines do not care.
+  const double after = angle_.advance(frequency, !no_input_, input);
+  const double phi = phase;
+  const double change = static_cast<double>(amplitude) * (sin(after + phi) - sin(before + phi));
+  output.set(output.convert_world_to_block_units(change), INCREMENTAL);
+  output.push();
+}
+
+}  // namespace stepdance

@@ -1,0 +1,223 @@
+// Generators, filters and polar kinematics against closed-form geometry.
+#include <gtest/gtest.h>
+
+#include <math.h>
+
+#include "hal_manual.hpp"
+#include "stepdance/core/dance.hpp"
+#include "stepdance/motion/circle_generator.hpp"
+#include "stepdance/motion/kinematics_polar_to_cartesian.hpp"
+#include "stepdance/motion/path_length_generator.hpp"
+#include "stepdance/motion/position_generator.hpp"
+#include "stepdance/motion/scaling_filter.hpp"
+#include "stepdance/motion/threshold_generator.hpp"
+#include "stepdance/motion/vector_2d_to_angle.hpp"
+#include "stepdance/motion/velocity_generator.hpp"
+#include "stepdance/motion/wave_generator_1d.hpp"
+#include "stepdance/motion/wave_generator_2d.hpp"
+#include "support/engine_fixture.hpp"
+
+namespace stepdance {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDt = 40e-6;
+constexpr double kStepMm = 1.0 / 80.0;  // one motor step on an 80 steps/mm belt
+
+class GeneratorsTest : public test_support::EngineFixture {};
+
+TEST_F(GeneratorsTest, CircleClosesWithinOneStepAfterTenThousandTurns) {
+  CircleGenerator circle;
+  ASSERT_EQ(circle.begin(), Status::kOk);
+  circle.setNoInput();
+  circle.radius = 10.0f;
+  circle.rotational_speed_rev_per_sec = static_cast<float>(2 * kPi * 100);  // rad/s: 100 turns/s
+  ASSERT_EQ(dance_start(), Status::kOk);
+  // Check the shape on the way (closed form: x = r sin θ, y = r(1 − cos θ), θ from the float rate).
+  const double rate = static_cast<double>(circle.rotational_speed_rev_per_sec);
+  hal_manual::run_frames(37);
+  EXPECT_NEAR(circle.output_x.read_absolute(), 10 * sin(rate * 37 * kDt), 1e-9);
+  EXPECT_NEAR(circle.output_y.read_absolute(), 10 * (1 - cos(rate * 37 * kDt)), 1e-9);
+  // 10,000 turns: the frame count whose angle is closest to a whole number of turns.
+  const double frames_per_turn = 2 * kPi / (rate * kDt);
+  const uint32_t frames = static_cast<uint32_t>(llround(10000 * frames_per_turn)) - 37;
+  hal_manual::run_frames(frames);
+  const double theta = rate * (frames + 37) * kDt;
+  EXPECT_NEAR(circle.output_x.read_absolute(), 10 * sin(theta), 1e-6);
+  EXPECT_NEAR(circle.output_y.read_absolute(), 10 * (1 - cos(theta)), 1e-6);
+  EXPECT_LT(hypot(circle.output_x.read_absolute(), circle.output_y.read_absolute()),
+            kStepMm + 10 * fabs(remainder(theta, 2 * kPi)));  // back at the start, to a step
+}
+
+TEST_F(GeneratorsTest, CircleWhoseRadiusChangesMovesContinuously) {
+  CircleGenerator circle;
+  ASSERT_EQ(circle.begin(), Status::kOk);
+  circle.setNoInput();
+  circle.radius = 5.0f;
+  circle.rotational_speed_rev_per_sec = 10.0f;  // rad/s
+  ASSERT_EQ(dance_start(), Status::kOk);
+  double last_x = 0, last_y = 0, largest_step = 0;
+  for (int frame = 0; frame < 50000; ++frame) {
+    if (frame == 20000) circle.radius = 25.0f;  // a sudden change of radius
+    hal_manual::run_frames(1);
+    const double x = circle.output_x.read_absolute(), y = circle.output_y.read_absolute();
+    largest_step = fmax(largest_step, hypot(x - last_x, y - last_y));
+    last_x = x;
+    last_y = y;
+  }
+  // No jump: never more than the arc of the larger circle in one frame, r·ω·dt.
+  EXPECT_LE(largest_step, 25.0 * 10.0 * kDt * 1.0001);
+}
+
+TEST_F(GeneratorsTest, WaveWithPhaseFollowsTheShiftedSineFromWhereItStarted) {
+  WaveGenerator1D wave;
+  ASSERT_EQ(wave.begin(), Status::kOk);
+  wave.setNoInput();
+  wave.amplitude = 3.0f;
+  wave.phase = 0.7f;
+  wave.frequency = 50.0f;  // rad/s
+  ASSERT_EQ(dance_start(), Status::kOk);
+  const double a = 3.0, phi = static_cast<double>(wave.phase), w = static_cast<double>(wave.frequency);
+  for (int frame = 1; frame <= 20000; ++frame) {
+    hal_manual::run_frames(1);
+    if (frame % 997 != 0) continue;
+    const double theta = w * frame * kDt;
+    ASSERT_NEAR(wave.output.read_absolute(), a * sin(theta + phi) - a * sin(phi), 1e-9) << "frame " << frame;
+  }
+}
+
+TEST_F(GeneratorsTest, SpatialWaveTakesItsAngleFromTheInputsTravel) {
+  VelocityGenerator feed;
+  WaveGenerator1D wave;
+  ASSERT_EQ(feed.begin(), Status::kOk);
+  ASSERT_EQ(wave.begin(), Status::kOk);
+  feed.output.map(&wave.input);
+  feed.speed_units_per_sec = 10.0f;  // mm/s along the line
+  wave.amplitude = 1.0f;
+  wave.frequency = static_cast<float>(2 * kPi / 5.0);  // one period every 5 mm
+  ASSERT_EQ(dance_start(), Status::kOk);
+  hal_manual::run_frames(25000);  // 1 s: 10 mm, two whole periods
+  EXPECT_NEAR(wave.output.read_absolute(), 0.0, 1e-6);
+  hal_manual::run_frames(3125);  // 1.25 mm more: a quarter period
+  EXPECT_NEAR(wave.output.read_absolute(), 1.0, 1e-3);
+}
+
+TEST_F(GeneratorsTest, PathLengthOfAKnownPolylineTimesTheRatio) {
+  PositionGenerator x, y;
+  PathLengthGenerator2D extruder;
+  ASSERT_EQ(x.begin(), Status::kOk);
+  ASSERT_EQ(y.begin(), Status::kOk);
+  x.output.map(&extruder.input_1);
+  y.output.map(&extruder.input_2);
+  extruder.set_ratio(0.5);
+  ASSERT_EQ(extruder.begin(), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  // (0,0) → (30,0) → (30,40) → diagonal back to (0,0) at speeds in ratio 3:4: 30 + 40 + 50.
+  x.go(30, ABSOLUTE, 30);
+  hal_manual::run_frames(30000);
+  y.go(40, ABSOLUTE, 40);
+  hal_manual::run_frames(30000);
+  x.go(0, ABSOLUTE, 30);
+  y.go(0, ABSOLUTE, 40);
+  hal_manual::run_frames(30000);
+  EXPECT_NEAR(extruder.output.read_absolute(), 0.5 * (30 + 40 + 50), 1e-6);
+}
+
+TEST_F(GeneratorsTest, ThresholdCallbacksRunOncePerCrossingInTheLoop) {
+  static int uppers = 0, lowers = 0;
+  uppers = lowers = 0;
+  PositionGenerator source;
+  ThresholdGenerator limit;
+  ASSERT_EQ(source.begin(), Status::kOk);
+  ASSERT_EQ(limit.begin(), Status::kOk);
+  source.output.map(&limit.input);
+  limit.setUpperThreshold(5.0, true);
+  limit.setLowerThreshold(-5.0);
+  limit.setUpperCallback([] { ++uppers; });
+  limit.setLowerCallback([] { ++lowers; });
+  ASSERT_EQ(dance_start(), Status::kOk);
+  source.go(8, ABSOLUTE, 100);
+  hal_manual::run_frames(5000);  // crosses 5 once, stays beyond
+  EXPECT_EQ(uppers, 0);          // not from the frame
+  dance_loop();
+  EXPECT_EQ(uppers, 1);
+  EXPECT_DOUBLE_EQ(limit.output.read_absolute(), 5.0);  // clamped
+  source.go(-8, ABSOLUTE, 100);
+  hal_manual::run_frames(5000);
+  dance_loop();
+  dance_loop();
+  EXPECT_EQ(lowers, 1);
+  EXPECT_DOUBLE_EQ(limit.output.read_absolute(), -8.0);  // not clamped below
+  EXPECT_EQ(uppers, 1);
+}
+
+TEST_F(GeneratorsTest, ScalingFiltersInBothModes) {
+  PositionGenerator source;
+  ScalingFilter1D incremental, absolute;
+  ASSERT_EQ(source.begin(), Status::kOk);
+  ASSERT_EQ(incremental.begin(INCREMENTAL), Status::kOk);
+  ASSERT_EQ(absolute.begin(ABSOLUTE), Status::kOk);
+  source.output.map(&incremental.input);
+  incremental.output.map(&absolute.input);
+  incremental.set_ratio(3, 2);
+  absolute.set_ratio(-2);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  source.go(4, ABSOLUTE, 100);
+  hal_manual::run_frames(2000);
+  EXPECT_NEAR(incremental.output.read_absolute(), 6.0, 1e-9);
+  EXPECT_NEAR(absolute.output.read_absolute(), -12.0, 1e-9);
+}
+
+TEST_F(GeneratorsTest, DirectionOfTravelAndWholeHalfWavesPerMove) {
+  PositionGenerator x, y;
+  Vector2DToAngle direction;
+  MoveDurationToFrequency half_waves;
+  ASSERT_EQ(x.begin(), Status::kOk);
+  ASSERT_EQ(y.begin(), Status::kOk);
+  ASSERT_EQ(direction.begin(), Status::kOk);
+  ASSERT_EQ(half_waves.begin(), Status::kOk);
+  x.output.map(&direction.input_x);
+  y.output.map(&direction.input_y);
+  half_waves.target_frequency = 4.0f;
+  ASSERT_EQ(dance_start(), Status::kOk);
+  x.go(-10, ABSOLUTE, 30);
+  y.go(10, ABSOLUTE, 30);
+  hal_manual::run_frames(100);
+  EXPECT_NEAR(direction.output_theta.read_absolute(), 3 * kPi / 4, 1e-9);
+  hal_manual::run_frames(50000);  // stopped: the direction stays
+  EXPECT_NEAR(direction.output_theta.read_absolute(), 3 * kPi / 4, 1e-9);
+  half_waves.input_move_duration.reset(2.6);  // 2.6 s × 4 = 10.4 → 10 half-waves
+  hal_manual::run_frames(1);
+  EXPECT_EQ(half_waves.output_frequency.read_absolute(), 10.0);
+}
+
+TEST_F(GeneratorsTest, PerpendicularWaveAcrossTheDirectionOfTravel) {
+  WaveGenerator2D wave;
+  ASSERT_EQ(wave.begin(), Status::kOk);
+  wave.amplitude = 2.0f;
+  ASSERT_EQ(dance_start(), Status::kOk);
+  wave.input_frequency.reset(3.0);       // three half-waves per move
+  wave.input_theta.reset(kPi / 2);       // travelling along +y
+  wave.input_t.reset(1.0 / 6.0);         // θ = π·3·(1/6) = π/2: the crest
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(wave.output_x.read_absolute(), -2.0, 1e-9);  // offset along −x, across the travel
+  EXPECT_NEAR(wave.output_y.read_absolute(), 0.0, 1e-9);
+  wave.input_t.reset(1.0);               // the move's end: back on the line
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(wave.output_x.read_absolute(), 0.0, 1e-9);
+}
+
+TEST_F(GeneratorsTest, PolarToCartesianAndItsInverseForDeepReads) {
+  KinematicsPolarToCartesian polar;
+  ASSERT_EQ(polar.begin(50.0), Status::kOk);  // a lever of 50 mm
+  ASSERT_EQ(dance_start(), Status::kOk);
+  polar.input_angle.reset(kPi / 3);
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(polar.output_x.read_absolute(), 25.0, 1e-9);
+  EXPECT_NEAR(polar.output_y.read_absolute(), 25.0 * sqrt(3.0), 1e-9);
+  EXPECT_NEAR(polar.input_angle.read_deep(), kPi / 3, 1e-9);
+  EXPECT_NEAR(polar.input_radius.read_deep(), 50.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace stepdance
