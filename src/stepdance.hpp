@@ -17,6 +17,7 @@
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"
 #include "stepdance/motion/circle_generator.hpp"
+#include "stepdance/motion/kinematics_five_bar.hpp"
 #include "stepdance/motion/kinematics_polar_to_cartesian.hpp"
 #include "stepdance/motion/path_length_generator.hpp"
 #include "stepdance/motion/scaling_filter.hpp"
@@ -48,6 +49,8 @@ using stepdance::BlockPort;
 using stepdance::Button;
 using stepdance::Channel;
 using stepdance::CircleGenerator;
+using stepdance::KinematicsFiveBarForward;
+using stepdance::KinematicsFiveBarInverse;
 using stepdance::KinematicsLever;
 using stepdance::KinematicsPolarToCartesian;
 using stepdance::MoveDurationToFrequency;

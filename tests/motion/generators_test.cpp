@@ -5,7 +5,9 @@
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
+#include "stepdance/core/fault.hpp"
 #include "stepdance/motion/circle_generator.hpp"
+#include "stepdance/motion/kinematics_five_bar.hpp"
 #include "stepdance/motion/kinematics_polar_to_cartesian.hpp"
 #include "stepdance/motion/path_length_generator.hpp"
 #include "stepdance/motion/position_generator.hpp"
@@ -217,6 +219,88 @@ TEST_F(GeneratorsTest, PolarToCartesianAndItsInverseForDeepReads) {
   EXPECT_NEAR(polar.output_y.read_absolute(), 25.0 * sqrt(3.0), 1e-9);
   EXPECT_NEAR(polar.input_angle.read_deep(), kPi / 3, 1e-9);
   EXPECT_NEAR(polar.input_radius.read_deep(), 50.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace stepdance
+
+namespace stepdance {
+namespace {
+
+// The original pantograph example's linkage (mm, rad).
+const FiveBarGeometry kPantograph{60, 145.75, 134, 169, 178.3, 28.82, 2.9019};
+
+TEST(FiveBarGeometry, InverseThenForwardIsTheIdentityOverTheReachableWorkspace) {
+  int reachable = 0;
+  for (double a1 = -0.4; a1 <= 1.6; a1 += 0.05) {
+    for (double a2 = 1.5; a2 <= 3.5; a2 += 0.05) {
+      double x, y;
+      if (!kPantograph.forward(a1, a2, x, y)) continue;  // the links do not close here
+      double b1, b2;
+      ASSERT_TRUE(kPantograph.inverse(x, y, b1, b2)) << a1 << "," << a2;
+      double fx, fy;
+      ASSERT_TRUE(kPantograph.forward(b1, b2, fx, fy));
+      EXPECT_NEAR(fx, x, 1e-6);  // 1 µm
+      EXPECT_NEAR(fy, y, 1e-6);
+      ++reachable;
+    }
+  }
+  EXPECT_GT(reachable, 100);
+}
+
+TEST(FiveBarGeometry, ForwardAgreesWithTheLinkLengths) {
+  // Independent check: every link keeps its length in the pose forward() computes.
+  const double a1 = 0.6, a2 = 2.4;
+  double x, y;
+  ASSERT_TRUE(kPantograph.forward(a1, a2, x, y));
+  const double cx = 30 + 145.75 * cos(a1), cy = -145.75 * sin(a1);
+  const double dx = -30 + 134 * cos(a2), dy = -134 * sin(a2);
+  // E is 169 from C and 178.3 from D; T is 28.82 from E: search E on the C circle for |E − D| = 178.3.
+  double best = 1e9;
+  for (int i = 0; i < 3600000; ++i) {
+    const double phi = 2 * kPi * i / 3600000;
+    const double px = cx + 169 * cos(phi), py = cy + 169 * sin(phi);
+    const double miss = fabs(hypot(px - dx, py - dy) - 178.3);
+    const double tool = fabs(hypot(px - x, -py - y) - 28.82);  // tool y is mirrored
+    best = fmin(best, miss + tool);
+  }
+  EXPECT_LT(best, 1e-3);
+}
+
+class FiveBarBlocksTest : public test_support::EngineFixture {};
+
+TEST_F(FiveBarBlocksTest, UnreachablePosesHoldTheLastOutputAndAreCounted) {
+  KinematicsFiveBarForward arm;
+  ASSERT_EQ(arm.begin(60, 145.75, 134, 169, 178.3, 28.82, 2.9019), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  // The block keeps the original's float parameters.
+  const FiveBarGeometry as_floats{60.0f, 145.75f, 134.0f, 169.0f, 178.3f, 28.82f, 2.9019f};
+  arm.input_r.reset(0.6);
+  arm.input_l.reset(2.4);
+  hal_manual::run_frames(1);
+  const double x = arm.output_x.read_absolute(), y = arm.output_y.read_absolute();
+  double ex, ey;
+  ASSERT_TRUE(as_floats.forward(0.6, 2.4, ex, ey));
+  EXPECT_NEAR(x, ex, 1e-9);
+  EXPECT_NEAR(y, ey, 1e-9);
+  // A pose the links cannot close: the arm ends (C, D) closer than |L3 − L4| = 9.3 mm.
+  double far_r = 0, far_l = 0;
+  bool found = false;
+  for (double a1 = 0; a1 < 6.28 && !found; a1 += 0.01) {
+    for (double a2 = 0; a2 < 6.28 && !found; a2 += 0.01) {
+      const double cx = 30 + 145.75 * cos(a1), cy = -145.75 * sin(a1);
+      const double dx = -30 + 134 * cos(a2), dy = -134 * sin(a2);
+      if (hypot(cx - dx, cy - dy) < 5.0) far_r = a1, far_l = a2, found = true;
+    }
+  }
+  ASSERT_TRUE(found);
+  arm.input_r.reset(far_r);
+  arm.input_l.reset(far_l);
+  hal_manual::run_frames(3);
+  EXPECT_EQ(arm.unreachable_count(), 3u);
+  EXPECT_EQ(arm.output_x.read_absolute(), x);  // held, never NaN
+  EXPECT_EQ(arm.output_y.read_absolute(), y);
+  EXPECT_EQ(warning_count(), 3u);
 }
 
 }  // namespace
