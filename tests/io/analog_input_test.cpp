@@ -65,6 +65,23 @@ TEST_F(AnalogInputTest, FloorAboveCeilingGivesAFallingMapThatStillClamps) {
   EXPECT_FLOAT_EQ(read_at(input, 1023), -10.0f);  // −10.46 unclamped
 }
 
+TEST_F(AnalogInputTest, CalibrationFieldsMirrorTheMapSettings) {
+  AnalogInput knob;
+  knob.set_floor(-10, 100);
+  knob.set_ceiling(10, 900);  // 20 over 800 counts: slope 0.025, through (100, −10)
+  EXPECT_FLOAT_EQ(knob.conversion_slope_1, 0.025f);
+  EXPECT_FLOAT_EQ(knob.conversion_intercept_1, -12.5f);
+  EXPECT_FLOAT_EQ(knob.conversion_slope_2, 0.025f);
+  knob.set_deadband(0, 500, 20);  // band 490..510 holds 0
+  EXPECT_EQ(knob.adc_deadband_lower, 490);
+  EXPECT_EQ(knob.adc_deadband_upper, 510);
+  EXPECT_FLOAT_EQ(knob.conversion_slope_1, 10.0f / 390.0f);           // (100, −10) to (490, 0)
+  EXPECT_FLOAT_EQ(knob.conversion_slope_2, 10.0f / 390.0f);           // (510, 0) to (900, 10)
+  EXPECT_FLOAT_EQ(knob.conversion_intercept_2, -510.0f * 10.0f / 390.0f);
+  knob.clear_deadband();
+  EXPECT_EQ(knob.adc_deadband_upper, 0);
+}
+
 TEST_F(AnalogInputTest, DeadbandHoldsItsValueAndSplitsTheMapInTwo) {
   AnalogInput input;
   ASSERT_EQ(input.begin(kPin), Status::kOk);

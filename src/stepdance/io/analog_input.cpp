@@ -45,15 +45,43 @@ void AnalogInput::map(DecimalPosition* target) {
 }
 
 void AnalogInput::set_floor(double output_value, uint16_t adc_value) {
-  hal::CriticalSection guard;
-  floor_value_ = output_value;
-  adc_low_ = adc_value;
+  {
+    hal::CriticalSection guard;
+    floor_value_ = output_value;
+    adc_low_ = adc_value;
+  }
+  refresh_calibration_fields();
 }
 
 void AnalogInput::set_ceiling(double output_value, uint16_t adc_value) {
-  hal::CriticalSection guard;
-  ceiling_value_ = output_value;
-  adc_high_ = adc_value;
+  {
+    hal::CriticalSection guard;
+    ceiling_value_ = output_value;
+    adc_high_ = adc_value;
+  }
+  refresh_calibration_fields();
+}
+
+void AnalogInput::refresh_calibration_fields() {
+  // The two straight pieces mapped() uses, as slope·raw + intercept.
+  auto piece = [](double x0, double y0, double x1, double y1, float& slope, float& intercept) {
+    const double m = x1 != x0 ? (y1 - y0) / (x1 - x0) : 0.0;
+    slope = static_cast<float>(m);
+    intercept = static_cast<float>(y0 - m * x0);
+  };
+  if (!deadband_enabled_) {
+    piece(adc_low_, floor_value_, adc_high_, ceiling_value_, conversion_slope_1, conversion_intercept_1);
+    conversion_slope_2 = conversion_slope_1;
+    conversion_intercept_2 = conversion_intercept_1;
+    adc_deadband_lower = adc_deadband_upper = 0;
+    return;
+  }
+  const double band_low = deadband_centre_ - deadband_half_width_;
+  const double band_high = deadband_centre_ + deadband_half_width_;
+  piece(adc_low_, floor_value_, band_low, deadband_value_, conversion_slope_1, conversion_intercept_1);
+  piece(band_high, deadband_value_, adc_high_, ceiling_value_, conversion_slope_2, conversion_intercept_2);
+  adc_deadband_lower = static_cast<uint16_t>(band_low < 0 ? 0 : band_low);
+  adc_deadband_upper = static_cast<uint16_t>(band_high > 1023 ? 1023 : band_high);
 }
 
 void AnalogInput::set_deadband(double output_value, uint16_t centre, uint16_t width) {
@@ -63,6 +91,7 @@ void AnalogInput::set_deadband(double output_value, uint16_t centre, uint16_t wi
   deadband_half_width_ = (width == 1 ? 2 : width) / 2.0;
   centre_pending_ = false;
   deadband_enabled_ = true;
+  refresh_calibration_fields();
 }
 
 void AnalogInput::set_deadband_here(double output_value, uint16_t width) {
@@ -79,10 +108,13 @@ void AnalogInput::set_deadband_here(double output_value, uint16_t width) {
 
 void AnalogInput::capture_pending_centre() {
   if (!centre_pending_ || hal::adc_sample_count(pin_) == 0) return;
-  hal::CriticalSection guard;
-  deadband_centre_ = read_raw();
-  centre_pending_ = false;
-  deadband_enabled_ = true;
+  {
+    hal::CriticalSection guard;
+    deadband_centre_ = read_raw();
+    centre_pending_ = false;
+    deadband_enabled_ = true;
+  }
+  refresh_calibration_fields();
 }
 
 uint16_t AnalogInput::read_raw() const { return pin_ == 255 ? 0 : hal::adc_read(pin_); }
@@ -104,7 +136,9 @@ double AnalogInput::value_at(uint16_t raw) const {
 void AnalogInput::write_mapped_parameter() {
   if (pin_ == 255) return;
   capture_pending_centre();
-  const double value = value_at(hal::adc_read(pin_));
+  const uint16_t raw = hal::adc_read(pin_);
+  last_value_raw = raw;
+  const double value = value_at(raw);
   if (float_target_ != nullptr) *float_target_ = static_cast<float>(value);
   if (double_target_ != nullptr) *double_target_ = value;
 }

@@ -68,7 +68,10 @@ class AnalogInput : public Block {
   /// the first conversion to complete if none has yet. Context: loop.
   void set_deadband_here(double output_value = 0, uint16_t width = 4);
   /// Removes the deadband. Context: loop.
-  void clear_deadband() { deadband_enabled_ = false; }
+  void clear_deadband() {
+    deadband_enabled_ = false;
+    refresh_calibration_fields();
+  }
   /// Toggles negation of the output (see the class comment: negation, not mirroring).
   /// Context: loop.
   void invert() { inverted_ = !inverted_; }
@@ -88,12 +91,25 @@ class AnalogInput : public Block {
   /// Volts at full scale, kept from the original for sketches that convert readings to volts.
   float full_scale_volts = 3.3f;
 
+  /// The original library's public calibration fields, kept as read-only mirrors of the
+  /// settings above (writing them changes nothing): the latest raw conversion; the output line
+  /// below the deadband (or the whole line without one) as slope and intercept per ADC count;
+  /// the line above it; and the band's raw limits.
+  volatile uint16_t last_value_raw = 0;
+  float conversion_slope_1 = 1.0f;
+  float conversion_intercept_1 = 0.0f;
+  float conversion_slope_2 = 1.0f;
+  float conversion_intercept_2 = 0.0f;
+  uint16_t adc_deadband_lower = 0;
+  uint16_t adc_deadband_upper = 0;
+
  private:
   // Virtuals stay inline (no key function): see Block.
   void write_mapped_parameter();
   void notify_new_conversions();
   double mapped(double raw) const;
   void capture_pending_centre();
+  void refresh_calibration_fields();
 
   ControlParameter* float_target_ = nullptr;
   DecimalPosition* double_target_ = nullptr;
