@@ -16,6 +16,7 @@
 #include "stepdance/motion/channel.hpp"
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"
+#include "stepdance/motion/attractor_2d.hpp"
 #include "stepdance/motion/circle_generator.hpp"
 #include "stepdance/motion/kinematics_five_bar.hpp"
 #include "stepdance/motion/kinematics_polar_to_cartesian.hpp"
@@ -47,6 +48,7 @@ using stepdance::AnalogInput;
 using stepdance::Block;
 using stepdance::BlockPort;
 using stepdance::Button;
+using stepdance::Attractor2D;
 using stepdance::Channel;
 using stepdance::CircleGenerator;
 using stepdance::KinematicsFiveBarForward;

@@ -6,6 +6,7 @@
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/motion/attractor_2d.hpp"
 #include "stepdance/motion/circle_generator.hpp"
 #include "stepdance/motion/kinematics_five_bar.hpp"
 #include "stepdance/motion/kinematics_polar_to_cartesian.hpp"
@@ -207,6 +208,22 @@ TEST_F(GeneratorsTest, PerpendicularWaveAcrossTheDirectionOfTravel) {
   wave.input_t.reset(1.0);               // the move's end: back on the line
   hal_manual::run_frames(1);
   EXPECT_NEAR(wave.output_x.read_absolute(), 0.0, 1e-9);
+}
+
+TEST_F(GeneratorsTest, AttractorPullsAtMostItsSpeedAndLandsOnTheTarget) {
+  Attractor2D attractor;
+  ASSERT_EQ(attractor.begin(), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  attractor.set_target(30, 40, ABSOLUTE, 100);  // 50 mm away at 100 mm/s: 0.5 s
+  hal_manual::run_frames(6250);                 // 0.25 s: half way along the straight line
+  EXPECT_NEAR(attractor.output_x.read_absolute(), 15.0, 1e-6);
+  EXPECT_NEAR(attractor.output_y.read_absolute(), 20.0, 1e-6);
+  hal_manual::run_frames(6260);
+  EXPECT_NEAR(attractor.output_x.read_absolute(), 30.0, 1e-9);
+  EXPECT_NEAR(attractor.output_y.read_absolute(), 40.0, 1e-9);
+  attractor.set_target(-5, 0, INCREMENTAL, 100);  // relative to where it is
+  hal_manual::run_frames(2000);
+  EXPECT_NEAR(attractor.output_x.read_absolute(), 25.0, 1e-9);
 }
 
 TEST_F(GeneratorsTest, PolarToCartesianAndItsInverseForDeepReads) {
