@@ -9,8 +9,9 @@ namespace stepdance {
 class BlockPort;
 class RPC;
 
-/// A unit of work the engine runs in one context. Blocks register themselves in begin() and
-/// run in registration order within their stage. Destroying a block unregisters it.
+/// A unit of work the engine runs in one context. Blocks register themselves in begin(); at
+/// start the engine orders each stage so that producers run before their consumers (see
+/// block_order.hpp), otherwise keeping begin() order. Destroying a block unregisters it.
 class Block {
  public:
   Block() = default;
@@ -23,6 +24,8 @@ class Block {
   virtual void disable() { enabled_ = false; }
   /// True while the block runs. Context: any.
   bool is_enabled() const { return enabled_; }
+  /// The block's class name, for reports (a cycle in the block graph, statistics). Context: any.
+  virtual const char* type_name() const { return "Block"; }
 
   /// Deep sync, downstream: re-derive outputs from inputs that were just reset, without motion.
   /// Called by an INPUT BlockPort's push_deep(). Context: loop (or frame ISR for GLOBAL moves).

@@ -6,12 +6,36 @@
 
 namespace stepdance {
 
+BlockPort* BlockPort::first_attached_ = nullptr;
+
 BlockPort::BlockPort() : target_(&own_state_) {}
+
+BlockPort::~BlockPort() { detach(); }
+
+void BlockPort::attach() {
+  if (attached_) return;
+  next_attached_ = first_attached_;
+  first_attached_ = this;
+  attached_ = true;
+}
+
+void BlockPort::detach() {
+  if (!attached_) return;
+  for (BlockPort** link = &first_attached_; *link != nullptr; link = &(*link)->next_attached_) {
+    if (*link == this) {
+      *link = next_attached_;
+      break;
+    }
+  }
+  next_attached_ = nullptr;
+  attached_ = false;
+}
 
 void BlockPort::begin(DecimalPosition* target, BlockPortDirection direction, Block* parent) {
   target_ = target != nullptr ? target : &own_state_;
   direction_ = direction;
   parent_ = parent;
+  if (parent != nullptr) attach();
   absolute_buffer = *target_;
   incremental_buffer = 0;
   update_has_run_ = true;

@@ -28,6 +28,8 @@ class Block;
 class BlockPort {
  public:
   BlockPort();
+  /// Leaves the list of attached ports. Context: loop.
+  ~BlockPort();
   BlockPort(const BlockPort&) = delete;
   BlockPort& operator=(const BlockPort&) = delete;
 
@@ -102,6 +104,13 @@ class BlockPort {
   double committed_total() const { return committed_world_; }
   /// The port's direction in deep chains. Context: any.
   BlockPortDirection direction() const { return direction_; }
+  /// The block the port was begun with, or nullptr. Context: any.
+  Block* parent() const { return parent_; }
+
+  /// Every port begun with a parent block, as an intrusive list (no heap): the engine derives
+  /// the block order from it. Context: loop.
+  static BlockPort* first_attached() { return first_attached_; }
+  BlockPort* next_attached() const { return next_attached_; }
 
   /// Public so sketches that wrote into it directly (physical_ui_module) still compile.
   DecimalPosition incremental_buffer = 0;
@@ -109,6 +118,10 @@ class BlockPort {
 
  private:
   void commit(double block_change);
+  void attach();
+  void detach();
+
+  static BlockPort* first_attached_;
 
   DecimalPosition own_state_ = 0;
   DecimalPosition* target_;
@@ -119,6 +132,8 @@ class BlockPort {
   double pulled_total_ = 0;  // peer's committed_total() at the last incremental pull
   BlockPort* peer_ = nullptr;
   Block* parent_ = nullptr;
+  BlockPort* next_attached_ = nullptr;
+  bool attached_ = false;
   PositionMode mode_ = INCREMENTAL;
   BlockPortDirection direction_ = BLOCKPORT_UNDEFINED;
   bool update_has_run_ = true;

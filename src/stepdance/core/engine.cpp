@@ -1,6 +1,7 @@
 // The frame engine: registries, stage order, timers and load accounting.
 #include "stepdance/core/engine.hpp"
 
+#include "stepdance/core/block_order.hpp"
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/units.hpp"
 #include "stepdance/hal/hal.hpp"
@@ -77,6 +78,7 @@ Status Engine::add_frame_function(FrameFunction function) {
 Status Engine::start() {
   if (fault_reason() != FaultReason::kNone) return Status::kBadArgument;
   if (running_) return Status::kOk;
+  order_stages();
   running_ = true;
   frame_budget_cycles_ = hal::cycles_per_second() / kFrameRateHz;
   const Status frame = hal::frame_timer_start(kFramePeriodUs, &frame_isr);
@@ -87,6 +89,15 @@ Status Engine::start() {
   const Status tick = hal::khz_timer_start(kKilohertzPeriodUs, &kilohertz_isr);
   if (tick != Status::kOk) stop();
   return tick;
+}
+
+void Engine::order_stages() {
+  for (uint8_t stage = 0; stage < kNumStages; ++stage) {
+    Registry& blocks = registries_[stage];
+    char* names = cycle_names_[stage];
+    if (order_by_graph(blocks.begin(), blocks.size(), names, sizeof(cycle_names_[stage]))) continue;
+    report_fault(FaultLevel::kWarning, FaultReason::kBadConfiguration, to_string(static_cast<Stage>(stage)), names);
+  }
 }
 
 void Engine::stop() {

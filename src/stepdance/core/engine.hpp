@@ -44,7 +44,9 @@ class Engine {
   /// start() it runs after the post-channel stage. kFull → fault. Context: loop.
   Status add_frame_function(FrameFunction function);
 
-  /// Starts the frame and kilohertz timers through the HAL. Refuses (kBadArgument) while a fault
+  /// Orders every stage from the BlockPort graph (producers before consumers; a cycle is
+  /// reported once as a warning naming the blocks and that stage keeps begin() order), then
+  /// starts the frame and kilohertz timers through the HAL. Refuses (kBadArgument) while a fault
   /// is recorded. Context: loop.
   Status start();
   /// Stops both timers. Context: any.
@@ -74,10 +76,13 @@ class Engine {
   Registry& registry(Stage stage) { return registries_[static_cast<uint8_t>(stage)]; }
   const Registry& registry(Stage stage) const { return registries_[static_cast<uint8_t>(stage)]; }
   static void run_stage(Registry& blocks);
+  void order_stages();
 
   Registry registries_[kNumStages];
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> early_functions_;
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> late_functions_;
+  // Names of the blocks of a cycle, per stage: the warning keeps a pointer to its text.
+  char cycle_names_[kNumStages][96] = {};
   LoadMetrics load_;
   uint32_t frame_budget_cycles_ = 24000;  // CPU cycles per frame, set from the HAL at start()
   volatile uint32_t frame_count_ = 0;

@@ -37,6 +37,8 @@ enum EbbKinematics : uint8_t {
 /// Context: the loop (dance_loop serves the link); run() is the frame.
 class Eibotboard : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "Eibotboard"; }
   /// Motion FIFO capacity (QU,2); the EBB starts with a depth of 1 (CU,4 changes it).
   static constexpr uint32_t kFifoCapacity = 64;
   /// Longest command accepted, bytes (without the line ending).

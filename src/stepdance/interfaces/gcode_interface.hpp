@@ -27,6 +27,8 @@ namespace stepdance {
 /// to rapids queued after it changes. Context: everything from the loop (dance_loop runs it).
 class GCodeInterface : public Block, private gcode::GrblMachine {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "GCodeInterface"; }
   GCodeInterface() = default;
 
   /// Starts the link on the board's console (USB Serial). kFull if a registry is full.

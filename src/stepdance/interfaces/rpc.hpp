@@ -34,6 +34,8 @@ namespace stepdance {
 /// no exceptions. Calls run in the loop, where the sketch's own code runs.
 class RPC : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "RPC"; }
   static constexpr size_t kMaxEntries = 96;
   static constexpr size_t kMaxNameBytes = 63;
   static constexpr size_t kMaxLineBytes = 512;

@@ -35,6 +35,8 @@ namespace stepdance {
 ///    if none has completed yet.
 class AnalogInput : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "AnalogInput"; }
   /// The user callback: no arguments, called from the loop.
   using Callback = void (*)();
 

@@ -50,6 +50,8 @@ constexpr uint8_t kInputPulldown = 3;
 /// The original library never fired the last two modes; both work here.
 class Button : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "Button"; }
   /// A user callback: no arguments, called from dance_loop().
   using Callback = void (*)();
 

@@ -25,6 +25,8 @@ enum EncoderId : uint8_t { ENCODER_1 = 0, ENCODER_2 = 1, ENCODER_A = 2 };
 /// knob turned past a latch no longer drags the downstream target backwards.
 class Encoder : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "Encoder"; }
   Encoder() = default;
 
   /// Starts decoder `index` (ENCODER_1 or ENCODER_2) and registers in the pre-channel stage.

@@ -36,6 +36,8 @@ constexpr uint8_t NUM_AVAILABLE_INPUT_PORTS = 4;
 /// Rejected pulses are counted by reason, and pulses of disabled signals are counted as ignored.
 class InputPort : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "InputPort"; }
   InputPort();
   ~InputPort() { detach(); }
 

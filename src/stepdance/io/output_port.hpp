@@ -29,6 +29,8 @@ enum OutputTransmitMode : uint8_t { OUTPUT_TRANSMIT_ON_FRAME = 1, OUTPUT_TRANSMI
 /// counted; a forward and a reverse pulse still pending on one signal cancel (net position kept).
 class OutputPort : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "OutputPort"; }
   OutputPort() = default;
   ~OutputPort() { forget(this); }
 

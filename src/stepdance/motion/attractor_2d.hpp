@@ -14,6 +14,8 @@ namespace stepdance {
 /// Context: run() in the frame; setters from the loop.
 class Attractor2D : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "Attractor2D"; }
   Status begin();
   /// INCREMENTAL: relative to where the machine is now; ABSOLUTE/GLOBAL: a position.
   /// max_speed in units/s. Context: loop.

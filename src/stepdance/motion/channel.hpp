@@ -30,6 +30,8 @@ class OutputPort;
 ///  - read_deep() of its inputs is in world units, like pull_deep().
 class Channel : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "Channel"; }
   /// Highest pulse rate: one pulse per frame.
   static constexpr double kMaxPulseRatePerS = kFrameRateHz;
   /// Default number of samples of the EMA filter (α = 1/n).

@@ -20,6 +20,8 @@ namespace stepdance {
 /// and continuous when the radius changes (the centre moves instead of the pen jumping).
 class CircleGenerator : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "CircleGenerator"; }
   /// Begins the ports and registers in the pre-channel stage. Context: loop.
   Status begin();
   /// The angle advances with time instead of the input. Context: loop.

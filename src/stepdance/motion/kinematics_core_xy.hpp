@@ -19,6 +19,8 @@ namespace stepdance {
 /// port a ratio never mixes units (world units in, world units out).
 class KinematicsCoreXY : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "KinematicsCoreXY"; }
   KinematicsCoreXY();
 
   /// Begins the ports (inputs: INPUT with this block as parent; outputs: OUTPUT) and registers

@@ -17,6 +17,8 @@ namespace stepdance {
 /// (FaultReason::kUnreachable) — never a NaN. Context: run() in the frame; begin in the loop.
 class KinematicsFiveBarForward : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "KinematicsFiveBarForward"; }
   /// Pivot spacing S, arms L1 (right) and L2 (left), links L3 and L4, tool extension L5 (mm),
   /// tool angle A6 (rad). Context: loop.
   Status begin(float s, float l1, float l2, float l3, float l4, float l5, float a6);
@@ -40,6 +42,8 @@ class KinematicsFiveBarForward : public Block {
 /// angles, are counted and reported, as above.
 class KinematicsFiveBarInverse : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "KinematicsFiveBarInverse"; }
   Status begin(float s, float l1, float l2, float l3, float l4, float l5, float a6);
   void run() override;
   uint32_t unreachable_count() const { return unreachable_; }

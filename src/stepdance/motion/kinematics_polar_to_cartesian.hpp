@@ -13,6 +13,8 @@ namespace stepdance {
 /// Deep reads and pulls go back through the inverse map (θ = atan2(y, x), r = √(x² + y²)).
 class KinematicsPolarToCartesian : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "KinematicsPolarToCartesian"; }
   /// Begins the ports and registers in the pre-channel stage. A fixed_radius > 0 sets the radius
   /// (an input mapped to input_radius still moves it). Context: loop.
   Status begin(double fixed_radius = 0.0);

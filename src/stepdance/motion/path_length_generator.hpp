@@ -35,6 +35,8 @@ class PathLengthGenerator : public Block {
 /// Two inputs (an XY path).
 class PathLengthGenerator2D : public PathLengthGenerator<2> {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "PathLengthGenerator2D"; }
   PathLengthGenerator2D();
   /// ratio = output_per_revolution / (2π·radius): the output per turn of a circle of `radius`.
   void set_ratio_for_circle(double radius, double output_per_revolution);
@@ -51,6 +53,8 @@ class PathLengthGenerator2D : public PathLengthGenerator<2> {
 /// Three inputs (an XYZ path).
 class PathLengthGenerator3D : public PathLengthGenerator<3> {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "PathLengthGenerator3D"; }
   PathLengthGenerator3D();
   using PathLengthGenerator<3>::set_ratio;
 

@@ -22,6 +22,8 @@ namespace stepdance {
 /// never produces motion: an idle generator stays idle, a moving one keeps its remaining distance.
 class PositionGenerator : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "PositionGenerator"; }
   PositionGenerator();
 
   /// go() commands that may wait for the next frame.

@@ -34,6 +34,8 @@ class ScalingFilter : public Block {
 
 class ScalingFilter1D : public ScalingFilter<1> {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "ScalingFilter1D"; }
   ScalingFilter1D();
   BlockPort input;
   BlockPort output;
@@ -41,6 +43,8 @@ class ScalingFilter1D : public ScalingFilter<1> {
 
 class ScalingFilter2D : public ScalingFilter<2> {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "ScalingFilter2D"; }
   ScalingFilter2D();
   BlockPort input_1;
   BlockPort input_2;

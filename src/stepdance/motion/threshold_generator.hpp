@@ -14,6 +14,8 @@ namespace stepdance {
 /// frame while beyond). Context: run() in the frame; setters and callbacks in the loop.
 class ThresholdGenerator : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "ThresholdGenerator"; }
   using Callback = void (*)();
 
   Status begin();

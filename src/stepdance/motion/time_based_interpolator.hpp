@@ -36,6 +36,8 @@ namespace stepdance {
 /// Contexts: add_*, reset_block_queue, limits and setters from the loop; run() is the frame.
 class TimeBasedInterpolator : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "TimeBasedInterpolator"; }
   /// The original's raw block layout, for sketches that call add_block().
   struct position {
     double x_mm;

@@ -13,6 +13,8 @@ namespace stepdance {
 /// which swung a wave decoration round at every stop).
 class Vector2DToAngle : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "Vector2DToAngle"; }
   Status begin();
   void run() override;
 
@@ -31,6 +33,8 @@ class Vector2DToAngle : public Block {
 /// A duration of 0 or less gives target_frequency itself.
 class MoveDurationToFrequency : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "MoveDurationToFrequency"; }
   Status begin();
   void run() override;
 

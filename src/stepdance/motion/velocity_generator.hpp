@@ -12,6 +12,8 @@ namespace stepdance {
 /// A knob mapped to speed_units_per_sec makes a jog wheel that keeps going.
 class VelocityGenerator : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "VelocityGenerator"; }
   /// Begins the output and registers in the pre-channel stage. kFull if full. Context: loop.
   Status begin();
   /// One frame: output += speed × 40 µs, pushed. Context: frame ISR.

@@ -19,6 +19,8 @@ namespace stepdance {
 /// of periods and continuous when the amplitude changes.
 class WaveGenerator1D : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "WaveGenerator1D"; }
   Status begin();
   void setNoInput() { no_input_ = true; }
   void debugPrint() {}

@@ -16,6 +16,8 @@ namespace stepdance {
 /// θ advances by input_frequency × 40 µs per frame. The original used 3.1415 for π.
 class WaveGenerator2D : public Block {
  public:
+  /// The class name, for reports. Context: any.
+  const char* type_name() const override { return "WaveGenerator2D"; }
   Status begin();
   void setNoInput() { no_input_ = true; }
   void debugPrint() {}
