@@ -26,7 +26,20 @@ bool is_analog(Connector c) { return c == Connector::kA1 || c == Connector::kA2 
 bool is_limit(Connector c) {
   return c == Connector::kLimitA || c == Connector::kLimitB || c == Connector::kLimitC || c == Connector::kLimitD;
 }
+bool is_encoder(Connector c) { return c == Connector::kEnc1 || c == Connector::kEnc2; }
+bool is_digital_or_analog(Connector c) { return c == Connector::kD1 || c == Connector::kD2 || is_analog(c); }
+
+// One row per device kind: adding a kind is adding a row (and its model in the simulation).
+constexpr DeviceKind kDeviceKinds[] = {
+    {DeviceType::kEncoder, "encoder", "an encoder", "ENC1 or ENC2", is_encoder},
+    {DeviceType::kPotentiometer, "potentiometer", "a potentiometer", "A1..A4", is_analog},
+    {DeviceType::kButton, "button", "a button", "D1, D2 or A1..A4", is_digital_or_analog},
+    {DeviceType::kLimitSwitch, "limit_switch", "a limit switch", "LIMIT_A..LIMIT_D", is_limit},
+    {DeviceType::kPendulum, "pendulum", "a pendulum", "ENC1 or ENC2", is_encoder},
+};
 }  // namespace
+
+DeviceKindList device_kinds() { return {kDeviceKinds, sizeof kDeviceKinds / sizeof kDeviceKinds[0]}; }
 
 std::string_view connector_name(Connector connector) {
   for (const auto& [name, value] : kConnectors) {
@@ -37,33 +50,16 @@ std::string_view connector_name(Connector connector) {
 
 std::string_view module_name(Module module) { return module == Module::kBasic ? "basic" : "driver"; }
 
-std::string_view device_type_name(DeviceType type) {
-  switch (type) {
-    case DeviceType::kEncoder:
-      return "encoder";
-    case DeviceType::kPotentiometer:
-      return "potentiometer";
-    case DeviceType::kButton:
-      return "button";
-    case DeviceType::kLimitSwitch:
-      return "limit_switch";
+const DeviceKind& device_kind(DeviceType type) {
+  for (const DeviceKind& kind : device_kinds()) {
+    if (kind.type == type) return kind;
   }
-  return "?";
+  return device_kinds().front();  // unreachable: every DeviceType has a row
 }
 
-std::string_view device_with_article(DeviceType type) {
-  switch (type) {
-    case DeviceType::kEncoder:
-      return "an encoder";
-    case DeviceType::kPotentiometer:
-      return "a potentiometer";
-    case DeviceType::kButton:
-      return "a button";
-    case DeviceType::kLimitSwitch:
-      return "a limit switch";
-  }
-  return "?";
-}
+std::string_view device_type_name(DeviceType type) { return device_kind(type).name; }
+
+std::string_view device_with_article(DeviceType type) { return device_kind(type).with_article; }
 
 std::optional<Connector> parse_connector(std::string_view name) {
   for (const auto& [known, value] : kConnectors) {
@@ -74,33 +70,9 @@ std::optional<Connector> parse_connector(std::string_view name) {
 
 bool module_has_connector(Module module, Connector connector) { return module == Module::kDriver || !is_limit(connector); }
 
-bool device_fits_connector(DeviceType type, Connector connector) {
-  switch (type) {
-    case DeviceType::kEncoder:
-      return connector == Connector::kEnc1 || connector == Connector::kEnc2;
-    case DeviceType::kPotentiometer:
-      return is_analog(connector);
-    case DeviceType::kButton:
-      return connector == Connector::kD1 || connector == Connector::kD2 || is_analog(connector);
-    case DeviceType::kLimitSwitch:
-      return is_limit(connector);
-  }
-  return false;
-}
+bool device_fits_connector(DeviceType type, Connector connector) { return device_kind(type).fits(connector); }
 
-std::string_view connectors_for(DeviceType type) {
-  switch (type) {
-    case DeviceType::kEncoder:
-      return "ENC1 or ENC2";
-    case DeviceType::kPotentiometer:
-      return "A1..A4";
-    case DeviceType::kButton:
-      return "D1, D2 or A1..A4";
-    case DeviceType::kLimitSwitch:
-      return "LIMIT_A..LIMIT_D";
-  }
-  return "?";
-}
+std::string_view connectors_for(DeviceType type) { return device_kind(type).connectors; }
 
 bool module_has_port(Module module, char port) {
   return module == Module::kBasic ? port == 'A' : (port >= 'A' && port <= 'D');

@@ -1,6 +1,7 @@
 // Scenario vocabulary: module, connector and device names, and what each module has.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -11,7 +12,27 @@ namespace stepdance::sim::scenario {
 
 /// "driver" or "basic".
 std::string_view module_name(Module module);
-/// "encoder", "potentiometer", "button", "limit_switch".
+/// What the scenario reader knows of one kind of input device.
+struct DeviceKind {
+  DeviceType type;
+  std::string_view name;          ///< the `type` value in the file, e.g. "encoder"
+  std::string_view with_article;  ///< for messages, e.g. "an encoder"
+  std::string_view connectors;    ///< the connectors it fits, for messages, e.g. "ENC1 or ENC2"
+  bool (*fits)(Connector connector);
+};
+/// Every device kind, in the order messages list them.
+struct DeviceKindList {
+  const DeviceKind* first;
+  size_t size;
+  const DeviceKind* begin() const { return first; }
+  const DeviceKind* end() const { return first + size; }
+  const DeviceKind& front() const { return *first; }
+};
+DeviceKindList device_kinds();
+/// The row of a device type.
+const DeviceKind& device_kind(DeviceType type);
+
+/// "encoder", "potentiometer", "button", "limit_switch", "pendulum".
 std::string_view device_type_name(DeviceType type);
 /// "an encoder", "a potentiometer", "a button", "a limit switch".
 std::string_view device_with_article(DeviceType type);

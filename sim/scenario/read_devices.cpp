@@ -1,4 +1,4 @@
-// [[device]]: encoders, potentiometers, buttons and limit switches on board connectors.
+// [[device]]: encoders, potentiometers, buttons, limit switches and pendulums on board connectors.
 #include <map>
 #include <utility>
 
@@ -9,20 +9,72 @@ namespace stepdance::sim::scenario {
 
 namespace {
 
-/// Keys that belong to one device type each.
+/// Keys and the device types they belong to (a key may belong to several).
 constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"pulses_per_revolution", DeviceType::kEncoder}, {"start_count", DeviceType::kEncoder},
+    {"pulses_per_revolution", DeviceType::kPendulum}, {"amplitude_deg", DeviceType::kPendulum},
+    {"period_s", DeviceType::kPendulum},             {"decay_s", DeviceType::kPendulum},
+    {"release_s", DeviceType::kPendulum},
     {"position", DeviceType::kPotentiometer},        {"bounce_ms", DeviceType::kButton},
     {"pressed_level", DeviceType::kButton},          {"axis", DeviceType::kLimitSwitch},
     {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
 };
 
 std::optional<DeviceType> parse_type(std::string_view name) {
-  for (const DeviceType type :
-       {DeviceType::kEncoder, DeviceType::kPotentiometer, DeviceType::kButton, DeviceType::kLimitSwitch}) {
-    if (device_type_name(type) == name) return type;
+  for (const DeviceKind& kind : device_kinds()) {
+    if (kind.name == name) return kind.type;
   }
   return std::nullopt;
+}
+
+/// "\"encoder\", \"potentiometer\", … or \"pendulum\"", for the message of an unknown type.
+std::string type_names() {
+  std::string text;
+  const DeviceKindList kinds = device_kinds();
+  for (size_t i = 0; i < kinds.size; ++i) {
+    if (i > 0) text += i + 1 == kinds.size ? " or " : ", ";
+    text += "\"" + std::string(kinds.first[i].name) + "\"";
+  }
+  return text;
+}
+
+bool key_belongs(std::string_view key, DeviceType type) {
+  for (const auto& [known, owner] : kTypeKeys) {
+    if (known == key && owner == type) return true;
+  }
+  return false;
+}
+
+/// A number in (low, high] (or [low, high] when `low_included`), else an error naming the range.
+void read_bounded(TableReader& reader, const char* key, double low, bool low_included, double high, double& out) {
+  const auto value = reader.number(key);
+  if (!value) return;
+  const bool above = low_included ? *value >= low : *value > low;
+  if (above && *value <= high) {
+    out = *value;
+    return;
+  }
+  reader.error(key, "'" + std::string(key) + "' must be in " + (low_included ? "[" : "(") + format_number(low) + ", " +
+                        format_number(high) + "], got " + format_number(*value));
+}
+
+void read_pulses_per_revolution(TableReader& reader, DeviceConfig& device) {
+  const auto pulses = reader.integer("pulses_per_revolution");
+  if (!pulses) return;
+  if (*pulses > 0 && *pulses <= 1000000) {
+    device.pulses_per_revolution = static_cast<int32_t>(*pulses);
+  } else {
+    reader.error("pulses_per_revolution", "'pulses_per_revolution' must be in 1..1000000, got " + std::to_string(*pulses));
+  }
+}
+
+void read_pendulum(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
+  read_pulses_per_revolution(reader, device);
+  read_bounded(reader, "amplitude_deg", 0, false, 170, device.amplitude_deg);
+  read_bounded(reader, "period_s", 0.01, true, 3600, device.period_s);
+  read_bounded(reader, "decay_s", 0.01, true, 1e6, device.decay_s);
+  const double last_s = context.duration_valid ? to_seconds(context.scenario.duration) : 86400;
+  read_bounded(reader, "release_s", 0, true, last_s, device.release_s);
 }
 
 /// Whether the scenario's machine has the axis, and its name for messages.
@@ -40,21 +92,17 @@ std::string_view machine_type_name(const MachineConfig& machine) {
 
 void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
   for (const auto& [key, owner] : kTypeKeys) {
-    if (owner != device.type && reader.has(key)) {
+    if (!key_belongs(key, device.type) && reader.has(key)) {
       reader.accept(key);
       reader.error(key, "'" + std::string(key) + "' does not apply to " + std::string(device_with_article(device.type)));
     }
   }
   switch (device.type) {
+    case DeviceType::kPendulum:
+      read_pendulum(reader, device, context);
+      break;
     case DeviceType::kEncoder:
-      if (const auto pulses = reader.integer("pulses_per_revolution")) {
-        if (*pulses > 0 && *pulses <= 1000000) {
-          device.pulses_per_revolution = static_cast<int32_t>(*pulses);
-        } else {
-          reader.error("pulses_per_revolution",
-                       "'pulses_per_revolution' must be in 1..1000000, got " + std::to_string(*pulses));
-        }
-      }
+      read_pulses_per_revolution(reader, device);
       if (const auto start = reader.integer("start_count")) device.start_count = *start;
       break;
     case DeviceType::kPotentiometer:
@@ -139,8 +187,7 @@ void read_device(const toml::table& table, ParseContext& context, DeviceNames& n
   if (type_text) {
     type = parse_type(*type_text);
     if (!type) {
-      reader.error("type", "'type' must be \"encoder\", \"potentiometer\", \"button\" or \"limit_switch\", got \"" +
-                               *type_text + "\"");
+      reader.error("type", "'type' must be " + type_names() + ", got \"" + *type_text + "\"");
     }
   }
   const BoardConfig* board = nullptr;

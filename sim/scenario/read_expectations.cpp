@@ -1,5 +1,6 @@
 // [[expect]]: end-of-run checks (motor steps, pen position, strokes, port pulses, cables, rejections).
 #include <algorithm>
+#include <cmath>
 #include <regex>
 #include <utility>
 
@@ -15,6 +16,8 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
     {"motor", ExpectationType::kMotorSteps},
     {"pen_mm", ExpectationType::kPenPosition},
     {"strokes", ExpectationType::kStrokes},
+    {"bounds_mm", ExpectationType::kBounds},
+    {"drawn_mm", ExpectationType::kDrawnLength},
     {"cable_counts_match", ExpectationType::kCableCountsMatch},
     {"rejected", ExpectationType::kRejected},
     {"port", ExpectationType::kPortPulses},
@@ -23,7 +26,7 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
 
 /// Keys that only go with one check (port also goes with rejected, handled apart).
 constexpr std::pair<const char*, const char*> kDetails[] = {
-    {"steps", "motor"},  {"tolerance_mm", "pen_mm"}, {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
+    {"steps", "motor"},  {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
     {"reply", "host"},   {"replies", "host"},        {"count", "host"},     {"within_ms", "host"}, {"after", "host"},
     {"completed", "host"},
 };
@@ -46,7 +49,8 @@ std::optional<std::pair<const char*, ExpectationType>> choose_check(TableReader&
   }
   if (!chosen) {
     reader.reporter().error(reader.line(),
-                            "an [[expect]] needs one check: motor, pen_mm, strokes, port, cable_counts_match, rejected or host");
+                            "an [[expect]] needs one check: motor, pen_mm, strokes, bounds_mm, drawn_mm, port, "
+                            "cable_counts_match, rejected or host");
   }
   return chosen;
 }
@@ -79,6 +83,30 @@ bool read_motor(TableReader& reader, Expectation& check, const ParseContext& con
   return ok;
 }
 
+/// The checks that take a tolerance_mm.
+bool takes_tolerance(ExpectationType type) {
+  return type == ExpectationType::kPenPosition || type == ExpectationType::kBounds ||
+         type == ExpectationType::kDrawnLength;
+}
+
+/// tolerance_mm (>= 0, finite) and the [machine] every pen check needs.
+bool read_tolerance(TableReader& reader, Expectation& check, const ParseContext& context, const char* key) {
+  bool ok = true;
+  if (const auto tolerance = reader.number("tolerance_mm")) {
+    if (*tolerance >= 0 && std::isfinite(*tolerance)) {
+      check.tolerance_mm = *tolerance;
+    } else {
+      reader.error("tolerance_mm", "'tolerance_mm' must be a finite number >= 0, got " + format_number(*tolerance));
+      ok = false;
+    }
+  }
+  if (!context.scenario.machine) {
+    reader.error(key, std::string("'") + key + "' needs a [machine]");
+    ok = false;
+  }
+  return ok;
+}
+
 bool read_pen(TableReader& reader, Expectation& check, const ParseContext& context) {
   const toml::array* pair = reader.array("pen_mm");
   double values[2] = {0, 0};
@@ -86,19 +114,34 @@ bool read_pen(TableReader& reader, Expectation& check, const ParseContext& conte
   if (pair != nullptr && !ok) reader.error("pen_mm", "'pen_mm' must be two numbers [x, y]");
   check.pen_x_mm = values[0];
   check.pen_y_mm = values[1];
-  if (const auto tolerance = reader.number("tolerance_mm")) {
-    if (*tolerance >= 0) {
-      check.tolerance_mm = *tolerance;
-    } else {
-      reader.error("tolerance_mm", "'tolerance_mm' must be >= 0, got " + format_number(*tolerance));
-      ok = false;
-    }
+  return read_tolerance(reader, check, context, "pen_mm") && ok;
+}
+
+/// bounds_mm = [x_min, y_min, x_max, y_max], finite, min <= max.
+bool read_bounds(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const toml::array* box = reader.array("bounds_mm");
+  bool ok = box != nullptr && box->size() == 4;
+  for (size_t i = 0; ok && i < 4; ++i) {
+    const auto value = (*box)[i].value<double>();
+    ok = value.has_value() && std::isfinite(*value);
+    if (ok) check.bounds_mm[i] = *value;
   }
-  if (!context.scenario.machine) {
-    reader.error("pen_mm", "'pen_mm' needs a [machine]");
+  ok = ok && check.bounds_mm[0] <= check.bounds_mm[2] && check.bounds_mm[1] <= check.bounds_mm[3];
+  if (box != nullptr && !ok) {
+    reader.error("bounds_mm", "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max");
+  }
+  return read_tolerance(reader, check, context, "bounds_mm") && ok;
+}
+
+bool read_drawn(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const auto length = reader.number("drawn_mm");
+  bool ok = length.has_value();
+  if (length && (!std::isfinite(*length) || *length < 0)) {
+    reader.error("drawn_mm", "'drawn_mm' must be a finite length >= 0, got " + format_number(*length));
     ok = false;
   }
-  return ok;
+  if (ok) check.drawn_mm = *length;
+  return read_tolerance(reader, check, context, "drawn_mm") && ok;
 }
 
 bool read_port_check(TableReader& reader, Expectation& check, ParseContext& context, bool rejected) {
@@ -243,6 +286,11 @@ void read_expectation(const toml::table& table, ParseContext& context) {
   if (!chosen) return;
   check.type = chosen->second;
   bool ok = true;
+  if (!takes_tolerance(check.type) && reader.has("tolerance_mm")) {
+    reader.accept("tolerance_mm");
+    reader.error("tolerance_mm", "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm' or 'drawn_mm'");
+    ok = false;
+  }
   for (const auto& [key, owner] : kDetails) {
     const bool belongs = std::string_view(owner) == chosen->first;
     if (!belongs && reader.has(key)) {
@@ -257,6 +305,12 @@ void read_expectation(const toml::table& table, ParseContext& context) {
       break;
     case ExpectationType::kPenPosition:
       ok = read_pen(reader, check, context) && ok;
+      break;
+    case ExpectationType::kBounds:
+      ok = read_bounds(reader, check, context) && ok;
+      break;
+    case ExpectationType::kDrawnLength:
+      ok = read_drawn(reader, check, context) && ok;
       break;
     case ExpectationType::kStrokes:
       if (const auto strokes = reader.integer("strokes")) {

@@ -103,7 +103,7 @@ struct MachineConfig {
 };
 
 /// Input device models.
-enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch };
+enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch, kPendulum };
 
 /// Connectors on a module's edge.
 enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD };
@@ -123,7 +123,8 @@ struct DeviceConfig {
   DeviceType type = DeviceType::kEncoder;
   std::string board;
   Connector connector = Connector::kEnc1;
-  /// Encoder: pulses per revolution per channel (counted ×4) and the count at time 0.
+  /// Encoder and pendulum: pulses per revolution per channel (counted ×4); encoder: the count
+  /// at time 0.
   int32_t pulses_per_revolution = 600;
   int64_t start_count = 0;
   /// Potentiometer: initial wiper position, 0..1.
@@ -135,6 +136,12 @@ struct DeviceConfig {
   LimitAxis axis = LimitAxis::kX;
   double at_mm = 0;
   LimitSide side = LimitSide::kBelow;
+  /// Pendulum: held at amplitude_deg from vertical until release_s, then swinging with period_s
+  /// and its amplitude decaying with time constant decay_s.
+  double amplitude_deg = 30;
+  double period_s = 2;
+  double decay_s = 30;
+  double release_s = 0;
   int line = 0;
 };
 
@@ -247,6 +254,8 @@ enum class ExpectationType {
   kRejected,
   kHostReplies,    ///< lines a host client received (count, order, timing)
   kHostCompleted,  ///< a host client ran all its steps without a timeout
+  kBounds,         ///< the bounding box of every pen-down stroke
+  kDrawnLength,    ///< the total pen-down path length
 };
 
 /// One end-of-run check. Only the fields of its type are meaningful.
@@ -261,6 +270,11 @@ struct Expectation {
   double tolerance_mm = 0.01;
   /// Pen-down strokes.
   int64_t strokes = 0;
+  /// Bounding box of the pen-down strokes: x_min, y_min, x_max, y_max (mm); each edge within
+  /// tolerance_mm.
+  double bounds_mm[4] = {0, 0, 0, 0};
+  /// Pen-down path length (mm), within tolerance_mm.
+  double drawn_mm = 0;
   /// Port pulses / rejections: the port; for pulses also the signal (0..5 = X, Y, R, T, Z, E)
   /// and the expected forward and/or reverse counts.
   PortLineRef port;

@@ -60,6 +60,18 @@ void Simulation::build_device(const scenario::DeviceConfig& device, BoardSlot& s
       board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->count_at(time); });
       break;
     }
+    case scenario::DeviceType::kPendulum: {
+      PendulumSettings settings;
+      settings.pulses_per_revolution = device.pulses_per_revolution;
+      settings.amplitude_deg = device.amplitude_deg;
+      settings.period_s = device.period_s;
+      settings.decay_s = device.decay_s;
+      settings.release = from_seconds(device.release_s);
+      auto& pendulum = pendulums_[device.name] = std::make_unique<DampedPendulum>(settings);
+      const DampedPendulum* model = pendulum.get();
+      board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->count_at(time); });
+      break;
+    }
     case scenario::DeviceType::kPotentiometer: {
       auto& pot = pots_[device.name] = std::make_unique<Potentiometer>(device.position);
       const Potentiometer* model = pot.get();
@@ -141,7 +153,7 @@ void Simulation::build_cables() {
   }
 }
 
-// Columns: the pen (with a machine), every socket's model, every knob and pot.
+// Columns: the pen (with a machine), every socket's model, every knob, pendulum and pot.
 void Simulation::build_csv() {
   const std::string path = output_path(scenario_.output.csv);
   if (path.empty()) return;
@@ -165,6 +177,10 @@ void Simulation::build_csv() {
   }
   for (const auto& [name, encoder] : encoders_) {
     const QuadratureEncoder* model = encoder.get();
+    probes.push_back({{name + "_counts", 0}, [model](SimTime time) { return static_cast<double>(model->count_at(time)); }});
+  }
+  for (const auto& [name, pendulum] : pendulums_) {
+    const DampedPendulum* model = pendulum.get();
     probes.push_back({{name + "_counts", 0}, [model](SimTime time) { return static_cast<double>(model->count_at(time)); }});
   }
   for (const auto& [name, pot] : pots_) {

@@ -1,6 +1,7 @@
 // Evaluation of [[expect]] entries: motor steps, pen position, strokes, port pulses, cables, rejections.
 #include "wiring/expectations.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -54,6 +55,37 @@ ExpectationResult pen_position(const Expectation& expectation, const Simulation&
 ExpectationResult strokes(const Expectation& expectation, const Simulation& simulation) {
   if (simulation.machine() == nullptr) return {false, "strokes: the scenario has no machine"};
   return compare("pen-down strokes", expectation.strokes, static_cast<int64_t>(simulation.machine()->strokes().size()));
+}
+
+ExpectationResult bounds(const Expectation& expectation, const Simulation& simulation) {
+  if (simulation.machine() == nullptr) return {false, "bounds_mm: the scenario has no machine"};
+  double box[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const Polyline& stroke : simulation.machine()->strokes()) {
+    for (const PenPoint& point : stroke) {
+      box[0] = std::min(box[0], point.x_mm);
+      box[1] = std::min(box[1], point.y_mm);
+      box[2] = std::max(box[2], point.x_mm);
+      box[3] = std::max(box[3], point.y_mm);
+    }
+  }
+  const auto text = [](const double* edges) {
+    return "[" + millimetres(edges[0]) + ", " + millimetres(edges[1]) + ", " + millimetres(edges[2]) + ", " +
+           millimetres(edges[3]) + "]";
+  };
+  const std::string what = "pen-down bounds " + text(expectation.bounds_mm) + " mm ± " +
+                           millimetres(expectation.tolerance_mm);
+  if (box[0] > box[2]) return {false, what + ": nothing was drawn"};
+  bool met = true;
+  for (int i = 0; i < 4; ++i) met = met && std::fabs(box[i] - expectation.bounds_mm[i]) <= expectation.tolerance_mm;
+  return {met, what + ": got " + text(box)};
+}
+
+ExpectationResult drawn_length(const Expectation& expectation, const Simulation& simulation) {
+  if (simulation.machine() == nullptr) return {false, "drawn_mm: the scenario has no machine"};
+  const double drawn = simulation.machine()->stats().pen_down_mm;
+  return {std::fabs(drawn - expectation.drawn_mm) <= expectation.tolerance_mm,
+          "pen-down length " + millimetres(expectation.drawn_mm) + " mm ± " + millimetres(expectation.tolerance_mm) +
+              ": got " + millimetres(drawn)};
 }
 
 const PulseCounts* counts_of(const scenario::PortLineRef& port, const Simulation& simulation) {
@@ -173,6 +205,8 @@ ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation
     case ExpectationType::kMotorSteps: return motor_steps(expectation, simulation);
     case ExpectationType::kPenPosition: return pen_position(expectation, simulation);
     case ExpectationType::kStrokes: return strokes(expectation, simulation);
+    case ExpectationType::kBounds: return bounds(expectation, simulation);
+    case ExpectationType::kDrawnLength: return drawn_length(expectation, simulation);
     case ExpectationType::kPortPulses: return port_pulses(expectation, simulation);
     case ExpectationType::kCableCountsMatch: return cable_counts(scenario, simulation);
     case ExpectationType::kRejected: return rejected(expectation, simulation);

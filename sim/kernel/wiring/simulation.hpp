@@ -11,6 +11,7 @@
 
 #include "board/sim_board.hpp"
 #include "models/bouncing_button.hpp"
+#include "models/damped_pendulum.hpp"
 #include "models/limit_switch.hpp"
 #include "models/machine.hpp"
 #include "models/potentiometer.hpp"
@@ -173,6 +174,7 @@ class Simulation {
   std::map<std::string, std::unique_ptr<Potentiometer>> pots_;
   std::map<std::string, std::unique_ptr<BouncingButton>> buttons_;
   std::vector<std::unique_ptr<LimitSwitch>> limit_switches_;
+  std::map<std::string, std::unique_ptr<DampedPendulum>> pendulums_;
 
   PulseDelivery delivery_;
   std::vector<std::unique_ptr<CableLink>> cables_;

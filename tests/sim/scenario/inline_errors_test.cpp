@@ -85,7 +85,28 @@ std::vector<InlineCase> cases() {
         {13, "'cable_counts_match' can only be true"}}},
       {"detail_of_another_check",
        "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n[[expect]]\nstrokes = 2\ntolerance_mm = 0.1\n",
-       {{11, "'tolerance_mm' only goes with 'pen_mm'"}}},
+       {{11, "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm' or 'drawn_mm'"}}},
+      {"geometry_checks",
+       "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n"
+       "[[expect]]\nbounds_mm = [0, 10, -1, 20]\n"
+       "[[expect]]\nbounds_mm = [0, 1, 2]\n"
+       "[[expect]]\ndrawn_mm = -3\n"
+       "[[expect]]\ndrawn_mm = 30\ntolerance_mm = nan\n",
+ {{10, "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max"},
+        {12, "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max"},
+        {14, "'drawn_mm' must be a finite length >= 0, got -3"},
+        {17, "'tolerance_mm' must be a finite number"}}},
+      {"pendulum_values",
+       "[[device]]\nname = \"swing\"\ntype = \"pendulum\"\nboard = \"driver\"\nconnector = \"A1\"\n"
+       "amplitude_deg = 200\nperiod_s = 0\nrelease_s = 9\nstart_count = 3\n"
+       "[[at]]\ntime_s = 1\nturn = \"swing\"\ncounts = 5\n",
+       {{10, "a pendulum cannot use connector A1 (use ENC1 or ENC2)"},
+        {11, "'amplitude_deg' must be in (0, 170], got 200"},
+        {12, "'period_s' must be in [0.01, 3600], got 0"},
+        {13, "'release_s' must be in [0, 5], got 9"},
+        {14, "'start_count' does not apply to a pendulum"},
+        {17, "'turn' needs an encoder, but 'swing' is a pendulum"}}},
+      {"geometry_needs_a_machine", "[[expect]]\ndrawn_mm = 3\n", {{7, "'drawn_mm' needs a [machine]"}}},
       {"output_values",
        "[output]\npng_px_per_mm = 0\ncsv_interval_ms = -5\npen_up_travel = \"yes\"\nvcd_ports = [\"ghost:IN_A\", 3]\n",
        {{7, "'png_px_per_mm' must be in (0, 100], got 0"},
