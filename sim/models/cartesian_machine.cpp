@@ -12,13 +12,21 @@ double axis_position_mm(const StepperDriver* driver, double steps_per_mm) {
 CartesianMachine::CartesianMachine(const CartesianDrivers& drivers, const CartesianSettings& settings)
     : Machine(settings.trace, settings.travel), drivers_(drivers), settings_(settings) {}
 
-Machine::Sample CartesianMachine::sample(SimTime) {
+Machine::Sample CartesianMachine::sample(SimTime time) {
   z_mm_ = axis_position_mm(drivers_.z, settings_.z_steps_per_mm);
   e_mm_ = axis_position_mm(drivers_.e, settings_.e_steps_per_mm);
+  if (e_mm_ > e_peak_mm_) {  // a retraction and its refill deposit nothing
+    e_peak_mm_ = e_mm_;
+    last_advance_ = time;
+  }
   Sample now;
   now.pen = PenPoint{axis_position_mm(drivers_.x, settings_.x_steps_per_mm),
                      axis_position_mm(drivers_.y, settings_.y_steps_per_mm)};
-  now.down = z_mm_ <= settings_.pen_down_at_or_below_mm;
+  if (settings_.draws_while_extruding) {
+    now.down = last_advance_.has_value() && time - *last_advance_ <= settings_.extruding_hold;
+  } else {
+    now.down = z_mm_ <= settings_.pen_down_at_or_below_mm;
+  }
   return now;
 }
 
@@ -30,6 +38,8 @@ std::optional<double> CartesianMachine::axis_mm(MachineAxis axis) const {
       return pen_position().y_mm;
     case MachineAxis::kZ:
       return z_mm_;
+    case MachineAxis::kE:
+      return e_mm_;
   }
   return std::nullopt;
 }

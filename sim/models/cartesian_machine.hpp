@@ -21,15 +21,20 @@ struct CartesianSettings {
   double y_steps_per_mm = 80;
   double z_steps_per_mm = 400;
   double e_steps_per_mm = 93;
-  /// The pen is down while z ≤ this (mm).
+  /// The pen is down while z ≤ this (mm), unless draws_while_extruding.
   double pen_down_at_or_below_mm = 0;
+  /// A printer instead: the nozzle draws while the extruder has advanced within the last
+  /// extruding_hold (its steps come less often than the axes').
+  bool draws_while_extruding = false;
+  SimTime extruding_hold = 100 * kMillisecond;
   /// Usable XY area, if any (excursions are reported).
   std::optional<TravelArea> travel;
   PenTraceSettings trace;
 };
 
 /// Each axis position is its motor's steps / steps_per_mm; the pen is at (x, y) and down while
-/// z ≤ pen_down_at_or_below_mm (so a machine without a Z motor always draws).
+/// z ≤ pen_down_at_or_below_mm (so a machine without a Z motor always draws) — or, for a printer
+/// (draws_while_extruding), while the extruder advanced within the last extruding_hold.
 class CartesianMachine : public Machine {
  public:
   CartesianMachine(const CartesianDrivers& drivers, const CartesianSettings& settings = {});
@@ -49,6 +54,8 @@ class CartesianMachine : public Machine {
   CartesianSettings settings_;
   double z_mm_ = 0;
   double e_mm_ = 0;
+  double e_peak_mm_ = 0;
+  std::optional<SimTime> last_advance_;
 };
 
 }  // namespace stepdance::sim

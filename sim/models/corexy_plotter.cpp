@@ -27,6 +27,7 @@ std::optional<double> CorexyPlotter::axis_mm(MachineAxis axis) const {
     case MachineAxis::kY:
       return pen_position().y_mm;
     case MachineAxis::kZ:
+    case MachineAxis::kE:
       break;
   }
   return std::nullopt;

@@ -11,8 +11,8 @@
 
 namespace stepdance::sim {
 
-/// Machine axes a limit switch can watch.
-enum class MachineAxis { kX, kY, kZ };
+/// Machine axes (limit switches watch x, y and z; kE is a printer's extruder, mm of filament).
+enum class MachineAxis { kX, kY, kZ, kE };
 
 /// Totals of a machine run.
 struct MachineStats {

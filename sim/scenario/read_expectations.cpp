@@ -18,6 +18,8 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
     {"strokes", ExpectationType::kStrokes},
     {"bounds_mm", ExpectationType::kBounds},
     {"drawn_mm", ExpectationType::kDrawnLength},
+    {"z_mm", ExpectationType::kZPosition},
+    {"extruded_per_mm", ExpectationType::kExtrusionRatio},
     {"cable_counts_match", ExpectationType::kCableCountsMatch},
     {"rejected", ExpectationType::kRejected},
     {"port", ExpectationType::kPortPulses},
@@ -26,7 +28,7 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
 
 /// Keys that only go with one check (port also goes with rejected, handled apart).
 constexpr std::pair<const char*, const char*> kDetails[] = {
-    {"steps", "motor"},  {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
+    {"steps", "motor"},  {"relative_tolerance", "extruded_per_mm"}, {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
     {"reply", "host"},   {"replies", "host"},        {"count", "host"},     {"within_ms", "host"}, {"after", "host"},
     {"completed", "host"},
 };
@@ -49,7 +51,7 @@ std::optional<std::pair<const char*, ExpectationType>> choose_check(TableReader&
   }
   if (!chosen) {
     reader.reporter().error(reader.line(),
-                            "an [[expect]] needs one check: motor, pen_mm, strokes, bounds_mm, drawn_mm, port, "
+                            "an [[expect]] needs one check: motor, pen_mm, strokes, bounds_mm, drawn_mm, z_mm, extruded_per_mm, port, "
                             "cable_counts_match, rejected or host");
   }
   return chosen;
@@ -86,7 +88,7 @@ bool read_motor(TableReader& reader, Expectation& check, const ParseContext& con
 /// The checks that take a tolerance_mm.
 bool takes_tolerance(ExpectationType type) {
   return type == ExpectationType::kPenPosition || type == ExpectationType::kBounds ||
-         type == ExpectationType::kDrawnLength;
+         type == ExpectationType::kDrawnLength || type == ExpectationType::kZPosition;
 }
 
 /// tolerance_mm (>= 0, finite) and the [machine] every pen check needs.
@@ -131,6 +133,42 @@ bool read_bounds(TableReader& reader, Expectation& check, const ParseContext& co
     reader.error("bounds_mm", "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max");
   }
   return read_tolerance(reader, check, context, "bounds_mm") && ok;
+}
+
+/// z_mm = final z (the machine needs a z axis: cartesian with a 'z' socket).
+bool read_z(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const auto z = reader.number("z_mm");
+  bool ok = z.has_value() && std::isfinite(*z);
+  if (z && !ok) reader.error("z_mm", "'z_mm' must be a finite number");
+  if (ok) check.z_mm = *z;
+  const auto* cartesian = context.scenario.machine ? std::get_if<CartesianConfig>(&context.scenario.machine->kind) : nullptr;
+  if (context.scenario.machine && (cartesian == nullptr || !cartesian->z)) {
+    reader.error("z_mm", "'z_mm' needs a cartesian [machine] with a 'z' socket");
+    ok = false;
+  }
+  return read_tolerance(reader, check, context, "z_mm") && ok;
+}
+
+/// extruded_per_mm = ratio, relative_tolerance (default 0.01): the machine needs an extruder.
+bool read_extrusion(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const auto ratio = reader.number("extruded_per_mm");
+  bool ok = ratio.has_value() && std::isfinite(*ratio) && *ratio > 0;
+  if (ratio && !ok) reader.error("extruded_per_mm", "'extruded_per_mm' must be a finite number > 0, got " + format_number(*ratio));
+  if (ok) check.extruded_per_mm = *ratio;
+  if (const auto tolerance = reader.number("relative_tolerance")) {
+    if (*tolerance > 0 && *tolerance < 1) {
+      check.relative_tolerance = *tolerance;
+    } else {
+      reader.error("relative_tolerance", "'relative_tolerance' must be in (0, 1), got " + format_number(*tolerance));
+      ok = false;
+    }
+  }
+  const auto* cartesian = context.scenario.machine ? std::get_if<CartesianConfig>(&context.scenario.machine->kind) : nullptr;
+  if (cartesian == nullptr || !cartesian->e) {
+    reader.error("extruded_per_mm", "'extruded_per_mm' needs a cartesian [machine] with an 'e' socket");
+    ok = false;
+  }
+  return ok;
 }
 
 bool read_drawn(TableReader& reader, Expectation& check, const ParseContext& context) {
@@ -288,7 +326,7 @@ void read_expectation(const toml::table& table, ParseContext& context) {
   bool ok = true;
   if (!takes_tolerance(check.type) && reader.has("tolerance_mm")) {
     reader.accept("tolerance_mm");
-    reader.error("tolerance_mm", "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm' or 'drawn_mm'");
+    reader.error("tolerance_mm", "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm', 'drawn_mm' or 'z_mm'");
     ok = false;
   }
   for (const auto& [key, owner] : kDetails) {
@@ -311,6 +349,12 @@ void read_expectation(const toml::table& table, ParseContext& context) {
       break;
     case ExpectationType::kDrawnLength:
       ok = read_drawn(reader, check, context) && ok;
+      break;
+    case ExpectationType::kZPosition:
+      ok = read_z(reader, check, context) && ok;
+      break;
+    case ExpectationType::kExtrusionRatio:
+      ok = read_extrusion(reader, check, context) && ok;
       break;
     case ExpectationType::kStrokes:
       if (const auto strokes = reader.integer("strokes")) {

@@ -88,6 +88,14 @@ CartesianConfig read_cartesian(TableReader& reader, SocketChecker& sockets) {
     axes.finish();
   }
   if (const auto threshold = reader.number("pen_down_at_or_below_mm")) config.pen_down_at_or_below_mm = *threshold;
+  if (const auto draw = reader.string("draw")) {
+    if (*draw == "z" || *draw == "extruding") {
+      config.draws_while_extruding = *draw == "extruding";
+    } else {
+      reader.error("draw", "'draw' must be \"z\" (the pen is down while z is low) or \"extruding\", got \"" + *draw + "\"");
+    }
+    if (config.draws_while_extruding && !config.e) reader.error("draw", "'draw = \"extruding\"' needs an 'e' socket");
+  }
   return config;
 }
 

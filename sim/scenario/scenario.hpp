@@ -78,8 +78,10 @@ struct CartesianConfig {
   double y_steps_per_mm = 80;
   double z_steps_per_mm = 400;
   double e_steps_per_mm = 93;
-  /// The pen is down while z ≤ this (mm).
+  /// The pen is down while z ≤ this (mm)...
   double pen_down_at_or_below_mm = 0;
+  /// ...or, with draw = "extruding", while the extruder advances (a printer's toolpath).
+  bool draws_while_extruding = false;
 };
 
 /// Polar turntable: the table turns the paper under a pen on a radial arm.
@@ -256,6 +258,8 @@ enum class ExpectationType {
   kHostCompleted,  ///< a host client ran all its steps without a timeout
   kBounds,         ///< the bounding box of every pen-down stroke
   kDrawnLength,    ///< the total pen-down path length
+  kZPosition,      ///< the machine's final z (mm)
+  kExtrusionRatio, ///< extruder advance per mm of pen-down (extruding) path
 };
 
 /// One end-of-run check. Only the fields of its type are meaningful.
@@ -275,6 +279,11 @@ struct Expectation {
   double bounds_mm[4] = {0, 0, 0, 0};
   /// Pen-down path length (mm), within tolerance_mm.
   double drawn_mm = 0;
+  /// Final z (mm), within tolerance_mm.
+  double z_mm = 0;
+  /// Extruder mm per mm of pen-down path, within relative_tolerance (0.01 = 1 %).
+  double extruded_per_mm = 0;
+  double relative_tolerance = 0.01;
   /// Port pulses / rejections: the port; for pulses also the signal (0..5 = X, Y, R, T, Z, E)
   /// and the expected forward and/or reverse counts.
   PortLineRef port;

@@ -1,4 +1,5 @@
 // Simulation assembly, part 1: sketches → boards, driver sockets → models, and the machine.
+#include <algorithm>
 #include <filesystem>
 #include <functional>
 
@@ -46,7 +47,12 @@ std::unique_ptr<Machine> make_cartesian(const scenario::CartesianConfig& config,
   settings.z_steps_per_mm = config.z_steps_per_mm;
   settings.e_steps_per_mm = config.e_steps_per_mm;
   settings.pen_down_at_or_below_mm = config.pen_down_at_or_below_mm;
+  settings.draws_while_extruding = config.draws_while_extruding;
   settings.trace = trace;
+  // One axis steps at a time, so the pen stair-steps up to a step off the true path on each
+  // axis: the stored toolpath smooths that out (its length is then the path's, not the stairs').
+  const double coarsest_step_mm = 1.0 / std::min(config.x_steps_per_mm, config.y_steps_per_mm);
+  settings.trace.tolerance_mm = std::max(trace.tolerance_mm, 1.5 * coarsest_step_mm);
   return std::make_unique<CartesianMachine>(CartesianDrivers{axis(config.x), axis(config.y), axis(config.z), axis(config.e)},
                                             settings);
 }

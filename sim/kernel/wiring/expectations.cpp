@@ -88,6 +88,38 @@ ExpectationResult drawn_length(const Expectation& expectation, const Simulation&
               ": got " + millimetres(drawn)};
 }
 
+ExpectationResult z_position(const Expectation& expectation, const Simulation& simulation) {
+  const std::optional<double> z = simulation.machine() ? simulation.machine()->axis_mm(MachineAxis::kZ) : std::nullopt;
+  if (!z) return {false, "z_mm: the machine has no z axis"};
+  return {std::fabs(*z - expectation.z_mm) <= expectation.tolerance_mm,
+          "z at " + millimetres(expectation.z_mm) + " mm ± " + millimetres(expectation.tolerance_mm) + ": got " +
+              millimetres(*z)};
+}
+
+double polyline_length_mm(const std::vector<Polyline>& strokes) {
+  double length = 0;
+  for (const Polyline& stroke : strokes) {
+    for (size_t i = 1; i < stroke.size(); ++i) {
+      length += std::hypot(stroke[i].x_mm - stroke[i - 1].x_mm, stroke[i].y_mm - stroke[i - 1].y_mm);
+    }
+  }
+  return length;
+}
+
+// Both lengths come from the machine's motors: the extruder's advance, and the pen-down
+// (extruding) toolpath as stored — polylines that smooth out the axes' stair steps, which would
+// otherwise add up to a fifth to a curve's length.
+ExpectationResult extrusion_ratio(const Expectation& expectation, const Simulation& simulation) {
+  const std::optional<double> e = simulation.machine() ? simulation.machine()->axis_mm(MachineAxis::kE) : std::nullopt;
+  if (!e) return {false, "extruded_per_mm: the machine has no extruder"};
+  const double path = polyline_length_mm(simulation.machine()->strokes());
+  char text[160];
+  std::snprintf(text, sizeof text, "extruded %.4f mm over %.3f mm of path: %.6f per mm (expected %.6f ± %.2f %%)", *e,
+                path, path > 0 ? *e / path : 0.0, expectation.extruded_per_mm, expectation.relative_tolerance * 100);
+  if (path <= 0) return {false, text};
+  return {std::fabs(*e / path - expectation.extruded_per_mm) <= expectation.relative_tolerance * expectation.extruded_per_mm, text};
+}
+
 const PulseCounts* counts_of(const scenario::PortLineRef& port, const Simulation& simulation) {
   const SimBoard* board = simulation.board(port.board);
   if (board == nullptr) return nullptr;
@@ -207,6 +239,8 @@ ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation
     case ExpectationType::kStrokes: return strokes(expectation, simulation);
     case ExpectationType::kBounds: return bounds(expectation, simulation);
     case ExpectationType::kDrawnLength: return drawn_length(expectation, simulation);
+    case ExpectationType::kZPosition: return z_position(expectation, simulation);
+    case ExpectationType::kExtrusionRatio: return extrusion_ratio(expectation, simulation);
     case ExpectationType::kPortPulses: return port_pulses(expectation, simulation);
     case ExpectationType::kCableCountsMatch: return cable_counts(scenario, simulation);
     case ExpectationType::kRejected: return rejected(expectation, simulation);

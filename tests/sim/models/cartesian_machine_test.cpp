@@ -77,5 +77,41 @@ TEST(CartesianMachine, AnOptionalTravelAreaIsMonitored) {
   EXPECT_DOUBLE_EQ(machine.travel()->max_overshoot_mm(), 0.1);
 }
 
+// A printer draws while the extruder advances: it keeps drawing for extruding_hold after the
+// last advance (extruder steps come less often than the axes'), and a retraction's refill is
+// not a deposit.
+TEST(CartesianMachine, APrinterDrawsWhileTheExtruderAdvances) {
+  StepperDriver x(enabled()), e(enabled());
+  CartesianSettings settings;
+  settings.draws_while_extruding = true;
+  settings.extruding_hold = 100 * kMillisecond;
+  CartesianDrivers drivers;
+  drivers.x = &x;
+  drivers.e = &e;
+  CartesianMachine machine(drivers, settings);
+  machine.update(0);
+  EXPECT_FALSE(machine.pen_down());  // nothing extruded yet
+  steps(x, 80);                      // a travel move: 1 mm, no deposit
+  machine.update(10 * kMillisecond);
+  EXPECT_FALSE(machine.pen_down());
+  steps(e, 1);
+  machine.update(20 * kMillisecond);
+  EXPECT_TRUE(machine.pen_down());
+  steps(x, 80);                                 // printing 1 mm...
+  machine.update(120 * kMillisecond);           // ...100 ms after the extruder's last step
+  EXPECT_TRUE(machine.pen_down());
+  steps(x, 80);
+  machine.update(121 * kMillisecond);           // past the hold: the nozzle is travelling
+  EXPECT_FALSE(machine.pen_down());
+  steps(e, -5);                                 // retract...
+  machine.update(130 * kMillisecond);
+  steps(e, 5);                                  // ...and refill to where it was: no deposit
+  machine.update(140 * kMillisecond);
+  EXPECT_FALSE(machine.pen_down());
+  EXPECT_EQ(machine.axis_mm(MachineAxis::kE), 1.0 / 93);
+  ASSERT_EQ(machine.strokes().size(), 1u);
+  EXPECT_EQ(machine.strokes()[0], (Polyline{{1, 0}, {3, 0}}));
+}
+
 }  // namespace
 }  // namespace stepdance::sim

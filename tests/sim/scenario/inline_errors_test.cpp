@@ -85,7 +85,7 @@ std::vector<InlineCase> cases() {
         {13, "'cable_counts_match' can only be true"}}},
       {"detail_of_another_check",
        "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n[[expect]]\nstrokes = 2\ntolerance_mm = 0.1\n",
-       {{11, "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm' or 'drawn_mm'"}}},
+       {{11, "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm', 'drawn_mm' or 'z_mm'"}}},
       {"geometry_checks",
        "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n"
        "[[expect]]\nbounds_mm = [0, 10, -1, 20]\n"
@@ -106,6 +106,13 @@ std::vector<InlineCase> cases() {
         {13, "'release_s' must be in [0, 5], got 9"},
         {14, "'start_count' does not apply to a pendulum"},
         {17, "'turn' needs an encoder, but 'swing' is a pendulum"}}},
+      {"printer_checks_need_a_printer",
+       "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n"
+       "[[expect]]\nz_mm = 3\n"
+       "[[expect]]\nextruded_per_mm = 0.05\nrelative_tolerance = 2\n",
+       {{10, "'z_mm' needs a cartesian [machine] with a 'z' socket"},
+        {12, "'extruded_per_mm' needs a cartesian [machine] with an 'e' socket"},
+        {13, "'relative_tolerance' must be in (0, 1), got 2"}}},
       {"geometry_needs_a_machine", "[[expect]]\ndrawn_mm = 3\n", {{7, "'drawn_mm' needs a [machine]"}}},
       {"output_values",
        "[output]\npng_px_per_mm = 0\ncsv_interval_ms = -5\npen_up_travel = \"yes\"\nvcd_ports = [\"ghost:IN_A\", 3]\n",
