@@ -49,7 +49,7 @@ void setup() {
   // The servo board counts raw steps.
   channel_z.begin(&output_c, SIGNAL_E);
 
-  // Blocks run in the order they begin: encoders first, then the kinematics they feed.
+  // The engine runs each block after the blocks that feed it, whatever the begin() order.
   encoder_1.begin(ENCODER_1);
   encoder_1.set_ratio(24, 2400);  // one 2400-count turn of the knob = 24 mm
   encoder_1.invert();
