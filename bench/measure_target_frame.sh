@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
-# Counts Cortex-M7 instructions per frame of the Step-A-Sketch-sized graph under QEMU (mps2-an500)
-# and turns them into an estimated share of the 40 us frame at 600 MHz. Method: docs/benchmarks-target.md.
-# Usage: bench/measure_target_frame.sh [frames]   (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|Release|...)
+# Counts Cortex-M7 instructions per frame of a benchmark graph under QEMU (mps2-an500) and turns
+# them into an estimated share of the 40 us frame at 600 MHz. Method: docs/benchmarks-target.md.
+# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|harmonograph|clay_texturizer]
+#        (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|Release|...)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames=${1:-20000}
+workload=${2:-step_a_sketch}
 build_type=${STEPDANCE_QEMU_BUILD_TYPE:-MinSizeRel}
-build_dir=${STEPDANCE_QEMU_BENCH_DIR:-build-qemu-m7-bench-$build_type}
+build_dir=${STEPDANCE_QEMU_BENCH_DIR:-build-qemu-m7-bench-$build_type-$workload}
 budget_cycles=24000                        # 40 us at 600 MHz
 run_frame_symbol=_ZN9stepdance6Engine9run_frameEv
 
 cmake -S targets/qemu-m7 -B "$build_dir" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/cortex-m7.cmake" \
-  -DCMAKE_BUILD_TYPE="$build_type" -DSTEPDANCE_BENCH_FRAMES="$frames" >/dev/null
+  -DCMAKE_BUILD_TYPE="$build_type" -DSTEPDANCE_BENCH_FRAMES="$frames" -DSTEPDANCE_BENCH_WORKLOAD="$workload" >/dev/null
 cmake --build "$build_dir" -j"$(nproc)" --target bench_frame >/dev/null
 image="$build_dir/bench_frame.elf"
 qemu=(qemu-system-arm -M mps2-an500 -cpu cortex-m7 -nographic -monitor none

@@ -1,9 +1,15 @@
-// Frame-cost benchmark image for QEMU's mps2-an500: runs N frames of the Step-A-Sketch-sized graph
-// on the manual backend between two marker calls, timed by a CMSDK timer (see docs/benchmarks-target.md).
+// Frame-cost benchmark image for QEMU's mps2-an500: runs N frames of a benchmark graph (the
+// Step-A-Sketch-sized one by default; STEPDANCE_BENCH_GRAPH_HEADER and _CLASS name another) on
+// the manual backend between two marker calls, timed by a CMSDK timer (docs/benchmarks-target.md).
 #include <stdint.h>
 #include <stdio.h>
 
-#include "step_a_sketch_graph.hpp"
+#ifndef STEPDANCE_BENCH_GRAPH_HEADER
+#define STEPDANCE_BENCH_GRAPH_HEADER "step_a_sketch_graph.hpp"
+#define STEPDANCE_BENCH_GRAPH_CLASS StepASketchGraph
+#endif
+#include STEPDANCE_BENCH_GRAPH_HEADER
+using BenchGraph = stepdance::workloads::STEPDANCE_BENCH_GRAPH_CLASS;
 
 #ifndef STEPDANCE_BENCH_FRAMES
 #define STEPDANCE_BENCH_FRAMES 20000
@@ -52,7 +58,7 @@ constexpr uint32_t kKnownLoopIterations = 1000000;
 }  // namespace
 
 int main(int, char**) {
-  stepdance::workloads::StepASketchGraph graph;
+  BenchGraph graph;
   timer_start();
 
   uint32_t start = timer_ticks();
