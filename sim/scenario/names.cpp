@@ -36,6 +36,7 @@ constexpr DeviceKind kDeviceKinds[] = {
     {DeviceType::kButton, "button", "a button", "D1, D2 or A1..A4", is_digital_or_analog},
     {DeviceType::kLimitSwitch, "limit_switch", "a limit switch", "LIMIT_A..LIMIT_D", is_limit},
     {DeviceType::kPendulum, "pendulum", "a pendulum", "ENC1 or ENC2", is_encoder},
+    {DeviceType::kFiveBarArm, "five_bar_arm", "a five-bar arm", "ENC1 or ENC2", is_encoder},
 };
 }  // namespace
 

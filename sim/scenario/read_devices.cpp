@@ -1,4 +1,5 @@
 // [[device]]: encoders, potentiometers, buttons, limit switches and pendulums on board connectors.
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -15,6 +16,9 @@ constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"pulses_per_revolution", DeviceType::kPendulum}, {"amplitude_deg", DeviceType::kPendulum},
     {"period_s", DeviceType::kPendulum},             {"decay_s", DeviceType::kPendulum},
     {"release_s", DeviceType::kPendulum},
+    {"pulses_per_revolution", DeviceType::kFiveBarArm}, {"left_connector", DeviceType::kFiveBarArm},
+    {"path_mm", DeviceType::kFiveBarArm},              {"speed_mm_per_s", DeviceType::kFiveBarArm},
+    {"start_s", DeviceType::kFiveBarArm},
     {"position", DeviceType::kPotentiometer},        {"bounce_ms", DeviceType::kButton},
     {"pressed_level", DeviceType::kButton},          {"axis", DeviceType::kLimitSwitch},
     {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
@@ -90,6 +94,46 @@ std::string_view machine_type_name(const MachineConfig& machine) {
   return "corexy_plotter";
 }
 
+/// One path point: [x, y] or [x, y, dwell_s], finite, dwell in [0, 86400].
+bool read_path_point(const toml::node& item, DeviceConfig& device) {
+  const toml::array* point = item.as_array();
+  if (point == nullptr || point->size() < 2 || point->size() > 3) return false;
+  double values[3] = {0, 0, 0};
+  for (size_t i = 0; i < point->size(); ++i) {
+    const auto value = (*point)[i].value<double>();
+    if (!value || !std::isfinite(*value)) return false;
+    values[i] = *value;
+  }
+  if (values[2] < 0 || values[2] > 86400) return false;
+  device.path_mm.emplace_back(values[0], values[1]);
+  device.dwell_s.push_back(values[2]);
+  return true;
+}
+
+/// path_mm: at least one point.
+void read_path(TableReader& reader, DeviceConfig& device) {
+  const toml::array* path = reader.array("path_mm", Need::kRequired);
+  if (path == nullptr) return;
+  for (const toml::node& item : *path) {
+    if (!read_path_point(item, device)) {
+      reader.error("path_mm", "'path_mm' must be a list of [x, y] or [x, y, dwell_s] points (mm, s; dwell in 0..86400)");
+      device.path_mm.clear();
+      device.dwell_s.clear();
+      return;
+    }
+  }
+  if (device.path_mm.empty()) reader.error("path_mm", "'path_mm' needs at least one point");
+}
+
+void read_five_bar_arm(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
+  device.pulses_per_revolution = 10000;  // 40,000 counts a turn, as on the original's pantograph
+  read_pulses_per_revolution(reader, device);
+  read_path(reader, device);
+  read_bounded(reader, "speed_mm_per_s", 0, false, 10000, device.speed_mm_per_s);
+  const double last_s = context.duration_valid ? to_seconds(context.scenario.duration) : 86400;
+  read_bounded(reader, "start_s", 0, true, last_s, device.start_s);
+}
+
 void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
   for (const auto& [key, owner] : kTypeKeys) {
     if (!key_belongs(key, device.type) && reader.has(key)) {
@@ -100,6 +144,9 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
   switch (device.type) {
     case DeviceType::kPendulum:
       read_pendulum(reader, device, context);
+      break;
+    case DeviceType::kFiveBarArm:
+      read_five_bar_arm(reader, device, context);
       break;
     case DeviceType::kEncoder:
       read_pulses_per_revolution(reader, device);
@@ -158,11 +205,32 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
   }
 }
 
+
 struct DeviceNames {
   std::map<std::string, int> first_lines;
   /// (board, connector) → device using it.
   std::map<std::pair<std::string, Connector>, std::string> connectors;
 };
+
+/// A five-bar arm's second encoder: left_connector (required), an encoder connector of its own.
+void read_left_connector(TableReader& reader, DeviceConfig& device, const BoardConfig* board, DeviceNames& names) {
+  const auto text = reader.string("left_connector", Need::kRequired);
+  if (!text) return;
+  const std::optional<Connector> connector = parse_connector(*text);
+  if (!connector || !device_fits_connector(DeviceType::kFiveBarArm, *connector)) {
+    reader.error("left_connector", "'left_connector' must be ENC1 or ENC2, got \"" + *text + "\"");
+    return;
+  }
+  if (board == nullptr) return;
+  const auto key = std::make_pair(board->name, *connector);
+  if (const auto user = names.connectors.find(key); user != names.connectors.end()) {
+    reader.error("left_connector", "connector " + *text + " of board '" + board->name + "' is already used by device '" +
+                                       user->second + "'");
+    return;
+  }
+  names.connectors.emplace(key, device.name);
+  device.left_connector = *connector;
+}
 
 void read_device(const toml::table& table, ParseContext& context, DeviceNames& names) {
   TableReader reader(table, "[[device]]", context.reporter);
@@ -223,6 +291,7 @@ void read_device(const toml::table& table, ParseContext& context, DeviceNames& n
   }
   if (!type) return;  // the type-specific keys cannot be judged
   device.type = *type;
+  if (device.type == DeviceType::kFiveBarArm) read_left_connector(reader, device, board, names);
   read_type_keys(reader, device, context);
   reader.finish();
   if (named) context.scenario.devices.push_back(std::move(device));

@@ -20,6 +20,7 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
     {"drawn_mm", ExpectationType::kDrawnLength},
     {"z_mm", ExpectationType::kZPosition},
     {"extruded_per_mm", ExpectationType::kExtrusionRatio},
+    {"traces", ExpectationType::kTraces},
     {"cable_counts_match", ExpectationType::kCableCountsMatch},
     {"rejected", ExpectationType::kRejected},
     {"port", ExpectationType::kPortPulses},
@@ -28,7 +29,7 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
 
 /// Keys that only go with one check (port also goes with rejected, handled apart).
 constexpr std::pair<const char*, const char*> kDetails[] = {
-    {"steps", "motor"},  {"relative_tolerance", "extruded_per_mm"}, {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
+    {"steps", "motor"},  {"relative_tolerance", "extruded_per_mm"}, {"offset_mm", "traces"}, {"from_point", "traces"}, {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
     {"reply", "host"},   {"replies", "host"},        {"count", "host"},     {"within_ms", "host"}, {"after", "host"},
     {"completed", "host"},
 };
@@ -51,7 +52,7 @@ std::optional<std::pair<const char*, ExpectationType>> choose_check(TableReader&
   }
   if (!chosen) {
     reader.reporter().error(reader.line(),
-                            "an [[expect]] needs one check: motor, pen_mm, strokes, bounds_mm, drawn_mm, z_mm, extruded_per_mm, port, "
+                            "an [[expect]] needs one check: motor, pen_mm, strokes, bounds_mm, drawn_mm, z_mm, extruded_per_mm, traces, port, "
                             "cable_counts_match, rejected or host");
   }
   return chosen;
@@ -88,7 +89,8 @@ bool read_motor(TableReader& reader, Expectation& check, const ParseContext& con
 /// The checks that take a tolerance_mm.
 bool takes_tolerance(ExpectationType type) {
   return type == ExpectationType::kPenPosition || type == ExpectationType::kBounds ||
-         type == ExpectationType::kDrawnLength || type == ExpectationType::kZPosition;
+         type == ExpectationType::kDrawnLength || type == ExpectationType::kZPosition ||
+         type == ExpectationType::kTraces;
 }
 
 /// tolerance_mm (>= 0, finite) and the [machine] every pen check needs.
@@ -169,6 +171,35 @@ bool read_extrusion(TableReader& reader, Expectation& check, const ParseContext&
     ok = false;
   }
   return ok;
+}
+
+/// traces = "<five_bar_arm device>", offset_mm = [dx, dy], from_point = N, tolerance_mm.
+bool read_traces(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const auto name = reader.string("traces");
+  bool ok = name.has_value();
+  const DeviceConfig* device = name ? context.scenario.device(*name) : nullptr;
+  if (name && (device == nullptr || device->type != DeviceType::kFiveBarArm)) {
+    reader.error("traces", "'traces' must name a five_bar_arm device, got '" + *name + "'");
+    ok = false;
+  }
+  if (ok) check.traces = *name;
+  if (const toml::array* offset = reader.array("offset_mm")) {
+    if (!read_number_pair(*offset, check.offset_mm)) {
+      reader.error("offset_mm", "'offset_mm' must be two numbers [dx, dy]");
+      ok = false;
+    }
+  }
+  if (const auto from = reader.integer("from_point")) {
+    const int64_t points = device != nullptr ? static_cast<int64_t>(device->path_mm.size()) : 0;
+    if (*from >= 0 && (device == nullptr || *from < points)) {
+      check.from_point = *from;
+    } else {
+      reader.error("from_point", "'from_point' must index the arm's path_mm (0.." + std::to_string(points - 1) +
+                                     "), got " + std::to_string(*from));
+      ok = false;
+    }
+  }
+  return read_tolerance(reader, check, context, "traces") && ok;
 }
 
 bool read_drawn(TableReader& reader, Expectation& check, const ParseContext& context) {
@@ -326,7 +357,7 @@ void read_expectation(const toml::table& table, ParseContext& context) {
   bool ok = true;
   if (!takes_tolerance(check.type) && reader.has("tolerance_mm")) {
     reader.accept("tolerance_mm");
-    reader.error("tolerance_mm", "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm', 'drawn_mm' or 'z_mm'");
+    reader.error("tolerance_mm", "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm', 'drawn_mm', 'z_mm' or 'traces'");
     ok = false;
   }
   for (const auto& [key, owner] : kDetails) {
@@ -355,6 +386,9 @@ void read_expectation(const toml::table& table, ParseContext& context) {
       break;
     case ExpectationType::kExtrusionRatio:
       ok = read_extrusion(reader, check, context) && ok;
+      break;
+    case ExpectationType::kTraces:
+      ok = read_traces(reader, check, context) && ok;
       break;
     case ExpectationType::kStrokes:
       if (const auto strokes = reader.integer("strokes")) {

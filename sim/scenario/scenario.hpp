@@ -105,7 +105,7 @@ struct MachineConfig {
 };
 
 /// Input device models.
-enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch, kPendulum };
+enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch, kPendulum, kFiveBarArm };
 
 /// Connectors on a module's edge.
 enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD };
@@ -144,6 +144,13 @@ struct DeviceConfig {
   double period_s = 2;
   double decay_s = 30;
   double release_s = 0;
+  /// Five-bar arm: `connector` is the right joint's encoder, left_connector the left's; the
+  /// stylus leaves home at start_s and visits path_mm ([x, y] or [x, y, dwell_s]) at speed_mm_per_s.
+  Connector left_connector = Connector::kEnc2;
+  std::vector<std::pair<double, double>> path_mm;
+  std::vector<double> dwell_s;  ///< per path point: [x, y, dwell_s] rests there (0 if omitted)
+  double speed_mm_per_s = 20;
+  double start_s = 0;
   int line = 0;
 };
 
@@ -260,6 +267,7 @@ enum class ExpectationType {
   kDrawnLength,    ///< the total pen-down path length
   kZPosition,      ///< the machine's final z (mm)
   kExtrusionRatio, ///< extruder advance per mm of pen-down (extruding) path
+  kTraces,         ///< the drawing copies a five-bar arm's stylus path
 };
 
 /// One end-of-run check. Only the fields of its type are meaningful.
@@ -284,6 +292,11 @@ struct Expectation {
   /// Extruder mm per mm of pen-down path, within relative_tolerance (0.01 = 1 %).
   double extruded_per_mm = 0;
   double relative_tolerance = 0.01;
+  /// Traces: the five-bar arm device, the shift from its coordinates to the page's, and the
+  /// first path point that must be drawn (0 = path_mm[0]); within tolerance_mm both ways.
+  std::string traces;
+  double offset_mm[2] = {0, 0};
+  int64_t from_point = 0;
   /// Port pulses / rejections: the port; for pulses also the signal (0..5 = X, Y, R, T, Z, E)
   /// and the expected forward and/or reverse counts.
   PortLineRef port;

@@ -46,6 +46,11 @@ std::string port_key(const std::string& board, bool output, char port) {
 
 }  // namespace
 
+const FiveBarArm* Simulation::five_bar_arm(const std::string& name) const {
+  const auto found = arms_.find(name);
+  return found == arms_.end() ? nullptr : found->second.get();
+}
+
 void Simulation::build_devices() {
   for (const scenario::DeviceConfig& device : scenario_.devices) build_device(device, slot(device.board));
 }
@@ -70,6 +75,20 @@ void Simulation::build_device(const scenario::DeviceConfig& device, BoardSlot& s
       auto& pendulum = pendulums_[device.name] = std::make_unique<DampedPendulum>(settings);
       const DampedPendulum* model = pendulum.get();
       board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->count_at(time); });
+      break;
+    }
+    case scenario::DeviceType::kFiveBarArm: {
+      FiveBarArmSettings settings;
+      settings.pulses_per_revolution = device.pulses_per_revolution;
+      for (const auto& [x, y] : device.path_mm) settings.path_mm.push_back(PenPoint{x, y});
+      settings.dwell_s = device.dwell_s;
+      settings.speed_mm_per_s = device.speed_mm_per_s;
+      settings.start = from_seconds(device.start_s);
+      auto& arm = arms_[device.name] = std::make_unique<FiveBarArm>(settings);
+      const FiveBarArm* model = arm.get();
+      board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->right_count_at(time); });
+      board.connect_encoder(connector_index(device.left_connector),
+                            [model](SimTime time) { return model->left_count_at(time); });
       break;
     }
     case scenario::DeviceType::kPotentiometer: {

@@ -120,6 +120,53 @@ ExpectationResult extrusion_ratio(const Expectation& expectation, const Simulati
   return {std::fabs(*e / path - expectation.extruded_per_mm) <= expectation.relative_tolerance * expectation.extruded_per_mm, text};
 }
 
+/// Distance from p to the segment ab.
+double to_segment_mm(const PenPoint& p, const PenPoint& a, const PenPoint& b) {
+  const double dx = b.x_mm - a.x_mm, dy = b.y_mm - a.y_mm;
+  const double span = dx * dx + dy * dy;
+  double k = span > 0 ? ((p.x_mm - a.x_mm) * dx + (p.y_mm - a.y_mm) * dy) / span : 0.0;
+  k = std::clamp(k, 0.0, 1.0);
+  return std::hypot(p.x_mm - (a.x_mm + k * dx), p.y_mm - (a.y_mm + k * dy));
+}
+
+/// Distance from p to the nearest point of any of the polylines (a one-point line is a dot).
+double to_polylines_mm(const PenPoint& p, const std::vector<Polyline>& lines) {
+  double nearest = INFINITY;
+  for (const Polyline& line : lines) {
+    if (line.size() == 1) nearest = std::min(nearest, std::hypot(p.x_mm - line[0].x_mm, p.y_mm - line[0].y_mm));
+    for (size_t i = 1; i < line.size(); ++i) nearest = std::min(nearest, to_segment_mm(p, line[i - 1], line[i]));
+  }
+  return nearest;
+}
+
+// Both ways: every drawn point lies near the stylus's path, and every path point from
+// `from_point` on lies near the drawing — so nothing extra is drawn and nothing is left out.
+ExpectationResult traces(const Expectation& expectation, const Simulation& simulation) {
+  const FiveBarArm* arm = simulation.five_bar_arm(expectation.traces);
+  if (arm == nullptr || simulation.machine() == nullptr) return {false, "traces: no such arm or no machine"};
+  Polyline path;
+  for (const PenPoint& point : arm->path()) {
+    path.push_back({point.x_mm + expectation.offset_mm[0], point.y_mm + expectation.offset_mm[1]});
+  }
+  const std::vector<Polyline>& strokes = simulation.machine()->strokes();
+  double drawn_off = 0;
+  for (const Polyline& stroke : strokes) {
+    for (const PenPoint& point : stroke) drawn_off = std::max(drawn_off, to_polylines_mm(point, {path}));
+  }
+  double missed = 0;
+  // path[0] is the arm's home; path_mm[i] is path[i + 1].
+  for (size_t i = static_cast<size_t>(expectation.from_point) + 1; i < path.size(); ++i) {
+    missed = std::max(missed, to_polylines_mm(path[i], strokes));
+  }
+  char text[200];
+  std::snprintf(text, sizeof text,
+                "drawing traces arm '%s' within %.3f mm: farthest drawn point %.4f mm off its path, farthest "
+                "path point %.4f mm from the drawing",
+                expectation.traces.c_str(), expectation.tolerance_mm, drawn_off, missed);
+  const bool drew = !strokes.empty();
+  return {drew && drawn_off <= expectation.tolerance_mm && missed <= expectation.tolerance_mm, text};
+}
+
 const PulseCounts* counts_of(const scenario::PortLineRef& port, const Simulation& simulation) {
   const SimBoard* board = simulation.board(port.board);
   if (board == nullptr) return nullptr;
@@ -241,6 +288,7 @@ ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation
     case ExpectationType::kDrawnLength: return drawn_length(expectation, simulation);
     case ExpectationType::kZPosition: return z_position(expectation, simulation);
     case ExpectationType::kExtrusionRatio: return extrusion_ratio(expectation, simulation);
+    case ExpectationType::kTraces: return traces(expectation, simulation);
     case ExpectationType::kPortPulses: return port_pulses(expectation, simulation);
     case ExpectationType::kCableCountsMatch: return cable_counts(scenario, simulation);
     case ExpectationType::kRejected: return rejected(expectation, simulation);

@@ -12,6 +12,7 @@
 #include "board/sim_board.hpp"
 #include "models/bouncing_button.hpp"
 #include "models/damped_pendulum.hpp"
+#include "models/five_bar_arm.hpp"
 #include "models/limit_switch.hpp"
 #include "models/machine.hpp"
 #include "models/potentiometer.hpp"
@@ -111,6 +112,8 @@ class Simulation {
   const std::vector<std::unique_ptr<CableLink>>& cables() const { return cables_; }
   /// The scripted host client on `board` (null if none).
   const HostClient* host_client(const std::string& board) const;
+  /// The five-bar arm device with this name, or null.
+  const FiveBarArm* five_bar_arm(const std::string& name) const;
   /// The JSON summary text as it would be written now (wall time left out).
   std::string summary_text() const;
 
@@ -175,6 +178,7 @@ class Simulation {
   std::map<std::string, std::unique_ptr<BouncingButton>> buttons_;
   std::vector<std::unique_ptr<LimitSwitch>> limit_switches_;
   std::map<std::string, std::unique_ptr<DampedPendulum>> pendulums_;
+  std::map<std::string, std::unique_ptr<FiveBarArm>> arms_;
 
   PulseDelivery delivery_;
   std::vector<std::unique_ptr<CableLink>> cables_;

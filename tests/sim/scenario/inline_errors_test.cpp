@@ -85,7 +85,7 @@ std::vector<InlineCase> cases() {
         {13, "'cable_counts_match' can only be true"}}},
       {"detail_of_another_check",
        "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n[[expect]]\nstrokes = 2\ntolerance_mm = 0.1\n",
-       {{11, "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm', 'drawn_mm' or 'z_mm'"}}},
+       {{11, "'tolerance_mm' only goes with 'pen_mm', 'bounds_mm', 'drawn_mm', 'z_mm' or 'traces'"}}},
       {"geometry_checks",
        "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n"
        "[[expect]]\nbounds_mm = [0, 10, -1, 20]\n"
@@ -113,6 +113,19 @@ std::vector<InlineCase> cases() {
        {{10, "'z_mm' needs a cartesian [machine] with a 'z' socket"},
         {12, "'extruded_per_mm' needs a cartesian [machine] with an 'e' socket"},
         {13, "'relative_tolerance' must be in (0, 1), got 2"}}},
+      {"five_bar_arm_values",
+       "[[device]]\nname = \"arm\"\ntype = \"five_bar_arm\"\nboard = \"driver\"\nconnector = \"ENC1\"\n"
+       "left_connector = \"ENC1\"\npath_mm = [[1, 2, -1]]\nspeed_mm_per_s = 0\n"
+       "[[device]]\nname = \"other\"\ntype = \"five_bar_arm\"\nboard = \"driver\"\nconnector = \"ENC2\"\n"
+       "path_mm = []\n"
+       "[[expect]]\ntraces = \"ghost\"\n",
+       {{11, "connector ENC1 of board 'driver' is already used by device 'arm'"},
+        {12, "'path_mm' must be a list of [x, y] or [x, y, dwell_s] points (mm, s; dwell in 0..86400)"},
+        {13, "'speed_mm_per_s' must be in (0, 10000], got 0"},
+        {14, "[[device]] is missing required key 'left_connector'"},
+        {19, "'path_mm' needs at least one point"},
+        {21, "'traces' must name a five_bar_arm device, got 'ghost'"},
+        {21, "'traces' needs a [machine]"}}},
       {"geometry_needs_a_machine", "[[expect]]\ndrawn_mm = 3\n", {{7, "'drawn_mm' needs a [machine]"}}},
       {"output_values",
        "[output]\npng_px_per_mm = 0\ncsv_interval_ms = -5\npen_up_travel = \"yes\"\nvcd_ports = [\"ghost:IN_A\", 3]\n",
