@@ -320,5 +320,43 @@ TEST_F(FiveBarBlocksTest, UnreachablePosesHoldTheLastOutputAndAreCounted) {
   EXPECT_EQ(warning_count(), 3u);
 }
 
+// With an acceleration limit a, the speed ramps by a·dt per frame: after n frames of the ramp the
+// output has moved a·dt²·n(n+1)/2; once at speed v it moves v·dt per frame. Off by default.
+TEST_F(GeneratorsTest, VelocityRampsToANewSpeedUnderItsAccelerationLimit) {
+  VelocityGenerator velocity;
+  ASSERT_EQ(velocity.begin(), Status::kOk);
+  velocity.set_acceleration(100.0);  // units/s²: 10 units/s is reached in 0.1 s = 2500 frames
+  velocity.speed_units_per_sec = 10.0f;
+  ASSERT_EQ(dance_start(), Status::kOk);
+  hal_manual::run_frames(2500);
+  EXPECT_NEAR(velocity.current_speed(), 10.0, 1e-9);
+  EXPECT_NEAR(velocity.output.read(ABSOLUTE), 100.0 * kDt * kDt * 2500 * 2501 / 2, 1e-9);  // 0.5002
+  hal_manual::run_frames(2500);
+  EXPECT_NEAR(velocity.output.read(ABSOLUTE), 100.0 * kDt * kDt * 2500 * 2501 / 2 + 10.0 * kDt * 2500, 1e-9);
+  velocity.speed_units_per_sec = 0.0f;  // and down again over 0.1 s, not at once
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(velocity.current_speed(), 10.0 - 100.0 * kDt, 1e-9);
+}
+
+TEST_F(GeneratorsTest, WithoutALimitTheSpeedStepsAtOnce) {
+  VelocityGenerator velocity;
+  ASSERT_EQ(velocity.begin(), Status::kOk);
+  velocity.speed_units_per_sec = 10.0f;
+  ASSERT_EQ(dance_start(), Status::kOk);
+  hal_manual::run_frames(1);
+  EXPECT_NEAR(velocity.output.read(ABSOLUTE), 10.0 * kDt, 1e-12);
+}
+
+TEST_F(GeneratorsTest, CircleSpeedRampsUnderItsAngularAccelerationLimit) {
+  CircleGenerator circle;
+  ASSERT_EQ(circle.begin(), Status::kOk);
+  circle.setNoInput();
+  circle.set_angular_acceleration(2 * kPi);  // rad/s²
+  circle.rotational_speed_rev_per_sec = static_cast<float>(2 * kPi);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  hal_manual::run_frames(1000);  // 40 ms into a 1 s ramp: θ = α·dt²·n(n+1)/2
+  EXPECT_NEAR(circle.angle(), 2 * kPi * kDt * kDt * 1000 * 1001 / 2, 1e-9);
+}
+
 }  // namespace
 }  // namespace stepdance

@@ -26,6 +26,10 @@ class CircleGenerator : public Block {
   Status begin();
   /// The angle advances with time instead of the input. Context: loop.
   void setNoInput() { no_input_ = true; }
+  /// After setNoInput(): limits how fast the angular rate (rotational_speed_rev_per_sec) may change, rad/s², so a
+  /// jump of the knob that sets it makes the motion speed up or slow down smoothly; 0 (default)
+  /// = no limit. Context: any.
+  void set_angular_acceleration(double rad_per_s2) { angle_.set_angular_acceleration(rad_per_s2); }
   /// The angle, radians in [0, 2π). Context: any.
   double angle() const { return angle_.angle(); }
   void debugPrint() {}

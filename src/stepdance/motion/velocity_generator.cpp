@@ -5,12 +5,13 @@ namespace stepdance {
 
 Status VelocityGenerator::begin() {
   position_ = 0;
+  ramp_.reset();
   output.begin(&position_, BLOCKPORT_OUTPUT, this);
   return register_in(Stage::kPreChannel);
 }
 
 void VelocityGenerator::run() {
-  const double step_world = static_cast<double>(speed_units_per_sec) * kFramePeriodS;
+  const double step_world = ramp_.follow(static_cast<double>(speed_units_per_sec)) * kFramePeriodS;
   output.set(output.convert_world_to_block_units(step_world), INCREMENTAL);
   output.push();
 }

@@ -23,6 +23,10 @@ class WaveGenerator1D : public Block {
   const char* type_name() const override { return "WaveGenerator1D"; }
   Status begin();
   void setNoInput() { no_input_ = true; }
+  /// After setNoInput(): limits how fast the angular rate (frequency) may change, rad/s², so a
+  /// jump of the knob that sets it makes the motion speed up or slow down smoothly; 0 (default)
+  /// = no limit. Context: any.
+  void set_angular_acceleration(double rad_per_s2) { angle_.set_angular_acceleration(rad_per_s2); }
   void debugPrint() {}
   void run() override;
 
