@@ -7,10 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.hpp"
-#include "output/capture_decoder.hpp"
-#include "output/decode_report.hpp"
-#include "output/step_dir_pairs.hpp"
-#include "output/vcd_reader.hpp"
+#include "decode/capture_decoder.hpp"
+#include "decode/decode_report.hpp"
+#include "decode/step_dir_pairs.hpp"
+#include "decode/vcd_reader.hpp"
 
 namespace stepdance::cli {
 namespace {

@@ -1,7 +1,7 @@
 // Two boards joined by a cable: what the Basic Module sends is what the Driver Module decodes.
-#include "output/capture_decoder.hpp"
-#include "output/step_dir_pairs.hpp"
-#include "output/vcd_reader.hpp"
+#include "decode/capture_decoder.hpp"
+#include "decode/step_dir_pairs.hpp"
+#include "decode/vcd_reader.hpp"
 #include "simulation_fixture.hpp"
 
 namespace stepdance::sim::test {

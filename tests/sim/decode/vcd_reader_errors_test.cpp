@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "output/vcd_reader.hpp"
+#include "decode/vcd_reader.hpp"
 #include "output/vcd_writer.hpp"
 
 namespace stepdance::sim {

@@ -3,7 +3,7 @@
 
 #include <sstream>
 
-#include "output/vcd_reader.hpp"
+#include "decode/vcd_reader.hpp"
 #include "output/vcd_writer.hpp"
 #include "sim/output/edge_pairs.hpp"
 #include "sim/output/test_files.hpp"

@@ -1,5 +1,5 @@
 // STEP/DIR wire pairing by name suffix, and wire lookup by full or bare name.
-#include "output/step_dir_pairs.hpp"
+#include "decode/step_dir_pairs.hpp"
 
 #include <cctype>
 

@@ -1,7 +1,7 @@
 // Decode report: exact text and JSON for a hand-made result, and STEP_DIR wording.
 #include <gtest/gtest.h>
 
-#include "output/decode_report.hpp"
+#include "decode/decode_report.hpp"
 
 namespace stepdance::sim {
 namespace {

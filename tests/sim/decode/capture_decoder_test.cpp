@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "output/capture_decoder.hpp"
+#include "decode/capture_decoder.hpp"
 #include "stepdance/protocol/frame_encoder.hpp"
 
 namespace stepdance::sim {

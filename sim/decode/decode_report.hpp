@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "output/capture_decoder.hpp"
+#include "decode/capture_decoder.hpp"
 
 namespace stepdance::sim {
 

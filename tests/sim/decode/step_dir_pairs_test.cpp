@@ -1,7 +1,7 @@
 // STEP/DIR wire pairing by name and wire lookup by full or bare name.
 #include <gtest/gtest.h>
 
-#include "output/step_dir_pairs.hpp"
+#include "decode/step_dir_pairs.hpp"
 
 namespace stepdance::sim {
 namespace {

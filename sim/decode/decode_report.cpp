@@ -1,5 +1,5 @@
 // Decode report formatting: aligned text columns and sorted-key JSON.
-#include "output/decode_report.hpp"
+#include "decode/decode_report.hpp"
 
 #include "output/number_format.hpp"
 

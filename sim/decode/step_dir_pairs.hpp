@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "output/vcd_reader.hpp"
+#include "decode/vcd_reader.hpp"
 
 namespace stepdance::sim {
 

@@ -5,9 +5,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "output/capture_decoder.hpp"
-#include "output/step_dir_pairs.hpp"
-#include "output/vcd_reader.hpp"
+#include "decode/capture_decoder.hpp"
+#include "decode/step_dir_pairs.hpp"
+#include "decode/vcd_reader.hpp"
 #include "output/vcd_writer.hpp"
 #include "sim/output/test_files.hpp"
 #include "stepdance/protocol/frame_encoder.hpp"

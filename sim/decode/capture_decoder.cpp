@@ -1,5 +1,5 @@
 // Capture decoder: pairs STEP edges into pulses, samples DIR, calls decode_pulse, groups frames.
-#include "output/capture_decoder.hpp"
+#include "decode/capture_decoder.hpp"
 
 #include <algorithm>
 

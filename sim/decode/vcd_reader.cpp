@@ -1,5 +1,5 @@
 // VCD reader: a whitespace tokenizer, the declaration section, then value changes into edge lists.
-#include "output/vcd_reader.hpp"
+#include "decode/vcd_reader.hpp"
 
 #include <charconv>
 #include <cstdint>
