@@ -10,13 +10,8 @@
 #include <vector>
 
 #include "board/sim_board.hpp"
-#include "models/bouncing_button.hpp"
-#include "models/damped_pendulum.hpp"
 #include "models/five_bar_arm.hpp"
-#include "models/limit_switch.hpp"
 #include "models/machine.hpp"
-#include "models/potentiometer.hpp"
-#include "models/quadrature_encoder.hpp"
 #include "models/servo_board.hpp"
 #include "models/stepper_driver.hpp"
 #include "output/summary_writer.hpp"
@@ -26,6 +21,7 @@
 #include "scheduler/scheduler.hpp"
 #include "wiring/cable_link.hpp"
 #include "wiring/csv_sampler.hpp"
+#include "wiring/device_kinds.hpp"
 #include "wiring/expectations.hpp"
 #include "wiring/host_client.hpp"
 #include "wiring/pulse_delivery.hpp"
@@ -136,7 +132,6 @@ class Simulation {
   void build_sockets(BoardSlot& slot);
   bool build_machine(SimulationError& error);
   void build_devices();
-  void build_device(const scenario::DeviceConfig& device, BoardSlot& slot);
   void apply_timeline();
   void build_hosts();
   void build_cables();
@@ -173,12 +168,8 @@ class Simulation {
   uint32_t ticks_since_machine_update_ = 0;
   SimTime machine_time_ns_ = 0;
 
-  std::map<std::string, std::unique_ptr<QuadratureEncoder>> encoders_;
-  std::map<std::string, std::unique_ptr<Potentiometer>> pots_;
-  std::map<std::string, std::unique_ptr<BouncingButton>> buttons_;
-  std::vector<std::unique_ptr<LimitSwitch>> limit_switches_;
-  std::map<std::string, std::unique_ptr<DampedPendulum>> pendulums_;
-  std::map<std::string, std::unique_ptr<FiveBarArm>> arms_;
+  /// Every [[device]] by name, whatever its kind (wiring/device_kinds.hpp).
+  std::map<std::string, std::unique_ptr<SimDevice>> devices_;
 
   PulseDelivery delivery_;
   std::vector<std::unique_ptr<CableLink>> cables_;

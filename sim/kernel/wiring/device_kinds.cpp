@@ -1,0 +1,199 @@
+// The simulator's input device kinds: encoder, potentiometer, button, limit switch, pendulum,
+// five-bar arm — each a builder that makes its model and plugs it into the board.
+#include "wiring/device_kinds.hpp"
+
+#include <stdexcept>
+
+#include "models/bouncing_button.hpp"
+#include "models/damped_pendulum.hpp"
+#include "models/five_bar_arm.hpp"
+#include "models/limit_switch.hpp"
+#include "models/potentiometer.hpp"
+#include "models/quadrature_encoder.hpp"
+#include "models/random_stream.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+using scenario::Connector;
+using scenario::DeviceConfig;
+
+/// Index of a connector within its group (ENC1 → 0, A3 → 2, D2 → 1, LIMIT_C → 2).
+uint8_t connector_index(Connector connector) {
+  switch (connector) {
+    case Connector::kEnc1: case Connector::kA1: case Connector::kD1: case Connector::kLimitA: return 0;
+    case Connector::kEnc2: case Connector::kA2: case Connector::kD2: case Connector::kLimitB: return 1;
+    case Connector::kA3: case Connector::kLimitC: return 2;
+    case Connector::kA4: case Connector::kLimitD: return 3;
+  }
+  return 0;
+}
+
+bool is_analog_connector(Connector connector) {
+  return connector == Connector::kA1 || connector == Connector::kA2 || connector == Connector::kA3 ||
+         connector == Connector::kA4;
+}
+
+/// The board pin behind a digital or analog connector.
+uint8_t connector_pin(const BoardDefinition& board, Connector connector) {
+  const uint8_t index = connector_index(connector);
+  if (is_analog_connector(connector)) return board.io_a[index];
+  if (connector == Connector::kD1 || connector == Connector::kD2) return board.io_d[index];
+  return board.output_ports[index].limit;
+}
+
+MachineAxis machine_axis(scenario::LimitAxis axis) {
+  if (axis == scenario::LimitAxis::kY) return MachineAxis::kY;
+  return axis == scenario::LimitAxis::kZ ? MachineAxis::kZ : MachineAxis::kX;
+}
+
+/// A CSV column of integer counts read from a model.
+template <typename Read>
+CsvProbe counts_probe(const std::string& column, Read read) {
+  return {{column, 0}, [read](SimTime time) { return static_cast<double>(read(time)); }};
+}
+
+class EncoderDevice : public ModelDevice<QuadratureEncoder> {
+ public:
+  using ModelDevice::ModelDevice;
+  void schedule(const scenario::Action& action) override { model().turn(action.time, action.counts, action.over); }
+  void add_probes(const std::string& name, std::vector<CsvProbe>& probes) const override {
+    const QuadratureEncoder* encoder = &model();
+    probes.push_back(counts_probe(name + "_counts", [encoder](SimTime time) { return encoder->count_at(time); }));
+  }
+};
+
+class PotentiometerDevice : public ModelDevice<Potentiometer> {
+ public:
+  using ModelDevice::ModelDevice;
+  void schedule(const scenario::Action& action) override { model().set(action.time, action.position); }
+  void add_probes(const std::string& name, std::vector<CsvProbe>& probes) const override {
+    const Potentiometer* pot = &model();
+    probes.push_back(counts_probe(name + "_adc", [pot](SimTime time) { return pot->adc_value_at(time); }));
+  }
+};
+
+class ButtonDevice : public ModelDevice<BouncingButton> {
+ public:
+  using ModelDevice::ModelDevice;
+  void schedule(const scenario::Action& action) override {
+    switch (action.type) {
+      case scenario::ActionType::kPress: model().press(action.time); break;
+      case scenario::ActionType::kRelease: model().release(action.time); break;
+      case scenario::ActionType::kClick: model().click(action.time, action.hold); break;
+      default: break;
+    }
+  }
+};
+
+class PendulumDevice : public ModelDevice<DampedPendulum> {
+ public:
+  using ModelDevice::ModelDevice;
+  void add_probes(const std::string& name, std::vector<CsvProbe>& probes) const override {
+    const DampedPendulum* pendulum = &model();
+    probes.push_back(counts_probe(name + "_counts", [pendulum](SimTime time) { return pendulum->count_at(time); }));
+  }
+};
+
+class ArmDevice : public ModelDevice<FiveBarArm> {
+ public:
+  using ModelDevice::ModelDevice;
+  void add_probes(const std::string& name, std::vector<CsvProbe>& probes) const override {
+    const FiveBarArm* arm = &model();
+    probes.push_back(counts_probe(name + "_right_counts", [arm](SimTime time) { return arm->right_count_at(time); }));
+    probes.push_back(counts_probe(name + "_left_counts", [arm](SimTime time) { return arm->left_count_at(time); }));
+  }
+};
+
+std::unique_ptr<SimDevice> build_encoder(const DeviceConfig& device, DeviceSocket& socket) {
+  auto built = std::make_unique<EncoderDevice>(
+      std::make_unique<QuadratureEncoder>(device.pulses_per_revolution, device.start_count));
+  const QuadratureEncoder* model = &built->model();
+  socket.board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->count_at(time); });
+  return built;
+}
+
+std::unique_ptr<SimDevice> build_potentiometer(const DeviceConfig& device, DeviceSocket& socket) {
+  auto built = std::make_unique<PotentiometerDevice>(std::make_unique<Potentiometer>(device.position));
+  const Potentiometer* model = &built->model();
+  socket.board.connect_adc(connector_pin(socket.board.definition(), device.connector),
+                           [model](SimTime time) { return model->adc_value_at(time); });
+  return built;
+}
+
+std::unique_ptr<SimDevice> build_button(const DeviceConfig& device, DeviceSocket& socket) {
+  ButtonSettings settings;
+  settings.bounce = static_cast<SimTime>(device.bounce_ms * 1e6 + 0.5);
+  settings.pressed_level = device.pressed_level_high;
+  settings.seed = mix_seed(socket.scenario_seed, static_cast<uint64_t>(device.line));
+  auto built = std::make_unique<ButtonDevice>(std::make_unique<BouncingButton>(settings));
+  const BouncingButton* model = &built->model();
+  socket.board.connect_input_pin(connector_pin(socket.board.definition(), device.connector),
+                                 [model](SimTime time) { return model->level_at(time); });
+  return built;
+}
+
+std::unique_ptr<SimDevice> build_limit_switch(const DeviceConfig& device, DeviceSocket& socket) {
+  const auto side = device.side == scenario::LimitSide::kAbove ? sim::LimitSide::kAbove : sim::LimitSide::kBelow;
+  auto built = std::make_unique<ModelDevice<LimitSwitch>>(
+      std::make_unique<LimitSwitch>(machine_axis(device.axis), device.at_mm, side));
+  const LimitSwitch* model = &built->model();
+  std::function<const Machine*()> machine = socket.machine;
+  socket.board.connect_input_pin(connector_pin(socket.board.definition(), device.connector),
+                                 [model, machine](SimTime) {
+                                   const Machine* watched = machine();
+                                   return watched != nullptr && model->active(*watched);
+                                 });
+  return built;
+}
+
+std::unique_ptr<SimDevice> build_pendulum(const DeviceConfig& device, DeviceSocket& socket) {
+  PendulumSettings settings;
+  settings.pulses_per_revolution = device.pulses_per_revolution;
+  settings.amplitude_deg = device.amplitude_deg;
+  settings.period_s = device.period_s;
+  settings.decay_s = device.decay_s;
+  settings.release = from_seconds(device.release_s);
+  auto built = std::make_unique<PendulumDevice>(std::make_unique<DampedPendulum>(settings));
+  const DampedPendulum* model = &built->model();
+  socket.board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->count_at(time); });
+  return built;
+}
+
+std::unique_ptr<SimDevice> build_five_bar_arm(const DeviceConfig& device, DeviceSocket& socket) {
+  FiveBarArmSettings settings;
+  settings.pulses_per_revolution = device.pulses_per_revolution;
+  for (const auto& [x, y] : device.path_mm) settings.path_mm.push_back(PenPoint{x, y});
+  settings.dwell_s = device.dwell_s;
+  settings.speed_mm_per_s = device.speed_mm_per_s;
+  settings.start = from_seconds(device.start_s);
+  auto built = std::make_unique<ArmDevice>(std::make_unique<FiveBarArm>(settings));
+  const FiveBarArm* model = &built->model();
+  socket.board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->right_count_at(time); });
+  socket.board.connect_encoder(connector_index(device.left_connector),
+                               [model](SimTime time) { return model->left_count_at(time); });
+  return built;
+}
+
+using Builder = std::unique_ptr<SimDevice> (*)(const DeviceConfig&, DeviceSocket&);
+
+/// One row per kind (the scenario reader's own table, names.cpp, lists the same kinds).
+constexpr std::pair<scenario::DeviceType, Builder> kBuilders[] = {
+    {scenario::DeviceType::kEncoder, build_encoder},
+    {scenario::DeviceType::kPotentiometer, build_potentiometer},
+    {scenario::DeviceType::kButton, build_button},
+    {scenario::DeviceType::kLimitSwitch, build_limit_switch},
+    {scenario::DeviceType::kPendulum, build_pendulum},
+    {scenario::DeviceType::kFiveBarArm, build_five_bar_arm},
+};
+
+}  // namespace
+
+std::unique_ptr<SimDevice> build_device_model(const DeviceConfig& device, DeviceSocket& socket) {
+  for (const auto& [type, build] : kBuilders) {
+    if (type == device.type) return build(device, socket);
+  }
+  throw std::logic_error("device '" + device.name + "': no builder for its kind");  // every kind has a row
+}
+
+}  // namespace stepdance::sim
