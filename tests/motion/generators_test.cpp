@@ -6,6 +6,7 @@
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/motion/angle_source.hpp"
 #include "stepdance/motion/attractor_2d.hpp"
 #include "stepdance/motion/circle_generator.hpp"
 #include "stepdance/motion/kinematics_five_bar.hpp"
@@ -356,6 +357,20 @@ TEST_F(GeneratorsTest, CircleSpeedRampsUnderItsAngularAccelerationLimit) {
   ASSERT_EQ(dance_start(), Status::kOk);
   hal_manual::run_frames(1000);  // 40 ms into a 1 s ramp: θ = α·dt²·n(n+1)/2
   EXPECT_NEAR(circle.angle(), 2 * kPi * kDt * kDt * 1000 * 1001 / 2, 1e-9);
+}
+
+TEST(AngleSourceWrap, EveryAngleLandsInZeroToTwoPi) {
+  constexpr double kTwoPi = AngleSource::kTwoPi;
+  EXPECT_EQ(AngleSource::wrap(0.25), 0.25);
+  EXPECT_EQ(AngleSource::wrap(kTwoPi + 0.5), fmod(kTwoPi + 0.5, kTwoPi));  // as exact as fmod
+  EXPECT_EQ(AngleSource::wrap(-0.5), -0.5 + kTwoPi);
+  EXPECT_EQ(AngleSource::wrap(kTwoPi), 0.0);
+  EXPECT_EQ(AngleSource::wrap(-1e-20), 0.0);  // −1e−20 + 2π rounds to 2π: not in [0, 2π)
+  EXPECT_EQ(AngleSource::wrap(5 * kTwoPi + 1), fmod(5 * kTwoPi + 1, kTwoPi));
+  const double far_below = AngleSource::wrap(-7 * kTwoPi - 1);
+  EXPECT_GE(far_below, 0.0);
+  EXPECT_LT(far_below, kTwoPi);
+  EXPECT_NEAR(far_below, kTwoPi - 1, 1e-12);
 }
 
 }  // namespace

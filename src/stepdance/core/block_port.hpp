@@ -49,6 +49,8 @@ class BlockPort {
   void map(BlockPort* peer, PositionMode mode = INCREMENTAL);
   /// The mapped peer, or nullptr. Context: any.
   BlockPort* peer() const { return peer_; }
+  /// The mode push() and pull() use without an argument (set by map()). Context: any.
+  PositionMode default_mode() const { return mode_; }
 
   /// Writes a value in world units: INCREMENTAL adds to this frame's pending change, ABSOLUTE
   /// replaces the pending position. Used by pushers and by user code. Context: any.

@@ -18,8 +18,7 @@ class AngleSource {
   /// Advances and returns the new angle, radians. `input` has been pulled and updated.
   double advance(double rate, bool use_input, const BlockPort& input) {
     const double step = use_input ? rate * input.read(INCREMENTAL) : ramp_.follow(rate) * kFramePeriodS;
-    theta_ = fmod(theta_ + step, kTwoPi);
-    if (theta_ < 0.0) theta_ += kTwoPi;
+    theta_ = wrap(theta_ + step);
     return theta_;
   }
   double angle() const { return theta_; }
@@ -31,6 +30,19 @@ class AngleSource {
   void set_angular_acceleration(double rad_per_s2) { ramp_.set_limit(rad_per_s2); }
 
   static constexpr double kTwoPi = 6.283185307179586476925;
+
+  /// x in [0, 2π). A step of less than a turn (every frame but a jump of the input) needs one
+  /// subtraction or addition, exact as fmod is (Sterbenz); anything larger goes through fmod.
+  static double wrap(double x) {
+    if (x >= kTwoPi && x < 2 * kTwoPi) return x - kTwoPi;
+    if (x < 0.0 && x >= -kTwoPi) {
+      const double up = x + kTwoPi;
+      return up < kTwoPi ? up : 0.0;  // a tiny negative x rounds up to 2π itself
+    }
+    if (x >= 0.0 && x < kTwoPi) return x;
+    const double rest = fmod(x, kTwoPi);
+    return rest < 0.0 ? (rest + kTwoPi < kTwoPi ? rest + kTwoPi : 0.0) : rest;
+  }
 
  private:
   double theta_ = 0.0;

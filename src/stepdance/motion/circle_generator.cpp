@@ -20,8 +20,10 @@ void CircleGenerator::run() {
   const double before = angle_.angle();
   const double after = angle_.advance(rotational_speed_rev_per_sec, !no_input_, input);
   const double r = radius;
-  const double dx = r * (sin(after) - sin(before));
-  const double dy = r * (cos(before) - cos(after));
+  const double sin_before = trig_.sine(before);  // where the last frame ended: remembered
+  const double cos_before = trig_.cosine(before);
+  const double dx = r * (trig_.sine(after) - sin_before);
+  const double dy = r * (cos_before - trig_.cosine(after));
   output_x.set(output_x.convert_world_to_block_units(dx), INCREMENTAL);
   output_y.set(output_y.convert_world_to_block_units(dy), INCREMENTAL);
   output_x.push();

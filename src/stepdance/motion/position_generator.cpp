@@ -79,6 +79,11 @@ void PositionGenerator::run() {
   follow_output_reset();
   GoCommand command;
   while (commands_.pop(command) == Status::kOk) apply(command);
+  // At rest with an incremental output, another zero change would change nothing anywhere (the
+  // first one was committed and pushed, so reads of the port already say 0): skip the frame.
+  const bool resting = position_ == target_ && last_set_ == target_ && output.default_mode() == INCREMENTAL;
+  if (resting && at_rest_) return;
+  at_rest_ = resting;
   const double position = position_;
   const double remaining = target_ - position;
   const double max_step = max_step_block_units();

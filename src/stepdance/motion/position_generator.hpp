@@ -85,6 +85,7 @@ class PositionGenerator : public Block {
   DecimalPosition position_ = 0;  // the output's state, block units
   DecimalPosition target_ = 0;    // block units
   DecimalPosition last_set_ = 0;  // position_ as this block last set it
+  bool at_rest_ = false;          // a zero change was committed and pushed since the last move
 };
 
 }  // namespace stepdance

@@ -20,7 +20,8 @@ void WaveGenerator1D::run() {
   // The angle source wraps into [0, 2π); the sines do not care.
   const double after = angle_.advance(frequency, !no_input_, input);
   const double phi = phase;
-  const double change = static_cast<double>(amplitude) * (sin(after + phi) - sin(before + phi));
+  const double from = trig_.sine(before + phi);  // where the last frame ended: remembered
+  const double change = static_cast<double>(amplitude) * (trig_.sine(after + phi) - from);
   output.set(output.convert_world_to_block_units(change), INCREMENTAL);
   output.push();
 }

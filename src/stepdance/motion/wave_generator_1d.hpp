@@ -6,6 +6,7 @@
 #include "stepdance/core/status.hpp"
 #include "stepdance/core/units.hpp"
 #include "stepdance/motion/angle_source.hpp"
+#include "stepdance/motion/trig_memo.hpp"
 
 namespace stepdance {
 
@@ -41,6 +42,7 @@ class WaveGenerator1D : public Block {
 
  private:
   AngleSource angle_;
+  TrigMemo trig_;
   bool no_input_ = false;
   DecimalPosition input_state_ = 0;
   DecimalPosition output_state_ = 0;
