@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 3u
+#define STEPDANCE_BOARD_ABI_VERSION 4u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -50,10 +50,13 @@ typedef struct StepdanceBoardStatsV1 {
   const char* fault_name;        /* its name ("registry full", …); static */
   uint32_t fault_count;          /* fault() calls */
   const char* fault_detail;      /* "" if none; valid until the next call into the board */
-  uint32_t carried[4];           /* OutputPort::signals_carried() per output port */
-  uint32_t sent[4][6][2];        /* OutputPort::pulses_sent(signal, direction) per port */
-  uint8_t output_begun[4];       /* 1 if an OutputPort object owns the port */
-} StepdanceBoardStatsV1;
+} StepdanceBoardStatsV1;         /* per-block statistics come as named counters (read_counters) */
+
+/* One named counter of one block (Block::report_counters): the block's class name, its instance
+ * among blocks of that class (registration order), the counter's name and value. Strings are
+ * static. */
+typedef void (*StepdanceCounterFnV1)(void* context, const char* block, uint32_t instance, const char* name,
+                                     uint64_t value);
 
 /* Callbacks from the board into the simulator. `context` is the host_context given to attach. */
 typedef struct StepdanceHostV1 {
@@ -110,6 +113,8 @@ typedef struct StepdanceBoardV1 {
   /* The port's capture ISR: hands one pulse to the sink registered by port_in_begin(). */
   void (*deliver_pulse)(int64_t now_ns, uint8_t port, const StepdanceCapturedPulseV1* pulse);
   void (*read_stats)(StepdanceBoardStatsV1* stats);
+  /* Calls emit once per counter of every registered block. */
+  void (*read_counters)(StepdanceCounterFnV1 emit, void* context);
 } StepdanceBoardV1;
 
 /* The one exported symbol. Returns NULL if host->abi_version differs from the board's. */

@@ -272,6 +272,30 @@ int SimBoard::read_console() {
   return byte;
 }
 
+std::vector<SimBoard::BlockCounter> SimBoard::counters() const {
+  std::vector<BlockCounter> out;
+  if (board_ == nullptr) return out;
+  board_->read_counters(
+      [](void* context, const char* block, uint32_t instance, const char* name, uint64_t value) {
+        static_cast<std::vector<BlockCounter>*>(context)->push_back(
+            {std::string(block) + "#" + std::to_string(instance), name, value});
+      },
+      &out);
+  return out;
+}
+
+uint64_t SimBoard::port_counter(const std::string& block_class, uint8_t port, const std::string& name) const {
+  const std::vector<BlockCounter> all = counters();
+  const std::string prefix = block_class + "#";
+  for (const BlockCounter& candidate : all) {
+    if (candidate.block.rfind(prefix, 0) != 0 || candidate.name != "port" || candidate.value != port) continue;
+    for (const BlockCounter& counter : all) {
+      if (counter.block == candidate.block && counter.name == name) return counter.value;
+    }
+  }
+  return 0;
+}
+
 StepdanceBoardStatsV1 SimBoard::stats() const {
   StepdanceBoardStatsV1 stats{};
   if (board_ != nullptr) board_->read_stats(&stats);

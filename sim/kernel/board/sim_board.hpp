@@ -114,6 +114,17 @@ class SimBoard {
   bool input_begun(uint8_t port) const { return ports_[port].input_begun; }
   /// The board's own counters (frames, overruns, faults, pulses sent, signals carried).
   StepdanceBoardStatsV1 stats() const;
+  /// One named counter of one block on the board.
+  struct BlockCounter {
+    std::string block;  ///< class name and instance, e.g. "OutputPort#0"
+    std::string name;
+    uint64_t value = 0;
+  };
+  /// Every block's named counters, in the engine's block order.
+  std::vector<BlockCounter> counters() const;
+  /// Counter `name` of the block of class `block_class` whose "port" counter is `port` (an
+  /// OutputPort or InputPort), or 0 if there is none.
+  uint64_t port_counter(const std::string& block_class, uint8_t port, const std::string& name) const;
   const std::vector<BoardFault>& faults() const { return faults_; }
   bool in_safe_state() const { return safe_state_; }
   /// Everything the sketch printed so far.

@@ -8,7 +8,6 @@
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
-#include "stepdance/io/output_port.hpp"
 
 // The sketch's two Arduino entry points.
 void setup();
@@ -16,20 +15,6 @@ void loop();
 
 namespace stepdance::sim_runtime {
 namespace {
-
-StepdanceBoardStatsV1* stats_being_filled = nullptr;
-
-void record_output_port(OutputPort* port) {
-  const uint8_t index = port->port_index();
-  if (index >= 4 || stats_being_filled == nullptr) return;
-  StepdanceBoardStatsV1& stats = *stats_being_filled;
-  stats.output_begun[index] = 1;
-  stats.carried[index] = port->signals_carried();
-  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    stats.sent[index][signal][0] = port->pulses_sent(signal, DIRECTION_FORWARD);
-    stats.sent[index][signal][1] = port->pulses_sent(signal, DIRECTION_REVERSE);
-  }
-}
 
 void read_stats(StepdanceBoardStatsV1* stats) {
   *stats = StepdanceBoardStatsV1{};
@@ -39,9 +24,35 @@ void read_stats(StepdanceBoardStatsV1* stats) {
   stats->fault_name = to_string(fault_reason());
   stats->fault_count = fault_count();
   stats->fault_detail = fault_detail();
-  stats_being_filled = stats;
-  iterate_across_all_output_ports(&record_output_port);
-  stats_being_filled = nullptr;
+}
+
+// Hands every block's named counters to the host, numbering blocks of one class in order.
+class CounterForwarder : public CounterSink {
+ public:
+  CounterForwarder(StepdanceCounterFnV1 emit, void* context) : emit_(emit), context_(context) {}
+  void visit(const Block& block) {
+    block_ = block.type_name();
+    instance_ = 0;
+    for (uint32_t i = 0; i < seen_count_; ++i) instance_ += seen_[i] == block_ ? 1u : 0u;
+    if (seen_count_ < kMaxBlocks) seen_[seen_count_++] = block_;
+    block.report_counters(*this);
+  }
+  void counter(const char* name, uint64_t value) override { emit_(context_, block_, instance_, name, value); }
+
+ private:
+  static constexpr uint32_t kMaxBlocks = 256;
+  StepdanceCounterFnV1 emit_;
+  void* context_;
+  const char* block_ = "";
+  uint32_t instance_ = 0;
+  const char* seen_[kMaxBlocks] = {};
+  uint32_t seen_count_ = 0;
+};
+
+void read_counters(StepdanceCounterFnV1 emit, void* context) {
+  CounterForwarder forwarder(emit, context);
+  engine().for_each_block([](Block* block, void* state) { static_cast<CounterForwarder*>(state)->visit(*block); },
+                          &forwarder);
 }
 
 void run_setup(int64_t now) {
@@ -70,6 +81,7 @@ void deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pu
 
 StepdanceBoardV1 board_table = {
     STEPDANCE_BOARD_ABI_VERSION, 0, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
+    &read_counters,
 };
 
 }  // namespace

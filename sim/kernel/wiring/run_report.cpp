@@ -73,13 +73,19 @@ void Simulation::write_drawings(SimulationReport& report) const {
   }
 }
 
-// Per board: frames run and faults; per stepper socket: where the motor ended up.
+// Per board: frames run, faults and every block's named counters; per stepper socket: where
+// the motor ended up.
 void Simulation::add_board_extras(nlohmann::json& extra) const {
   nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
+  nlohmann::json counters = nlohmann::json::object();
   nlohmann::json motors = nlohmann::json::object();
   for (const BoardSlot& slot : boards_) {
     const StepdanceBoardStatsV1 stats = slot.board->stats();
     frames[slot.config->name] = stats.frames;
+    nlohmann::json& board_counters = counters[slot.config->name] = nlohmann::json::object();
+    for (const SimBoard::BlockCounter& counter : slot.board->counters()) {
+      board_counters[counter.block][counter.name] = counter.value;
+    }
     if (stats.fault_reason != 0) {
       nlohmann::json log = nlohmann::json::array();
       for (const BoardFault& fault : slot.board->faults()) {
@@ -99,6 +105,7 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   extra["faults"] = faults;
   extra["frames"] = frames;
   extra["motors"] = motors;
+  extra["counters"] = counters;
 }
 
 nlohmann::json Simulation::cable_extras() const {
@@ -148,7 +155,7 @@ RunSummary Simulation::run_summary() const {
         PortSummary& out = summary.ports[slot.config->name + ":OUT_" + letter];
         const PulseCounts& sent = slot.board->sent(port);
         for (uint8_t signal = 0; signal < kNumSignals; ++signal) out.pulses[signal] = {sent.forward[signal], sent.reverse[signal]};
-        out.carried = stats.carried[port];
+        out.carried = slot.board->port_counter("OutputPort", port, "carried");
       }
       if (slot.board->input_begun(port)) {
         PortSummary& in = summary.ports[slot.config->name + ":IN_" + letter];

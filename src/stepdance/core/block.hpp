@@ -1,6 +1,7 @@
 // Base class of every engine block (ports, channels, generators, kinematics, interfaces).
 #pragma once
 
+#include "stepdance/core/counters.hpp"
 #include "stepdance/core/stage.hpp"
 #include "stepdance/core/status.hpp"
 
@@ -26,6 +27,9 @@ class Block {
   bool is_enabled() const { return enabled_; }
   /// The block's class name, for reports (a cycle in the block graph, statistics). Context: any.
   virtual const char* type_name() const { return "Block"; }
+  /// Hands the block's statistics to `sink` as named counters (the simulator's summary and
+  /// any other reader get them without knowing the class). Default: none. Context: loop.
+  virtual void report_counters(CounterSink& sink) const { (void)sink; }
 
   /// Deep sync, downstream: re-derive outputs from inputs that were just reset, without motion.
   /// Called by an INPUT BlockPort's push_deep(). Context: loop (or frame ISR for GLOBAL moves).

@@ -129,6 +129,16 @@ void Engine::run_loop() {
   deliver_fault_reports();  // subscribers run here, in the loop, never in the frame
 }
 
+void Engine::for_each_block(void (*visit)(Block* block, void* context), void* context) {
+  for (uint8_t stage = 0; stage < kNumStages; ++stage) {
+    for (Block* block : registries_[stage]) {
+      bool seen = false;
+      for (uint8_t earlier = 0; earlier < stage && !seen; ++earlier) seen = registries_[earlier].contains(block);
+      if (!seen) visit(block, context);
+    }
+  }
+}
+
 void Engine::clear() {
   stop();
   hal::CriticalSection guard;

@@ -68,6 +68,10 @@ class Engine {
   /// Clears the load statistics. Context: loop.
   void reset_load() { load_.reset(); }
 
+  /// Calls visit(block, context) once for every registered block (a block registered in several
+  /// stages is visited once), in stage order then registration order. Context: loop.
+  void for_each_block(void (*visit)(Block* block, void* context), void* context);
+
   /// Unregisters everything and stops (tests and simulator resets). Context: loop.
   void clear();
 

@@ -93,6 +93,22 @@ void InputPort::set_ratio(double world_units, double pulses) {
   for (BlockPort* port : outputs_) port->set_ratio(world_units, pulses);
 }
 
+void InputPort::report_counters(CounterSink& sink) const {
+  static const char* const kReceived[kNumSignals][2] = {
+      {"received_x_forward", "received_x_reverse"}, {"received_y_forward", "received_y_reverse"},
+      {"received_r_forward", "received_r_reverse"}, {"received_t_forward", "received_t_reverse"},
+      {"received_z_forward", "received_z_reverse"}, {"received_e_forward", "received_e_reverse"},
+  };
+  sink.counter("port", port_);
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    sink.counter(kReceived[signal][0], pulses_received(signal, DIRECTION_FORWARD));
+    sink.counter(kReceived[signal][1], pulses_received(signal, DIRECTION_REVERSE));
+  }
+  sink.counter("rejected_too_short", rejected_too_short_);
+  sink.counter("rejected_too_long", rejected_too_long_);
+  sink.counter("ignored", ignored_);
+}
+
 uint32_t InputPort::pulses_received(uint8_t signal, uint8_t direction) const {
   if (signal >= kNumSignals) return 0;
   return received_[signal][direction == DIRECTION_FORWARD ? 1 : 0];

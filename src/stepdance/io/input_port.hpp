@@ -82,6 +82,9 @@ class InputPort : public Block {
   uint32_t ignored() const { return ignored_; }
   /// The port index (0..3), or 255 before begin(). Context: any.
   uint8_t port_index() const { return port_; }
+  /// port, received_<signal>_<forward|reverse>, rejected_too_short, rejected_too_long, ignored.
+  /// Context: loop.
+  void report_counters(CounterSink& sink) const override;
 
   /// The BlockPort of one signal (SIGNAL_X..SIGNAL_E); SIGNAL_X's for other values.
   /// Context: any.

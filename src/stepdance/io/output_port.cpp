@@ -83,6 +83,20 @@ void OutputPort::transmit_frame() {
   if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, frame.words);
 }
 
+void OutputPort::report_counters(CounterSink& sink) const {
+  static const char* const kSent[kNumSignals][2] = {
+      {"sent_x_forward", "sent_x_reverse"}, {"sent_y_forward", "sent_y_reverse"},
+      {"sent_r_forward", "sent_r_reverse"}, {"sent_t_forward", "sent_t_reverse"},
+      {"sent_z_forward", "sent_z_reverse"}, {"sent_e_forward", "sent_e_reverse"},
+  };
+  sink.counter("port", port_);
+  sink.counter("carried", signals_carried_);
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    sink.counter(kSent[signal][0], pulses_sent(signal, DIRECTION_FORWARD));
+    sink.counter(kSent[signal][1], pulses_sent(signal, DIRECTION_REVERSE));
+  }
+}
+
 void OutputPort::clear_statistics() {
   hal::CriticalSection guard;
   carried_mask_ = 0;

@@ -70,6 +70,9 @@ class OutputPort : public Block {
   uint32_t pulses_sent(uint8_t signal, uint8_t direction) const;
   /// Signal-frames deferred because the frame was full (each deferral counts once).
   uint32_t signals_carried() const { return signals_carried_; }
+  /// port (its index), carried, and sent_<signal>_<forward|reverse> for x, y, r, t, z, e.
+  /// Context: loop.
+  void report_counters(CounterSink& sink) const override;
   /// Net pulses still waiting for a frame on a signal (+ forward, − reverse).
   int32_t pending(uint8_t signal) const { return signal < kNumSignals ? pending_[signal] : 0; }
   /// Forgets pending pulses and zeroes the statistics (begin() does this). Context: loop.

@@ -25,6 +25,8 @@ class KinematicsFiveBarForward : public Block {
   void run() override;
   /// Frames whose pose was out of reach. Context: any.
   uint32_t unreachable_count() const { return unreachable_; }
+  /// unreachable. Context: loop.
+  void report_counters(CounterSink& sink) const override { sink.counter("unreachable", unreachable_); }
 
   BlockPort input_r;
   BlockPort input_l;
@@ -47,6 +49,8 @@ class KinematicsFiveBarInverse : public Block {
   Status begin(float s, float l1, float l2, float l3, float l4, float l5, float a6);
   void run() override;
   uint32_t unreachable_count() const { return unreachable_; }
+  /// unreachable. Context: loop.
+  void report_counters(CounterSink& sink) const override { sink.counter("unreachable", unreachable_); }
 
   BlockPort input_x;
   BlockPort input_y;

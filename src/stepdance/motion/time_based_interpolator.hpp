@@ -111,6 +111,11 @@ class TimeBasedInterpolator : public Block {
   uint32_t refused_moves() const { return refused_; }
   /// Frames in which a block ended at speed with nothing committed after it. Context: any.
   uint32_t underruns() const { return executor_.underruns(); }
+  /// refused_moves, underruns. Context: loop.
+  void report_counters(CounterSink& sink) const override {
+    sink.counter("refused_moves", refused_);
+    sink.counter("underruns", executor_.underruns());
+  }
   /// Where the last queued move ends, world units (axis 0..5). Context: loop.
   double planned_position(int axis) const { return planned_end_[axis]; }
 

@@ -42,7 +42,7 @@ TEST(SimBoardTest, StepASketchTurnsKnobCountsIntoMotorPulses) {
   EXPECT_EQ(board->sent(0).reverse[SIGNAL_E], 0u);
   EXPECT_EQ(board->sent(1).forward[SIGNAL_E], 80u);
   const StepdanceBoardStatsV1 stats = board->stats();
-  EXPECT_EQ(stats.sent[0][SIGNAL_E][0], 80u);  // the board's own count agrees with the wire
+  EXPECT_EQ(board->port_counter("OutputPort", 0, "sent_e_forward"), 80u);  // the board's own count agrees with the wire
   EXPECT_EQ(stats.frames, 2500u);               // frames at 40 µs … 100 ms
   EXPECT_FALSE(board->pin_level(14));           // ENABLE A driven low: driver on
 }
@@ -58,8 +58,8 @@ TEST(SimBoardTest, TwoBoardsRunningOneSketchKeepSeparateGlobals) {
   scheduler.run_until(20 * kMillisecond);
   EXPECT_EQ(first->sent(0).forward[SIGNAL_E], 40u);
   EXPECT_EQ(second->sent(0).reverse[SIGNAL_E], 20u);
-  EXPECT_EQ(first->stats().sent[0][SIGNAL_E][0], 40u);
-  EXPECT_EQ(second->stats().sent[0][SIGNAL_E][1], 20u);
+  EXPECT_EQ(first->port_counter("OutputPort", 0, "sent_e_forward"), 40u);
+  EXPECT_EQ(second->port_counter("OutputPort", 0, "sent_e_reverse"), 20u);
 }
 
 TEST(SimBoardTest, ConsoleLinesReachTheListener) {
