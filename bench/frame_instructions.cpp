@@ -1,5 +1,5 @@
-// Runs N frames of a benchmark graph (step_a_sketch, harmonograph or clay_texturizer); measured with callgrind to
-// count instructions per frame (see measure_frame_instructions.sh).
+// Runs N frames of a benchmark graph (step_a_sketch, step_a_sketch_tbi, harmonograph or
+// clay_texturizer); measured with callgrind to count instructions per frame (see measure_frame_instructions.sh).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -7,6 +7,7 @@
 #include "clay_texturizer_graph.hpp"
 #include "harmonograph_graph.hpp"
 #include "step_a_sketch_graph.hpp"
+#include "step_a_sketch_tbi_graph.hpp"
 
 namespace {
 
@@ -28,10 +29,12 @@ int main(int argc, char** argv) {
     pulses = run<stepdance::workloads::StepASketchGraph>(frames);
   } else if (std::strcmp(workload, "harmonograph") == 0) {
     pulses = run<stepdance::workloads::HarmonographGraph>(frames);
+  } else if (std::strcmp(workload, "step_a_sketch_tbi") == 0) {
+    pulses = run<stepdance::workloads::StepASketchTbiGraph>(frames);
   } else if (std::strcmp(workload, "clay_texturizer") == 0) {
     pulses = run<stepdance::workloads::ClayTexturizerGraph>(frames);
   } else {
-    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, harmonograph or clay_texturizer)\n", workload);
+    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph or clay_texturizer)\n", workload);
     return 2;
   }
   std::printf("workload=%s frames=%u pulses_a=%u\n", workload, frames, pulses);

@@ -147,7 +147,7 @@ TEST(RpcRegistry, OverflowIsRefusedCountedAndReported) {
   static double value = 0;
   char name[16];
   for (size_t i = 0; i < RPC::kMaxEntries + 3; ++i) {
-    snprintf(name, sizeof name, "v%zu", i);
+    snprintf(name, sizeof name, "v%u", static_cast<unsigned>(i));  // newlib-nano has no %zu
     rpc.enroll(static_cast<const char*>(name), value);
   }
   EXPECT_EQ(rpc.enrolled(), RPC::kMaxEntries);
