@@ -192,5 +192,44 @@ TEST_F(OutputPortTest, StepNowIsSentWithTheNextFrame) {
   EXPECT_EQ(d.pulses_sent(SIGNAL_E, DIRECTION_FORWARD), 1u);
 }
 
+// Idle timeout of 2 ms = 50 frames: the driver goes off after 50 quiet frames and comes back
+// in the frame a pulse is encoded (it plays on the wire the frame after). Off by default.
+TEST_F(OutputPortTest, AnIdleDriverIsDisabledAndWakesOnTheNextPulse) {
+  OutputPort a;
+  ASSERT_EQ(a.begin(OUTPUT_A), Status::kOk);
+  ASSERT_EQ(a.enable_driver(), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  hal_manual::run_frames(500);
+  EXPECT_FALSE(hal_manual::pin_level(kOutputAEnablePin));  // no timeout set: stays enabled
+  a.set_driver_idle_timeout_ms(2);
+  hal_manual::run_frames(49);
+  EXPECT_FALSE(hal_manual::pin_level(kOutputAEnablePin));
+  hal_manual::run_frames(1);
+  EXPECT_TRUE(hal_manual::pin_level(kOutputAEnablePin));  // 50 quiet frames: disabled
+  EXPECT_TRUE(a.driver_idle());
+  a.add_signal(SIGNAL_E, DIRECTION_FORWARD);
+  hal_manual::run_frames(1);
+  EXPECT_FALSE(hal_manual::pin_level(kOutputAEnablePin));  // enabled with the frame that steps
+  EXPECT_FALSE(a.driver_idle());
+  EXPECT_EQ(a.pulses_sent(SIGNAL_E, DIRECTION_FORWARD), 1u);
+}
+
+TEST_F(OutputPortTest, TheIdleTimeoutNeverWakesADriverTheSketchDisabled) {
+  OutputPort a;
+  ASSERT_EQ(a.begin(OUTPUT_A), Status::kOk);
+  ASSERT_EQ(a.disable_driver(), Status::kOk);
+  set_drivers_idle_timeout_ms(1);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  a.add_signal(SIGNAL_E, DIRECTION_FORWARD);
+  hal_manual::run_frames(100);
+  EXPECT_TRUE(hal_manual::pin_level(kOutputAEnablePin));  // still disabled, as the sketch said
+  EXPECT_FALSE(a.driver_idle());
+  ASSERT_EQ(a.enable_driver(), Status::kOk);  // the sketch's enable ends any idle state too
+  hal_manual::run_frames(25);
+  EXPECT_TRUE(hal_manual::pin_level(kOutputAEnablePin));  // 1 ms of quiet: idle again
+  set_drivers_idle_timeout_ms(0);  // turning the timeout off brings the driver back
+  EXPECT_FALSE(hal_manual::pin_level(kOutputAEnablePin));
+}
+
 }  // namespace
 }  // namespace stepdance

@@ -1,9 +1,12 @@
 // OutputPort: pending pulses, frame encoding, statistics, driver enable and current read-back.
 #include "stepdance/io/output_port.hpp"
 
+#include <stdint.h>
+
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fixed_list.hpp"
+#include "stepdance/core/units.hpp"
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
@@ -72,6 +75,7 @@ void OutputPort::transmit_frame() {
     request.active_mask |= bit(signal);
     if (pending > 0) request.forward_mask |= bit(signal);
   }
+  if (idle_timeout_frames_ != 0) idle_check(request.active_mask != 0);
   protocol::EncodedFrame frame;
   if (request.active_mask != 0) {
     request.priority_mask = carried_mask_ & request.active_mask;
@@ -130,6 +134,9 @@ Status OutputPort::enable_driver() {
   }
   const Status mode = hal::gpio_mode(p->enable, hal::PinMode::kOutput);
   if (mode != Status::kOk) return mode;
+  idle_frames_ = 0;
+  idle_disabled_ = false;
+  driver_enabled_ = true;
   hal::gpio_write(p->enable, false);
   return Status::kOk;
 }
@@ -137,9 +144,36 @@ Status OutputPort::enable_driver() {
 Status OutputPort::disable_driver() {
   const OutputPortPins* p = pins();
   if (p == nullptr || p->enable == kNoPin) return Status::kNoSuchPin;
+  driver_enabled_ = false;
+  idle_disabled_ = false;
   // Level first, then direction: a pin that was still an input starts driving high, no glitch.
   hal::gpio_write(p->enable, true);
   return hal::gpio_mode(p->enable, hal::PinMode::kOutput);
+}
+
+void OutputPort::set_driver_idle_timeout_ms(uint32_t ms) {
+  const uint64_t frames = (static_cast<uint64_t>(ms) * 1000u + kFramePeriodUs - 1) / kFramePeriodUs;
+  idle_timeout_frames_ = frames > UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(frames);
+  if (ms == 0 && idle_disabled_) write_enable_pin(true);  // turned off while idle: back on
+}
+
+// Frame context: counts quiet frames; disables the driver at the timeout, enables it on motion.
+void OutputPort::idle_check(bool moving) {
+  if (!driver_enabled_) return;
+  if (moving) {
+    idle_frames_ = 0;
+    if (idle_disabled_) write_enable_pin(true);
+    return;
+  }
+  if (idle_disabled_ || ++idle_frames_ < idle_timeout_frames_) return;
+  write_enable_pin(false);
+}
+
+void OutputPort::write_enable_pin(bool enabled) {
+  const OutputPortPins* p = pins();
+  if (p == nullptr || p->enable == kNoPin) return;
+  idle_disabled_ = !enabled;
+  hal::gpio_write(p->enable, !enabled);  // ENABLE is active low
 }
 
 float OutputPort::read_drive_current_amps() { return read_drive_current_amps(current_gain_a_per_v_); }
@@ -188,6 +222,9 @@ Status for_each_driver(Status (OutputPort::*call)()) {
 }  // namespace
 
 Status enable_drivers() { return for_each_driver(&OutputPort::enable_driver); }
+void set_drivers_idle_timeout_ms(uint32_t ms) {
+  for (OutputPort* port : begun_ports()) port->set_driver_idle_timeout_ms(ms);
+}
 Status disable_drivers() { return for_each_driver(&OutputPort::disable_driver); }
 
 }  // namespace stepdance

@@ -56,6 +56,13 @@ class OutputPort : public Block {
   Status enable_driver();
   /// Drives ENABLE high (disabled). kNoSuchPin on a board without drivers. Context: any.
   Status disable_driver();
+  /// Disables the driver once the port has sent nothing for `ms` milliseconds, and enables it
+  /// again the frame motion comes back (its first pulse plays the frame after, ≥ 40 µs later),
+  /// as Grbl's $1 step idle delay does; 0 (the default) keeps the driver as the sketch left it.
+  /// Only a driver the sketch enabled is idled; disable_driver() stays in force. Context: any.
+  void set_driver_idle_timeout_ms(uint32_t ms);
+  /// True while the idle timeout holds the driver disabled. Context: any.
+  bool driver_idle() const { return idle_disabled_; }
   /// Amps per volt of VREF for the fitted driver (1.0 for BigTreeTech TMC2209). Context: any.
   void set_drive_current_gain(float amps_per_volt) { current_gain_a_per_v_ = amps_per_volt; }
   /// Driver peak current in amps from the VREF read-back; −1 if the board has no VREF pin.
@@ -96,6 +103,12 @@ class OutputPort : public Block {
   volatile int32_t pending_[kNumSignals] = {};
   uint32_t sent_[kNumSignals][2] = {};
   uint32_t signals_carried_ = 0;
+  void idle_check(bool moving);
+  void write_enable_pin(bool enabled);
+  volatile uint32_t idle_timeout_frames_ = 0;  // 0: off
+  uint32_t idle_frames_ = 0;
+  volatile bool driver_enabled_ = false;  // by the sketch (enable_driver)
+  volatile bool idle_disabled_ = false;
   float current_gain_a_per_v_ = 1.0f;
   bool vref_started_ = false;
 };
@@ -108,5 +121,7 @@ void iterate_across_all_output_ports(void (*fn)(OutputPort* port));
 /// Context: loop.
 Status enable_drivers();
 Status disable_drivers();
+/// set_driver_idle_timeout_ms(ms) on every begun port (0 = off). Context: loop.
+void set_drivers_idle_timeout_ms(uint32_t ms);
 
 }  // namespace stepdance
