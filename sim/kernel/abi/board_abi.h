@@ -50,6 +50,10 @@ typedef struct StepdanceBoardStatsV1 {
   const char* fault_name;        /* its name ("registry full", …); static */
   uint32_t fault_count;          /* fault() calls */
   const char* fault_detail;      /* "" if none; valid until the next call into the board */
+  uint32_t load_peak_cycles;     /* the engine's frame load (the simulator's cost model) */
+  uint32_t load_budget_cycles;   /* cycles in one frame (24,000) */
+  uint64_t load_total_cycles;
+  uint64_t load_frames;
 } StepdanceBoardStatsV1;         /* per-block statistics come as named counters (read_counters) */
 
 /* One named counter of one block (Block::report_counters): the block's class name, its instance

@@ -8,6 +8,8 @@
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/core/units.hpp"
+#include "stepdance/hal/hal.hpp"
 
 // The sketch's two Arduino entry points.
 void setup();
@@ -24,6 +26,11 @@ void read_stats(StepdanceBoardStatsV1* stats) {
   stats->fault_name = to_string(fault_reason());
   stats->fault_count = fault_count();
   stats->fault_detail = fault_detail();
+  const LoadMetrics& load = engine().load();
+  stats->load_peak_cycles = load.peak_cycles();
+  stats->load_budget_cycles = hal::cycles_per_second() / kFrameRateHz;
+  stats->load_total_cycles = load.total_cycles();
+  stats->load_frames = load.frames();
 }
 
 // Hands every block's named counters to the host, numbering blocks of one class in order.

@@ -1,12 +1,14 @@
 // The simulator backend of the HAL facade: every hal:: function answered through the host table.
 //
-// Time comes from the simulator's clock (64-bit ns). cycles_now() is that clock at 600 MHz, so a
-// frame costs zero simulated CPU cycles: the simulator does not model the frame's execution
-// time, and the load figures of a simulated board are always 0.
+// Time comes from the simulator's clock (64-bit ns). cycles_now() is that clock at 600 MHz plus a
+// cost model of the frame being run: kModelCyclesPerBlock for every block the engine has run in
+// it so far. Simulated time does not move during a frame, so the model is what the engine's load
+// figures (stepdance_get_cpu_usage, overruns) see: deterministic, and growing with the graph.
 #include "runtime/sim_hal.hpp"
 
 #include "runtime/host_link.hpp"
 #include "stepdance/boards/board.hpp"
+#include "stepdance/core/engine.hpp"
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
@@ -60,7 +62,10 @@ void deliver_captured_pulse(uint8_t port, const StepdanceCapturedPulseV1& pulse)
 namespace hal {
 
 uint32_t micros_now() { return static_cast<uint32_t>(sim_runtime::now_ns() / 1000); }
-uint32_t cycles_now() { return static_cast<uint32_t>(sim_runtime::now_ns() * 3 / 5); }
+uint32_t cycles_now() {
+  const uint64_t clock = static_cast<uint64_t>(sim_runtime::now_ns()) * 3 / 5;
+  return static_cast<uint32_t>(clock + uint64_t{engine().blocks_run_in_frame()} * sim_runtime::kModelCyclesPerBlock);
+}
 uint32_t cycles_per_second() { return 600000000u; }
 
 Status frame_timer_start(uint32_t period_us, Isr on_frame) {

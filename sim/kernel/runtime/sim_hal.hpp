@@ -7,6 +7,11 @@
 
 namespace stepdance::sim_runtime {
 
+/// The simulator's model of a frame's CPU cost: Cortex-M7 cycles per block run, the mean of the
+/// instruction counts of the Step-A-Sketch, Harmonograph and ClayTexturizer graphs under QEMU
+/// (1,436 / 9, 1,899 / 13 and 2,522 / 16 blocks: 146 to 160) at one cycle per instruction.
+constexpr uint32_t kModelCyclesPerBlock = 155;
+
 /// Runs the frame ISR if the frame timer was started (the host calls this at each frame tick).
 void run_frame_isr();
 /// Runs the kilohertz ISR if that timer was started.

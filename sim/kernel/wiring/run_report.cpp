@@ -77,11 +77,17 @@ void Simulation::write_drawings(SimulationReport& report) const {
 // the motor ended up.
 void Simulation::add_board_extras(nlohmann::json& extra) const {
   nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
-  nlohmann::json counters = nlohmann::json::object();
+  nlohmann::json counters = nlohmann::json::object(), load = nlohmann::json::object();
   nlohmann::json motors = nlohmann::json::object();
   for (const BoardSlot& slot : boards_) {
     const StepdanceBoardStatsV1 stats = slot.board->stats();
     frames[slot.config->name] = stats.frames;
+    if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
+      const double budget = stats.load_budget_cycles;
+      load[slot.config->name] = {
+          {"average_percent", 100.0 * static_cast<double>(stats.load_total_cycles) / static_cast<double>(stats.load_frames) / budget},
+          {"peak_percent", 100.0 * stats.load_peak_cycles / budget}};
+    }
     nlohmann::json& board_counters = counters[slot.config->name] = nlohmann::json::object();
     for (const SimBoard::BlockCounter& counter : slot.board->counters()) {
       board_counters[counter.block][counter.name] = counter.value;
@@ -106,6 +112,7 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   extra["frames"] = frames;
   extra["motors"] = motors;
   extra["counters"] = counters;
+  extra["cpu_load"] = load;
 }
 
 nlohmann::json Simulation::cable_extras() const {

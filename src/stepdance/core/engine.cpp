@@ -107,11 +107,14 @@ void Engine::stop() {
 
 void Engine::run_stage(Registry& blocks) {
   for (Block* block : blocks) {
-    if (block->is_enabled()) block->run();
+    if (!block->is_enabled()) continue;
+    block->run();
+    ++blocks_run_;
   }
 }
 
 void Engine::run_frame() {
+  blocks_run_ = 0;
   const uint32_t started = hal::cycles_now();
   for (FrameFunction function : early_functions_) function();
   for (uint8_t stage = 0; stage < kNumFrameStages; ++stage) run_stage(registries_[stage]);

@@ -65,6 +65,9 @@ class Engine {
   uint32_t frame_count() const { return frame_count_; }
   /// Frame-ISR load statistics. Context: any (reads are not atomic across fields).
   const LoadMetrics& load() const { return load_; }
+  /// Blocks run so far in the current (or last) frame: the simulator's CPU-cost model counts
+  /// them. Context: any.
+  uint32_t blocks_run_in_frame() const { return blocks_run_; }
   /// Clears the load statistics. Context: loop.
   void reset_load() { load_.reset(); }
 
@@ -79,7 +82,7 @@ class Engine {
   using Registry = FixedList<Block*, EngineCapacity::kPreChannel>;
   Registry& registry(Stage stage) { return registries_[static_cast<uint8_t>(stage)]; }
   const Registry& registry(Stage stage) const { return registries_[static_cast<uint8_t>(stage)]; }
-  static void run_stage(Registry& blocks);
+  void run_stage(Registry& blocks);
   void order_stages();
 
   Registry registries_[kNumStages];
@@ -90,6 +93,7 @@ class Engine {
   LoadMetrics load_;
   uint32_t frame_budget_cycles_ = 24000;  // CPU cycles per frame, set from the HAL at start()
   volatile uint32_t frame_count_ = 0;
+  uint32_t blocks_run_ = 0;
   volatile bool running_ = false;
 };
 
