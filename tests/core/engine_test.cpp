@@ -173,6 +173,27 @@ TEST_F(EngineTest, KilohertzBlocksRunAfterEveryTwentyFifthFrame) {
   EXPECT_EQ(occurrences("pre"), 100u);
 }
 
+// A block with work at both rates: run() in its frame stage, run_kilohertz() at the tick.
+class TwoRateRecorder : public Recorder {
+ public:
+  using Recorder::Recorder;
+  void run_kilohertz() override { log_kilohertz_ += 1; }
+  int kilohertz_calls() const { return log_kilohertz_; }
+
+ private:
+  int log_kilohertz_ = 0;
+};
+
+TEST_F(EngineTest, KilohertzStageCallsRunKilohertzNotTheFrameEntry) {
+  TwoRateRecorder both(log, "both");
+  both.begin(Stage::kPreChannel);
+  both.begin(Stage::kKilohertz);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  frames(50);
+  EXPECT_EQ(occurrences("both"), 50u);  // the frame entry once per frame, never at the tick
+  EXPECT_EQ(both.kilohertz_calls(), 2);  // 50 frames of 40 µs = 2 ms
+}
+
 TEST_F(EngineTest, KilohertzBlocksWaitForStart) {
   Recorder tick(log, "tick");
   tick.begin(Stage::kKilohertz);

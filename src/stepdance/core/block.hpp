@@ -49,8 +49,13 @@ class Block {
     (void)instance_name;
   }
 
-  /// Runs one frame (frame stages) or one tick (kilohertz). Called by the engine only.
+  /// Frame work: runs once per frame in the block's frame stage. Called by the engine only.
+  /// Context: frame ISR.
   virtual void run() {}
+  /// Kilohertz work: runs once per millisecond tick in the kilohertz stage. Called by the engine
+  /// only. Default: run(), so a plugin written for the original (one run() for any rate) still
+  /// works; blocks with work at both rates override both. Context: kilohertz ISR.
+  virtual void run_kilohertz() { run(); }
   /// Runs once per dance_loop() (loop stage). Called by the engine only.
   virtual void loop() {}
 

@@ -123,7 +123,11 @@ void Engine::run_frame() {
   load_.record(hal::cycles_now() - started, frame_budget_cycles_);
 }
 
-void Engine::run_kilohertz_tick() { run_stage(registry(Stage::kKilohertz)); }
+void Engine::run_kilohertz_tick() {
+  for (Block* block : registry(Stage::kKilohertz)) {
+    if (block->is_enabled()) block->run_kilohertz();
+  }
+}
 
 void Engine::run_loop() {
   for (Block* block : registry(Stage::kLoop)) {

@@ -56,7 +56,7 @@ class Engine {
 
   /// One frame: frame functions, the five stages, then load accounting. Context: frame ISR.
   void run_frame();
-  /// One kilohertz tick. Context: kilohertz ISR.
+  /// One kilohertz tick: run_kilohertz() of each kilohertz block. Context: kilohertz ISR.
   void run_kilohertz_tick();
   /// One pass of the loop stage. Context: loop.
   void run_loop();

@@ -86,7 +86,7 @@ class AnalogInput : public Block {
   double value_at(uint16_t raw) const;
 
   /// Kilohertz work: writes the mapped parameter. Called by the engine. Context: kilohertz ISR.
-  void run() override { write_mapped_parameter(); }
+  void run_kilohertz() override { write_mapped_parameter(); }
   /// Loop work: runs the callback after new conversions. Called by dance_loop(). Context: loop.
   void loop() override { notify_new_conversions(); }
 

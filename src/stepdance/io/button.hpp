@@ -113,7 +113,7 @@ class Button : public Block {
 
   /// Millisecond work: sample, debounce, update the state, count events. Called by the engine.
   /// Context: kilohertz ISR.
-  void run() override { sample(); }
+  void run_kilohertz() override { sample(); }
   /// Delivers the events counted since the last pass to the callbacks. Called by dance_loop().
   /// Context: loop.
   void loop() override { deliver_events(); }
