@@ -106,11 +106,13 @@ void Engine::stop() {
 }
 
 void Engine::run_stage(Registry& blocks) {
+  uint32_t ran = 0;  // counted locally: a member would be reloaded around every virtual call
   for (Block* block : blocks) {
     if (!block->is_enabled()) continue;
     block->run();
-    ++blocks_run_;
+    ++ran;
   }
+  blocks_run_ += ran;
 }
 
 void Engine::run_frame() {

@@ -59,7 +59,14 @@ Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
 
 void OutputPort::add_signal(uint8_t signal, uint8_t direction) {
   if (signal >= kNumSignals) return;
-  pending_[signal] = pending_[signal] + (direction == DIRECTION_FORWARD ? 1 : -1);
+  set_pending(signal, pending_[signal] + (direction == DIRECTION_FORWARD ? 1 : -1));
+}
+
+void OutputPort::set_pending(uint8_t signal, int32_t count) {
+  pending_[signal] = count;
+  const uint8_t mask = bit(signal);
+  pending_mask_ = count != 0 ? (pending_mask_ | mask) : (pending_mask_ & ~mask);
+  forward_mask_ = count > 0 ? (forward_mask_ | mask) : (forward_mask_ & ~mask);
 }
 
 void OutputPort::step_now(uint8_t direction, uint8_t signal) {
@@ -69,12 +76,8 @@ void OutputPort::step_now(uint8_t direction, uint8_t signal) {
 
 void OutputPort::transmit_frame() {
   protocol::FrameRequest request;
-  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    const int32_t pending = pending_[signal];
-    if (pending == 0) continue;
-    request.active_mask |= bit(signal);
-    if (pending > 0) request.forward_mask |= bit(signal);
-  }
+  request.active_mask = pending_mask_;
+  request.forward_mask = forward_mask_;
   if (idle_timeout_frames_ != 0) idle_check(request.active_mask != 0);
   protocol::EncodedFrame frame;
   if (request.active_mask != 0) {
@@ -106,7 +109,7 @@ void OutputPort::clear_statistics() {
   carried_mask_ = 0;
   signals_carried_ = 0;
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    pending_[signal] = 0;
+    set_pending(signal, 0);
     sent_[signal][0] = sent_[signal][1] = 0;
   }
 }
@@ -115,7 +118,7 @@ void OutputPort::account_sent(uint8_t sent_mask) {
   for (uint8_t signal = 0; sent_mask >> signal; ++signal) {
     if (!(sent_mask & bit(signal))) continue;
     const bool forward = pending_[signal] > 0;
-    pending_[signal] = pending_[signal] + (forward ? -1 : 1);
+    set_pending(signal, pending_[signal] + (forward ? -1 : 1));
     ++sent_[signal][forward ? DIRECTION_FORWARD : DIRECTION_REVERSE];
   }
 }

@@ -97,10 +97,15 @@ class OutputPort : public Block {
   const OutputPortPins* pins() const;
   // Takes the pulses just placed on the wire off the pending counts and into the statistics.
   void account_sent(uint8_t sent_mask);
+  // Every change of a pending count goes through here, so the masks always match the counts.
+  void set_pending(uint8_t signal, int32_t count);
 
   uint8_t port_ = 255;
   uint8_t carried_mask_ = 0;
   volatile int32_t pending_[kNumSignals] = {};
+  // Signals with a non-zero / positive pending count: the frame reads these instead of scanning.
+  volatile uint8_t pending_mask_ = 0;
+  volatile uint8_t forward_mask_ = 0;
   uint32_t sent_[kNumSignals][2] = {};
   uint32_t signals_carried_ = 0;
   void idle_check(bool moving);

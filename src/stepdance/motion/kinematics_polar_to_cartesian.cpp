@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "stepdance/motion/sine_cosine.hpp"
+
 namespace stepdance {
 
 Status KinematicsPolarToCartesian::begin(double fixed_radius) {
@@ -22,9 +24,9 @@ void KinematicsPolarToCartesian::run() {
   input_angle.pull();
   input_angle.update();
   const double r = input_radius.read(ABSOLUTE);
-  const double theta = remainder(input_angle.read(ABSOLUTE), 2.0 * 3.14159265358979323846);
-  output_x.set(output_x.convert_world_to_block_units(r * cos(theta)), ABSOLUTE);
-  output_y.set(output_y.convert_world_to_block_units(r * sin(theta)), ABSOLUTE);
+  const SineCosine angle = sine_cosine(input_angle.read(ABSOLUTE));
+  output_x.set(output_x.convert_world_to_block_units(r * angle.cosine), ABSOLUTE);
+  output_y.set(output_y.convert_world_to_block_units(r * angle.sine), ABSOLUTE);
   output_x.push();
   output_y.push();
 }
