@@ -27,6 +27,11 @@ struct CartesianSettings {
   /// extruding_hold (its steps come less often than the axes').
   bool draws_while_extruding = false;
   SimTime extruding_hold = 100 * kMillisecond;
+  /// A printer shades its toolpath by mm of filament deposited per mm of path, measured over
+  /// each stretch of this much extruding path (mm) and rounded to shade_step (mm/mm). One
+  /// extruder step is 1/e_steps_per_mm mm, so a window of w mm measures to ±1/(e_steps_per_mm·w).
+  double shade_window_mm = 5;
+  double shade_step = 0.0025;
   /// Usable XY area, if any (excursions are reported).
   std::optional<TravelArea> travel;
   PenTraceSettings trace;
@@ -45,6 +50,8 @@ class CartesianMachine : public Machine {
   double e_mm() const { return e_mm_; }
   double z_mm() const { return z_mm_; }
   const CartesianSettings& settings() const { return settings_; }
+  /// A printer's shade: "filament mm per toolpath mm"; a plotter's: none.
+  const char* shade_name() const override;
 
  protected:
   Sample sample(SimTime time) override;
@@ -56,6 +63,12 @@ class CartesianMachine : public Machine {
   double e_mm_ = 0;
   double e_peak_mm_ = 0;
   std::optional<SimTime> last_advance_;
+  /// Extrusion measured over the current window of extruding path.
+  std::optional<double> deposit_shade(const PenPoint& pen, bool extruding);
+  PenPoint chord_start_{};
+  double window_path_mm_ = 0;
+  double window_start_e_mm_ = 0;
+  std::optional<double> shade_;
 };
 
 }  // namespace stepdance::sim

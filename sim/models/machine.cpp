@@ -12,7 +12,7 @@ void Machine::update(SimTime time) {
   ++updates_;
   pen_ = now.pen;
   down_ = now.down;
-  trace_.record(now.pen, now.down);
+  trace_.record(now.pen, now.down, now.shade);
   if (travel_) travel_->observe(time, now.pen);
 }
 

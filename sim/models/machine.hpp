@@ -49,6 +49,10 @@ class Machine {
   /// Pen-down strokes and (if enabled) pen-up moves so far.
   const std::vector<Polyline>& strokes() const { return trace_.strokes(); }
   const std::vector<Polyline>& pen_up_moves() const { return trace_.pen_up_moves(); }
+  /// Shade marks of each pen-down stroke (see PenTrace::record); what a shade measures is the
+  /// machine's: shade_name() says it, empty when the machine shades nothing.
+  const std::vector<std::vector<ShadeMark>>& shade_marks() const { return trace_.shade_marks(); }
+  virtual const char* shade_name() const { return ""; }
   const PenTrace& trace() const { return trace_; }
   /// The travel area monitor, or null if the machine has no travel area.
   const TravelMonitor* travel() const { return travel_ ? &*travel_ : nullptr; }
@@ -59,6 +63,8 @@ class Machine {
   struct Sample {
     PenPoint pen;
     bool down = false;
+    /// The machine's measure along the path from here on, if it has one (see shade_name()).
+    std::optional<double> shade;
   };
   Machine(const PenTraceSettings& trace, const std::optional<TravelArea>& travel);
   /// Reads the bound models at `time`; also updates the machine's own axis state.

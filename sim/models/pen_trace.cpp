@@ -23,17 +23,18 @@ double wrap(double angle) {
 
 PenTrace::PenTrace(const PenTraceSettings& settings) : settings_(settings) {}
 
-void PenTrace::record(const PenPoint& position, bool down) {
+void PenTrace::record(const PenPoint& position, bool down, std::optional<double> shade) {
   ++samples_;
   if (!started_) {
     started_ = true;
     down_ = down;
     last_ = position;
     if (down) {
-      start_polyline(strokes_, position);
+      start_stroke(position);
     } else if (settings_.record_pen_up) {
       start_polyline(pen_up_moves_, position);
     }
+    if (down && shade) mark_shade(*shade);
     return;
   }
   if (position != last_) {
@@ -55,22 +56,47 @@ void PenTrace::record(const PenPoint& position, bool down) {
       if (settings_.record_pen_up && !pen_up_moves_.empty() && pen_up_moves_.back().size() == 1) {
         pen_up_moves_.pop_back();
       }
-      start_polyline(strokes_, position);
+      start_stroke(position);
     } else if (settings_.record_pen_up) {
       start_polyline(pen_up_moves_, position);
     }
   }
+  if (down_ && shade) mark_shade(*shade);
+}
+
+void PenTrace::start_stroke(const PenPoint& position) {
+  start_polyline(strokes_, position);
+  shade_marks_.emplace_back();
+}
+
+void PenTrace::mark_shade(double shade) {
+  std::vector<ShadeMark>& marks = shade_marks_.back();
+  if (marks.empty()) {
+    marks.push_back({0, shade});  // the stroke so far takes its first measured shade
+    return;
+  }
+  if (marks.back().shade == shade) return;
+  const size_t here = strokes_.back().size() - 1;
+  if (marks.back().from_point == here) {
+    marks.back().shade = shade;  // two changes at one vertex: the later one holds
+  } else {
+    marks.push_back({here, shade});
+  }
+  pinned_ = true;
+  segment_ = Segment{};
 }
 
 void PenTrace::start_polyline(std::vector<Polyline>& list, const PenPoint& position) {
   list.push_back(Polyline{position});
   segment_ = Segment{};
+  pinned_ = false;
 }
 
 void PenTrace::extend(Polyline& line, const PenPoint& position) {
-  if (line.size() < 2) {
+  if (line.size() < 2 || pinned_) {
     line.push_back(position);
     segment_ = Segment{};
+    pinned_ = false;
     return;
   }
   const PenPoint& anchor = line[line.size() - 2];

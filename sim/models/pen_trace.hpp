@@ -1,7 +1,9 @@
 // Pen trace: the pen's path split into pen-down strokes (and optional pen-up moves) as compact polylines.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace stepdance::sim {
@@ -17,6 +19,14 @@ inline bool operator!=(const PenPoint& a, const PenPoint& b) { return !(a == b);
 
 /// Points joined by straight segments.
 using Polyline = std::vector<PenPoint>;
+
+/// From point `from_point` of a stroke on (to the next mark or the stroke's end) the stroke has
+/// this shade: a value the machine measures along its path, in the machine's own unit (a
+/// printer: mm of filament per mm of toolpath).
+struct ShadeMark {
+  size_t from_point = 0;
+  double shade = 0;
+};
 
 /// How closely the stored polylines follow the pen.
 struct PenTraceSettings {
@@ -38,13 +48,17 @@ class PenTrace {
 
   /// Records the pen at `position` with the pen `down`. The move from the previous sample to
   /// `position` belongs to the previous pen state; the new state starts at `position`.
-  void record(const PenPoint& position, bool down);
+  /// `shade`, when given, is the machine's measure along the path from here on: a change keeps
+  /// `position` as a vertex and marks it. A stroke's part before its first shade takes that shade.
+  void record(const PenPoint& position, bool down, std::optional<double> shade = std::nullopt);
 
   /// Pen-down strokes, in drawing order. A stroke with one point is a dot.
   const std::vector<Polyline>& strokes() const { return strokes_; }
   /// Pen-up moves (empty unless record_pen_up), each from a pen lift to the next pen drop; a
   /// lift and drop at the same place leave no move.
   const std::vector<Polyline>& pen_up_moves() const { return pen_up_moves_; }
+  /// Shade marks of each pen-down stroke (parallel to strokes(); empty lists when unshaded).
+  const std::vector<std::vector<ShadeMark>>& shade_marks() const { return shade_marks_; }
   /// Path length drawn with the pen down / travelled with the pen up, from every sample (mm).
   double pen_down_mm() const { return pen_down_mm_; }
   double pen_up_mm() const { return pen_up_mm_; }
@@ -63,12 +77,17 @@ class PenTrace {
     double farthest_mm = 0;
   };
   void start_polyline(std::vector<Polyline>& list, const PenPoint& position);
+  void start_stroke(const PenPoint& position);
   void extend(Polyline& line, const PenPoint& position);
+  void mark_shade(double shade);
 
   PenTraceSettings settings_;
   std::vector<Polyline> strokes_;
   std::vector<Polyline> pen_up_moves_;
+  std::vector<std::vector<ShadeMark>> shade_marks_;
   Segment segment_;
+  /// The polyline's last point is a shade mark: the next move appends instead of merging.
+  bool pinned_ = false;
   bool started_ = false;
   bool down_ = false;
   PenPoint last_{};

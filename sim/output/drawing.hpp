@@ -1,6 +1,8 @@
 // Pen strokes in machine millimetres and the page they are drawn on (shared by the SVG and PNG writers).
 #pragma once
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace stepdance::sim {
@@ -15,7 +17,22 @@ struct PointMm {
 struct Stroke {
   std::vector<PointMm> points;
   bool pen_down = true;
+  /// The machine's measure along this stroke (e.g. filament mm per toolpath mm), if it has one:
+  /// the stroke is then coloured by it (see shade_colour) instead of black.
+  std::optional<double> shade = std::nullopt;
 };
+
+/// An sRGB colour, each channel 0–1.
+struct Rgb {
+  double r = 0;
+  double g = 0;
+  double b = 0;
+};
+
+/// The colour a fraction u (0–1) of the way from a to b.
+inline Rgb mix(const Rgb& a, const Rgb& b, double u) {
+  return Rgb{a.r + (b.r - a.r) * u, a.g + (b.g - a.g) * u, a.b + (b.b - a.b) * u};
+}
 
 /// How a drawing is laid out and drawn.
 ///
@@ -32,9 +49,25 @@ struct DrawingStyle {
   bool pen_up_travel = false;     ///< also draw pen-up strokes (thin, grey, dashed)
   double travel_line_width_mm = 0.2;  ///< line width of pen-up strokes
   double travel_dash_mm = 2;          ///< dash and gap length of pen-up strokes
+  /// Shades from shade_low to shade_high run blue → green → red (values outside are clamped);
+  /// a range of zero width draws every shaded stroke in the middle colour.
+  double shade_low = 0;
+  double shade_high = 0;
+  /// What the shades measure (written into the SVG's description); empty: no shading.
+  std::string shade_name;
 
   double page_width_mm() const { return travel_width_mm + 2 * margin_mm; }
   double page_height_mm() const { return travel_height_mm + 2 * margin_mm; }
+  /// The colour of a stroke: black, or its shade on the blue → green → red scale.
+  Rgb colour_of(const Stroke& stroke) const {
+    if (!stroke.shade) return Rgb{};
+    const double span = shade_high - shade_low;
+    double t = span > 0 ? (*stroke.shade - shade_low) / span : 0.5;
+    t = t < 0 ? 0 : (t > 1 ? 1 : t);
+    // Two straight ramps through a dark green keep every colour readable on white.
+    const Rgb low{0, 0, 0.8}, middle{0, 0.6, 0}, high{0.8, 0, 0};
+    return t < 0.5 ? mix(low, middle, 2 * t) : mix(middle, high, 2 * t - 1);
+  }
 };
 
 }  // namespace stepdance::sim

@@ -26,9 +26,13 @@ void trace(cairo_t* cr, const Stroke& stroke) {
   for (size_t i = 1; i < stroke.points.size(); ++i) cairo_line_to(cr, stroke.points[i].x, stroke.points[i].y);
 }
 
-void draw_strokes(cairo_t* cr, const std::vector<Stroke>& strokes, bool pen_down) {
+void draw_strokes(cairo_t* cr, const std::vector<Stroke>& strokes, const DrawingStyle& style, bool pen_down) {
   for (const Stroke& stroke : strokes) {
     if (stroke.pen_down != pen_down || stroke.points.empty()) continue;
+    if (pen_down) {
+      const Rgb colour = style.colour_of(stroke);
+      cairo_set_source_rgb(cr, colour.r, colour.g, colour.b);
+    }
     trace(cr, stroke);
     cairo_stroke(cr);
   }
@@ -69,12 +73,11 @@ void write_png(const std::string& path, const std::vector<Stroke>& strokes, cons
     cairo_set_source_rgb(cr, kTravelGrey, kTravelGrey, kTravelGrey);
     cairo_set_line_width(cr, style.travel_line_width_mm);
     cairo_set_dash(cr, dash, 2, 0);
-    draw_strokes(cr, strokes, false);
+    draw_strokes(cr, strokes, style, false);
     cairo_set_dash(cr, nullptr, 0, 0);
   }
-  cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_set_line_width(cr, style.pen_width_mm);
-  draw_strokes(cr, strokes, true);
+  draw_strokes(cr, strokes, style, true);
   cairo_surface_flush(surface.get());
   if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
     throw std::runtime_error(path + ": drawing failed: " + cairo_status_to_string(cairo_status(cr)));

@@ -1,5 +1,6 @@
 // Simulation results: the pen drawing (SVG, PNG) and the JSON summary.
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 
@@ -11,19 +12,48 @@
 namespace stepdance::sim {
 namespace {
 
+Stroke stroke_of(const Polyline& line, size_t from, size_t to, bool pen_down) {
+  Stroke stroke;
+  stroke.pen_down = pen_down;
+  for (size_t i = from; i < to; ++i) stroke.points.push_back({line[i].x_mm, line[i].y_mm});
+  return stroke;
+}
+
+// A pen-down polyline as one stroke per shade: each piece runs from its mark to the next one's
+// point, so the pieces join.
+void add_shaded(std::vector<Stroke>& strokes, const Polyline& line, const std::vector<ShadeMark>& marks) {
+  if (marks.empty()) {
+    strokes.push_back(stroke_of(line, 0, line.size(), true));
+    return;
+  }
+  for (size_t i = 0; i < marks.size(); ++i) {
+    const size_t end = i + 1 < marks.size() ? marks[i + 1].from_point + 1 : line.size();
+    strokes.push_back(stroke_of(line, marks[i].from_point, end, true));
+    strokes.back().shade = marks[i].shade;
+  }
+}
+
 std::vector<Stroke> strokes_of(const Machine& machine) {
   std::vector<Stroke> strokes;
-  auto add = [&strokes](const std::vector<Polyline>& lines, bool pen_down) {
-    for (const Polyline& line : lines) {
-      Stroke stroke;
-      stroke.pen_down = pen_down;
-      for (const PenPoint& point : line) stroke.points.push_back({point.x_mm, point.y_mm});
-      strokes.push_back(std::move(stroke));
-    }
-  };
-  add(machine.pen_up_moves(), false);
-  add(machine.strokes(), true);
+  for (const Polyline& line : machine.pen_up_moves()) strokes.push_back(stroke_of(line, 0, line.size(), false));
+  const std::vector<Polyline>& lines = machine.strokes();
+  const std::vector<std::vector<ShadeMark>>& marks = machine.shade_marks();
+  for (size_t i = 0; i < lines.size(); ++i) add_shaded(strokes, lines[i], i < marks.size() ? marks[i] : std::vector<ShadeMark>{});
   return strokes;
+}
+
+// The colour scale spans the drawing's shades, and at least ±25 % around their middle, so the
+// measuring noise of an even extrusion stays one colour.
+void set_shade_scale(DrawingStyle& style, const std::vector<Stroke>& strokes) {
+  double low = std::numeric_limits<double>::max(), high = -low;
+  for (const Stroke& stroke : strokes) {
+    if (stroke.shade) low = std::min(low, *stroke.shade), high = std::max(high, *stroke.shade);
+  }
+  if (low > high) return;
+  const double middle = (low + high) / 2;
+  const double half = std::max((high - low) / 2, 0.25 * std::fabs(middle));
+  style.shade_low = middle - half;
+  style.shade_high = middle + half;
 }
 
 // A CoreXY plotter's page is its travel area. Other machines have none: their page is the
@@ -60,6 +90,8 @@ void Simulation::write_drawings(SimulationReport& report) const {
   std::vector<Stroke> strokes = strokes_of(*machine_);
   DrawingStyle style = page_for(*scenario_.machine, strokes);
   style.pen_up_travel = scenario_.output.pen_up_travel;
+  set_shade_scale(style, strokes);
+  style.shade_name = machine_->shade_name();
   for (const std::string& path : {svg, png}) {
     if (!path.empty()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   }

@@ -113,5 +113,43 @@ TEST(CartesianMachine, APrinterDrawsWhileTheExtruderAdvances) {
   EXPECT_EQ(machine.strokes()[0], (Polyline{{1, 0}, {3, 0}}));
 }
 
+// A printer's shade is the filament deposited per mm of toolpath over each window: printing
+// 10 mm with 0.05 mm of filament per mm (93 steps/mm: one E step every 1/(93 · 0.05) mm) reads
+// 0.05 once a 5 mm window has passed, and the stroke takes it from its start.
+TEST(CartesianMachine, APrinterShadesItsToolpathByFilamentPerMm) {
+  StepperDriver x(enabled()), e(enabled());
+  CartesianSettings settings;
+  settings.draws_while_extruding = true;
+  CartesianDrivers drivers;
+  drivers.x = &x;
+  drivers.e = &e;
+  CartesianMachine machine(drivers, settings);
+  EXPECT_STREQ(machine.shade_name(), "filament mm per toolpath mm");
+  double deposited_mm = 0;
+  int e_steps = 0;
+  for (int i = 1; i <= 800; ++i) {  // 10 mm at 80 steps/mm
+    steps(x, 1);
+    deposited_mm += 0.05 / 80;
+    while (e_steps + 1 <= deposited_mm * 93 + 1e-9) steps(e, 1), ++e_steps;
+    machine.update(i * kMillisecond / 10);
+  }
+  ASSERT_EQ(machine.strokes().size(), 1u);
+  ASSERT_EQ(machine.shade_marks().size(), 1u);
+  ASSERT_FALSE(machine.shade_marks()[0].empty());
+  for (const ShadeMark& mark : machine.shade_marks()[0]) EXPECT_NEAR(mark.shade, 0.05, 0.0025);
+}
+
+TEST(CartesianMachine, APlotterHasNoShade) {
+  StepperDriver x(enabled());
+  CartesianDrivers drivers;
+  drivers.x = &x;
+  CartesianMachine machine(drivers);
+  steps(x, 800);
+  machine.update(1);
+  EXPECT_STREQ(machine.shade_name(), "");
+  ASSERT_EQ(machine.shade_marks().size(), 1u);
+  EXPECT_TRUE(machine.shade_marks()[0].empty());
+}
+
 }  // namespace
 }  // namespace stepdance::sim

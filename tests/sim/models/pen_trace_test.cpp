@@ -124,5 +124,40 @@ TEST(PenTrace, ADownUpWithoutMovingIsADot) {
   EXPECT_EQ(trace.moves(), 0u);
 }
 
+// A shade change keeps its vertex even where the path runs straight on, and the stroke's first
+// stretch takes the first shade measured on it.
+TEST(PenTrace, ShadeChangesKeepTheirVertexAndMarkIt) {
+  PenTrace trace;
+  trace.record(PenPoint{0, 0}, true);
+  trace.record(PenPoint{1, 0}, true);
+  trace.record(PenPoint{2, 0}, true, 0.05);   // first shade: from the stroke's start
+  trace.record(PenPoint{3, 0}, true, 0.05);
+  trace.record(PenPoint{4, 0}, true, 0.06);   // a change at (4, 0)
+  trace.record(PenPoint{5, 0}, true, 0.06);
+  trace.record(PenPoint{6, 0}, true, 0.06);
+  ASSERT_EQ(trace.strokes().size(), 1u);
+  EXPECT_EQ(trace.strokes()[0], (Polyline{{0, 0}, {4, 0}, {6, 0}}));
+  ASSERT_EQ(trace.shade_marks().size(), 1u);
+  const std::vector<ShadeMark>& marks = trace.shade_marks()[0];
+  ASSERT_EQ(marks.size(), 2u);
+  EXPECT_EQ(marks[0].from_point, 0u);
+  EXPECT_EQ(marks[0].shade, 0.05);
+  EXPECT_EQ(marks[1].from_point, 1u);
+  EXPECT_EQ(marks[1].shade, 0.06);
+}
+
+TEST(PenTrace, UnshadedStrokesHaveNoMarksAndPenUpShadesAreIgnored) {
+  PenTrace trace;
+  trace.record(PenPoint{0, 0}, true);
+  trace.record(PenPoint{1, 0}, true);
+  trace.record(PenPoint{2, 0}, false, 0.05);
+  trace.record(PenPoint{3, 0}, true);
+  trace.record(PenPoint{4, 0}, true);
+  ASSERT_EQ(trace.strokes().size(), 2u);
+  ASSERT_EQ(trace.shade_marks().size(), 2u);
+  EXPECT_TRUE(trace.shade_marks()[0].empty());
+  EXPECT_TRUE(trace.shade_marks()[1].empty());
+}
+
 }  // namespace
 }  // namespace stepdance::sim

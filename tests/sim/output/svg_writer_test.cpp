@@ -58,6 +58,25 @@ TEST(SvgWriter, PenUpTravelIsAGreyDashedGroupUnderTheInk) {
             "</svg>\n");
 }
 
+// Shaded strokes carry their own colour: the scale's ends are blue #0000cc and red #cc0000,
+// its middle green #009900 (0.8 and 0.6 of full intensity).
+TEST(SvgWriter, ShadedStrokesAreColouredOnTheScale) {
+  DrawingStyle style = small_page();
+  style.shade_low = 0.04;
+  style.shade_high = 0.06;
+  style.shade_name = "filament mm per toolpath mm";
+  std::vector<Stroke> strokes = {{{{0, 0}, {1, 0}}, true, 0.04}, {{{1, 0}, {2, 0}}, true, 0.05},
+                                 {{{2, 0}, {3, 0}}, true, 0.07}, {{{3, 0}, {4, 0}}, true, std::nullopt}};
+  const std::string svg = svg_document(strokes, style);
+  EXPECT_NE(svg.find("<polyline stroke=\"#0000cc\" points=\"0,0 1,0\"/>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<polyline stroke=\"#009900\" points=\"1,0 2,0\"/>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<polyline stroke=\"#cc0000\" points=\"2,0 3,0\"/>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<polyline points=\"3,0 4,0\"/>"), std::string::npos) << svg;
+  EXPECT_NE(svg.find("<desc>Pen-down strokes coloured by filament mm per toolpath mm: blue 0.04, green 0.05, red 0.06"),
+            std::string::npos)
+      << svg;
+}
+
 TEST(SvgWriter, NoStrokesIsABlankPage) {
   EXPECT_EQ(svg_document({}, small_page()),
             "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
