@@ -62,4 +62,26 @@ Status i2c_start(uint8_t bus, const I2cTransfer& transfer);
 /// returned once (later calls return kIdle until the next start). Context: loop.
 I2cResult i2c_poll(uint8_t bus);
 
+// ---- Shared by the backends -------------------------------------------------------------------
+
+/// The checks every backend's i2c_start() makes: kNotStarted for a bus out of range or not
+/// begun, kBadArgument for an address above 0x7F or an oversized part. Context: any.
+inline Status i2c_check_start(uint8_t bus, const bool (&begun)[kI2cBusCount], const I2cTransfer& transfer) {
+  if (bus >= kI2cBusCount || !begun[bus]) return Status::kNotStarted;
+  if (transfer.address > 0x7F || transfer.write_length > kI2cMaxTransferBytes ||
+      transfer.read_length > kI2cMaxTransferBytes) {
+    return Status::kBadArgument;
+  }
+  return Status::kOk;
+}
+
+/// i2c_poll() of a backend whose transfers end inside i2c_start(): hands over the bus's result
+/// once, then kIdle. Context: loop.
+inline I2cResult i2c_take_result(uint8_t bus, I2cResult (&latest)[kI2cBusCount]) {
+  if (bus >= kI2cBusCount) return I2cResult::kIdle;
+  const I2cResult result = latest[bus];
+  latest[bus] = I2cResult::kIdle;
+  return result;
+}
+
 }  // namespace stepdance::hal

@@ -50,21 +50,13 @@ Status i2c_begin(uint8_t bus, uint32_t clock_hz) {
 }
 
 Status i2c_start(uint8_t bus, const I2cTransfer& transfer) {
-  if (bus >= kI2cBusCount || !begun[bus]) return Status::kNotStarted;
-  if (transfer.address > 0x7F || transfer.write_length > kI2cMaxTransferBytes ||
-      transfer.read_length > kI2cMaxTransferBytes) {
-    return Status::kBadArgument;
-  }
+  const Status valid = i2c_check_start(bus, begun, transfer);
+  if (valid != Status::kOk) return valid;
   latest[bus] = run(bus, transfer);
   return Status::kOk;
 }
 
-I2cResult i2c_poll(uint8_t bus) {
-  if (bus >= kI2cBusCount) return I2cResult::kIdle;
-  const I2cResult result = latest[bus];
-  latest[bus] = I2cResult::kIdle;
-  return result;
-}
+I2cResult i2c_poll(uint8_t bus) { return i2c_take_result(bus, latest); }
 
 }  // namespace stepdance::hal
 
