@@ -21,9 +21,6 @@ bool is_final(hal::I2cResult result) {
   return result != hal::I2cResult::kIdle && result != hal::I2cResult::kPending;
 }
 
-QwiicBus qwiic0_bus(QWIIC_0);
-QwiicBus qwiic1_bus(QWIIC_1);
-
 }  // namespace
 
 namespace hal {
@@ -41,7 +38,12 @@ const char* to_string(I2cResult result) {
 }
 }  // namespace hal
 
-QwiicBus& qwiic_bus(uint8_t index) { return index == QWIIC_0 ? qwiic0_bus : qwiic1_bus; }
+// Made on first use, like engine(): a sketch without QWIIC devices carries neither bus.
+QwiicBus& qwiic_bus(uint8_t index) {
+  static QwiicBus qwiic0(QWIIC_0);
+  static QwiicBus qwiic1(QWIIC_1);
+  return index == QWIIC_0 ? qwiic0 : qwiic1;
+}
 
 Status QwiicBus::begin(uint32_t clock_hz) {
   const Status claimed = hal::i2c_begin(index_, clock_hz);
