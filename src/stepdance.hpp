@@ -32,6 +32,9 @@
 #include "stepdance/interfaces/eibotboard.hpp"
 #include "stepdance/interfaces/rpc.hpp"
 #include "stepdance/protocol/signals.hpp"
+#include "stepdance/qwiic/oled_display.hpp"
+#include "stepdance/qwiic/qwiic_twist.hpp"
+#include "stepdance/qwiic/status_menu.hpp"
 
 #include "stepdance/sketch_board.hpp"
 
@@ -77,6 +80,12 @@ using stepdance::Plugin;
 using stepdance::PositionGenerator;
 using stepdance::RPC;
 using stepdance::TimeBasedInterpolator;
+// Board-mounted display and knob (new in this library; the original drove neither).
+using stepdance::OledDisplay;
+using stepdance::QwiicTwist;
+using stepdance::StatusMenu;
+using stepdance::QWIIC_0;
+using stepdance::QWIIC_1;
 using stepdance::disable_drivers;
 using stepdance::enable_drivers;
 using stepdance::iterate_across_all_output_ports;

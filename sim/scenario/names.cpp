@@ -7,7 +7,7 @@
 namespace stepdance::sim::scenario {
 
 namespace {
-constexpr std::array<std::pair<std::string_view, Connector>, 12> kConnectors{{
+constexpr std::array<std::pair<std::string_view, Connector>, 14> kConnectors{{
     {"ENC1", Connector::kEnc1},
     {"ENC2", Connector::kEnc2},
     {"A1", Connector::kA1},
@@ -20,6 +20,8 @@ constexpr std::array<std::pair<std::string_view, Connector>, 12> kConnectors{{
     {"LIMIT_B", Connector::kLimitB},
     {"LIMIT_C", Connector::kLimitC},
     {"LIMIT_D", Connector::kLimitD},
+    {"QWIIC0", Connector::kQwiic0},
+    {"QWIIC1", Connector::kQwiic1},
 }};
 
 bool is_analog(Connector c) { return c == Connector::kA1 || c == Connector::kA2 || c == Connector::kA3 || c == Connector::kA4; }
@@ -27,6 +29,7 @@ bool is_limit(Connector c) {
   return c == Connector::kLimitA || c == Connector::kLimitB || c == Connector::kLimitC || c == Connector::kLimitD;
 }
 bool is_encoder(Connector c) { return c == Connector::kEnc1 || c == Connector::kEnc2; }
+bool is_qwiic(Connector c) { return c == Connector::kQwiic0 || c == Connector::kQwiic1; }
 bool is_digital_or_analog(Connector c) { return c == Connector::kD1 || c == Connector::kD2 || is_analog(c); }
 
 // One row per device kind: adding a kind is adding a row (and its model in the simulation).
@@ -37,6 +40,8 @@ constexpr DeviceKind kDeviceKinds[] = {
     {DeviceType::kLimitSwitch, "limit_switch", "a limit switch", "LIMIT_A..LIMIT_D", is_limit},
     {DeviceType::kPendulum, "pendulum", "a pendulum", "ENC1 or ENC2", is_encoder},
     {DeviceType::kFiveBarArm, "five_bar_arm", "a five-bar arm", "ENC1 or ENC2", is_encoder},
+    {DeviceType::kOled, "oled", "an OLED display", "QWIIC0 or QWIIC1", is_qwiic},
+    {DeviceType::kTwist, "twist", "a Qwiic Twist knob", "QWIIC0 or QWIIC1", is_qwiic},
 };
 }  // namespace
 

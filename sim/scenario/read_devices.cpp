@@ -1,6 +1,7 @@
 // [[device]]: encoders, potentiometers, buttons, limit switches and pendulums on board connectors.
 #include <cmath>
 #include <map>
+#include <tuple>
 #include <utility>
 
 #include "scenario/names.hpp"
@@ -22,6 +23,8 @@ constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"position", DeviceType::kPotentiometer},        {"bounce_ms", DeviceType::kButton},
     {"pressed_level", DeviceType::kButton},          {"axis", DeviceType::kLimitSwitch},
     {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
+    {"address", DeviceType::kOled},                  {"snapshots_s", DeviceType::kOled},
+    {"address", DeviceType::kTwist},
 };
 
 std::optional<DeviceType> parse_type(std::string_view name) {
@@ -134,6 +137,34 @@ void read_five_bar_arm(TableReader& reader, DeviceConfig& device, const ParseCon
   read_bounded(reader, "start_s", 0, true, last_s, device.start_s);
 }
 
+/// address: a 7-bit I2C address (0x08..0x77, the range not reserved by the I2C standard).
+void read_i2c_address(TableReader& reader, DeviceConfig& device) {
+  device.i2c_address = device.type == DeviceType::kOled ? 0x3C : 0x3F;
+  const auto address = reader.integer("address");
+  if (!address) return;
+  if (*address >= 0x08 && *address <= 0x77) {
+    device.i2c_address = static_cast<int>(*address);
+  } else {
+    reader.error("address", "'address' must be a 7-bit I2C address in 0x08..0x77, got " + std::to_string(*address));
+  }
+}
+
+/// snapshots_s: times (s, within the run) at which an OLED's screen is saved as a picture.
+void read_snapshots(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
+  const toml::array* times = reader.array("snapshots_s");
+  if (times == nullptr) return;
+  const double last_s = context.duration_valid ? to_seconds(context.scenario.duration) : 86400;
+  for (const toml::node& item : *times) {
+    const auto time = item.value<double>();
+    if (!time || !std::isfinite(*time) || *time < 0 || *time > last_s) {
+      reader.error("snapshots_s", "'snapshots_s' must be a list of times in [0, " + format_number(last_s) + "] s");
+      device.snapshots_s.clear();
+      return;
+    }
+    device.snapshots_s.push_back(*time);
+  }
+}
+
 void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
   for (const auto& [key, owner] : kTypeKeys) {
     if (!key_belongs(key, device.type) && reader.has(key)) {
@@ -147,6 +178,13 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
       break;
     case DeviceType::kFiveBarArm:
       read_five_bar_arm(reader, device, context);
+      break;
+    case DeviceType::kOled:
+      read_i2c_address(reader, device);
+      read_snapshots(reader, device, context);
+      break;
+    case DeviceType::kTwist:
+      read_i2c_address(reader, device);
       break;
     case DeviceType::kEncoder:
       read_pulses_per_revolution(reader, device);
@@ -210,6 +248,8 @@ struct DeviceNames {
   std::map<std::string, int> first_lines;
   /// (board, connector) → device using it.
   std::map<std::pair<std::string, Connector>, std::string> connectors;
+  /// (board, QWIIC connector, I2C address) → device using it.
+  std::map<std::tuple<std::string, Connector, int>, std::string> i2c_addresses;
 };
 
 /// A five-bar arm's second encoder: left_connector (required), an encoder connector of its own.
@@ -271,7 +311,7 @@ void read_device(const toml::table& table, ParseContext& context, DeviceNames& n
     const std::optional<Connector> connector = parse_connector(*connector_text);
     if (!connector) {
       reader.error("connector", "unknown connector '" + *connector_text +
-                                    "' (connectors are ENC1, ENC2, A1..A4, D1, D2 and LIMIT_A..LIMIT_D)");
+                                    "' (connectors are ENC1, ENC2, A1..A4, D1, D2, LIMIT_A..LIMIT_D, QWIIC0 and QWIIC1)");
     } else if (type && !device_fits_connector(*type, *connector)) {
       reader.error("connector", std::string(device_with_article(*type)) + " cannot use connector " + *connector_text +
                                     " (use " + std::string(connectors_for(*type)) + ")");
@@ -280,7 +320,9 @@ void read_device(const toml::table& table, ParseContext& context, DeviceNames& n
                                     " module) has no connector " + *connector_text);
     } else if (board != nullptr) {
       const auto key = std::make_pair(board->name, *connector);
-      if (const auto user = names.connectors.find(key); user != names.connectors.end()) {
+      const bool shared_bus = *connector == Connector::kQwiic0 || *connector == Connector::kQwiic1;  // by address
+      if (shared_bus) {
+      } else if (const auto user = names.connectors.find(key); user != names.connectors.end()) {
         reader.error("connector", "connector " + *connector_text + " of board '" + board->name +
                                       "' is already used by device '" + user->second + "'");
       } else {
@@ -293,6 +335,16 @@ void read_device(const toml::table& table, ParseContext& context, DeviceNames& n
   device.type = *type;
   if (device.type == DeviceType::kFiveBarArm) read_left_connector(reader, device, board, names);
   read_type_keys(reader, device, context);
+  if (device.i2c_address >= 0 && board != nullptr) {
+    const auto key = std::make_tuple(board->name, device.connector, device.i2c_address);
+    if (const auto user = names.i2c_addresses.find(key); user != names.i2c_addresses.end()) {
+      reader.error(reader.has("address") ? "address" : "connector",
+                   "address " + std::to_string(device.i2c_address) + " on " + std::string(connector_name(device.connector)) +
+                       " of board '" + board->name + "' is already used by device '" + user->second + "'");
+    } else {
+      names.i2c_addresses.emplace(key, device.name);
+    }
+  }
   reader.finish();
   if (named) context.scenario.devices.push_back(std::move(device));
 }

@@ -25,6 +25,8 @@ constexpr std::pair<const char*, ExpectationType> kChecks[] = {
     {"rejected", ExpectationType::kRejected},
     {"port", ExpectationType::kPortPulses},
     {"host", ExpectationType::kHostReplies},
+    {"screen", ExpectationType::kScreenText},
+    {"i2c_loop_pass_max_us", ExpectationType::kI2cLoopTime},
 };
 
 /// Keys that only go with one check (port also goes with rejected, handled apart).
@@ -32,6 +34,7 @@ constexpr std::pair<const char*, const char*> kDetails[] = {
     {"steps", "motor"},  {"relative_tolerance", "extruded_per_mm"}, {"offset_mm", "traces"}, {"from_point", "traces"}, {"axis", "port"},      {"forward", "port"}, {"reverse", "port"},
     {"reply", "host"},   {"replies", "host"},        {"count", "host"},     {"within_ms", "host"}, {"after", "host"},
     {"completed", "host"},
+    {"shows", "screen"}, {"row", "screen"}, {"board", "i2c_loop_pass_max_us"},
 };
 
 constexpr const char* kSignalLetters = "XYRTZE";
@@ -53,7 +56,7 @@ std::optional<std::pair<const char*, ExpectationType>> choose_check(TableReader&
   if (!chosen) {
     reader.reporter().error(reader.line(),
                             "an [[expect]] needs one check: motor, pen_mm, strokes, bounds_mm, drawn_mm, z_mm, extruded_per_mm, traces, port, "
-                            "cable_counts_match, rejected or host");
+                            "cable_counts_match, rejected, host, screen or i2c_loop_pass_max_us");
   }
   return chosen;
 }
@@ -200,6 +203,59 @@ bool read_traces(TableReader& reader, Expectation& check, const ParseContext& co
     }
   }
   return read_tolerance(reader, check, context, "traces") && ok;
+}
+
+/// screen = "<oled device>", shows = "text", row = 0..3 (optional).
+bool read_screen(TableReader& reader, Expectation& check, const ParseContext& context) {
+  const auto name = reader.string("screen");
+  bool ok = name.has_value();
+  const DeviceConfig* device = name ? context.scenario.device(*name) : nullptr;
+  if (name && (device == nullptr || device->type != DeviceType::kOled)) {
+    reader.error("screen", "'screen' must name an oled device, got '" + *name + "'");
+    ok = false;
+  }
+  if (ok) check.screen = *name;
+  if (const auto text = reader.string("shows", Need::kRequired)) {
+    if (text->size() > 21) {
+      reader.error("shows", "'shows' can be at most 21 characters (a row of the 128x32 screen)");
+      ok = false;
+    }
+    check.shows = *text;
+  } else {
+    ok = false;
+  }
+  if (const auto row = reader.integer("row")) {
+    if (*row < 0 || *row > 3) {
+      reader.error("row", "'row' must be 0..3, got " + std::to_string(*row));
+      ok = false;
+    }
+    check.screen_row = *row;
+  }
+  return ok;
+}
+
+/// i2c_loop_pass_max_us = bound (µs, > 0), board = "<board>".
+bool read_i2c_loop_time(TableReader& reader, Expectation& check, const ParseContext& context) {
+  bool ok = true;
+  if (const auto bound = reader.number("i2c_loop_pass_max_us")) {
+    if (!std::isfinite(*bound) || *bound <= 0) {
+      reader.error("i2c_loop_pass_max_us", "'i2c_loop_pass_max_us' must be a time > 0 (µs)");
+      ok = false;
+    }
+    check.i2c_loop_pass_max_us = *bound;
+  } else {
+    ok = false;
+  }
+  if (const auto board = reader.string("board", Need::kRequired)) {
+    if (context.scenario.board(*board) == nullptr) {
+      reader.error("board", "unknown board '" + *board + "'");
+      ok = false;
+    }
+    check.i2c_board = *board;
+  } else {
+    ok = false;
+  }
+  return ok;
 }
 
 bool read_drawn(TableReader& reader, Expectation& check, const ParseContext& context) {
@@ -421,6 +477,12 @@ void read_expectation(const toml::table& table, ParseContext& context) {
     case ExpectationType::kHostReplies:
     case ExpectationType::kHostCompleted:
       ok = read_host_check(reader, check, context) && ok;
+      break;
+    case ExpectationType::kScreenText:
+      ok = read_screen(reader, check, context) && ok;
+      break;
+    case ExpectationType::kI2cLoopTime:
+      ok = read_i2c_loop_time(reader, check, context) && ok;
       break;
   }
   reader.finish();

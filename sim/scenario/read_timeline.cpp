@@ -72,7 +72,8 @@ bool read_target(TableReader& reader, Action& action, const ParseContext& contex
     return false;
   }
   const DeviceType wanted = device_for(action.type);
-  if (device->type != wanted) {
+  const bool knob_action = action.type != ActionType::kSet;  // a Twist turns, presses and clicks
+  if (device->type != wanted && !(knob_action && device->type == DeviceType::kTwist)) {
     reader.error(key, "'" + std::string(key) + "' needs " + std::string(device_with_article(wanted)) + ", but '" +
                           *target + "' is " + std::string(device_with_article(device->type)));
     return false;

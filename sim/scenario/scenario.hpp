@@ -105,10 +105,10 @@ struct MachineConfig {
 };
 
 /// Input device models.
-enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch, kPendulum, kFiveBarArm };
+enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch, kPendulum, kFiveBarArm, kOled, kTwist };
 
 /// Connectors on a module's edge.
-enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD };
+enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD, kQwiic0, kQwiic1 };
 
 /// The connector's silkscreen name, e.g. "ENC1", "LIMIT_A".
 std::string_view connector_name(Connector connector);
@@ -151,6 +151,10 @@ struct DeviceConfig {
   std::vector<double> dwell_s;  ///< per path point: [x, y, dwell_s] rests there (0 if omitted)
   double speed_mm_per_s = 20;
   double start_s = 0;
+  /// OLED and Twist (on QWIIC0 or QWIIC1): the 7-bit I2C address (default 0x3C / 0x3F); the
+  /// OLED also writes a picture of its screen at each of snapshots_s (and one at the end).
+  int i2c_address = -1;
+  std::vector<double> snapshots_s;
   int line = 0;
 };
 
@@ -268,6 +272,8 @@ enum class ExpectationType {
   kZPosition,      ///< the machine's final z (mm)
   kExtrusionRatio, ///< extruder advance per mm of pen-down (extruding) path
   kTraces,         ///< the drawing copies a five-bar arm's stylus path
+  kScreenText,     ///< an OLED shows a line of text at the end
+  kI2cLoopTime,    ///< no loop pass of a board spent more than a bound in I2C transfers
 };
 
 /// One end-of-run check. Only the fields of its type are meaningful.
@@ -313,6 +319,14 @@ struct Expectation {
   std::optional<int64_t> count;
   std::optional<SimTime> within;
   std::string after;
+  /// Screen text: the OLED device, the text a row must show (trailing blanks ignored), and the
+  /// row (0..3; −1 = any row).
+  std::string screen;
+  std::string shows;
+  int64_t screen_row = -1;
+  /// I2C loop time: the board and the most µs of I2C wire time any one loop pass may take.
+  std::string i2c_board;
+  double i2c_loop_pass_max_us = 0;
   int line = 0;
 };
 

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 4u
+#define STEPDANCE_BOARD_ABI_VERSION 5u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -101,6 +101,14 @@ typedef struct StepdanceHostV1 {
   int (*file_read)(void* context, int handle, uint8_t* data, size_t length, size_t* read);
   int (*file_write)(void* context, int handle, const uint8_t* data, size_t length);
   int (*file_close)(void* context, int handle);
+
+  /* ---- I2C on the QWIIC connectors (bus 0 = QWIIC0, 1 = QWIIC1) ---- */
+  int (*i2c_begin)(void* context, uint8_t bus, uint32_t clock_hz);
+  /* One whole transfer against the devices on the bus: write, then (read_length > 0) a repeated
+   * start and read. Returns a stepdance::hal::I2cResult final value (2 = ok, 3 = address nack,
+   * …) and the transfer's time on the wire in *wire_ns; simulated time does not move. */
+  int (*i2c_transfer)(void* context, uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length,
+                      uint8_t* read, size_t read_length, int64_t* wire_ns);
 } StepdanceHostV1;
 
 /* Entry points of one board, called by the simulator's scheduler. Each takes the current

@@ -19,6 +19,7 @@ StepdanceHostV1 BoardCallbacks::table() {
   add_port_callbacks(host);
   add_input_callbacks(host);
   add_console_callbacks(host);
+  add_i2c_callbacks(host);
   return host;
 }
 
@@ -97,6 +98,18 @@ void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
     return static_cast<int>(of(c).storage_.write(handle, data, length));
   };
   host.file_close = [](void* c, int handle) { return static_cast<int>(of(c).storage_.close(handle)); };
+}
+
+void BoardCallbacks::add_i2c_callbacks(StepdanceHostV1& host) {
+  host.i2c_begin = [](void* c, uint8_t bus, uint32_t clock_hz) {
+    if (bus >= of(c).i2c_.size()) return no_such_pin();
+    of(c).i2c_[bus].clock_hz = clock_hz;
+    return ok();
+  };
+  host.i2c_transfer = [](void* c, uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length,
+                         uint8_t* read, size_t read_length, int64_t* wire_ns) {
+    return of(c).i2c_transfer(bus, address, write, write_length, read, read_length, wire_ns);
+  };
 }
 
 }  // namespace stepdance::sim

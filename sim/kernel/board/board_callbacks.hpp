@@ -15,6 +15,7 @@ struct BoardCallbacks {
   static void add_port_callbacks(StepdanceHostV1& host);     ///< output and input ports
   static void add_input_callbacks(StepdanceHostV1& host);    ///< quadrature, ADC, GPIO
   static void add_console_callbacks(StepdanceHostV1& host);  ///< faults, console, storage
+  static void add_i2c_callbacks(StepdanceHostV1& host);      ///< the QWIIC buses
 };
 
 }  // namespace stepdance::sim

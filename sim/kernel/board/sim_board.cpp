@@ -1,6 +1,8 @@
 // A simulated board: timers in virtual time, pin and port state, console, and the sketch's entry points.
 #include "board/sim_board.hpp"
 
+#include <algorithm>
+
 #include "board/board_callbacks.hpp"
 
 namespace stepdance::sim {
@@ -64,7 +66,14 @@ void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
 void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
   SimBoard& board = static_cast<LoopEvent&>(event).owner;
   const SimTime started = event.time();
+  board.in_loop_pass_ = true;
+  board.i2c_ns_this_pass_ = 0;
   board.board_->run_loop(scheduler.now());
+  board.in_loop_pass_ = false;
+  if (board.i2c_ns_this_pass_ > 0) {
+    ++board.i2c_timing_.loop_passes_with_i2c;
+    board.i2c_timing_.max_loop_pass_ns = std::max(board.i2c_timing_.max_loop_pass_ns, board.i2c_ns_this_pass_);
+  }
   const SimTime next = started + board.options_.loop_period_ns;
   scheduler.schedule(event, next > scheduler.now() ? next : scheduler.now());
 }
@@ -294,6 +303,24 @@ uint64_t SimBoard::port_counter(const std::string& block_class, uint8_t port, co
     }
   }
   return 0;
+}
+
+int SimBoard::i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
+                           size_t read_length, int64_t* wire_ns) {
+  *wire_ns = 0;
+  if (bus >= i2c_.size() || i2c_[bus].clock_hz == 0) return static_cast<int>(I2cOutcome::kBusError);
+  SimTime duration = 0;
+  const I2cOutcome outcome = i2c_[bus].model.transfer(scheduler_.now(), i2c_[bus].clock_hz, address, write, write_length,
+                                                      read, read_length, &duration);
+  *wire_ns = duration;
+  ++i2c_timing_.transfers;
+  i2c_timing_.total_ns += duration;
+  if (in_loop_pass_) {
+    i2c_ns_this_pass_ += duration;
+  } else {
+    i2c_timing_.setup_ns += duration;
+  }
+  return static_cast<int>(outcome);
 }
 
 StepdanceBoardStatsV1 SimBoard::stats() const {

@@ -14,6 +14,7 @@
 #include "board/wire.hpp"
 #include "common/sim_time.hpp"
 #include "loader/board_library.hpp"
+#include "models/i2c_bus.hpp"
 #include "scheduler/periodic_timer.hpp"
 #include "scheduler/scheduler.hpp"
 #include "stepdance/boards/board.hpp"
@@ -84,6 +85,10 @@ class SimBoard {
   void on_pin_change(uint8_t pin, PinListener listener);
   /// Adds a listener of output port `port`'s wire (the board does not own it).
   void add_wire_listener(uint8_t port, WireListener* listener);
+  /// Plugs `device` into QWIIC bus `bus` (0 or 1) at 7-bit `address` (the board does not own it).
+  void attach_i2c_device(uint8_t bus, uint8_t address, I2cDevice* device) { i2c_[bus].model.attach(address, device); }
+  /// Breaks or mends bus `bus` (fault scenarios and tests).
+  void set_i2c_fault(uint8_t bus, I2cBusFault fault) { i2c_[bus].model.set_fault(fault); }
   /// A STEP pulse reaches input port `port`; call at pulse.fall_ns (when the capture ISR runs).
   void capture(uint8_t port, const ArrivingPulse& pulse);
   /// Calls `listener` at every frame tick, after the previous frame's words were played and
@@ -129,6 +134,16 @@ class SimBoard {
   bool in_safe_state() const { return safe_state_; }
   /// Everything the sketch printed so far.
   const std::string& console_text() const { return console_text_; }
+  /// Time the sketch's loop spent in I2C transfers (their wire time at the bus clock): the most
+  /// in any one loop pass, and in all. Transfers in setup() are counted apart.
+  struct I2cTiming {
+    SimTime max_loop_pass_ns = 0;
+    SimTime total_ns = 0;
+    SimTime setup_ns = 0;
+    uint64_t transfers = 0;
+    uint64_t loop_passes_with_i2c = 0;
+  };
+  const I2cTiming& i2c_timing() const { return i2c_timing_; }
   /// delay() calls made from an interrupt handler (ignored: they cannot block there).
   uint64_t delays_in_isr() const { return delays_in_isr_; }
 
@@ -154,6 +169,10 @@ class SimBoard {
     bool driven_level = false;
     Source<bool> source;
     std::vector<PinListener> listeners;
+  };
+  struct I2cState {
+    I2cBusModel model;
+    uint32_t clock_hz = 0;  ///< 0 until the sketch begins the bus
   };
   struct AdcState {
     Source<uint16_t> value;
@@ -191,6 +210,8 @@ class SimBoard {
   void enter_safe_state();
   size_t write_console(const uint8_t* data, size_t length);
   int read_console();
+  int i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
+                   size_t read_length, int64_t* wire_ns);
 
   Scheduler& scheduler_;
   BoardOptions options_;
@@ -210,6 +231,10 @@ class SimBoard {
   std::array<AdcState, kPins> adcs_{};
   std::array<Source<int64_t>, 2> encoders_{};
   std::array<int64_t, 2> encoder_offsets_{};
+  std::array<I2cState, 2> i2c_{};
+  I2cTiming i2c_timing_;
+  bool in_loop_pass_ = false;
+  SimTime i2c_ns_this_pass_ = 0;
   std::vector<uint8_t> console_input_;
   size_t console_read_position_ = 0;
   std::string console_text_;

@@ -30,6 +30,11 @@ int refuse_read(void*, int, uint8_t*, size_t, size_t* read) {
 }
 int refuse_write(void*, int, const uint8_t*, size_t) { return kUnsupported; }
 int refuse_close(void*, int) { return kUnsupported; }
+int refuse_i2c_begin(void*, uint8_t, uint32_t) { return kUnsupported; }
+int no_i2c_device(void*, uint8_t, uint8_t, const uint8_t*, size_t, uint8_t*, size_t, int64_t* wire_ns) {
+  *wire_ns = 0;
+  return 3;  // stepdance::hal::I2cResult::kAddressNack
+}
 
 const StepdanceHostV1 kDetached = {
     STEPDANCE_BOARD_ABI_VERSION,
@@ -37,7 +42,7 @@ const StepdanceHostV1 kDetached = {
     &refuse_input, &refuse_port,      &zero_count,   &ignore_count, &refuse_port,  &zero_adc,
     &zero_samples, &refuse_mode,      &low_pin,      &ignore_write, &ignore,       &ignore_fault,
     &swallow,      &nothing_available, &no_byte,     &refuse_open,  &refuse_read,  &refuse_write,
-    &refuse_close,
+    &refuse_close, &refuse_i2c_begin, &no_i2c_device,
 };
 
 const StepdanceHostV1* current = &kDetached;

@@ -18,6 +18,20 @@ const FiveBarArm* Simulation::five_bar_arm(const std::string& name) const {
   return found == devices_.end() ? nullptr : model_of<FiveBarArm>(found->second.get());
 }
 
+const SimDevice* Simulation::device(const std::string& name) const {
+  const auto found = devices_.find(name);
+  return found == devices_.end() ? nullptr : found->second.get();
+}
+
+void Simulation::write_device_outputs(SimulationReport& report) {
+  const std::string directory = scenario_.output.directory;
+  if (directory.empty() && !options_.output_directory) return;  // no output folder: no pictures
+  const auto path_for = [this, &directory](const std::string& file) {
+    return output_path((std::filesystem::path(directory) / file).string());
+  };
+  for (auto& [name, device] : devices_) device->write_outputs(name, path_for, report.files);
+}
+
 // Each [[device]] becomes its kind's model (wiring/device_kinds.cpp), plugged into its board.
 void Simulation::build_devices() {
   for (const scenario::DeviceConfig& device : scenario_.devices) {

@@ -2,11 +2,16 @@
 // five-bar arm — each a builder that makes its model and plugs it into the board.
 #include "wiring/device_kinds.hpp"
 
+#include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "models/bouncing_button.hpp"
 #include "models/damped_pendulum.hpp"
 #include "models/five_bar_arm.hpp"
+#include "models/qwiic_twist_model.hpp"
+#include "models/ssd1306_display.hpp"
+#include "output/screen_png.hpp"
 #include "models/limit_switch.hpp"
 #include "models/potentiometer.hpp"
 #include "models/quadrature_encoder.hpp"
@@ -21,8 +26,8 @@ using scenario::DeviceConfig;
 /// Index of a connector within its group (ENC1 → 0, A3 → 2, D2 → 1, LIMIT_C → 2).
 uint8_t connector_index(Connector connector) {
   switch (connector) {
-    case Connector::kEnc1: case Connector::kA1: case Connector::kD1: case Connector::kLimitA: return 0;
-    case Connector::kEnc2: case Connector::kA2: case Connector::kD2: case Connector::kLimitB: return 1;
+    case Connector::kEnc1: case Connector::kA1: case Connector::kD1: case Connector::kLimitA: case Connector::kQwiic0: return 0;
+    case Connector::kEnc2: case Connector::kA2: case Connector::kD2: case Connector::kLimitB: case Connector::kQwiic1: return 1;
     case Connector::kA3: case Connector::kLimitC: return 2;
     case Connector::kA4: case Connector::kLimitD: return 3;
   }
@@ -175,6 +180,66 @@ std::unique_ptr<SimDevice> build_five_bar_arm(const DeviceConfig& device, Device
   return built;
 }
 
+/// The OLED: its screen as PNGs, 4 px per pixel: "<name>.png" at the end and
+/// "<name>-<t>s.png" at each snapshot time.
+class OledDevice : public ModelDevice<Ssd1306Display> {
+ public:
+  using ModelDevice::ModelDevice;
+  void write_outputs(const std::string& name, const std::function<std::string(const std::string&)>& path_for,
+                     std::vector<std::string>& files) override {
+    model().finish();
+    for (const auto& [time, picture] : model().snapshots()) {
+      char stamp[32];
+      std::snprintf(stamp, sizeof stamp, "-%.3fs", to_seconds(time));
+      write(picture, path_for(name + stamp + ".png"), files);
+    }
+    write(model().image(), path_for(name + ".png"), files);
+  }
+
+ private:
+  static void write(const OledImage& picture, const std::string& path, std::vector<std::string>& files) {
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    write_screen_png(path, std::vector<bool>(picture.lit.begin(), picture.lit.end()), OledImage::kWidth,
+                     OledImage::kHeight, 4);
+    files.push_back(path);
+  }
+};
+
+class TwistDevice : public ModelDevice<QwiicTwistModel> {
+ public:
+  using ModelDevice::ModelDevice;
+  void schedule(const scenario::Action& action) override {
+    switch (action.type) {
+      case scenario::ActionType::kTurn: model().turn(action.time, action.counts, action.over); break;
+      case scenario::ActionType::kPress: model().press(action.time); break;
+      case scenario::ActionType::kRelease: model().release(action.time); break;
+      case scenario::ActionType::kClick: model().click(action.time, action.hold); break;
+      default: break;
+    }
+  }
+  void add_probes(const std::string& name, std::vector<CsvProbe>& probes) const override {
+    QwiicTwistModel* twist = const_cast<QwiicTwistModel*>(&model());  // count_at() applies due events
+    probes.push_back(counts_probe(name + "_count", [twist](SimTime time) { return twist->count_at(time); }));
+  }
+};
+
+std::unique_ptr<SimDevice> build_oled(const DeviceConfig& device, DeviceSocket& socket) {
+  auto built = std::make_unique<OledDevice>(std::make_unique<Ssd1306Display>());
+  std::vector<SimTime> times;
+  for (double seconds : device.snapshots_s) times.push_back(from_seconds(seconds));
+  built->model().set_snapshot_times(std::move(times));
+  socket.board.attach_i2c_device(connector_index(device.connector), static_cast<uint8_t>(device.i2c_address),
+                                 &built->model());
+  return built;
+}
+
+std::unique_ptr<SimDevice> build_twist(const DeviceConfig& device, DeviceSocket& socket) {
+  auto built = std::make_unique<TwistDevice>(std::make_unique<QwiicTwistModel>());
+  socket.board.attach_i2c_device(connector_index(device.connector), static_cast<uint8_t>(device.i2c_address),
+                                 &built->model());
+  return built;
+}
+
 using Builder = std::unique_ptr<SimDevice> (*)(const DeviceConfig&, DeviceSocket&);
 
 /// One row per kind (the scenario reader's own table, names.cpp, lists the same kinds).
@@ -185,6 +250,8 @@ constexpr std::pair<scenario::DeviceType, Builder> kBuilders[] = {
     {scenario::DeviceType::kLimitSwitch, build_limit_switch},
     {scenario::DeviceType::kPendulum, build_pendulum},
     {scenario::DeviceType::kFiveBarArm, build_five_bar_arm},
+    {scenario::DeviceType::kOled, build_oled},
+    {scenario::DeviceType::kTwist, build_twist},
 };
 
 }  // namespace

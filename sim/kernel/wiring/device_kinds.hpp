@@ -27,6 +27,15 @@ class SimDevice {
     (void)name;
     (void)probes;
   }
+  /// At the end of the run: writes the device's own files (an OLED's screen pictures), named
+  /// after the device; path_for(file name) gives the path in the output folder. Appends the
+  /// paths written to `files`.
+  virtual void write_outputs(const std::string& name, const std::function<std::string(const std::string&)>& path_for,
+                             std::vector<std::string>& files) {
+    (void)name;
+    (void)path_for;
+    (void)files;
+  }
 };
 
 /// A device whose model is a T; model_of<T>() finds it again.

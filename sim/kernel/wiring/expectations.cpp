@@ -7,6 +7,7 @@
 #include <optional>
 #include <regex>
 
+#include "models/ssd1306_display.hpp"
 #include "output/pulse_counts.hpp"
 #include "wiring/simulation.hpp"
 
@@ -167,6 +168,36 @@ ExpectationResult traces(const Expectation& expectation, const Simulation& simul
   return {drew && drawn_off <= expectation.tolerance_mm && missed <= expectation.tolerance_mm, text};
 }
 
+// The OLED's rows at the end of the run, read back in Stepdance's font.
+ExpectationResult screen_text(const Expectation& expectation, const Simulation& simulation) {
+  const Ssd1306Display* oled = model_of<Ssd1306Display>(simulation.device(expectation.screen));
+  if (oled == nullptr) return {false, "screen: no such oled"};
+  const std::vector<std::string> rows = oled->text_rows();
+  std::string shown;
+  bool found = false;
+  for (size_t row = 0; row < rows.size(); ++row) {
+    shown += (row == 0 ? "\"" : " | \"") + rows[row] + "\"";
+    if (expectation.screen_row < 0 || static_cast<size_t>(expectation.screen_row) == row) {
+      found = found || rows[row] == expectation.shows;
+    }
+  }
+  const std::string where = expectation.screen_row < 0 ? "a row" : "row " + std::to_string(expectation.screen_row);
+  return {found, "screen '" + expectation.screen + "' " + where + " shows \"" + expectation.shows + "\": rows " + shown};
+}
+
+// The most wire time one loop pass of the board spent on I2C.
+ExpectationResult i2c_loop_time(const Expectation& expectation, const Simulation& simulation) {
+  const SimBoard* board = simulation.board(expectation.i2c_board);
+  if (board == nullptr) return {false, "i2c: no such board"};
+  const SimBoard::I2cTiming& timing = board->i2c_timing();
+  const double worst_us = static_cast<double>(timing.max_loop_pass_ns) / 1000.0;
+  char text[200];
+  std::snprintf(text, sizeof text, "board '%s': longest loop pass in I2C %.1f us (limit %.1f us; %llu transfers)",
+                expectation.i2c_board.c_str(), worst_us, expectation.i2c_loop_pass_max_us,
+                static_cast<unsigned long long>(timing.transfers));
+  return {timing.transfers > 0 && worst_us <= expectation.i2c_loop_pass_max_us, text};
+}
+
 const PulseCounts* counts_of(const scenario::PortLineRef& port, const Simulation& simulation) {
   const SimBoard* board = simulation.board(port.board);
   if (board == nullptr) return nullptr;
@@ -294,6 +325,8 @@ ExpectationResult evaluate(const scenario::Scenario& scenario, const Expectation
     case ExpectationType::kRejected: return rejected(expectation, simulation);
     case ExpectationType::kHostReplies: return host_replies(expectation, simulation);
     case ExpectationType::kHostCompleted: return host_completed(expectation, simulation);
+    case ExpectationType::kScreenText: return screen_text(expectation, simulation);
+    case ExpectationType::kI2cLoopTime: return i2c_loop_time(expectation, simulation);
   }
   return {false, "unknown expectation"};
 }

@@ -110,9 +110,15 @@ void Simulation::write_drawings(SimulationReport& report) const {
 void Simulation::add_board_extras(nlohmann::json& extra) const {
   nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
   nlohmann::json counters = nlohmann::json::object(), load = nlohmann::json::object();
-  nlohmann::json motors = nlohmann::json::object();
+  nlohmann::json motors = nlohmann::json::object(), i2c = nlohmann::json::object();
   for (const BoardSlot& slot : boards_) {
     const StepdanceBoardStatsV1 stats = slot.board->stats();
+    if (const SimBoard::I2cTiming& timing = slot.board->i2c_timing(); timing.transfers > 0) {
+      i2c[slot.config->name] = {{"transfers", timing.transfers},
+                                {"longest_loop_pass_us", static_cast<double>(timing.max_loop_pass_ns) / 1000.0},
+                                {"loop_passes_with_i2c", timing.loop_passes_with_i2c},
+                                {"wire_time_s", to_seconds(timing.total_ns)}};
+    }
     frames[slot.config->name] = stats.frames;
     if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
       const double budget = stats.load_budget_cycles;
@@ -145,6 +151,7 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   extra["motors"] = motors;
   extra["counters"] = counters;
   extra["cpu_load"] = load;
+  if (!i2c.empty()) extra["i2c"] = i2c;
 }
 
 nlohmann::json Simulation::cable_extras() const {

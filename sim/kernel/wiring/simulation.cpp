@@ -131,6 +131,7 @@ SimulationReport Simulation::finish() {
     report.files.push_back(output_path(scenario_.output.csv));
   }
   write_drawings(report);
+  write_device_outputs(report);
   for (const auto& host : hosts_) {
     const scenario::HostClientConfig* config = nullptr;
     for (const auto& candidate : scenario_.hosts) {

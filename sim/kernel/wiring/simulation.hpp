@@ -108,6 +108,8 @@ class Simulation {
   const std::vector<std::unique_ptr<CableLink>>& cables() const { return cables_; }
   /// The scripted host client on `board` (null if none).
   const HostClient* host_client(const std::string& board) const;
+  /// The [[device]] with this name (its model through model_of<T>()), or null.
+  const SimDevice* device(const std::string& name) const;
   /// The five-bar arm device with this name, or null.
   const FiveBarArm* five_bar_arm(const std::string& name) const;
   /// The JSON summary text as it would be written now (wall time left out).
@@ -137,6 +139,7 @@ class Simulation {
   void build_cables();
   void build_vcd();
   void build_csv();
+  void write_device_outputs(SimulationReport& report);
   BoardSlot& slot(const std::string& name);
   const BoardSlot* find_slot(const std::string& name) const;
   /// A configured output file's path, moved into --out's directory when that was given.

@@ -34,6 +34,7 @@ struct BoardDefinition {
   uint8_t io_a[4];             ///< A1..A4 (analog or digital)
   uint8_t io_d[2];             ///< D1..D2 (digital)
   bool has_drivers;            ///< driver sockets with ENABLE and VREF
+  uint8_t qwiic[2][2];         ///< QWIIC0, QWIIC1: SDA/SCL (Teensy Wire 18/19, Wire1 17/16)
 };
 
 /// Stepdance Driver Module v1.0 (Teensy 4.1): four driver sockets, four input ports.
@@ -47,6 +48,7 @@ constexpr BoardDefinition kDriverModuleV1 = {
     {24, 26, 27, 25},
     {28, 12},
     true,
+    {{18, 19}, {17, 16}},  // QWIIC1 shares 17/16 with Serial4 (TX4/RX4)
 };
 
 /// Stepdance Basic Module v1.0 (Teensy 4.0 or 4.1): one input and one output port, no drivers.
@@ -60,6 +62,7 @@ constexpr BoardDefinition kBasicModuleV1 = {
     {14, 15, 20, 21},
     {13, 12},
     false,
+    {{18, 19}, {17, 16}},
 };
 
 /// The board the core is running on. Defaults to the Driver Module. Context: any.

@@ -132,6 +132,7 @@ void Engine::run_kilohertz_tick() {
 }
 
 void Engine::run_loop() {
+  ++loop_passes_;
   for (Block* block : registry(Stage::kLoop)) {
     if (block->is_enabled()) block->loop();
   }

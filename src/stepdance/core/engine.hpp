@@ -61,6 +61,9 @@ class Engine {
   /// One pass of the loop stage. Context: loop.
   void run_loop();
 
+  /// Loop passes run so far (wraps; compare for equality): lets loop blocks share a per-pass
+  /// budget, e.g. one I2C transfer per pass. Context: loop.
+  uint32_t loop_passes() const { return loop_passes_; }
   /// Frames run since start (wraps after ~2 days at 25 kHz; use differences). Context: any.
   uint32_t frame_count() const { return frame_count_; }
   /// Frame-ISR load statistics. Context: any (reads are not atomic across fields).
@@ -94,6 +97,7 @@ class Engine {
   uint32_t frame_budget_cycles_ = 24000;  // CPU cycles per frame, set from the HAL at start()
   volatile uint32_t frame_count_ = 0;
   uint32_t blocks_run_ = 0;
+  uint32_t loop_passes_ = 0;
   volatile bool running_ = false;
 };
 

@@ -2,6 +2,7 @@
 // They only make the link and the size report possible: an image built with them is not flashable.
 #include "Arduino.h"
 #include "SD.h"
+#include "Wire.h"
 
 volatile uint32_t F_CPU_ACTUAL = 600000000;
 volatile uint32_t F_BUS_ACTUAL = 150000000;
@@ -41,6 +42,17 @@ int usb_serial_class::availableForWrite() { return 0; }
 usb_serial_class::operator bool() const { return true; }
 
 SDClass SD;
+TwoWire Wire;
+TwoWire Wire1;
+
+void TwoWire::begin() {}
+void TwoWire::setClock(uint32_t) {}
+void TwoWire::beginTransmission(uint8_t) {}
+size_t TwoWire::write(const uint8_t*, size_t quantity) { return quantity; }
+uint8_t TwoWire::endTransmission(uint8_t) { return 2; }
+uint8_t TwoWire::requestFrom(uint8_t, uint8_t, uint8_t) { return 0; }
+int TwoWire::available() { return 0; }
+int TwoWire::read() { return -1; }
 
 size_t File::read(void*, size_t) { return 0; }
 size_t File::write(const void*, size_t) { return 0; }

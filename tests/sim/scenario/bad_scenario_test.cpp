@@ -42,7 +42,7 @@ std::vector<BadCase> cases() {
        {{15, "'time_s' = 12 is after the end of the run (duration_s = 10)"},
         {23, "the turn ends at 10.5 s, after the end of the run (duration_s = 10)"}}},
       {"bad_connector",
-       {{12, "unknown connector 'ENC3' (connectors are ENC1, ENC2, A1..A4, D1, D2 and LIMIT_A..LIMIT_D)"}}},
+       {{12, "unknown connector 'ENC3' (connectors are ENC1, ENC2, A1..A4, D1, D2, LIMIT_A..LIMIT_D, QWIIC0 and QWIIC1)"}}},
       {"connector_for_type",
        {{13, "a button cannot use connector ENC1 (use D1, D2 or A1..A4)"},
         {15, "a limit_switch needs a [machine] to watch"},

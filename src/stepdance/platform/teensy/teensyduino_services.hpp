@@ -33,6 +33,16 @@
 //       bool remove(const char* filepath);
 //     };
 //     extern SDClass SD;
+//   <Wire.h>
+//     class TwoWire {
+//       void begin();  void setClock(uint32_t frequency);
+//       void beginTransmission(uint8_t address);
+//       size_t write(const uint8_t* data, size_t quantity);
+//       uint8_t endTransmission(uint8_t sendStop);        // 0 ok, 2 address NACK, 3 data NACK, …
+//       uint8_t requestFrom(uint8_t address, uint8_t quantity, uint8_t sendStop);  // bytes received
+//       int available();  int read();
+//     };
+//     extern TwoWire Wire, Wire1;                         // QWIIC0 (pins 18/19), QWIIC1 (17/16)
 //
 // NVIC priorities/enables, clocks, pins and every peripheral are programmed through our own
 // register definitions, not through Teensyduino macros.
@@ -42,6 +52,7 @@
 
 #include <Arduino.h>
 #include <SD.h>
+#include <Wire.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -71,6 +82,27 @@ inline SdFileHandle sd_open_read(const char* name) { return SD.open(name, FILE_R
 /// Opens for writing at the end of the file, creating it if needed.
 inline SdFileHandle sd_open_append(const char* name) { return SD.open(name, FILE_WRITE); }
 inline bool sd_remove(const char* name) { return SD.remove(name); }
+
+// ---- I2C (Wire = QWIIC0, Wire1 = QWIIC1); each call blocks until its bytes are on the wire -------
+inline TwoWire& wire(uint8_t bus) { return bus == 0 ? Wire : Wire1; }
+inline void wire_begin(uint8_t bus, uint32_t clock_hz) {
+  wire(bus).begin();
+  wire(bus).setClock(clock_hz);
+}
+/// Writes `length` bytes to `address`; a STOP follows unless `stop` is false (a read follows).
+/// Returns Wire's endTransmission code.
+inline uint8_t wire_write(uint8_t bus, uint8_t address, const uint8_t* data, size_t length, bool stop) {
+  wire(bus).beginTransmission(address);
+  if (length > 0) wire(bus).write(data, length);
+  return wire(bus).endTransmission(stop ? 1 : 0);
+}
+/// Reads up to `length` bytes from `address` into `data`; returns how many arrived.
+inline size_t wire_read(uint8_t bus, uint8_t address, uint8_t* data, size_t length) {
+  const size_t received = wire(bus).requestFrom(address, static_cast<uint8_t>(length), static_cast<uint8_t>(1));
+  size_t taken = 0;
+  while (taken < received && wire(bus).available() > 0) data[taken++] = static_cast<uint8_t>(wire(bus).read());
+  return taken;
+}
 
 }  // namespace stepdance::platform::teensy::services
 

@@ -1,0 +1,205 @@
+// QwiicTwist: identification, polling, unwrapping the count, clearing latched events, writes.
+#include "stepdance/qwiic/qwiic_twist.hpp"
+
+#include "stepdance/hal/hal.hpp"
+#include "stepdance/interfaces/text_writer.hpp"
+
+namespace stepdance {
+namespace {
+
+constexpr uint8_t kFirstPolled = twist::kStatus;                   // 0x01
+constexpr uint8_t kPolledBytes = twist::kSinceButtonMs + 2 - kFirstPolled;  // through 0x0C
+static_assert(kPolledBytes == 12, "the poll reads registers 0x01..0x0C");
+
+uint16_t little_endian(const uint8_t* bytes) { return static_cast<uint16_t>(bytes[0] | (bytes[1] << 8)); }
+uint8_t low_byte(uint16_t value) { return static_cast<uint8_t>(value & 0xFF); }
+uint8_t high_byte(uint16_t value) { return static_cast<uint8_t>(value >> 8); }
+
+}  // namespace
+
+Status QwiicTwist::begin(uint8_t bus, uint8_t address) {
+  if (address > 0x7F) return Status::kBadArgument;
+  bus_ = &qwiic_bus(bus);
+  const Status claimed = bus_->begin();
+  if (claimed != Status::kOk) return claimed;
+  address_ = address;
+  read_request_.context = this;
+  read_request_.done = &QwiicTwist::on_read_done;
+  write_request_.context = this;
+  write_request_.done = &QwiicTwist::on_write_done;
+  output.begin(&position_counts_, BLOCKPORT_UNDEFINED, this);
+  output.reset(0, true);
+  state_ = State::kIdentifying;
+  const Status frame = register_in(Stage::kPreChannel);
+  if (frame != Status::kOk) return frame;
+  return register_in(Stage::kLoop);
+}
+
+Status QwiicTwist::set_poll_interval_ms(uint16_t interval_ms) {
+  if (interval_ms < 5 || interval_ms > 1000) return Status::kBadArgument;
+  poll_interval_ms_ = interval_ms;
+  return Status::kOk;
+}
+
+void QwiicTwist::service() {
+  if (state_ == State::kNotStarted) return;
+  const uint32_t now_us = hal::micros_now();
+  if (state_ == State::kFailed || state_ == State::kWrongDevice) {
+    if (now_us - failed_at_us_ < kRetryMs * 1000u) return;
+    state_ = State::kIdentifying;
+  }
+  if (!read_request_.in_flight() && (state_ == State::kIdentifying || now_us - last_poll_us_ >= poll_interval_ms_ * 1000u)) {
+    last_poll_us_ = now_us;
+    start_read();
+  }
+  if (state_ == State::kReady && write_count_ > 0 && !write_request_.in_flight()) {
+    const PendingWrite& next = writes_[write_head_];
+    for (uint8_t i = 0; i < next.length; ++i) write_buffer_[i] = next.bytes[i];
+    write_request_.transfer = hal::I2cTransfer{address_, write_buffer_, next.length, nullptr, 0};
+    if (bus_->submit(write_request_) == Status::kOk) {
+      write_head_ = static_cast<uint8_t>((write_head_ + 1) % kWriteQueue);
+      --write_count_;
+    } else {
+      write_request_.result = hal::I2cResult::kIdle;
+    }
+  }
+}
+
+void QwiicTwist::start_read() {
+  const bool identifying = state_ == State::kIdentifying;
+  read_command_ = identifying ? twist::kId : kFirstPolled;
+  read_request_.transfer = hal::I2cTransfer{address_, &read_command_, 1, registers_, static_cast<uint16_t>(identifying ? 1 : kPolledBytes)};
+  if (bus_->submit(read_request_) != Status::kOk) read_request_.result = hal::I2cResult::kIdle;
+}
+
+void QwiicTwist::on_read_done(void* self, hal::I2cResult result) { static_cast<QwiicTwist*>(self)->finish_read(result); }
+
+void QwiicTwist::on_write_done(void* self, hal::I2cResult result) {
+  auto* knob = static_cast<QwiicTwist*>(self);
+  if (result != hal::I2cResult::kOk) knob->fail(result, State::kFailed);
+}
+
+void QwiicTwist::finish_read(hal::I2cResult result) {
+  if (result != hal::I2cResult::kOk) {
+    fail(result, State::kFailed);
+    return;
+  }
+  if (state_ == State::kIdentifying) {
+    if (registers_[0] != twist::kIdValue) {
+      fail(hal::I2cResult::kOk, State::kWrongDevice);
+      return;
+    }
+    state_ = State::kReady;
+    reported_state_ = State::kReady;
+    last_failure_ = hal::I2cResult::kIdle;
+    have_baseline_ = false;
+    hal::log_message("QwiicTwist: ready");
+    return;
+  }
+  take_registers();
+}
+
+void QwiicTwist::take_registers() {
+  const auto at = [this](uint8_t reg) { return &registers_[reg - kFirstPolled]; };
+  const uint8_t status = *at(twist::kStatus);
+  version_ = static_cast<uint16_t>((at(twist::kVersion)[0] << 8) | at(twist::kVersion)[1]);
+  const auto register_count = static_cast<int16_t>(little_endian(at(twist::kCount)));
+  if (have_baseline_) {
+    count_ += static_cast<int16_t>(static_cast<uint16_t>(register_count) - static_cast<uint16_t>(last_register_count_));
+  }
+  have_baseline_ = true;
+  last_register_count_ = register_count;
+  since_movement_ms_ = little_endian(at(twist::kSinceMovementMs));
+  since_button_ms_ = little_endian(at(twist::kSinceButtonMs));
+  pressed_ = (status & twist::kStatusPressed) != 0;
+  ++polls_;
+  counts_to_frame_.push(count_);  // full: the frame is behind and takes a later count instead
+  const uint8_t events = status & (twist::kStatusMoved | twist::kStatusClicked);
+  if (events != 0) {
+    const uint8_t clear[] = {twist::kStatus, static_cast<uint8_t>(status & ~events)};
+    queue_write(clear, sizeof clear);
+  }
+  if ((status & twist::kStatusClicked) != 0) {
+    ++clicks_;
+    if (on_click_ != nullptr) on_click_();
+  }
+}
+
+void QwiicTwist::fail(hal::I2cResult result, State state) {
+  ++failures_;
+  const bool news = reported_state_ != state || last_failure_ != result;  // retries failing alike stay quiet
+  reported_state_ = state;
+  state_ = state;
+  last_failure_ = result;
+  failed_at_us_ = hal::micros_now();
+  if (!news) return;
+  char text[96];
+  TextWriter line(text, sizeof text);
+  line.text("QwiicTwist: QWIIC").unsigned_number(bus_->index()).text(" address ").unsigned_number(address_).text(": ");
+  if (state == State::kWrongDevice) {
+    line.text("not a Qwiic Twist (id ").unsigned_number(registers_[0]).text(")");
+  } else {
+    line.text(hal::to_string(result));
+  }
+  line.text(", retrying every second");
+  hal::log_message(line.c_str());
+}
+
+Status QwiicTwist::queue_write(const uint8_t* bytes, uint8_t length) {
+  if (length > sizeof writes_[0].bytes) return Status::kBadArgument;
+  if (write_count_ == kWriteQueue) return Status::kFull;
+  PendingWrite& slot = writes_[(write_head_ + write_count_) % kWriteQueue];
+  for (uint8_t i = 0; i < length; ++i) slot.bytes[i] = bytes[i];
+  slot.length = length;
+  ++write_count_;
+  return Status::kOk;
+}
+
+Status QwiicTwist::set_color(uint8_t red, uint8_t green, uint8_t blue) {
+  const uint8_t bytes[] = {twist::kRed, red, green, blue};
+  return queue_write(bytes, sizeof bytes);
+}
+
+Status QwiicTwist::connect_color(int16_t red_per_detent, int16_t green_per_detent, int16_t blue_per_detent) {
+  const auto r = static_cast<uint16_t>(red_per_detent);
+  const auto g = static_cast<uint16_t>(green_per_detent);
+  const auto b = static_cast<uint16_t>(blue_per_detent);
+  const uint8_t bytes[] = {twist::kConnectRed, low_byte(r), high_byte(r), low_byte(g), high_byte(g), low_byte(b), high_byte(b)};
+  return queue_write(bytes, sizeof bytes);
+}
+
+Status QwiicTwist::set_register_count(int16_t count) {
+  const auto value = static_cast<uint16_t>(count);
+  const uint8_t bytes[] = {twist::kCount, low_byte(value), high_byte(value)};
+  const Status queued = queue_write(bytes, sizeof bytes);
+  if (queued == Status::kOk) have_baseline_ = false;  // the next poll re-baselines: no jump
+  return queued;
+}
+
+Status QwiicTwist::enable_interrupts(bool on_turn, bool on_button) {
+  const uint8_t bits = static_cast<uint8_t>((on_turn ? twist::kInterruptOnTurn : 0) | (on_button ? twist::kInterruptOnButton : 0));
+  const uint8_t bytes[] = {twist::kEnableInterrupts, bits};
+  return queue_write(bytes, sizeof bytes);
+}
+
+Status QwiicTwist::set_turn_interrupt_timeout_ms(uint16_t timeout_ms) {
+  const uint8_t bytes[] = {twist::kTurnInterruptTimeoutMs, low_byte(timeout_ms), high_byte(timeout_ms)};
+  return queue_write(bytes, sizeof bytes);
+}
+
+void QwiicTwist::run() {
+  int32_t latest = 0;
+  bool fresh = false;
+  while (counts_to_frame_.pop(latest) == Status::kOk) fresh = true;
+  if (fresh) output.set(latest);
+  output.push();
+}
+
+void QwiicTwist::report_counters(CounterSink& sink) const {
+  sink.counter("polls", polls_);
+  sink.counter("clicks", clicks_);
+  sink.counter("failures", failures_);
+  sink.counter("ready", state_ == State::kReady ? 1 : 0);
+}
+
+}  // namespace stepdance
