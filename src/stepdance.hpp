@@ -32,6 +32,8 @@
 #include "stepdance/interfaces/eibotboard.hpp"
 #include "stepdance/interfaces/rpc.hpp"
 #include "stepdance/protocol/signals.hpp"
+#include "stepdance/recording/four_track_player.hpp"
+#include "stepdance/recording/four_track_recorder.hpp"
 
 #include "stepdance/sketch_board.hpp"
 
@@ -68,6 +70,11 @@ using stepdance::WaveGenerator2D;
 using stepdance::ControlParameter;
 using stepdance::DecimalPosition;
 using stepdance::Encoder;
+using stepdance::FourTrackPlayer;
+using stepdance::FourTrackRecorder;
+using stepdance::RecorderTrack;
+using stepdance::RECORDING_FORMAT_ORIGINAL;
+using stepdance::RECORDING_FORMAT_STEPDANCE;
 using stepdance::Eibotboard;
 using stepdance::GCodeInterface;
 using stepdance::InputPort;
