@@ -32,6 +32,8 @@
 #include "stepdance/interfaces/eibotboard.hpp"
 #include "stepdance/interfaces/rpc.hpp"
 #include "stepdance/protocol/signals.hpp"
+#include "stepdance/homing/homing.hpp"
+#include "stepdance/homing/safety_inputs.hpp"
 #include "stepdance/recording/four_track_player.hpp"
 #include "stepdance/recording/four_track_recorder.hpp"
 
@@ -71,6 +73,9 @@ using stepdance::ControlParameter;
 using stepdance::DecimalPosition;
 using stepdance::Encoder;
 using stepdance::FourTrackPlayer;
+using stepdance::Homing;
+using stepdance::HomingAxis;
+using stepdance::SafetyInputs;
 using stepdance::FourTrackRecorder;
 using stepdance::RecorderTrack;
 using stepdance::RECORDING_FORMAT_ORIGINAL;
