@@ -22,7 +22,19 @@ constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"position", DeviceType::kPotentiometer},        {"bounce_ms", DeviceType::kButton},
     {"pressed_level", DeviceType::kButton},          {"axis", DeviceType::kLimitSwitch},
     {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
+    {"bounce_ms", DeviceType::kLimitSwitch},
 };
+
+/// bounce_ms of a button or limit switch: 0..1000 ms.
+void read_bounce_ms(TableReader& reader, DeviceConfig& device) {
+  if (const auto bounce = reader.number("bounce_ms")) {
+    if (*bounce >= 0 && *bounce <= 1000) {
+      device.bounce_ms = *bounce;
+    } else {
+      reader.error("bounce_ms", "'bounce_ms' must be in 0..1000, got " + format_number(*bounce));
+    }
+  }
+}
 
 std::optional<DeviceType> parse_type(std::string_view name) {
   for (const DeviceKind& kind : device_kinds()) {
@@ -162,13 +174,7 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
       }
       break;
     case DeviceType::kButton:
-      if (const auto bounce = reader.number("bounce_ms")) {
-        if (*bounce >= 0 && *bounce <= 1000) {
-          device.bounce_ms = *bounce;
-        } else {
-          reader.error("bounce_ms", "'bounce_ms' must be in 0..1000, got " + format_number(*bounce));
-        }
-      }
+      read_bounce_ms(reader, device);
       if (const auto level = reader.string("pressed_level")) {
         if (*level == "high" || *level == "low") {
           device.pressed_level_high = *level == "high";
@@ -178,6 +184,8 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
       }
       break;
     case DeviceType::kLimitSwitch: {
+      device.bounce_ms = 0;  // a limit switch is clean unless the scenario says otherwise
+      read_bounce_ms(reader, device);
       const auto axis = reader.string("axis", Need::kRequired);
       if (axis) {
         if (*axis == "x" || *axis == "y" || *axis == "z") {
