@@ -8,48 +8,35 @@
 namespace stepdance {
 
 Status SafetyInputs::add_limit(uint8_t pin, bool normally_closed, FaultLevel level) {
-  Input input;
-  input.role = Role::kLimit;
-  input.pin = pin;
-  input.normally_closed = normally_closed;
-  input.level = level;
-  return add(input);
+  return add(Role::kLimit, pin, normally_closed, level, nullptr);
 }
 
 Status SafetyInputs::add_emergency_stop(uint8_t pin, bool normally_closed) {
-  Input input;
-  input.role = Role::kEmergencyStop;
-  input.pin = pin;
-  input.normally_closed = normally_closed;
-  return add(input);
+  return add(Role::kEmergencyStop, pin, normally_closed, FaultLevel::kFatal, nullptr);
 }
 
 Status SafetyInputs::add_feed_hold(uint8_t pin, TimeBasedInterpolator* planner, bool normally_closed) {
   if (planner == nullptr) return Status::kBadArgument;
-  Input input;
-  input.role = Role::kFeedHold;
-  input.pin = pin;
-  input.normally_closed = normally_closed;
-  input.planner = planner;
-  return add(input);
+  return add(Role::kFeedHold, pin, normally_closed, FaultLevel::kWarning, planner);
 }
 
 Status SafetyInputs::add_cycle_start(uint8_t pin, TimeBasedInterpolator* planner, bool normally_closed) {
   if (planner == nullptr) return Status::kBadArgument;
-  Input input;
-  input.role = Role::kCycleStart;
-  input.pin = pin;
-  input.normally_closed = normally_closed;
-  input.planner = planner;
-  return add(input);
+  return add(Role::kCycleStart, pin, normally_closed, FaultLevel::kWarning, planner);
 }
 
-Status SafetyInputs::add(const Input& input) {
+Status SafetyInputs::add(Role role, uint8_t pin, bool normally_closed, FaultLevel level,
+                         TimeBasedInterpolator* planner) {
   if (count_ == kMaxInputs) {
     report_fault(FaultLevel::kWarning, FaultReason::kRegistryFull, "safety inputs", "more than 8 safety inputs");
     return Status::kFull;
   }
-  inputs_[count_++] = input;
+  Input& input = inputs_[count_++];
+  input.role = role;
+  input.pin = pin;
+  input.normally_closed = normally_closed;
+  input.level = level;
+  input.planner = planner;
   return Status::kOk;
 }
 

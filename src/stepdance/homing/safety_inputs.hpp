@@ -66,7 +66,7 @@ class SafetyInputs : public Block {
     SwitchDebouncer debouncer;
   };
 
-  Status add(const Input& input);
+  Status add(Role role, uint8_t pin, bool normally_closed, FaultLevel level, TimeBasedInterpolator* planner);
   bool read(const Input& input) const;
   void on_activated(Input& input);
 

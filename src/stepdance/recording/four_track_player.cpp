@@ -2,7 +2,6 @@
 #include "stepdance/recording/four_track_player.hpp"
 
 #include <stdint.h>
-#include <string.h>
 
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
@@ -13,14 +12,8 @@ namespace {
 
 constexpr const char* kSource = "player";
 
-// Builds "<name><suffix>" into out; false if it does not fit the storage's names.
-bool file_name(const char* name, const char* suffix, char (&out)[FileStorage::kMaxNameLength + 1]) {
-  const size_t length = name == nullptr ? 0 : strlen(name);
-  if (length == 0 || length + strlen("_len.bin") > FileStorage::kMaxNameLength) return false;
-  memcpy(out, name, length);
-  memcpy(out + length, suffix, strlen(suffix) + 1);
-  return true;
-}
+using recording::FileName;
+using recording::recording_file_name;
 
 }  // namespace
 
@@ -43,8 +36,8 @@ void FourTrackPlayer::set_resolution(double world_units, double per_steps) {
 
 Status FourTrackPlayer::start(const char* name) {
   stop();
-  char probe[FileStorage::kMaxNameLength + 1];
-  if (!file_name(name, ".bin", probe)) {
+  FileName probe;
+  if (!recording_file_name(name, ".bin", probe)) {
     fail("FourTrackPlayer::start: the name is empty or too long for the card", Status::kBadArgument);
     return Status::kBadArgument;
   }
@@ -60,8 +53,8 @@ Status FourTrackPlayer::start(const char* name) {
 // Reads the length file, opens the data file, recognises its format and fills the ring.
 Status FourTrackPlayer::open_files(const char* name) {
   read_length_file(name);
-  char data_name[FileStorage::kMaxNameLength + 1];
-  file_name(name, ".bin", data_name);
+  FileName data_name;
+  recording_file_name(name, ".bin", data_name);
   FileStorage& storage = hal::storage();
   if (storage.open(data_name, FileMode::kRead, handle_) != Status::kOk) {
     fail("FourTrackPlayer::start: cannot open the recording", Status::kIoError);
@@ -88,8 +81,8 @@ Status FourTrackPlayer::open_files(const char* name) {
 
 Status FourTrackPlayer::read_length_file(const char* name) {
   max_num_playback_samples = UINT64_MAX;
-  char length_name[FileStorage::kMaxNameLength + 1];
-  file_name(name, "_len.bin", length_name);
+  FileName length_name;
+  recording_file_name(name, "_len.bin", length_name);
   FileStorage& storage = hal::storage();
   int handle = -1;
   if (storage.open(length_name, FileMode::kRead, handle) != Status::kOk) return Status::kIoError;

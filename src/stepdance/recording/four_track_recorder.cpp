@@ -1,7 +1,6 @@
 // FourTrackRecorder: the frame packs samples into RAM, the loop writes them to storage.
 #include "stepdance/recording/four_track_recorder.hpp"
 
-#include <string.h>
 
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
@@ -11,8 +10,6 @@ namespace stepdance {
 namespace {
 
 constexpr const char* kSource = "recorder";
-constexpr const char* kLengthSuffix = "_len.bin";
-constexpr const char* kDataSuffix = ".bin";
 
 }  // namespace
 
@@ -34,16 +31,12 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
     return Status::kOk;
   }
   if (file_open_) finish();  // the frame stopped the last one; the loop has not finished it yet
-  const size_t length = name == nullptr ? 0 : strlen(name);
-  if (length == 0 || length + strlen(kLengthSuffix) > FileStorage::kMaxNameLength) {
+  if (!recording::recording_file_name(name, ".bin", data_name_) ||
+      !recording::recording_file_name(name, "_len.bin", length_name_)) {
     hal::log_message("FourTrackRecorder::start: the name is empty or too long for the card");
     report_fault(FaultLevel::kWarning, FaultReason::kRefused, kSource, "recording name empty or too long");
     return Status::kBadArgument;
   }
-  memcpy(data_name_, name, length);
-  memcpy(data_name_ + length, kDataSuffix, strlen(kDataSuffix) + 1);
-  memcpy(length_name_, name, length);
-  memcpy(length_name_ + length, kLengthSuffix, strlen(kLengthSuffix) + 1);
   FileStorage& storage = hal::storage();
   if (storage.open(data_name_, FileMode::kWriteTruncate, handle_) != Status::kOk) {
     hal::log_message("FourTrackRecorder::start: cannot create the recording file (no card?)");

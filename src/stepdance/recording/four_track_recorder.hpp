@@ -101,8 +101,8 @@ class FourTrackRecorder : public Block {
   void fail_storage(const char* what);
 
   recording::ByteRing<kBufferBytes> ring_;
-  char data_name_[FileStorage::kMaxNameLength + 1] = {};
-  char length_name_[FileStorage::kMaxNameLength + 1] = {};
+  recording::FileName data_name_ = {};
+  recording::FileName length_name_ = {};
   RecordingFormat format_ = RecordingFormat::kOriginal;
   RecordingFormat file_format_ = RecordingFormat::kOriginal;  // of the open file
   int handle_ = -1;             // loop only

@@ -13,6 +13,23 @@ namespace stepdance::recording {
 /// Bytes moved between a ring and a file per storage call: one SD sector.
 constexpr size_t kStorageChunkBytes = 512;
 
+/// Longest file name the storage takes, plus its NUL.
+using FileName = char[FileStorage::kMaxNameLength + 1];
+
+/// Writes "<name><suffix>" into `out`; false (out untouched) for an empty name or one that does
+/// not fit the storage's names with the longest suffix, "_len.bin". Context: any.
+inline bool recording_file_name(const char* name, const char* suffix, FileName& out) {
+  size_t length = 0;
+  while (name != nullptr && name[length] != '\0') ++length;
+  size_t suffix_length = 0;
+  while (suffix[suffix_length] != '\0') ++suffix_length;
+  constexpr size_t kLongestSuffix = 8;  // "_len.bin"
+  if (length == 0 || length + kLongestSuffix > FileStorage::kMaxNameLength) return false;
+  for (size_t i = 0; i < length; ++i) out[i] = name[i];
+  for (size_t i = 0; i <= suffix_length; ++i) out[length + i] = suffix[i];
+  return true;
+}
+
 /// A RAM ring of recording bytes: the frame is one end, the loop the other.
 template <size_t Capacity>
 using ByteRing = SpscQueue<uint8_t, Capacity>;
