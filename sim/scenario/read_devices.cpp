@@ -1,6 +1,8 @@
 // [[device]]: encoders, potentiometers, buttons, limit switches and pendulums on board connectors.
 #include <cmath>
 #include <map>
+#include <set>
+#include <string_view>
 #include <utility>
 
 #include "scenario/names.hpp"
@@ -147,8 +149,9 @@ void read_five_bar_arm(TableReader& reader, DeviceConfig& device, const ParseCon
 }
 
 void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
+  std::set<std::string_view> reported;  // a key shared by several kinds is listed once per kind
   for (const auto& [key, owner] : kTypeKeys) {
-    if (!key_belongs(key, device.type) && reader.has(key)) {
+    if (!key_belongs(key, device.type) && reader.has(key) && reported.insert(key).second) {
       reader.accept(key);
       reader.error(key, "'" + std::string(key) + "' does not apply to " + std::string(device_with_article(device.type)));
     }
