@@ -32,6 +32,10 @@
 #include "stepdance/interfaces/eibotboard.hpp"
 #include "stepdance/interfaces/rpc.hpp"
 #include "stepdance/protocol/signals.hpp"
+#include "stepdance/homing/homing.hpp"
+#include "stepdance/homing/safety_inputs.hpp"
+#include "stepdance/recording/four_track_player.hpp"
+#include "stepdance/recording/four_track_recorder.hpp"
 #include "stepdance/qwiic/oled_display.hpp"
 #include "stepdance/qwiic/qwiic_twist.hpp"
 #include "stepdance/qwiic/status_menu.hpp"
@@ -71,6 +75,14 @@ using stepdance::WaveGenerator2D;
 using stepdance::ControlParameter;
 using stepdance::DecimalPosition;
 using stepdance::Encoder;
+using stepdance::FourTrackPlayer;
+using stepdance::Homing;
+using stepdance::HomingAxis;
+using stepdance::SafetyInputs;
+using stepdance::FourTrackRecorder;
+using stepdance::RecorderTrack;
+using stepdance::RECORDING_FORMAT_ORIGINAL;
+using stepdance::RECORDING_FORMAT_STEPDANCE;
 using stepdance::Eibotboard;
 using stepdance::GCodeInterface;
 using stepdance::InputPort;

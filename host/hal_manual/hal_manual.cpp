@@ -55,9 +55,9 @@ class MemoryStorage final : public FileStorage {
  public:
   Status open(const char* name, FileMode mode, int& handle) override {
     if (name == nullptr || std::strlen(name) > kMaxNameLength) return Status::kBadArgument;
+    if (mode == FileMode::kRead && !files.count(name)) return Status::kIoError;
     auto& file = files[name];
     if (mode == FileMode::kWriteTruncate) file.clear();
-    if (mode == FileMode::kRead && !files.count(name)) return Status::kIoError;
     handles.push_back({name, mode == FileMode::kRead ? 0 : file.size(), true});
     handle = static_cast<int>(handles.size() - 1);
     return Status::kOk;

@@ -17,10 +17,13 @@ struct CorexySettings {
   double travel_x_mm = 300;
   double travel_y_mm = 218;
   PenTraceSettings trace;
+  /// Pen position at power-on, mm (motors at 0 steps).
+  double start_x_mm = 0;
+  double start_y_mm = 0;
 };
 
 /// Pen position from the motors: with a and b the motor positions in mm (steps / steps_per_mm),
-/// x = (a + b) / 2 and y = (a − b) / 2. The pen is down while the servo board's current pulse is
+/// x = start_x + (a + b) / 2 and y = start_y + (a − b) / 2. The pen is down while the servo board's current pulse is
 /// narrower than pen_down_below_us; without a servo board the pen is always down.
 class CorexyPlotter : public Machine {
  public:

@@ -1,6 +1,9 @@
 // A limit switch that closes when a machine axis reaches a set position.
 #pragma once
 
+#include <cstdint>
+
+#include "common/sim_time.hpp"
 #include "models/machine.hpp"
 
 namespace stepdance::sim {
@@ -27,6 +30,26 @@ class LimitSwitch {
   MachineAxis axis_;
   double at_mm_;
   LimitSide side_;
+};
+
+/// Contact bounce of a switch closed and opened by a machine: after each change of the switch's
+/// settled state at time t the line toggles in 50 µs slots, each slot's level drawn from the seed
+/// and t, until t + bounce; from then on it holds the settled level. Changes are noticed when the
+/// line is read, and reads must come in time order (the board reads its pins so).
+class SwitchBounce {
+ public:
+  SwitchBounce(SimTime bounce, uint64_t seed) : bounce_(bounce), seed_(seed) {}
+  /// The line's activity at `time` when the switch is settled `active`.
+  bool level(SimTime time, bool active);
+
+  static constexpr SimTime kSlot = 50 * kMicrosecond;
+
+ private:
+  SimTime bounce_;
+  uint64_t seed_;
+  bool known_ = false;
+  bool settled_ = false;
+  SimTime changed_at_ = 0;
 };
 
 }  // namespace stepdance::sim

@@ -69,6 +69,8 @@ class Machine {
   Machine(const PenTraceSettings& trace, const std::optional<TravelArea>& travel);
   /// Reads the bound models at `time`; also updates the machine's own axis state.
   virtual Sample sample(SimTime time) = 0;
+  /// Where the pen is before the first update (limit switches read it from power-on).
+  void set_power_on_pen(PenPoint pen) { pen_ = pen; }
 
  private:
   PenTrace trace_;

@@ -44,6 +44,8 @@ std::optional<char> read_socket_letter(TableReader& reader, std::string_view key
 
 // The section readers, in the order the loader calls them (later ones refer to earlier ones).
 void read_boards(TableReader& top, ParseContext& context);
+/// [board.sd_card] of one board (read_boards calls it).
+void read_sd_card(TableReader& board_reader, BoardConfig& board, ParseContext& context);
 void read_machine(TableReader& top, ParseContext& context);
 void read_devices(TableReader& top, ParseContext& context);
 void read_cables(TableReader& top, ParseContext& context);

@@ -148,6 +148,7 @@ void read_board(const toml::table& table, ParseContext& context, std::map<std::s
     }
   }
   read_sockets(reader, board, context);
+  read_sd_card(reader, board, context);
   reader.finish();
   if (named) context.scenario.boards.push_back(std::move(board));
 }

@@ -2,6 +2,8 @@
 #include <cmath>
 #include <map>
 #include <tuple>
+#include <set>
+#include <string_view>
 #include <utility>
 
 #include "scenario/names.hpp"
@@ -25,7 +27,19 @@ constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
     {"address", DeviceType::kOled},                  {"snapshots_s", DeviceType::kOled},
     {"address", DeviceType::kTwist},
+    {"bounce_ms", DeviceType::kLimitSwitch},
 };
+
+/// bounce_ms of a button or limit switch: 0..1000 ms.
+void read_bounce_ms(TableReader& reader, DeviceConfig& device) {
+  if (const auto bounce = reader.number("bounce_ms")) {
+    if (*bounce >= 0 && *bounce <= 1000) {
+      device.bounce_ms = *bounce;
+    } else {
+      reader.error("bounce_ms", "'bounce_ms' must be in 0..1000, got " + format_number(*bounce));
+    }
+  }
+}
 
 std::optional<DeviceType> parse_type(std::string_view name) {
   for (const DeviceKind& kind : device_kinds()) {
@@ -166,8 +180,9 @@ void read_snapshots(TableReader& reader, DeviceConfig& device, const ParseContex
 }
 
 void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
+  std::set<std::string_view> reported;  // a key shared by several kinds is listed once per kind
   for (const auto& [key, owner] : kTypeKeys) {
-    if (!key_belongs(key, device.type) && reader.has(key)) {
+    if (!key_belongs(key, device.type) && reader.has(key) && reported.insert(key).second) {
       reader.accept(key);
       reader.error(key, "'" + std::string(key) + "' does not apply to " + std::string(device_with_article(device.type)));
     }
@@ -200,13 +215,7 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
       }
       break;
     case DeviceType::kButton:
-      if (const auto bounce = reader.number("bounce_ms")) {
-        if (*bounce >= 0 && *bounce <= 1000) {
-          device.bounce_ms = *bounce;
-        } else {
-          reader.error("bounce_ms", "'bounce_ms' must be in 0..1000, got " + format_number(*bounce));
-        }
-      }
+      read_bounce_ms(reader, device);
       if (const auto level = reader.string("pressed_level")) {
         if (*level == "high" || *level == "low") {
           device.pressed_level_high = *level == "high";
@@ -216,6 +225,8 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
       }
       break;
     case DeviceType::kLimitSwitch: {
+      device.bounce_ms = 0;  // a limit switch is clean unless the scenario says otherwise
+      read_bounce_ms(reader, device);
       const auto axis = reader.string("axis", Need::kRequired);
       if (axis) {
         if (*axis == "x" || *axis == "y" || *axis == "z") {

@@ -70,6 +70,15 @@ CorexyConfig read_corexy(TableReader& reader, SocketChecker& sockets) {
       reader.error("travel_mm", "'travel_mm' must be two numbers > 0, e.g. [300, 218]");
     }
   }
+  if (const toml::array* start = reader.array("start_mm")) {
+    double values[2] = {0, 0};
+    if (read_number_pair(*start, values)) {
+      config.start_x_mm = values[0];
+      config.start_y_mm = values[1];
+    } else {
+      reader.error("start_mm", "'start_mm' must be two numbers, e.g. [120.5, 80]");
+    }
+  }
   return config;
 }
 

@@ -35,6 +35,15 @@ struct SocketConfig {
 };
 
 /// One simulated module and its sketch.
+/// The simulated SD card of a board ([board.sd_card]); zeros are an ideal card.
+struct SdCardConfig {
+  double write_kb_per_s = 0;  ///< sustained write rate (0 = instant)
+  double read_kb_per_s = 0;   ///< sustained read rate (0 = instant)
+  double stall_every_kb = 0;  ///< a stall after every this many kB written (0 = never)
+  double stall_ms = 0;        ///< length of each stall
+  double fail_after_kb = 0;   ///< writes beyond this many kB fail (0 = never)
+};
+
 struct BoardConfig {
   std::string name;
   /// Absolute path of the `.ino` (checked to exist).
@@ -46,6 +55,8 @@ struct BoardConfig {
   int frame_phase_us = 0;
   /// Populated sockets, sorted by port (Driver Module only).
   std::vector<SocketConfig> sockets;
+  /// Speed and failures of the board's card.
+  SdCardConfig sd_card;
   int line = 0;
 
   /// The socket at `port`, or null if it is empty.
@@ -65,6 +76,9 @@ struct CorexyConfig {
   /// Usable area from the origin (mm).
   double travel_x_mm = 300;
   double travel_y_mm = 218;
+  /// Where the pen is at power-on (mm); the sketch does not know it until it homes.
+  double start_x_mm = 0;
+  double start_y_mm = 0;
 };
 
 /// Cartesian XYZE machine. An axis without a socket stays at 0.

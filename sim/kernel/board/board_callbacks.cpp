@@ -89,15 +89,19 @@ void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
   host.console_read = [](void* c) { return of(c).read_console(); };
 
   host.file_open = [](void* c, const char* name, int mode, int* handle) {
+    if (of(c).storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
     return static_cast<int>(of(c).storage_.open(name, mode, *handle));
   };
   host.file_read = [](void* c, int handle, uint8_t* data, size_t length, size_t* read) {
-    return static_cast<int>(of(c).storage_.read(handle, data, length, *read));
+    return of(c).storage_read(handle, data, length, read);
   };
   host.file_write = [](void* c, int handle, const uint8_t* data, size_t length) {
-    return static_cast<int>(of(c).storage_.write(handle, data, length));
+    return of(c).storage_write(handle, data, length);
   };
-  host.file_close = [](void* c, int handle) { return static_cast<int>(of(c).storage_.close(handle)); };
+  host.file_close = [](void* c, int handle) {
+    if (of(c).storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
+    return static_cast<int>(of(c).storage_.close(handle));
+  };
 }
 
 void BoardCallbacks::add_i2c_callbacks(StepdanceHostV1& host) {

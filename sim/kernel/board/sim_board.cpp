@@ -32,7 +32,8 @@ SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<B
       khz_timer_(scheduler, &khz_tick, this),
       loop_event_(*this),
       setup_event_(*this),
-      storage_(options_.storage_dir) {}
+      storage_(options_.storage_dir),
+      sd_timing_(options_.sd_card) {}
 
 SimBoard::~SimBoard() {
   scheduler_.cancel(loop_event_);
@@ -146,6 +147,29 @@ void SimBoard::delay(SimTime duration_ns) {
     return;
   }
   scheduler_.run_until(scheduler_.now() + (duration_ns > 0 ? duration_ns : 0));
+}
+
+// ---- storage: loop only; a slow card holds the loop while frames run on -----------------------
+
+bool SimBoard::storage_refused_in_isr() {
+  if (!in_isr_) return false;
+  ++storage_calls_in_isr_;
+  return true;
+}
+
+int SimBoard::storage_write(int handle, const uint8_t* data, size_t length) {
+  if (storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
+  const SdCardTiming::Write outcome = sd_timing_.write(length);
+  if (outcome.fails) return static_cast<int>(Status::kIoError);
+  delay(outcome.duration);
+  return static_cast<int>(storage_.write(handle, data, length));
+}
+
+int SimBoard::storage_read(int handle, uint8_t* data, size_t length, size_t* read) {
+  *read = 0;
+  if (storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
+  delay(sd_timing_.read(length));
+  return static_cast<int>(storage_.read(handle, data, length, *read));
 }
 
 // ---- ports --------------------------------------------------------------------------------------

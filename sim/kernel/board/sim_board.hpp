@@ -15,6 +15,7 @@
 #include "common/sim_time.hpp"
 #include "loader/board_library.hpp"
 #include "models/i2c_bus.hpp"
+#include "models/sd_card.hpp"
 #include "scheduler/periodic_timer.hpp"
 #include "scheduler/scheduler.hpp"
 #include "stepdance/boards/board.hpp"
@@ -33,6 +34,8 @@ struct BoardOptions {
   SimTime loop_period_ns = 200 * kMicrosecond;
   /// Folder behind the board's file storage ("" = no card).
   std::string storage_dir;
+  /// Speed and failures of the card (default: instant, never failing).
+  SdCardSettings sd_card;
 };
 
 /// A fault the board reported through hal::log_fault().
@@ -146,6 +149,11 @@ class SimBoard {
   const I2cTiming& i2c_timing() const { return i2c_timing_; }
   /// delay() calls made from an interrupt handler (ignored: they cannot block there).
   uint64_t delays_in_isr() const { return delays_in_isr_; }
+  /// Storage calls made from an interrupt handler (refused: storage is loop-only, and the run
+  /// fails when there is any).
+  uint64_t storage_calls_in_isr() const { return storage_calls_in_isr_; }
+  /// The card's timing model (bytes written, stalls).
+  const SdCardTiming& sd_card() const { return sd_timing_; }
 
  private:
   friend struct BoardCallbacks;
@@ -208,6 +216,9 @@ class SimBoard {
   void write_pin(uint8_t pin, bool high);
   void notify_pin(uint8_t pin);
   void enter_safe_state();
+  int storage_write(int handle, const uint8_t* data, size_t length);
+  int storage_read(int handle, uint8_t* data, size_t length, size_t* read);
+  bool storage_refused_in_isr();
   size_t write_console(const uint8_t* data, size_t length);
   int read_console();
   int i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
@@ -244,6 +255,8 @@ class SimBoard {
   BoardStorage storage_;
   std::vector<BoardFault> faults_;
   uint64_t delays_in_isr_ = 0;
+  SdCardTiming sd_timing_;
+  uint64_t storage_calls_in_isr_ = 0;
   std::function<void(SimTime)> tick_listener_;
   SimTime end_ns_ = INT64_MAX;
 };

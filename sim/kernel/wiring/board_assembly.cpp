@@ -33,8 +33,10 @@ std::unique_ptr<Machine> make_corexy(const scenario::CorexyConfig& config, const
   StepperDriver* a = sockets.stepper(config.motor_a);
   StepperDriver* b = sockets.stepper(config.motor_b);
   if (a == nullptr || b == nullptr) return nullptr;
-  const CorexySettings settings{config.steps_per_mm, config.pen_down_below_us, config.travel_x_mm, config.travel_y_mm,
-                                trace};
+  CorexySettings settings{config.steps_per_mm, config.pen_down_below_us, config.travel_x_mm, config.travel_y_mm,
+                          trace};
+  settings.start_x_mm = config.start_x_mm;
+  settings.start_y_mm = config.start_y_mm;
   return std::make_unique<CorexyPlotter>(*a, *b, sockets.servo(config.pen_servo), settings);
 }
 
@@ -67,6 +69,16 @@ std::unique_ptr<Machine> make_polar(const scenario::PolarConfig& config, const S
                                           settings);
 }
 
+SdCardSettings sd_card_settings(const scenario::SdCardConfig& config) {
+  SdCardSettings settings;
+  settings.write_kb_per_s = config.write_kb_per_s;
+  settings.read_kb_per_s = config.read_kb_per_s;
+  settings.stall_every_kb = config.stall_every_kb;
+  settings.stall = static_cast<SimTime>(config.stall_ms * 1e6 + 0.5);
+  settings.fail_after_bytes = static_cast<uint64_t>(config.fail_after_kb * 1000.0 + 0.5);
+  return settings;
+}
+
 }  // namespace
 
 bool Simulation::build_boards(SimulationError& error) {
@@ -90,6 +102,7 @@ bool Simulation::build_boards(SimulationError& error) {
     board_options.frame_phase_ns = SimTime{config.frame_phase_us} * kMicrosecond;
     board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
     board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
+    board_options.sd_card = sd_card_settings(config.sd_card);
     boards_.push_back(BoardSlot{&config, std::make_unique<SimBoard>(scheduler_, board_options, std::move(library)), {}});
     BoardSlot& slot = boards_.back();
     if (!slot.board->attach(load_error)) {

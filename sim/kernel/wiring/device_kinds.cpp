@@ -144,10 +144,12 @@ std::unique_ptr<SimDevice> build_limit_switch(const DeviceConfig& device, Device
       std::make_unique<LimitSwitch>(machine_axis(device.axis), device.at_mm, side));
   const LimitSwitch* model = &built->model();
   std::function<const Machine*()> machine = socket.machine;
+  auto bounce = std::make_shared<SwitchBounce>(static_cast<SimTime>(device.bounce_ms * 1e6 + 0.5),
+                                               mix_seed(socket.scenario_seed, static_cast<uint64_t>(device.line)));
   socket.board.connect_input_pin(connector_pin(socket.board.definition(), device.connector),
-                                 [model, machine](SimTime) {
+                                 [model, machine, bounce](SimTime time) {
                                    const Machine* watched = machine();
-                                   return watched != nullptr && model->active(*watched);
+                                   return bounce->level(time, watched != nullptr && model->active(*watched));
                                  });
   return built;
 }

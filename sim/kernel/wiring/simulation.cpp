@@ -147,7 +147,20 @@ SimulationReport Simulation::finish() {
     report.files.push_back(output_path(scenario_.output.summary));
   }
   report.expectations = evaluate_expectations(scenario_, *this);
+  add_storage_violations(report);
   return report;
+}
+
+// Storage touched from an interrupt fails the run, whatever the scenario expects: on the board
+// a card access can take far longer than a frame.
+void Simulation::add_storage_violations(SimulationReport& report) const {
+  for (const BoardSlot& slot : boards_) {
+    const uint64_t calls = slot.board->storage_calls_in_isr();
+    if (calls == 0) continue;
+    report.expectations.push_back({false, "board '" + slot.config->name + "': the sketch touched the SD card " +
+                                              std::to_string(calls) +
+                                              " times from the frame or kilohertz interrupt (storage is loop-only)"});
+  }
 }
 
 // ---- lookups ------------------------------------------------------------------------------------

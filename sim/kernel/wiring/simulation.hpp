@@ -130,6 +130,7 @@ class Simulation {
 
   // Assembly (board_assembly.cpp, device_assembly.cpp, output_assembly.cpp).
   bool build_boards(SimulationError& error);
+  void add_storage_violations(SimulationReport& report) const;
   bool check_module(const BoardSlot& slot, SimulationError& error) const;
   void build_sockets(BoardSlot& slot);
   bool build_machine(SimulationError& error);

@@ -96,6 +96,8 @@ class BlockPort {
   /// never delivered after enable() (as in the original). Context: any.
   void enable() { enabled_ = true; }
   void disable() { enabled_ = false; }
+  /// True unless disable() gated the port. Context: any.
+  bool is_enabled() const { return enabled_; }
 
   /// Unit conversions with this port's ratio. Context: any.
   double convert_block_to_world_units(double block_value) const { return block_value * world_per_block_; }

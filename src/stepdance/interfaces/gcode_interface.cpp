@@ -40,6 +40,7 @@ void GCodeInterface::loop() {
   protocol_.poll();
   drain_pending();
   if (jogging_ && interpolator_.is_idle() && pending_count_ == 0) jogging_ = false;
+  adopt_homed_position();
 }
 
 // ---- requests from executed lines ----
@@ -192,6 +193,7 @@ void GCodeInterface::apply_settings_to_planner() {
 MotionState GCodeInterface::motion_state() {
   const bool busy = !interpolator_.is_idle() || pending_count_ > 0;
   if (holding_) return MotionState::kHolding;
+  if (homing_started_) return MotionState::kRun;
   if (!busy) return MotionState::kIdle;
   return jogging_ ? MotionState::kJog : MotionState::kRun;
 }

@@ -15,6 +15,8 @@
 
 namespace stepdance {
 
+class Homing;
+
 /// Lets a G-code sender (gSender, cncjs, bCNC, UGS, or `screen`) drive the sketch over a serial
 /// port, speaking Grbl 1.1: `ok`/`error:N` per line after validation, `?` status reports,
 /// `!` feed hold, `~` resume, Ctrl-X reset, `$` settings and jogging (see docs/gcode.md for the
@@ -71,6 +73,10 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   using SpindleCallback = void (*)(bool on, bool clockwise, double speed);
   void set_spindle_callback(SpindleCallback callback) { spindle_callback_ = callback; }
 
+  /// `$H` runs `homing` (its status reads Run until it ends; the interface then adopts the
+  /// homed machine position). Without one `$H` answers error:5. Context: loop.
+  void set_homing(Homing* homing) { homing_ = homing; }
+
   /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
   void loop() override;
 
@@ -110,6 +116,8 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   void jog_cancel() override;
   void set_overrides(uint8_t feed_percent, uint8_t rapid_percent) override;
   double steps_per_mm(int axis) override;
+  gcode::GrblError home() override;
+  void adopt_homed_position();
 
   void push_pending(const Pending& request);
   void drain_pending();
@@ -131,6 +139,8 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   uint8_t feed_percent_ = 100;
   uint8_t rapid_percent_ = 100;
   SpindleCallback spindle_callback_ = nullptr;
+  Homing* homing_ = nullptr;
+  bool homing_started_ = false;
 };
 
 }  // namespace stepdance

@@ -22,6 +22,7 @@
 //                PI, HALF_PI, TWO_PI, DEG_TO_RAD, RAD_TO_DEG   Arduino's constants (macros, as there)
 //                INPUT, OUTPUT, INPUT_PULLUP, INPUT_PULLDOWN   0, 1, 2, 3 (Teensy 4 values)
 //                pinMode, digitalRead, digitalWrite, analogRead
+//                digitalReadFast, digitalWriteFast (inline, as in the core's core_pins.h)
 //                millis, delay, delayMicroseconds, yield, elapsedMillis
 //                Print, Stream: print, println, write; DEC, HEX
 //                SerialUSB1                       only with USB_DUAL_SERIAL or USB_TRIPLE_SERIAL
@@ -63,6 +64,8 @@ void loop();
 void pinMode(uint8_t pin, uint8_t mode);
 uint8_t digitalRead(uint8_t pin);
 void digitalWrite(uint8_t pin, uint8_t value);
+inline uint8_t digitalReadFast(uint8_t pin) { return digitalRead(pin); }
+inline void digitalWriteFast(uint8_t pin, uint8_t value) { digitalWrite(pin, value); }
 int analogRead(uint8_t pin);
 
 uint32_t millis();

@@ -25,7 +25,8 @@ namespace fs = std::filesystem;
 
 const fs::path kFixtures = fs::path(STEPDANCE_SOURCE_DIR) / "tests/sim/kernel/fixtures/original_api";
 const std::vector<std::string> kFixtureNames = {"CoreDriver", "CoreBasic", "CoreAdditions",
-                                                "Generators", "Filters",   "Kinematics"};
+                                                "Generators", "Filters",   "Kinematics",
+                                                "Recording",  "Homing"};
 
 // The names after "// waits-for:" on the fixture's first line.
 std::vector<std::string> waits_for(const std::string& name) {

@@ -1,0 +1,25 @@
+// GCodeInterface's `$H`: runs the sketch's Homing and adopts the homed position afterwards.
+#include "stepdance/homing/homing.hpp"
+#include "stepdance/interfaces/gcode_interface.hpp"
+
+namespace stepdance {
+
+gcode::GrblError GCodeInterface::home() {
+  if (homing_ == nullptr) return gcode::GrblError::kHomingDisabled;
+  homing_->start_homing_routine();
+  homing_started_ = homing_->is_homing();
+  return gcode::GrblError::kOk;
+}
+
+// Once the routine ends, the planner's outputs take the machine position the chain now holds.
+void GCodeInterface::adopt_homed_position() {
+  if (!homing_started_ || homing_->is_homing()) return;
+  homing_started_ = false;
+  if (!homing_->is_homed()) return;
+  BlockPort* const ports[] = {&output_x, &output_y, &output_z, &output_e};
+  for (BlockPort* port : ports) {
+    if (port->peer() != nullptr) port->pull_deep();
+  }
+}
+
+}  // namespace stepdance

@@ -1,0 +1,77 @@
+// `$H` on the G-code interface: error:5 without a Homing; with one it homes the axis and the
+// interface's X then reads the homed position.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "hal_manual.hpp"
+#include "stepdance/core/dance.hpp"
+#include "stepdance/homing/homing.hpp"
+#include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/motion/channel.hpp"
+#include "support/engine_fixture.hpp"
+#include "support/fake_byte_stream.hpp"
+
+namespace stepdance {
+namespace {
+
+constexpr uint8_t kSwitchPin = 30;
+constexpr double kStepsPerMm = 80.0;
+
+class GCodeHomingTest : public test_support::EngineFixture {
+ protected:
+  void SetUp() override {
+    EngineFixture::SetUp();
+    channel.set_ratio(1.0, kStepsPerMm);
+    ASSERT_EQ(channel.begin(nullptr, SIGNAL_X), Status::kOk);
+    gcode.output_x.map(&channel.input_target_position);
+    ASSERT_EQ(gcode.begin(&host), Status::kOk);
+  }
+  /// Carriage 12 mm above a switch at 0: it closes at or below 0.
+  double carriage_mm() const {
+    return 12.0 + (static_cast<double>(channel.pulses_forward()) - channel.pulses_reverse()) / kStepsPerMm;
+  }
+  void run_ms(int ms) {
+    for (int i = 0; i < ms * 25; ++i) {
+      hal_manual::set_pin(kSwitchPin, carriage_mm() <= 1e-9);
+      hal_manual::run_frames(1);
+      if (i % 5 == 0) dance_loop();
+    }
+  }
+
+  test_support::FakeByteStream host;
+  GCodeInterface gcode;
+  Channel channel;
+  Homing homing;
+};
+
+TEST_F(GCodeHomingTest, WithoutAHomingBlockDollarHIsError5) {
+  ASSERT_EQ(dance_start(), Status::kOk);
+  run_ms(10);
+  host.take();
+  host.send("$H\n");
+  run_ms(10);
+  EXPECT_NE(host.take().find("error:5"), std::string::npos);
+}
+
+TEST_F(GCodeHomingTest, DollarHHomesAndTheInterfaceAdoptsTheHomedPosition) {
+  ASSERT_EQ(homing.add_axis(kSwitchPin, 0.0, HOMING_DIR_BWD, 20.0f, &channel.input_target_position), Status::kOk);
+  ASSERT_EQ(homing.begin(), Status::kOk);
+  gcode.set_homing(&homing);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  run_ms(10);
+  host.take();
+  host.send("$H\n");
+  run_ms(3000);
+  EXPECT_TRUE(homing.is_homed());
+  EXPECT_NE(host.take().find("ok"), std::string::npos);
+  // The switch point is 0 and the axis rests a 1 mm pull-off above it; G-code's X agrees.
+  EXPECT_NEAR(carriage_mm(), 1.0, 1.0 / kStepsPerMm);
+  EXPECT_NEAR(gcode.output_x.read_absolute(), 1.0, 1.0 / kStepsPerMm);
+  host.send("G90 G1 X5 F600\n");
+  run_ms(2000);
+  EXPECT_NEAR(carriage_mm(), 5.0, 1.0 / kStepsPerMm);
+}
+
+}  // namespace
+}  // namespace stepdance
