@@ -135,6 +135,10 @@ void Eibotboard::flush_replies() {
   }
 }
 
+bool Eibotboard::is_idle() const {
+  return moves_queued_ == moves_started_ && controls_.empty() && !frame_busy_ && frame_servo_settled_;
+}
+
 bool Eibotboard::queue(const EbbMove& move) {
   const uint32_t waiting = moves_queued_ - moves_started_;
   if (waiting >= fifo_depth_ || fifo_.push(move) != Status::kOk) return false;
@@ -158,6 +162,7 @@ void Eibotboard::run() {
   frame_global_steps_[0] = executor_.global_steps(0);
   frame_global_steps_[1] = executor_.global_steps(1);
   frame_pen_up_ = executor_.pen_up();
+  frame_servo_settled_ = executor_.servo_settled();
   update_outputs();
 }
 

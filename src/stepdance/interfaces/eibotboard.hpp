@@ -83,6 +83,12 @@ class Eibotboard : public Block {
   /// Replies that found no room (should stay 0: a line is taken only when its reply fits).
   uint32_t replies_dropped() const { return replies_dropped_; }
 
+  /// True when the frame has nothing left to do: no move runs or waits in the FIFO, no stop or
+  /// pen command waits for it, and the pen servo has reached its position, so the outputs stay
+  /// as they are until the next command (one that waited for FIFO room is queued at the next
+  /// loop pass). Context: loop.
+  bool is_idle() const;
+
   /// Serves the link: reads commands while the FIFO has room, replies. Context: loop.
   void loop() override;
   /// One tick of EBB motion; sets and pushes the outputs. Context: frame ISR.
@@ -174,6 +180,7 @@ class Eibotboard : public Block {
   volatile bool frame_motor_moving_[2] = {};
   volatile int32_t frame_global_steps_[2] = {};
   volatile bool frame_pen_up_ = true;
+  volatile bool frame_servo_settled_ = true;
   volatile uint16_t pen_now_target_ = 0;  // SP,2/3: written before kPenUpNow is queued
   volatile uint16_t pen_now_rate_ = 0;
   double last_output_[3] = {};  // x, y, z as last set, world units
