@@ -368,6 +368,24 @@ TEST_F(EibotboardTest, PenMovesTheServoOutputWithRateAndDelay) {
   EXPECT_EQ(exchange("QP\r"), "1\n\rOK\r\n");
 }
 
+TEST_F(EibotboardTest, IdleOnlyWhenNothingRunsWaitsOrSlews) {
+  step();
+  EXPECT_TRUE(ebb.is_idle());
+  ASSERT_EQ(exchange("SC,12,400\r"), "OK\r\n");  // down at 400/12 µs per 24 ms
+  ASSERT_EQ(exchange("SP,0\r"), "OK\r\n");
+  EXPECT_FALSE(ebb.is_idle());  // in the FIFO
+  // From the default up (20000) to down (16000): 4000 / 400 = 10 periods of 24 ms = 6000 ticks.
+  for (int i = 0; i < 5990; ++i) step();
+  EXPECT_FALSE(ebb.is_idle());  // the servo still slews
+  for (int i = 0; i < 20; ++i) step();
+  EXPECT_TRUE(ebb.is_idle());
+  ASSERT_EQ(exchange("SM,2,10,0\r"), "OK\r\n");
+  step();
+  EXPECT_FALSE(ebb.is_idle());  // moving
+  for (int i = 0; i < 60; ++i) step();
+  EXPECT_TRUE(ebb.is_idle());  // 2 ms = 50 ticks
+}
+
 TEST_F(EibotboardTest, OversizedServoTimeoutAndClientSetupAreAccepted) {
   // saxi's start and end of a plot.
   EXPECT_EQ(exchange("EM,2,2\r"), "OK\r\n");
