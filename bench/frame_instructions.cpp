@@ -1,9 +1,10 @@
-// Runs N frames of a benchmark graph (step_a_sketch, step_a_sketch_tbi, harmonograph or
-// clay_texturizer); measured with callgrind to count instructions per frame (see measure_frame_instructions.sh).
+// Runs N frames of a benchmark graph (step_a_sketch, step_a_sketch_tbi, harmonograph,
+// clay_texturizer or axidraw_wave); measured with callgrind to count instructions per frame (see measure_frame_instructions.sh).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
+#include "axidraw_wave_graph.hpp"
 #include "clay_texturizer_graph.hpp"
 #include "harmonograph_graph.hpp"
 #include "step_a_sketch_graph.hpp"
@@ -33,8 +34,10 @@ int main(int argc, char** argv) {
     pulses = run<stepdance::workloads::StepASketchTbiGraph>(frames);
   } else if (std::strcmp(workload, "clay_texturizer") == 0) {
     pulses = run<stepdance::workloads::ClayTexturizerGraph>(frames);
+  } else if (std::strcmp(workload, "axidraw_wave") == 0) {
+    pulses = run<stepdance::workloads::AxiDrawWaveGraph>(frames);
   } else {
-    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph or clay_texturizer)\n", workload);
+    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph, clay_texturizer or axidraw_wave)\n", workload);
     return 2;
   }
   std::printf("workload=%s frames=%u pulses_a=%u\n", workload, frames, pulses);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Counts Cortex-M7 instructions per frame of a benchmark graph under QEMU (mps2-an500) and turns
 # them into an estimated share of the 40 us frame at 600 MHz. Method: docs/benchmarks-target.md.
-# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer]
+# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave]
 #        (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|Release|...)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -32,6 +32,8 @@ struct FuzzStream final : ByteStream {
   size_t write_space() override { return write_room; }
 };
 
+constexpr uint32_t kFrameBudget = 100000;
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -45,6 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (ebb.begin(&stream) != Status::kOk) abort();
     if (dance_start() != Status::kOk) abort();
     size_t position = 0;
+    uint32_t long_frames = 0;
     while (position < size) {
       // A chunk: its first byte says how long it is and how many frames follow it.
       const uint8_t control = data[position++];
@@ -54,8 +57,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       dance_loop();
       position = stream.offset;  // what the board did not read yet stays for the next round
       if (position < stream.chunk_end && (control & 0x40) == 0) position = stream.chunk_end;  // host gave up
-      const uint32_t frames = (control & 0x80) ? 2500u : 3u;
-      hal_manual::run_frames(frames);
+      // Three frames, or up to 2500 (100 ms) that stop early once the machine is idle: frames
+      // with nothing to do change nothing and were most of the run time. One input runs at most
+      // kFrameBudget frames in long chunks (4 s of machine time), so no input takes long.
+      if ((control & 0x80) && long_frames < kFrameBudget) {
+        for (uint32_t frame = 0; frame < 2500 && !ebb.is_idle(); ++frame, ++long_frames) hal_manual::run_frames(1);
+      } else {
+        hal_manual::run_frames(3);
+      }
       stream.write_room = 256;
       if (!isfinite(ebb.output_x.read_absolute()) || !isfinite(ebb.output_y.read_absolute()) ||
           !isfinite(ebb.output_z.read_absolute())) {

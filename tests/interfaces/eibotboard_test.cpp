@@ -7,6 +7,7 @@
 
 #include <math.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,7 @@ class EibotboardTest : public test_support::EngineFixture {
   void run_until_idle(int limit = 10'000'000) {
     for (int i = 0; i < limit; ++i) {
       step();
+      ++polls_;
       if (exchange("QM\r") == "QM,0,0,0,0\n\r") return;
     }
     FAIL() << "never idle";
@@ -76,6 +78,7 @@ class EibotboardTest : public test_support::EngineFixture {
 
   test_support::FakeByteStream host;
   Eibotboard ebb;
+  uint64_t polls_ = 0;  // QM queries run_until_idle() sent
 };
 
 TEST_F(EibotboardTest, VersionInEitherCaseAndLineEndingsThatDoNotCorruptTheNext) {
@@ -110,6 +113,85 @@ TEST_F(EibotboardTest, LegacyAndFutureSyntaxRepliesAreByteExact) {
   EXPECT_EQ(exchange("SM,100\r"), "SM,!4 Err: Missing parameter(s)\n");
   EXPECT_EQ(exchange("CU,10,0\r"), "CUOK\r\n");
   EXPECT_EQ(exchange("QM\r").substr(0, 3), "QM,");
+}
+
+/// One command and its two replies, as the EBB command documentation (firmware v3, "EBB Command
+/// Set") gives them: "Response (legacy mode; default)" and "Response (future mode)".
+struct DocumentedReply {
+  const char* command;
+  const char* legacy;
+  const char* future;
+};
+
+// Every command the emulation implements, in an order whose state each reply follows from: power-on
+// (motors off, pen up, counters zero), then settings, then motion queued into an 8-deep FIFO, the
+// stop that interrupts it, and the reset.
+const DocumentedReply kEveryCommand[] = {
+    {"QM", "QM,0,0,0,0\n\r", "QM,0,0,0,0\n"},
+    {"QG", "10\r\n", "QG,10\n"},  // pen up (bit 4), nothing else
+    {"QS", "0,0\n\rOK\r\n", "QS,0,0\n"},
+    {"CS", "OK\r\n", "CS\n"},
+    {"QP", "1\n\rOK\r\n", "QP,1\n"},
+    {"QB", "0\r\nOK\r\n", "QB,0\n"},
+    {"QC", "0394,0394\r\nOK\r\n", "QC,0394,0394\n"},
+    {"QE", "0,0\r\nOK\r\n", "QE,0,0\n"},
+    {"QR", "1\n\rOK\r\n", "QR,1\n"},
+    {"SL,7,3", "OK\r\n", "SL\n"},
+    {"QL,3", "7\r\nOK\r\n", "QL,7\n"},
+    {"ST,Plotter 2", "OK\r\n", "ST\n"},
+    {"QT", "Plotter 2\r\nOK\r\n", "QT,Plotter 2\n"},
+    {"SC,4,20000", "OK\r\n", "SC\n"},
+    {"SC,5,16000", "OK\r\n", "SC\n"},
+    {"SC,10,65535", "OK\r\n", "SC\n"},
+    {"SR,60000,1", "OK\r\n", "SR\n"},
+    {"CU,4,8", "OK\r\n", "CU\n"},
+    {"QU,2", "QU,64\r\nOK\r\n", "QU,64\n"},
+    {"QU,3", "QU,8\r\nOK\r\n", "QU,8\n"},
+    {"EM,1,1", "OK\r\n", "EM\n"},
+    {"SM,10,5,5", "OK\r\n", "SM\n"},
+    {"XM,10,5,0", "OK\r\n", "XM\n"},
+    {"LM,85899346,5,0,0,0,0", "OK\r\n", "LM\n"},
+    {"LT,100,85899346,0,0,0", "OK\r\n", "LT\n"},
+    {"HM,1000", "OK\r\n", "HM\n"},
+    {"SP,0,10", "OK\r\n", "SP\n"},
+    {"QP", "1\n\rOK\r\n", "QP,1\n"},  // "reports the new state only after the pen move has started"
+    {"TP", "OK\r\n", "TP\n"},
+    // The ninth motion command finds the 8-deep FIFO full: its OK comes once the frame has taken
+    // EM (no time) and started SM, so the FIFO then holds XM, LM, LT, HM, SP, TP and S2.
+    {"S2,20000,4", "OK\r\n", "S2\n"},
+    {"QU,6", "QU,07\r\nOK\r\n", "QU,07\n"},
+    {"QM", "QM,1,1,1,1\n\r", "QM,1,1,1,1\n"},
+    {"QG", "1F\r\n", "QG,1F\n"},  // pen up (SP not started), executing, both motors, FIFO
+    {"QE", "16,16\r\nOK\r\n", "QE,16,16\n"},
+    {"ES", "1\n\rOK\r\n", "ES,1\n"},
+    {"R", "OK\r\n", "R\n"},
+};
+
+TEST_F(EibotboardTest, EveryCommandRepliesAsDocumentedInEitherSyntax) {
+  for (const bool future : {false, true}) {
+    SCOPED_TRACE(future ? "future syntax" : "legacy syntax");
+    if (future) {
+      ASSERT_EQ(exchange("R\r"), "OK\r\n");  // back to power-on
+      for (int i = 0; i < 10; ++i) step();
+      ASSERT_EQ(exchange("CU,10,1\r"), "\n");
+    }
+    for (const DocumentedReply& row : kEveryCommand) {
+      EXPECT_EQ(exchange(std::string(row.command) + "\r"), future ? row.future : row.legacy) << row.command;
+    }
+  }
+}
+
+TEST_F(EibotboardTest, AcknowledgementsOffDropOnlyTheOkAndOnlyInLegacySyntax) {
+  // CU,1,0: "disables the OK response"; the line endings stay. No effect in future syntax.
+  EXPECT_EQ(exchange("CU,1,0\r"), "\r\n");
+  EXPECT_EQ(exchange("SC,4,20000\r"), "\r\n");
+  EXPECT_EQ(exchange("QS\r"), "0,0\n\r\r\n");
+  EXPECT_EQ(exchange("QU,3\r"), "QU,1\r\n\r\n");
+  EXPECT_EQ(exchange("QM\r"), "QM,0,0,0,0\n\r");  // never had an OK
+  EXPECT_EQ(exchange("CU,10,1\r"), "\n");
+  EXPECT_EQ(exchange("SC,4,20000\r"), "SC\n");
+  EXPECT_EQ(exchange("CU,10,0\r"), "CU\r\n");  // half made before the switch: "CU", then no OK
+  EXPECT_EQ(exchange("CU,1,1\r"), "OK\r\n");
 }
 
 TEST_F(EibotboardTest, ErrorsGetTheDocumentedReplyAndChangeNothing) {
@@ -232,6 +314,17 @@ TEST_F(EibotboardTest, FullFifoHoldsTheCommandAndNothingIsLost) {
   run_until_idle();
   EXPECT_EQ(exchange("QS\r"), "50,0\n\rOK\r\n");
   EXPECT_EQ(motor(0), 50);
+  // Depth 1 keeps three in play (one running, one in the FIFO, one unread), so SM 2 to 5 each
+  // waited once; every line was answered and every move taken. QM and QS polls count as commands.
+  struct Counters final : CounterSink {
+    std::map<std::string, uint64_t> values;
+    void counter(const char* name, uint64_t value) override { values[name] = value; }
+  } counters;
+  ebb.report_counters(counters);
+  EXPECT_EQ(counters.values["fifo_full_waits"], 4u);
+  EXPECT_EQ(counters.values["moves_started"], 5u);
+  EXPECT_EQ(counters.values["replies_dropped"], 0u);
+  EXPECT_EQ(counters.values["commands"], 6u + polls_ + 1);  // + run_until_idle's QMs + the last QS
 }
 
 TEST_F(EibotboardTest, QueryMotorsFollowsExecutionAndEmergencyStopFlushes) {
@@ -257,7 +350,9 @@ TEST_F(EibotboardTest, PenMovesTheServoOutputWithRateAndDelay) {
   ASSERT_EQ(exchange("SC,5,12000\r"), "OK\r\n");   // down at 1.0 ms
   ASSERT_EQ(exchange("SC,12,400\r"), "OK\r\n");    // 400/12 µs per 24 ms
   ASSERT_EQ(exchange("SP,0,300\r"), "OK\r\n");
-  EXPECT_EQ(exchange("QP\r"), "0\n\rOK\r\n");
+  EXPECT_EQ(exchange("QP\r"), "1\n\rOK\r\n");  // still in the FIFO
+  step();
+  EXPECT_EQ(exchange("QP\r"), "0\n\rOK\r\n");  // started
   ASSERT_EQ(exchange("SM,10,5,0\r"), "OK\r\n");    // waits for the pen's 300 ms delay
   // 8000 units at 400 per 24 ms: 20 periods = 480 ms to reach the down position.
   for (int i = 0; i < 6000; ++i) step();           // 240 ms
@@ -271,6 +366,24 @@ TEST_F(EibotboardTest, PenMovesTheServoOutputWithRateAndDelay) {
   step();
   EXPECT_NEAR(ebb.output_z.read_absolute(), 24000 / 12.0 - 1500, 1e-9);
   EXPECT_EQ(exchange("QP\r"), "1\n\rOK\r\n");
+}
+
+TEST_F(EibotboardTest, IdleOnlyWhenNothingRunsWaitsOrSlews) {
+  step();
+  EXPECT_TRUE(ebb.is_idle());
+  ASSERT_EQ(exchange("SC,12,400\r"), "OK\r\n");  // down at 400/12 µs per 24 ms
+  ASSERT_EQ(exchange("SP,0\r"), "OK\r\n");
+  EXPECT_FALSE(ebb.is_idle());  // in the FIFO
+  // From the default up (20000) to down (16000): 4000 / 400 = 10 periods of 24 ms = 6000 ticks.
+  for (int i = 0; i < 5990; ++i) step();
+  EXPECT_FALSE(ebb.is_idle());  // the servo still slews
+  for (int i = 0; i < 20; ++i) step();
+  EXPECT_TRUE(ebb.is_idle());
+  ASSERT_EQ(exchange("SM,2,10,0\r"), "OK\r\n");
+  step();
+  EXPECT_FALSE(ebb.is_idle());  // moving
+  for (int i = 0; i < 60; ++i) step();
+  EXPECT_TRUE(ebb.is_idle());  // 2 ms = 50 ticks
 }
 
 TEST_F(EibotboardTest, OversizedServoTimeoutAndClientSetupAreAccepted) {

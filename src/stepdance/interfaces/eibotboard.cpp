@@ -106,11 +106,25 @@ void Eibotboard::execute_line() {
     }
     command_name_[name_length] = '\0';
     EbbParameters parameters(line_ + name_length, line_length_ - name_length);
-    if (!dispatch(command_name_, parameters)) return;  // waits for FIFO room; the line stays
+    if (!dispatch(command_name_, parameters)) {  // waits for FIFO room; the line stays
+      if (!waiting_for_room_) ++fifo_full_waits_;
+      waiting_for_room_ = true;
+      return;
+    }
   }
+  waiting_for_room_ = false;
+  ++commands_done_;
   line_length_ = 0;
   line_overrun_ = false;
   line_ready_ = false;
+}
+
+void Eibotboard::report_counters(CounterSink& sink) const {
+  sink.counter("commands", commands_done_);
+  sink.counter("fifo_full_waits", fifo_full_waits_);
+  sink.counter("moves_started", moves_started_);
+  sink.counter("errors_replied", errors_replied_);
+  sink.counter("replies_dropped", replies_dropped_);
 }
 
 void Eibotboard::send(const char* text) {
@@ -133,6 +147,10 @@ void Eibotboard::flush_replies() {
     reply_count_ -= written;
     if (written < chunk) return;  // the host reads slowly: the rest waits
   }
+}
+
+bool Eibotboard::is_idle() const {
+  return moves_queued_ == moves_started_ && controls_.empty() && !frame_busy_ && frame_servo_settled_;
 }
 
 bool Eibotboard::queue(const EbbMove& move) {
@@ -158,6 +176,10 @@ void Eibotboard::run() {
   frame_global_steps_[0] = executor_.global_steps(0);
   frame_global_steps_[1] = executor_.global_steps(1);
   frame_pen_up_ = executor_.pen_up();
+  frame_servo_settled_ = executor_.servo_settled();
+  for (int motor = 0; motor < 2; ++motor) {
+    frame_motor_resolution_[motor] = static_cast<uint8_t>(executor_.motor_enabled(motor) ? 16 >> (executor_.microstep_mode() - 1) : 0);
+  }
   update_outputs();
 }
 

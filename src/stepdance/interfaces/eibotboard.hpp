@@ -8,6 +8,7 @@
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
 #include "stepdance/core/byte_stream.hpp"
+#include "stepdance/core/counters.hpp"
 #include "stepdance/core/spsc_queue.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
@@ -83,6 +84,17 @@ class Eibotboard : public Block {
   /// Replies that found no room (should stay 0: a line is taken only when its reply fits).
   uint32_t replies_dropped() const { return replies_dropped_; }
 
+  /// commands (lines answered), fifo_full_waits (motion commands that found the FIFO full and
+  /// waited, unread input behind them), moves_started (FIFO entries the frame took),
+  /// errors_replied, replies_dropped. Context: loop.
+  void report_counters(CounterSink& sink) const override;
+
+  /// True when the frame has nothing left to do: no move runs or waits in the FIFO, no stop or
+  /// pen command waits for it, and the pen servo has reached its position, so the outputs stay
+  /// as they are until the next command (one that waited for FIFO room is queued at the next
+  /// loop pass). Context: loop.
+  bool is_idle() const;
+
   /// Serves the link: reads commands while the FIFO has room, replies. Context: loop.
   void loop() override;
   /// One tick of EBB motion; sets and pushes the outputs. Context: frame ISR.
@@ -136,6 +148,9 @@ class Eibotboard : public Block {
   size_t line_length_ = 0;
   bool line_overrun_ = false;
   bool line_ready_ = false;      // a complete line waits (its motion command found the FIFO full)
+  bool waiting_for_room_ = false;
+  uint32_t commands_done_ = 0;
+  uint32_t fifo_full_waits_ = 0;
   bool last_was_terminator_ = false;
   char command_name_[3] = {};
   bool future_syntax_ = false;
@@ -145,13 +160,12 @@ class Eibotboard : public Block {
   uint16_t servo_down_ = 16000;  // SC,5: 1.333 ms
   uint16_t servo_rate_up_ = 0;   // SC,11 / SC,10 (1/12 µs per 24 ms; 0 = at once)
   uint16_t servo_rate_down_ = 0; // SC,12 / SC,10
-  bool pen_commanded_up_ = true;  // the pen state the last queued pen command asked for
+  bool pen_commanded_up_ = true;  // the pen state the last queued pen command asked for (TP toggles it)
   bool button_pressed_ = false;
   uint8_t variables_[32] = {};
   char tag_[17] = {};
   uint32_t servo_timeout_ms_ = 60000;
-  uint8_t microstep_mode_ = 1;   // as EM set it (loop copy, for QE)
-  bool motors_enabled_[2] = {};
+  bool motors_enabled_[2] = {};  // as the last queued EM or ES,1 left them (EM's default for motor 2)
   const char* version_ = kDefaultVersion;
   EbbKinematics kinematics_ = EBB_KINEMATICS_COREXY;
   char replies_[kReplyBufferBytes] = {};
@@ -174,6 +188,8 @@ class Eibotboard : public Block {
   volatile bool frame_motor_moving_[2] = {};
   volatile int32_t frame_global_steps_[2] = {};
   volatile bool frame_pen_up_ = true;
+  volatile bool frame_servo_settled_ = true;
+  volatile uint8_t frame_motor_resolution_[2] = {};  // QE: 16 … 1 (1/16 … full step) when enabled, else 0
   volatile uint16_t pen_now_target_ = 0;  // SP,2/3: written before kPenUpNow is queued
   volatile uint16_t pen_now_rate_ = 0;
   double last_output_[3] = {};  // x, y, z as last set, world units

@@ -143,7 +143,8 @@ bool Eibotboard::dispatch(const char* name, EbbParameters& p) {
     controls_.push(Control::kClearSteps);
     reply_ok();
   } else if (is(name, "QP")) {
-    reply_data(pen_commanded_up_ ? "1" : "0", true, "\n\r");
+    // The pen as executed: a pen command still waiting in the FIFO does not show yet.
+    reply_data(frame_pen_up_ ? "1" : "0", true, "\n\r");
   } else if (is(name, "QB")) {
     reply_data(button_pressed_ ? "1" : "0", true);
     button_pressed_ = false;
@@ -151,9 +152,8 @@ bool Eibotboard::dispatch(const char* name, EbbParameters& p) {
     // A 1.27 V current reference and a 12 V supply (clients check the supply is there).
     reply_data("0394,0394", true);
   } else if (is(name, "QE")) {
-    const uint32_t resolution = 16u >> (microstep_mode_ - 1);
-    text.unsigned_number(motors_enabled_[0] ? resolution : 0).character(',');
-    text.unsigned_number(motors_enabled_[1] ? resolution : 0);
+    // The drivers as the frame has set them (EM runs from the FIFO; motion enables them too).
+    text.unsigned_number(frame_motor_resolution_[0]).character(',').unsigned_number(frame_motor_resolution_[1]);
     reply_data(text.c_str(), true);
   } else if (is(name, "QR")) {
     reply_data("1", true, "\n\r");
@@ -164,7 +164,6 @@ bool Eibotboard::dispatch(const char* name, EbbParameters& p) {
     ack_enabled_ = true;
     fifo_depth_ = 1;
     pen_commanded_up_ = true;
-    microstep_mode_ = 1;
     motors_enabled_[0] = motors_enabled_[1] = false;
   } else {
     reply_error(EbbError::kUnknownCommand, name);
@@ -253,7 +252,6 @@ bool Eibotboard::command_em(EbbParameters& p) {
   move.enable[0] = enable1 != 0;
   move.enable[1] = enable2 < 0 ? motors_enabled_[1] : enable2 != 0;
   if (!queue(move)) return false;
-  if (enable1 != 0) microstep_mode_ = static_cast<uint8_t>(enable1);
   motors_enabled_[0] = move.enable[0];
   motors_enabled_[1] = move.enable[1];
   reply_ok();
@@ -367,7 +365,8 @@ bool Eibotboard::command_cu(EbbParameters& p) {
       }
       if (future_syntax_ && value == 0) {
         future_syntax_ = false;
-        send("CUOK\r\n");
+        send("CU");  // the future half; the legacy ending follows (its OK only while acks are on)
+        send(ack_enabled_ ? "OK\r\n" : "\r\n");
         return true;
       }
       break;

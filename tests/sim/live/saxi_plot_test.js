@@ -6,7 +6,9 @@
 // choosing LM or XM from the firmware version the board reports. After SIGINT the simulator writes
 // the drawing; every pen-down point must lie within one motor step (plus the pen trace's 0.01 mm)
 // of saxi's planned path and every planned vertex as close to the drawing, with one stroke per
-// path, and no command may be lost (saxi waits for every reply; a lost one would hang it).
+// path, and no command may be lost while saxi streams faster than the machine moves: the board's
+// counters (summary.json) show every line answered and every queued command started, and motion
+// commands that found the FIFO full and waited (saxi waits for every reply; a lost one would hang it).
 //
 // Usage: node saxi_plot_test.js STEPDANCE SCENARIO OUT_DIR {LM|XM}
 'use strict';
@@ -99,6 +101,13 @@ async function main() {
   const port = new SerialPortSerialPort(ptyPath);
   await port.open({ baudRate: 9600 });
   const ebb = new EBB(port);
+  // Every command line saxi writes, in order (saxi waits for each reply before the next).
+  const sent = [];
+  const write = ebb.write.bind(ebb);
+  ebb.write = (text) => {
+    sent.push(text.replace(/\r$/, ''));
+    return write(text);
+  };
   const version = await ebb.firmwareVersionNumber();
   const usesLM = await ebb.supportsLM();
   assert.strictEqual(usesLM ? 'LM' : 'XM', expectedPath, `firmware ${version.join('.')} selects the wrong path`);
@@ -108,6 +117,10 @@ async function main() {
   const plan = planning.plan(paths, planning.AxidrawFast);
   await ebb.executePlan(plan);  // EM,2,2 … motions … QM until idle, EM,0,0
   plotDone = true;  // from here, the serial stream closing under saxi is expected
+  // saxi sends each command as soon as the last one is answered; QM polls after its last motion
+  // command (reported, not checked: how many depends on the host's speed) mean moves still ran.
+  const lastMotion = sent.map((line) => /^(LM|XM|SM)\b/i.test(line)).lastIndexOf(true);
+  const pollsAfter = sent.slice(lastMotion + 1).filter((line) => /^QM$/i.test(line)).length;
 
   sim.kill('SIGINT');
   const result = await finished;
@@ -128,7 +141,23 @@ async function main() {
     assert.ok(away <= bound, `stroke ${i}: a pen point ${away.toFixed(4)} mm off saxi's path`);
     assert.ok(missed <= bound, `stroke ${i}: a planned vertex ${missed.toFixed(4)} mm from the drawing`);
   }
-  console.log(`saxi ${expectedPath} path: ${planned.length} strokes drawn within ${bound.toFixed(4)} mm of the plan`);
+
+  // No command lost while saxi streamed faster than the machine moved: the board answered every
+  // line saxi sent and started every queued one, and at times a motion command found the FIFO
+  // full and waited unread (flow control).
+  const board = JSON.parse(fs.readFileSync(path.join(outDir, 'summary.json'), 'utf8')).counters.driver;
+  const name = Object.keys(board).find((key) => key.startsWith('Eibotboard'));
+  assert.ok(name, 'the summary has the Eibotboard counters');
+  const counters = board[name];
+  const queued = sent.filter((line) => /^(LM|XM|SM|HM|EM|S2|SP|TP)\b/i.test(line)).length;
+  assert.strictEqual(counters.commands, sent.length, `${sent.length} commands sent, ${counters.commands} answered`);
+  assert.strictEqual(counters.moves_started, queued, `${queued} FIFO commands sent, ${counters.moves_started} started`);
+  assert.strictEqual(counters.errors_replied, 0, 'no command refused');
+  assert.strictEqual(counters.replies_dropped, 0, 'no reply dropped');
+  assert.ok(counters.fifo_full_waits > 0, 'saxi never outran the machine: the FIFO was never full');
+  console.log(`saxi ${expectedPath} path: ${planned.length} strokes drawn within ${bound.toFixed(4)} mm of the plan; ` +
+              `${sent.length} commands, ${queued} queued, ${counters.fifo_full_waits} waited for FIFO room, ` +
+              `${pollsAfter} QM polls after the last move`);
 }
 
 main().then(() => process.exit(0), (error) => {

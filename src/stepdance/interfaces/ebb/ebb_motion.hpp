@@ -66,6 +66,8 @@ class EbbMotionExecutor {
   bool motor_enabled(int axis) const { return enabled_[axis]; }
   /// Servo pulse width now, 1/12 µs (slewing toward its target at its rate).
   double servo_position() const { return servo_position_; }
+  /// True once the servo has reached its target (no slewing left).
+  bool servo_settled() const { return servo_position_ == servo_target_; }
   bool pen_up() const { return pen_up_; }
   uint32_t accumulator(int axis) const { return static_cast<uint32_t>(accumulator_[axis]); }
   /// Back to power-on: pen position `servo_reset` (up), mode 1/16, counters zero, idle.
