@@ -33,6 +33,13 @@
 //       bool remove(const char* filepath);
 //     };
 //     extern SDClass SD;
+//   <avr/eeprom.h>                                      // EEPROM emulation in flash
+//     #define E2END                                     // last byte address (0x437 on a 4.0,
+//                                                       //   0x10BB on a 4.1)
+//     void eeprom_read_block(void* buf, const void* addr, uint32_t len);
+//     void eeprom_write_block(const void* buf, void* addr, uint32_t len);
+//                                                       // skips bytes already equal; programs
+//                                                       //   flash with interrupts off
 //
 // NVIC priorities/enables, clocks, pins and every peripheral are programmed through our own
 // register definitions, not through Teensyduino macros.
@@ -42,6 +49,7 @@
 
 #include <Arduino.h>
 #include <SD.h>
+#include <avr/eeprom.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -71,6 +79,15 @@ inline SdFileHandle sd_open_read(const char* name) { return SD.open(name, FILE_R
 /// Opens for writing at the end of the file, creating it if needed.
 inline SdFileHandle sd_open_append(const char* name) { return SD.open(name, FILE_WRITE); }
 inline bool sd_remove(const char* name) { return SD.remove(name); }
+
+// ---- EEPROM emulation ---------------------------------------------------------------------------
+inline size_t eeprom_bytes() { return static_cast<size_t>(E2END) + 1; }
+inline void eeprom_read(size_t offset, uint8_t* data, size_t length) {
+  eeprom_read_block(data, reinterpret_cast<const void*>(offset), static_cast<uint32_t>(length));
+}
+inline void eeprom_write(size_t offset, const uint8_t* data, size_t length) {
+  eeprom_write_block(data, reinterpret_cast<void*>(offset), static_cast<uint32_t>(length));
+}
 
 }  // namespace stepdance::platform::teensy::services
 
