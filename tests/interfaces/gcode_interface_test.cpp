@@ -4,13 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <math.h>
-#include <stdio.h>
 
 #include <string>
 #include <vector>
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
+#include "stepdance/interfaces/text_writer.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"
 
@@ -197,11 +197,12 @@ TEST_F(GCodeInterfaceTest, ThousandShortSegmentsStreamedByCharacterCountingNever
   const double radius = 100.0, v = 60.0, segment = 0.05;
   const int count = 1000;
   std::vector<std::string> lines = {"G21 G90 G1 F3600\n"};
-  char text[64];
   for (int k = 1; k <= count; ++k) {
     const double angle = k * segment / radius;
-    snprintf(text, sizeof(text), "X%.4f Y%.4f\n", radius * sin(angle), radius * (1 - cos(angle)));
-    lines.push_back(text);
+    char storage[64];
+    TextWriter line(storage, sizeof(storage));
+    line.character('X').fixed(radius * sin(angle), 4).text(" Y").fixed(radius * (1 - cos(angle)), 4).character('\n');
+    lines.push_back(line.c_str());
   }
   record = false;
   size_t next = 0, acknowledged = 0, in_flight_bytes = 0;
