@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
+#include "stepdance/interfaces/gcode/grbl_settings_store.hpp"
 
 namespace {
 
@@ -72,6 +73,25 @@ struct FuzzMachine final : GrblMachine {
   }
 };
 
+/// EEPROM emulation: 1080 erased bytes, like a Teensy 4.0's.
+struct FuzzStore final : NonvolatileStore {
+  uint8_t bytes[1080];
+  FuzzStore() {
+    for (uint8_t& byte : bytes) byte = 0xFF;
+  }
+  size_t size_bytes() override { return sizeof(bytes); }
+  Status read(size_t offset, uint8_t* data, size_t length) override {
+    if (offset > sizeof(bytes) || length > sizeof(bytes) - offset) abort();  // we never ask beyond it
+    for (size_t i = 0; i < length; ++i) data[i] = bytes[offset + i];
+    return Status::kOk;
+  }
+  Status write(size_t offset, const uint8_t* data, size_t length) override {
+    if (offset > sizeof(bytes) || length > sizeof(bytes) - offset) abort();
+    for (size_t i = 0; i < length; ++i) bytes[offset + i] = data[i];
+    return Status::kOk;
+  }
+};
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -79,8 +99,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   stream.data = data;
   stream.size = size;
   FuzzMachine machine;
+  FuzzStore store;
   GrblProtocol protocol;
-  protocol.begin(stream, machine);
+  protocol.begin(stream, machine, &store);
   for (int pass = 0; pass < 4096 && (stream.offset < size || machine.queued > 0); ++pass) {
     stream.chunk_end = stream.offset + 37 < size ? stream.offset + 37 : size;
     protocol.poll();
@@ -88,5 +109,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     stream.write_room = (pass % 3 == 0) ? 4096 : 0;
   }
   if (protocol.replies_dropped() != 0) abort();
+  // Whatever the host did, what was stored reads back whole after a reboot.
+  GrblSettings rebooted;
+  uint8_t version = 0;
+  const SettingsLoad load = load_settings(store, rebooted, version);
+  if (load != SettingsLoad::kLoaded && load != SettingsLoad::kBlank) abort();
+  for (int i = 0; i < GrblSettings::kCount; ++i) {
+    if (rebooted.at(i).host_set && rebooted.at(i).value != protocol.settings().at(i).value) abort();
+  }
   return 0;
 }

@@ -10,6 +10,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
   clang  # libFuzzer targets (scripts/fuzz.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
+  prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)
   python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests
   bcnc  # a real Grbl sender driving the live simulator (tests/sim/live/bcnc_sender_test.py)
 )

@@ -9,6 +9,7 @@
 
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/file_storage.hpp"
+#include "stepdance/core/nonvolatile_store.hpp"
 #include "stepdance/core/units.hpp"
 
 namespace stepdance {
@@ -94,6 +95,33 @@ class MemoryStorage final : public FileStorage {
   std::vector<OpenFile> handles;
 };
 
+/// EEPROM emulation: a Teensy 4.0's 1080 bytes, erased (0xFF) at reset(), kept by reboot().
+class MemoryEeprom final : public NonvolatileStore {
+ public:
+  size_t size_bytes() override { return bytes.size(); }
+  Status read(size_t offset, uint8_t* data, size_t length) override {
+    if (!fits(offset, length)) return Status::kBadArgument;
+    std::memcpy(data, bytes.data() + offset, length);
+    return Status::kOk;
+  }
+  Status write(size_t offset, const uint8_t* data, size_t length) override {
+    if (!fits(offset, length)) return Status::kBadArgument;
+    std::memcpy(bytes.data() + offset, data, length);
+    ++writes;
+    return Status::kOk;
+  }
+  bool fits(size_t offset, size_t length) const { return offset <= bytes.size() && length <= bytes.size() - offset; }
+  std::array<uint8_t, hal_manual::kEepromBytes> bytes = filled();
+  uint32_t writes = 0;
+
+ private:
+  static std::array<uint8_t, hal_manual::kEepromBytes> filled() {
+    std::array<uint8_t, hal_manual::kEepromBytes> erased;
+    erased.fill(0xFF);
+    return erased;
+  }
+};
+
 struct ManualBoard {
   uint32_t micros = 0;
   uint32_t cycles = 0;
@@ -112,6 +140,7 @@ struct ManualBoard {
   std::string fault_log;
   ConsoleStream console;
   MemoryStorage storage;
+  MemoryEeprom eeprom;
 };
 
 // A plain global (not a function-local static) so each access costs no initialisation guard:
@@ -215,6 +244,7 @@ void log_message(const char* text) {
 
 ByteStream& console() { return board().console; }
 FileStorage& storage() { return board().storage; }
+NonvolatileStore& nonvolatile_store() { return board().eeprom; }
 
 }  // namespace hal
 
@@ -225,6 +255,15 @@ void reset(uint32_t start_us) {
   board() = ManualBoard{};
   board().micros = start_us;
 }
+
+void reboot(uint32_t start_us) {
+  const MemoryEeprom kept = board().eeprom;
+  reset(start_us);
+  board().eeprom = kept;
+}
+
+uint8_t* eeprom_bytes() { return board().eeprom.bytes.data(); }
+uint32_t eeprom_writes() { return board().eeprom.writes; }
 
 void run_frames(uint32_t n) {
   for (uint32_t i = 0; i < n; ++i) {

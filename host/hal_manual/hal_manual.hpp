@@ -1,6 +1,7 @@
 // Test controls of the manual host backend: step time by hand, set inputs, inspect outputs.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include <string>
@@ -11,6 +12,16 @@ namespace stepdance::hal_manual {
 
 /// Returns every pin, port, timer and buffer to power-on state; time starts at start_us.
 void reset(uint32_t start_us = 0);
+
+/// Like reset(), but the non-volatile store keeps its contents, as flash does across a reset or
+/// power cycle.
+void reboot(uint32_t start_us = 0);
+
+/// Size of the non-volatile store (a Teensy 4.0's EEPROM emulation).
+constexpr size_t kEepromBytes = 1080;
+/// The store's bytes, to inspect or corrupt them; and how many writes it has taken since reset.
+uint8_t* eeprom_bytes();
+uint32_t eeprom_writes();
 
 /// Runs n frame ticks: each advances time by 40 µs and calls the frame ISR if the frame timer
 /// runs; every 25th tick also calls the kilohertz ISR after the frame (if that timer runs).

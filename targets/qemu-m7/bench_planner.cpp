@@ -1,10 +1,16 @@
 // Planner-throughput benchmark image for QEMU's mps2-an500: plans N segments with a full
 // 128-block look-ahead queue between two markers, timed by a CMSDK timer under -icount
-// (bench/measure_target_planner.sh; method in docs/benchmarks-target.md).
+// (bench/measure_target_planner.sh; method in docs/benchmarks-target.md). The workload is the
+// planner alone (PlannerWorkload) or G-code lines through the Grbl link into it (GcodeLineWorkload).
 #include <stdint.h>
 #include <stdio.h>
 
+#include "gcode_workload.hpp"
 #include "planner_workload.hpp"
+
+#ifndef STEPDANCE_BENCH_PLANNER_WORKLOAD
+#define STEPDANCE_BENCH_PLANNER_WORKLOAD PlannerWorkload
+#endif
 
 #ifndef STEPDANCE_BENCH_SEGMENTS
 #define STEPDANCE_BENCH_SEGMENTS 5000
@@ -51,7 +57,7 @@ constexpr uint32_t kKnownLoopIterations = 1000000;
 }  // namespace
 
 int main(int, char**) {
-  static stepdance::workloads::PlannerWorkload workload;  // 128 blocks: too big for the stack
+  static stepdance::workloads::STEPDANCE_BENCH_PLANNER_WORKLOAD workload;  // 128 blocks: too big for the stack
   timer_start();
 
   uint32_t start = timer_ticks();

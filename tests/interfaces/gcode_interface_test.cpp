@@ -10,6 +10,7 @@
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
+#include "stepdance/interfaces/text_writer.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"
 
@@ -189,6 +190,62 @@ TEST_F(GCodeInterfaceTest, StatusReportsTheMachinePositionWhileRunning) {
   EXPECT_NEAR(reported, gcode.output_x.read_absolute(), 0.001);
 }
 
+TEST_F(GCodeInterfaceTest, ThousandShortSegmentsStreamedByCharacterCountingNeverStarveThePlanner) {
+  // 1,000 segments of 0.05 mm along a gentle arc (R = 100 mm) at 60 mm/s: 1,200 lines a second,
+  // sent as Grbl's character-counting streamers do (at most 128 bytes unacknowledged) while the
+  // loop runs only every fifth frame (200 µs, the simulator's loop period).
+  const double radius = 100.0, v = 60.0, segment = 0.05;
+  const int count = 1000;
+  std::vector<std::string> lines = {"G21 G90 G1 F3600\n"};
+  for (int k = 1; k <= count; ++k) {
+    const double angle = k * segment / radius;
+    char storage[64];
+    TextWriter line(storage, sizeof(storage));
+    line.character('X').fixed(radius * sin(angle), 4).text(" Y").fixed(radius * (1 - cos(angle)), 4).character('\n');
+    lines.push_back(line.c_str());
+  }
+  record = false;
+  size_t next = 0, acknowledged = 0, in_flight_bytes = 0;
+  std::vector<size_t> in_flight;
+  std::string replies;
+  int frames = 0;
+  double last_x = 0.0, last_y = 0.0, slowest_cruise = 1e9;
+  const double cruise_from_s = 0.2, cruise_until_s = count * segment / v - 0.1;
+  while ((acknowledged < lines.size() || !gcode.interpolator().is_idle()) && frames < 200000) {
+    if (frames % 5 == 0) {
+      while (next < lines.size() && in_flight_bytes + lines[next].size() <= 128) {
+        host.send(lines[next]);
+        in_flight.push_back(lines[next].size());
+        in_flight_bytes += lines[next].size();
+        ++next;
+      }
+      dance_loop();
+      replies += host.take();
+      for (size_t at = replies.find("\r\n"); at != std::string::npos; at = replies.find("\r\n")) {
+        EXPECT_EQ(replies.substr(0, at), "ok") << "line " << acknowledged + 1;
+        replies.erase(0, at + 2);
+        ASSERT_FALSE(in_flight.empty());
+        in_flight_bytes -= in_flight.front();
+        in_flight.erase(in_flight.begin());
+        ++acknowledged;
+      }
+    }
+    hal_manual::run_frames(1);
+    ++frames;
+    const double now_x = gcode.output_x.read_absolute(), now_y = gcode.output_y.read_absolute();
+    const double t = frames * kDt;
+    if (t > cruise_from_s && t < cruise_until_s) {
+      slowest_cruise = fmin(slowest_cruise, hypot(now_x - last_x, now_y - last_y) / kDt);
+    }
+    last_x = now_x;
+    last_y = now_y;
+  }
+  EXPECT_EQ(acknowledged, lines.size());
+  EXPECT_EQ(gcode.interpolator().underruns(), 0u);  // no block ever ended with nothing after it
+  EXPECT_NEAR(slowest_cruise, v, 1e-3);              // and the path speed never sagged
+  EXPECT_NEAR(gcode.output_x.read_absolute(), radius * sin(count * segment / radius), 1e-4);
+}
+
 struct SpindleEvent {
   bool on, clockwise;
   double speed, x_at_call;
@@ -226,6 +283,38 @@ TEST_F(GCodeInterfaceTest, ProgramPauseHoldsAfterItsMovesUntilCycleStart) {
   host.send("~");
   run_until_idle();
   EXPECT_EQ(gcode.output_x.read_absolute(), 10.0);
+}
+
+TEST(GCodeInterfaceSettings, HostSettingsSurviveARebootAndSetThePlannerLimits) {
+  test_support::reset_global_state();  // erased EEPROM
+  {
+    test_support::FakeByteStream host;
+    GCodeInterface gcode;
+    ASSERT_EQ(gcode.begin(&host), Status::kOk);
+    host.take();
+    host.send("$110=7200\n$120=640\n");
+    dance_loop();
+    EXPECT_EQ(host.take(), "ok\r\nok\r\n");
+  }
+  EXPECT_GT(hal_manual::eeprom_writes(), 0u);
+  // Power cycle: RAM and engine start afresh, the EEPROM keeps its bytes.
+  hal_manual::reboot();
+  engine().clear();
+  test_support::FakeByteStream host;
+  GCodeInterface gcode;
+  ASSERT_EQ(gcode.begin(&host), Status::kOk);
+  gcode.settings().set_from_sketch(110, 6000);  // a sketch default does not override the host
+  EXPECT_EQ(host.take(), "\r\nGrbl 1.1h ['$' for help]\r\n");
+  host.send("$$\n");
+  dance_loop();
+  const std::string listing = host.take();
+  EXPECT_NE(listing.find("\r\n$110=7200.000\r\n"), std::string::npos) << listing;
+  EXPECT_NE(listing.find("\r\n$120=640.000\r\n"), std::string::npos) << listing;
+  // The planner took them: along X, 7200 mm/min = 120 mm/s and 640 mm/s².
+  const double along_x[planner::kPlannerAxes] = {1.0};
+  EXPECT_DOUBLE_EQ(gcode.interpolator().limits().max_speed(along_x, 1.0), 120.0);
+  EXPECT_DOUBLE_EQ(gcode.interpolator().limits().max_acceleration(along_x, 1.0), 640.0);
+  test_support::reset_global_state();
 }
 
 TEST(GCodeInterfaceBegin, TakesArduinoStylePortsThroughTheAdapter) {

@@ -5,6 +5,7 @@
 
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/file_storage.hpp"
+#include "stepdance/core/nonvolatile_store.hpp"
 
 namespace stepdance {
 
@@ -31,7 +32,7 @@ Status GCodeInterface::begin_stream(ByteStream& stream) {
   const Status own = register_in(Stage::kLoop);
   if (own != Status::kOk) return own;
   apply_settings_to_planner();
-  protocol_.begin(stream, *this);
+  protocol_.begin(stream, *this, &hal::nonvolatile_store());
   return Status::kOk;
 }
 

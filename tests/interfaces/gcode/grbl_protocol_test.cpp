@@ -3,10 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "stepdance/interfaces/gcode/grbl_settings_store.hpp"
 #include "support/fake_byte_stream.hpp"
+#include "support/memory_store.hpp"
 
 namespace stepdance::gcode {
 namespace {
@@ -151,10 +154,36 @@ TEST_F(GrblLink, StatusReportFieldsFollowTheSettings) {
   exchange("G10 L2 P1 X5\n");
   machine.position[kAxisX] = 12.5;
   std::string report = exchange("?");
-  EXPECT_EQ(report, "<Idle|MPos:12.500,0.000,0.000|Bf:15,128|FS:0,0|WCO:5.000,0.000,0.000|Ov:100,100,100>\r\n");
+  // The first report carries WCO; Ov follows in the next one (Grbl never sends both at once).
+  EXPECT_EQ(report, "<Idle|MPos:12.500,0.000,0.000|Bf:15,128|FS:0,0|WCO:5.000,0.000,0.000>\r\n");
   exchange("$10=0\n");
   report = exchange("?");
-  EXPECT_EQ(report, "<Idle|WPos:7.500,0.000,0.000|FS:0,0>\r\n");
+  EXPECT_EQ(report, "<Idle|WPos:7.500,0.000,0.000|FS:0,0|Ov:100,100,100>\r\n");
+}
+
+TEST_F(GrblLink, WorkOffsetIsReportedPeriodicallyAndAtOnceWhenItChanges) {
+  // Grbl 1.1 at rest: WCO every 10th report, Ov every 10th, never both in one report.
+  std::vector<int> wco_reports, ov_reports;
+  for (int i = 0; i < 25; ++i) {
+    const std::string report = exchange("?");
+    if (report.find("|WCO:0.000,0.000,0.000") != std::string::npos) wco_reports.push_back(i);
+    if (report.find("|Ov:") != std::string::npos) ov_reports.push_back(i);
+  }
+  EXPECT_EQ(wco_reports, (std::vector<int>{0, 10, 20}));
+  EXPECT_EQ(ov_reports, (std::vector<int>{1, 11, 21}));
+  // A new offset (G92 here) shows in the very next report, whatever the count.
+  exchange("G92 X-3\n");
+  EXPECT_NE(exchange("?").find("|WCO:3.000,0.000,0.000"), std::string::npos);
+  EXPECT_EQ(exchange("?").find("|WCO:"), std::string::npos);
+  // While moving the refresh slows to every 30th report.
+  machine.state = MotionState::kRun;
+  int wco_while_running = 0;
+  for (int i = 0; i < 60; ++i) wco_while_running += exchange("?").find("|WCO:") != std::string::npos;
+  EXPECT_EQ(wco_while_running, 2);
+}
+
+TEST_F(GrblLink, HomingIsAClearErrorUntilTheMachineHasIt) {
+  EXPECT_EQ(exchange("$H\n"), "[MSG:Homing is not set up on this machine]\r\nerror:5\r\n");
 }
 
 TEST_F(GrblLink, FeedHoldResumeAndSoftResetWithAlarm) {
@@ -240,6 +269,103 @@ TEST_F(GrblLink, RepliesWaitWhenTheHostDoesNotRead) {
   const std::string replies = stream.take();
   EXPECT_EQ(replies.rfind("ok\r\nok\r\n$0=10\r\n", 0), 0u) << replies;
   EXPECT_EQ(protocol.replies_dropped(), 0u);
+}
+
+/// A board with a settings store: each boot() starts a fresh link on the same store, as a reset
+/// starts the firmware again with the EEPROM as it was.
+class GrblStoredSettings : public ::testing::Test {
+ protected:
+  std::string boot() {
+    protocol = std::make_unique<GrblProtocol>();
+    protocol->begin(stream, machine, &store);
+    return stream.take();
+  }
+  std::string exchange(const std::string& text) {
+    stream.send(text);
+    for (int i = 0; i < 50; ++i) protocol->poll();
+    return stream.take();
+  }
+  bool lists(const std::string& setting) {
+    return exchange("$$\n").find("\r\n" + setting + "\r\n") != std::string::npos;
+  }
+  FakeStream stream;
+  FakeMachine machine;
+  test_support::MemoryStore store;
+  std::unique_ptr<GrblProtocol> protocol;
+};
+
+TEST_F(GrblStoredSettings, HostWritesSurviveAReboot) {
+  EXPECT_EQ(boot(), "\r\nGrbl 1.1h ['$' for help]\r\n");  // erased store: no message
+  EXPECT_EQ(exchange("$110=7200\n$122=50.5\n$20=1\n$13=1\n"), "ok\r\nok\r\nok\r\nok\r\n");
+  EXPECT_EQ(boot(), "\r\nGrbl 1.1h ['$' for help]\r\n");
+  EXPECT_TRUE(lists("$110=7200.000"));
+  EXPECT_TRUE(lists("$122=50.500"));
+  EXPECT_TRUE(lists("$20=1"));
+  EXPECT_TRUE(lists("$13=1"));
+  EXPECT_TRUE(lists("$111=5000.000"));  // never written: Grbl's default
+  EXPECT_TRUE(protocol->settings().soft_limits());
+}
+
+TEST_F(GrblStoredSettings, TheSketchDefaultYieldsToTheStoredValueUntilRestored) {
+  boot();
+  exchange("$110=7200\n");
+  boot();
+  protocol->settings().set_from_sketch(110, 6000);  // the sketch's setup() after begin()
+  protocol->settings().set_from_sketch(111, 4000);
+  EXPECT_TRUE(lists("$110=7200.000"));
+  EXPECT_TRUE(lists("$111=4000.000"));
+  EXPECT_EQ(exchange("$RST=$\n"), "[MSG:Restoring defaults]\r\nok\r\n\r\nGrbl 1.1h ['$' for help]\r\n");
+  EXPECT_TRUE(lists("$110=6000.000"));
+  boot();
+  EXPECT_TRUE(lists("$110=5000.000"));  // a new boot before the sketch sets its default: Grbl's
+}
+
+TEST_F(GrblStoredSettings, ACorruptStoreFallsBackToDefaultsWithAMessage) {
+  boot();
+  exchange("$110=7200\n$120=640\n");
+  store.bytes()[10] ^= 0x04;  // one bit of the first stored value
+  EXPECT_EQ(boot(),
+            "\r\nGrbl 1.1h ['$' for help]\r\n"
+            "[MSG:Stored settings unreadable (bad checksum or data): defaults restored]\r\n");
+  EXPECT_TRUE(lists("$110=5000.000"));
+  EXPECT_TRUE(lists("$120=1000.000"));  // all or nothing: the intact entry is not applied either
+  // The next write replaces the bad store.
+  exchange("$111=3000\n");
+  EXPECT_EQ(boot(), "\r\nGrbl 1.1h ['$' for help]\r\n");
+  EXPECT_TRUE(lists("$111=3000.000"));
+}
+
+TEST_F(GrblStoredSettings, AStoreOfAnotherVersionFallsBackToDefaultsWithAMessage) {
+  boot();
+  exchange("$110=7200\n");
+  std::vector<uint8_t>& bytes = store.bytes();
+  bytes[4] = 0;  // version byte; re-sign the 6 + 9 bytes so only the version is wrong
+  const uint16_t crc = crc16_ccitt(bytes.data(), 15);
+  bytes[15] = static_cast<uint8_t>(crc & 0xFF);
+  bytes[16] = static_cast<uint8_t>(crc >> 8);
+  EXPECT_EQ(boot(),
+            "\r\nGrbl 1.1h ['$' for help]\r\n"
+            "[MSG:Stored settings are version 0, this firmware reads version 1: defaults restored]\r\n");
+  EXPECT_TRUE(lists("$110=5000.000"));
+}
+
+TEST_F(GrblStoredSettings, AFailedSaveSaysTheSettingLastsOnlyUntilReset) {
+  boot();
+  store.refuse_writes = true;
+  EXPECT_EQ(exchange("$110=7200\n"),
+            "[MSG:Setting applies until reset: the settings store refused the write]\r\nok\r\n");
+  EXPECT_DOUBLE_EQ(protocol->settings().max_rate_mm_per_min(0), 7200.0);
+  boot();
+  EXPECT_TRUE(lists("$110=5000.000"));
+}
+
+TEST_F(GrblStoredSettings, RestoringOffsetsClearsTheCoordinateSystems) {
+  boot();
+  exchange("G10 L2 P1 X5\n$110=7200\n");
+  EXPECT_EQ(exchange("$RST=#\n"), "[MSG:Restoring defaults]\r\nok\r\n\r\nGrbl 1.1h ['$' for help]\r\n");
+  EXPECT_EQ(exchange("$#\n").rfind("[G54:0.000,0.000,0.000]\r\n", 0), 0u);
+  EXPECT_TRUE(lists("$110=7200.000"));  // settings untouched
+  EXPECT_EQ(exchange("$RST=x\n"), "error:3\r\n");
 }
 
 }  // namespace

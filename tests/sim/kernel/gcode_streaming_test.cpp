@@ -80,12 +80,7 @@ TEST_P(GcodeStreamingTest, FiveThousandLinesAcknowledgedInOrderAndDrawnWithinOne
   const std::string gcode_path = input_dir + "/spiral.gcode";
   std::ofstream(gcode_path) << gcode;
   const std::string text =
-      "duration_s = 60\n"
-      "[[board]]\nname = \"driver\"\nsketch = \"" + source_path("examples/GCodeStepASketch/GCodeStepASketch.ino") +
-      "\"\nmodule = \"driver\"\n"
-      "sockets = { A = { device = \"stepper\", microsteps = 16 }, B = { device = \"stepper\", microsteps = 16 }, "
-      "C = { device = \"servo\" } }\n"
-      "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n"
+      "duration_s = 60\n" + gcode_step_a_sketch_board() +
       "[[host]]\nboard = \"driver\"\n"
       "[[host.step]]\nwait = \"^Grbl\"\n"
       "[[host.step]]\nstream_file = \"" + gcode_path + "\"\nflow = \"" + flow + "\"\npoll = \"?\"\npoll_every_s = 0.1\n"

@@ -66,6 +66,15 @@ inline std::unique_ptr<Simulation> create(const scenario::Scenario& scenario, co
   return simulation;
 }
 
+/// Scenario TOML for board "driver" running examples/GCodeStepASketch on a CoreXY plotter.
+inline std::string gcode_step_a_sketch_board() {
+  return "[[board]]\nname = \"driver\"\nsketch = \"" + source_path("examples/GCodeStepASketch/GCodeStepASketch.ino") +
+         "\"\nmodule = \"driver\"\n"
+         "sockets = { A = { device = \"stepper\", microsteps = 16 }, B = { device = \"stepper\", microsteps = 16 }, "
+         "C = { device = \"servo\" } }\n"
+         "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\n";
+}
+
 /// A file's bytes ("" if missing).
 inline std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -64,10 +64,12 @@ const char* skip_blanks(const char* text, size_t& length) {
 
 }  // namespace
 
-void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine) {
+void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileStore* store) {
   stream_ = &stream;
   machine_ = &machine;
+  store_ = store;
   report_welcome();
+  load_stored_settings();
   flush_replies();
 }
 

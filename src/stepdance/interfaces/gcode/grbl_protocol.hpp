@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "stepdance/core/byte_stream.hpp"
+#include "stepdance/core/nonvolatile_store.hpp"
 #include "stepdance/interfaces/gcode/gcode_interpreter.hpp"
 #include "stepdance/interfaces/gcode/gcode_parser.hpp"
 #include "stepdance/interfaces/gcode/grbl_machine.hpp"
@@ -21,8 +22,11 @@ namespace stepdance::gcode {
 /// nothing is torn or dropped when the host reads slowly. Context: loop only.
 class GrblProtocol final : private RealtimeHandler {
  public:
-  /// Starts the link: sends the welcome line. The stream and machine must outlive the protocol.
-  void begin(ByteStream& stream, GrblMachine& machine);
+  /// Starts the link: loads the settings the host stored earlier (if a store is given), sends
+  /// the welcome line and, if the store could not be used, a `[MSG:…]` saying why the defaults
+  /// apply. Settings the host writes are saved to the store. The stream, machine and store must
+  /// outlive the protocol.
+  void begin(ByteStream& stream, GrblMachine& machine, NonvolatileStore* store = nullptr);
   /// Serves the link once; call every loop pass.
   void poll();
 
@@ -46,6 +50,9 @@ class GrblProtocol final : private RealtimeHandler {
   GrblError execute_system(const char* text, size_t length);
   GrblError execute_jog(const char* text, size_t length);
   GrblError execute_setting_write(const char* text, size_t length);
+  GrblError execute_restore(const char* text, size_t length);
+  void load_stored_settings();
+  void save_stored_settings();
   bool within_travel(const Motion& motion) const;
   void soft_reset();
   void sync_position_when_idle();
@@ -65,6 +72,7 @@ class GrblProtocol final : private RealtimeHandler {
 
   ByteStream* stream_ = nullptr;
   GrblMachine* machine_ = nullptr;
+  NonvolatileStore* store_ = nullptr;
   GrblReceiver receiver_;
   GrblSettings settings_;
   GcodeInterpreter interpreter_;
@@ -78,6 +86,7 @@ class GrblProtocol final : private RealtimeHandler {
   uint8_t spindle_override_percent_ = 100;
   uint8_t reports_until_wco_ = 0;
   uint8_t reports_until_overrides_ = 0;
+  double last_wco_mm_[kOffsetAxisCount] = {};
   char replies_[kReplyBufferBytes] = {};
   size_t reply_head_ = 0;
   size_t reply_count_ = 0;

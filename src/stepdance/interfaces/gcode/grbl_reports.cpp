@@ -5,8 +5,12 @@ namespace stepdance::gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
-constexpr uint8_t kWcoEveryReports = 10;
-constexpr uint8_t kOverridesEveryReports = 20;
+// Grbl 1.1's refresh counts: `WCO:` every 30 reports while moving and 10 at rest, and at once
+// after the offset changes; `Ov:` every 20 / 10, and never in the same report as `WCO:`.
+constexpr uint8_t kWcoEveryReportsBusy = 30;
+constexpr uint8_t kWcoEveryReportsIdle = 10;
+constexpr uint8_t kOverridesEveryReportsBusy = 20;
+constexpr uint8_t kOverridesEveryReportsIdle = 10;
 
 const char* state_name(MotionState state, bool hold_complete) {
   switch (state) {
@@ -63,19 +67,25 @@ void GrblProtocol::report_status() {
   const double feed = machine_->feed_now_mm_per_min();
   const double speed = interpreter_.modal().spindle == 50 ? 0.0 : interpreter_.modal().spindle_speed;
   line.text("|FS:").fixed(settings_.report_inches() ? feed / kMmPerInch : feed, 0).character(',').fixed(speed, 0);
-  if (reports_until_wco_ == 0) {
+  const bool busy = state != MotionState::kIdle;
+  for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
+    if (offset[axis] != last_wco_mm_[axis]) reports_until_wco_ = 0;  // changed: report it now
+  }
+  if (reports_until_wco_ > 0) {
+    --reports_until_wco_;
+  } else {
     line.text("|WCO:");
     append_axes(line, offset, kOffsetAxisCount);
-    reports_until_wco_ = kWcoEveryReports;
-  } else {
-    --reports_until_wco_;
+    for (int axis = 0; axis < kOffsetAxisCount; ++axis) last_wco_mm_[axis] = offset[axis];
+    reports_until_wco_ = (busy ? kWcoEveryReportsBusy : kWcoEveryReportsIdle) - 1;
+    if (reports_until_overrides_ == 0) reports_until_overrides_ = 1;  // Ov: in the next report
   }
-  if (reports_until_overrides_ == 0) {
+  if (reports_until_overrides_ > 0) {
+    --reports_until_overrides_;
+  } else {
     line.text("|Ov:").unsigned_number(feed_override_percent_).character(',');
     line.unsigned_number(rapid_override_percent_).character(',').unsigned_number(spindle_override_percent_);
-    reports_until_overrides_ = kOverridesEveryReports;
-  } else {
-    --reports_until_overrides_;
+    reports_until_overrides_ = (busy ? kOverridesEveryReportsBusy : kOverridesEveryReportsIdle) - 1;
   }
   line.character('>');
   send_line(line);

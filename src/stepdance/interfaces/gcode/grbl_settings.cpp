@@ -19,7 +19,9 @@ GrblSettings::GrblSettings()
           {112, 1000, false, true}, {120, 1000, false, true}, {121, 1000, false, true},
           {122, 200, false, true},  {130, 300, false, true}, {131, 220, false, true},
           {132, 50, false, true},
-      } {}
+      } {
+  for (GrblSetting& setting : settings_) setting.default_value = setting.value;
+}
 
 const GrblSetting* GrblSettings::find(uint32_t number) const {
   for (const GrblSetting& setting : settings_) {
@@ -36,17 +38,27 @@ double GrblSettings::value(uint32_t number) const {
 GrblError GrblSettings::write(uint32_t number, double value) {
   GrblSetting* setting = const_cast<GrblSetting*>(find(number));
   if (setting == nullptr || !setting->writable) return GrblError::kInvalidDollarStatement;
+  if (!isfinite(value)) return GrblError::kBadNumberFormat;
   if (value < 0.0) return GrblError::kNegativeValue;
   if (setting->integer && value != floor(value)) return GrblError::kCommandNeedsInteger;
   setting->value = value;
+  setting->host_set = true;
   return GrblError::kOk;
 }
 
 bool GrblSettings::set_from_sketch(uint32_t number, double value) {
   GrblSetting* setting = const_cast<GrblSetting*>(find(number));
   if (setting == nullptr) return false;
-  setting->value = value;
+  setting->default_value = value;
+  if (!setting->host_set) setting->value = value;
   return true;
+}
+
+void GrblSettings::restore_defaults() {
+  for (GrblSetting& setting : settings_) {
+    setting.value = setting.default_value;
+    setting.host_set = false;
+  }
 }
 
 }  // namespace stepdance::gcode

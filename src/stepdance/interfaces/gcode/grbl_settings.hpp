@@ -13,6 +13,8 @@ struct GrblSetting {
   double value;
   bool integer;    ///< printed without decimals; writes must be whole numbers
   bool writable;   ///< false: the sketch owns it (steps/mm come from the channels)
+  double default_value = 0.0;  ///< Grbl's default or the sketch's (set_from_sketch); `$RST=$`
+  bool host_set = false;       ///< written by the host (`$N=v`) or loaded from the store
 };
 
 /// Every Grbl 1.1 setting, with Grbl's defaults where the value is the machine's business.
@@ -31,7 +33,11 @@ class GrblSettings {
   /// kNegativeValue for negative values, kCommandNeedsInteger for fractions on integer ones.
   GrblError write(uint32_t number, double value);
   /// Sets a value on behalf of the sketch (read-only ones included). False if unknown.
+  /// For a host-writable setting this is the default: a value the host wrote (and the board
+  /// stored) wins over it, as a stored Grbl setting wins over the firmware's default.
   bool set_from_sketch(uint32_t number, double value);
+  /// `$RST=$`: every setting back to its default (Grbl's or the sketch's).
+  void restore_defaults();
   /// Settings in `$$` order.
   const GrblSetting& at(int index) const { return settings_[index]; }
 

@@ -1,4 +1,4 @@
-// The Grbl link's `$` commands: reports, settings, unlock, homing, check mode and jogging.
+// The Grbl link's `$` commands: reports, unlock, homing, check mode and jogging (settings: grbl_setting_commands.cpp).
 #include <string.h>
 
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
@@ -38,12 +38,16 @@ GrblError GrblProtocol::execute_system(const char* text, size_t length) {
     if (!idle) return GrblError::kNotIdle;
     const GrblError error = machine_->home();
     if (error == GrblError::kOk) alarm_ = 0;
+    if (error == GrblError::kHomingDisabled) send_text("[MSG:Homing is not set up on this machine]");
     return error;
   } else if (equals(command, length, "C")) {
     if (!idle) return GrblError::kNotIdle;
     check_mode_ = !check_mode_;
     send_text(check_mode_ ? "[MSG:Enabled]" : "[MSG:Disabled]");
     if (!check_mode_) reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
+  } else if (length > 4 && strncmp(command, "RST=", 4) == 0) {
+    if (!idle) return GrblError::kNotIdle;
+    return execute_restore(text + 4, length - 4);
   } else if (length > 2 && upper(text[0]) == 'J' && text[1] == '=') {
     return execute_jog(text + 2, length - 2);
   } else if (length > 1 && text[0] >= '0' && text[0] <= '9') {
@@ -53,27 +57,6 @@ GrblError GrblProtocol::execute_system(const char* text, size_t length) {
     return GrblError::kInvalidDollarStatement;
   }
   return GrblError::kOk;
-}
-
-GrblError GrblProtocol::execute_setting_write(const char* text, size_t length) {
-  const char* equals_sign = static_cast<const char*>(memchr(text, '=', length));
-  if (equals_sign == nullptr) return GrblError::kInvalidDollarStatement;
-  double number = 0.0;
-  double value = 0.0;
-  const size_t number_length = static_cast<size_t>(equals_sign - text);
-  // A setting number is a whole number below 1000 (checked before any conversion: casting a
-  // larger double to an integer would be undefined behaviour).
-  if (!parse_number(text, number_length, number) || !(number >= 0.0 && number < 1000.0) ||
-      number != static_cast<double>(static_cast<uint32_t>(number))) {
-    return GrblError::kInvalidDollarStatement;
-  }
-  if (!parse_number(equals_sign + 1, length - number_length - 1, value)) return GrblError::kBadNumberFormat;
-  const uint32_t setting = static_cast<uint32_t>(number);
-  if (setting >= 100 && setting <= 102) {
-    send_text("[MSG:steps/mm are set by the sketch's channels]");
-    return GrblError::kInvalidDollarStatement;
-  }
-  return settings_.write(setting, value);
 }
 
 GrblError GrblProtocol::execute_jog(const char* text, size_t length) {

@@ -43,6 +43,13 @@
 //       int available();  int read();
 //     };
 //     extern TwoWire Wire, Wire1;                         // QWIIC0 (pins 18/19), QWIIC1 (17/16)
+//   <avr/eeprom.h>                                      // EEPROM emulation in flash
+//     #define E2END                                     // last byte address (0x437 on a 4.0,
+//                                                       //   0x10BB on a 4.1)
+//     void eeprom_read_block(void* buf, const void* addr, uint32_t len);
+//     void eeprom_write_block(const void* buf, void* addr, uint32_t len);
+//                                                       // skips bytes already equal; programs
+//                                                       //   flash with interrupts off
 //
 // NVIC priorities/enables, clocks, pins and every peripheral are programmed through our own
 // register definitions, not through Teensyduino macros.
@@ -53,6 +60,7 @@
 #include <Arduino.h>
 #include <SD.h>
 #include <Wire.h>
+#include <avr/eeprom.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -102,6 +110,15 @@ inline size_t wire_read(uint8_t bus, uint8_t address, uint8_t* data, size_t leng
   size_t taken = 0;
   while (taken < received && wire(bus).available() > 0) data[taken++] = static_cast<uint8_t>(wire(bus).read());
   return taken;
+}
+
+// ---- EEPROM emulation ---------------------------------------------------------------------------
+inline size_t eeprom_bytes() { return static_cast<size_t>(E2END) + 1; }
+inline void eeprom_read(size_t offset, uint8_t* data, size_t length) {
+  eeprom_read_block(data, reinterpret_cast<const void*>(offset), static_cast<uint32_t>(length));
+}
+inline void eeprom_write(size_t offset, const uint8_t* data, size_t length) {
+  eeprom_write_block(data, reinterpret_cast<void*>(offset), static_cast<uint32_t>(length));
 }
 
 }  // namespace stepdance::platform::teensy::services
