@@ -105,3 +105,18 @@ TEST(BadScenarioFile, AFolderWithoutScenarioToml) {
 
 }  // namespace
 }  // namespace stepdance::sim::scenario
+
+namespace stepdance::sim::scenario {
+namespace {
+
+// Found by fuzz/scenario_fuzz.cpp: toml++ 3.3 asserts on a control character in a table header.
+// TOML allows none but tab, LF and CR, so the scenario reader refuses them first.
+TEST(BadScenarioText, AControlCharacterIsRefusedWithItsLine) {
+  const LoadResult result = parse_scenario("duration_s = 1\n[[\x01" "board]]\n", "x.toml");
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.errors[0].to_string(), "x.toml:2: control character U+0001 is not allowed in a scenario file");
+  EXPECT_TRUE(parse_scenario("duration_s = 1\t# a tab is fine\r\n", "x.toml").ok());
+}
+
+}  // namespace
+}  // namespace stepdance::sim::scenario
