@@ -3,6 +3,8 @@
 // written, truncated and over-long captures, and usage errors. Each case checks the exit status
 // and the message; the test runner's timeout catches a hang. The expected ranges are the ones
 // docs/scenario-format.md states.
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -174,6 +176,24 @@ TEST(MalformedCaptureTest, AnOversizedCaptureDecodesInTimeLinearInItsWires) {
 }
 
 // ---- usage --------------------------------------------------------------------------------------
+
+TEST(CommandLineOutputsTest, VcdAndCsvCanBeAskedForOnTheCommandLine) {
+  const std::string scratch = test_output_dir("malformed_vcd_csv");
+  const CommandResult result =
+      run("sim --quiet --cache " + kSketchCache + " --out " + scratch + "/out --duration 0.5 --vcd " + scratch +
+              "/run.vcd --csv " + scratch + "/run.csv --csv-interval-ms 100 " + source_path("examples/StepASketch"),
+          "vcd_csv");
+  EXPECT_EQ(result.exit_code, 3);  // half a second is too short for the example's expectations
+  // A header and a row every 100 ms from 0 to 500 ms.
+  const std::string csv = read_file(scratch + "/run.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 7);
+  // The scenario names no vcd_ports, so the output ports are recorded: at least the three the
+  // sketch drives (OUT_D, which it never begins, is not in the file: see the branch report).
+  const nlohmann::json report = decode_json(scratch + "/run.vcd", 0, "vcd_csv_decode");
+  for (const char* port : {"driver.OUT_A", "driver.OUT_B", "driver.OUT_C"}) {
+    EXPECT_TRUE(report["ports"].contains(port)) << port;
+  }
+}
 
 TEST(MalformedUsageTest, AnUnknownCommandNamesTheValidOnes) {
   const CommandResult result = run("frobnicate", "unknown_command");
