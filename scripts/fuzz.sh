@@ -14,7 +14,17 @@ declare -A target_sources=(
   [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
   [ebb]="core"
   [rpc]="core"
+  [scenario]="sim/scenario"
+  [vcd]="sim/decode/vcd_reader.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
 )
+# Extra compiler flags: the simulator's readers see sim/; toml++ is compiled in from its header
+# (Debian's libtomlplusplus-dev) so the fuzzer also instruments the TOML parser.
+declare -A target_flags=(
+  [scenario]="-Isim -DTOML_HEADER_ONLY=1"
+  [vcd]="-Isim"
+)
+# Longest input per target (default 4096 bytes): the example scenarios are up to 6 KB.
+declare -A target_max_len=([scenario]=8192)
 
 build_target() {
   local name=$1 sources=()
@@ -28,8 +38,9 @@ build_target() {
       sources+=("$entry")
     fi
   done
+  # shellcheck disable=SC2086 # the flags are words
   clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-    -Isrc -Ihost/hal_manual "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
+    -Isrc -Ihost/hal_manual ${target_flags[$name]:-} "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
 }
 
 run_target() {
@@ -42,7 +53,7 @@ run_target() {
   fi
   # The checked-in seeds stay untouched; new inputs go to the build folder.
   local log="$build/${name}.log"
-  if ! "$build/${name}_fuzz" -runs="$runs" -max_len=4096 -timeout=10 -print_final_stats=1 \
+  if ! "$build/${name}_fuzz" -runs="$runs" -max_len="${target_max_len[$name]:-4096}" -timeout=10 -print_final_stats=1 \
       -artifact_prefix="$build/${name}-" "$work" "fuzz/corpus/$name" >"$log" 2>&1; then
     grep -A 30 -E "ERROR|runtime error|deadly signal|timeout" "$log" | head -n 60
     echo "fuzz: $name FAILED (full log: $log; reproducer: $build/${name}-*)"

@@ -64,7 +64,8 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
       "decode",
       "Decode a VCD capture of a Stepdance cable (from the simulator, or exported by PulseView/sigrok "
       "from a logic analyzer): step counts per axis and direction, rejected pulses with reasons, "
-      "frame statistics.");
+      "frame statistics. Exit status: 0 ok, 2 bad capture or options, 4 the capture is truncated (it ends "
+      "mid-stream: what it holds is decoded and reported, with a warning).");
   decode.add_option("capture", options.capture_path, "the .vcd file")->required();
   decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
   decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");
@@ -83,6 +84,7 @@ int run_decode_command(const DecodeCommandOptions& options) {
   if (!decode_options(options, decode, error)) return bad_input(error);
   const sim::VcdReadResult read = sim::read_vcd_file(options.capture_path);
   if (!read.ok) return bad_input(read.error);
+  if (read.truncated) std::cerr << "warning: " << read.warning << "\n";
   std::vector<StepDirPair> pairs;
   if (!choose_pairs(options, read.capture, pairs, error)) return bad_input(options.capture_path + ": " + error);
 
@@ -97,8 +99,12 @@ int run_decode_command(const DecodeCommandOptions& options) {
       std::cout << sim::format_decode_report(result, pair.label) << "\n";
     }
   }
-  if (options.json) std::cout << nlohmann::json{{"capture", options.capture_path}, {"ports", ports}}.dump(2) << "\n";
-  return kExitOk;
+  if (options.json) {
+    nlohmann::json report{{"capture", options.capture_path}, {"ports", ports}};
+    if (read.truncated) report["truncated"] = read.warning;
+    std::cout << report.dump(2) << "\n";
+  }
+  return read.truncated ? kExitTruncatedCapture : kExitOk;
 }
 
 }  // namespace stepdance::cli

@@ -11,5 +11,7 @@ constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
 /// The scenario ran, but one of its [[expect]] checks failed.
 constexpr int kExitExpectationFailed = 3;
+/// `stepdance decode`: the capture ends mid-stream; what it holds was decoded and reported.
+constexpr int kExitTruncatedCapture = 4;
 
 }  // namespace stepdance::cli

@@ -4,11 +4,13 @@
 #include "decode_command.hpp"
 #include "exit_codes.hpp"
 #include "sim_command.hpp"
+#include "usage.hpp"
 
 int main(int argc, char** argv) {
   using namespace stepdance::cli;
   CLI::App app{"Stepdance host tools: run sketches on simulated boards, decode motion-stream captures."};
   app.require_subcommand(1);
+  add_version_flag(app);
   SimCommandOptions sim;
   CLI::App& sim_command = add_sim_command(app, sim);
   DecodeCommandOptions decode;
@@ -16,7 +18,7 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error) == 0 ? kExitOk : kExitBadInput;
+    return report_parse_error(app, error, argc, argv);
   }
   if (sim_command.parsed()) return run_sim_command(sim);
   if (decode_command.parsed()) return run_decode_command(decode);

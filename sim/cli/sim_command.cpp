@@ -11,6 +11,7 @@
 #include "live_run.hpp"
 #include "progress_bar.hpp"
 #include "scenario/load_scenario.hpp"
+#include "scenario/value_range.hpp"
 #include "wiring/simulation.hpp"
 
 namespace stepdance::cli {
@@ -19,17 +20,41 @@ namespace {
 /// A live run ends when interrupted; this bounds it (a year of simulated time).
 constexpr double kLiveDurationS = 365.0 * 86400.0;
 
+namespace ranges = sim::scenario::ranges;
+
+/// The numbers of the command line, checked by the scenario file's rules (value_range.hpp).
+struct CheckedNumbers {
+  std::optional<double> duration_s;
+  std::optional<double> csv_interval_ms;
+};
+
+/// Checks an optional number option; false (message on stderr) when it is given and bad.
+bool check_number(const char* option, const std::string& text, const sim::scenario::NumberRange& range,
+                  std::optional<double>& out) {
+  if (text.empty()) return true;
+  std::string error;
+  out = sim::scenario::parse_number_option(option, text, range, error);
+  if (!out) std::cerr << error << "\n";
+  return out.has_value();
+}
+
+bool check_numbers(const SimCommandOptions& options, CheckedNumbers& numbers) {
+  return check_number("--duration", options.duration_s, ranges::kDurationS, numbers.duration_s) &&
+         check_number("--csv-interval-ms", options.csv_interval_ms, ranges::kCsvIntervalMs, numbers.csv_interval_ms);
+}
+
 /// Reads --speed and --serial-link; false (with a message on stderr) when one is malformed.
 bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
   if (options.speed == "max") {
     live.speed = 0.0;
   } else {
-    char* end = nullptr;
-    live.speed = std::strtod(options.speed.c_str(), &end);
-    if (end == options.speed.c_str() || *end != '\0' || !(live.speed > 0.0) || live.speed > 1e6) {
-      std::cerr << "--speed: '" << options.speed << "' is not a number in (0, 1e6] or 'max'\n";
+    std::string error;
+    const std::optional<double> speed = sim::scenario::parse_number_option("--speed", options.speed, ranges::kSpeed, error);
+    if (!speed) {
+      std::cerr << error << " (or 'max')\n";
       return false;
     }
+    live.speed = *speed;
   }
   for (const std::string& link : options.serial_links) {
     const size_t equals = link.find('=');
@@ -42,18 +67,23 @@ bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
   return true;
 }
 
-sim::SimulationOptions simulation_options(const SimCommandOptions& options, ProgressBar& progress,
-                                          ConsoleEcho& echo) {
+std::string absolute_path(const std::string& path) {
+  return std::filesystem::absolute(path).lexically_normal().string();
+}
+
+sim::SimulationOptions simulation_options(const SimCommandOptions& options, const CheckedNumbers& numbers,
+                                          ProgressBar& progress, ConsoleEcho& echo) {
   sim::SimulationOptions sim_options;
   sim_options.sketch_cache_dir = options.cache_directory;
-  if (options.duration_s) sim_options.duration = sim::from_seconds(*options.duration_s);
-  if (!options.output_directory.empty()) {
-    sim_options.output_directory = std::filesystem::absolute(options.output_directory).lexically_normal().string();
-  }
+  if (numbers.duration_s) sim_options.duration = sim::from_seconds(*numbers.duration_s);
+  if (!options.output_directory.empty()) sim_options.output_directory = absolute_path(options.output_directory);
   sim_options.write_vcd = !options.no_vcd;
+  if (!options.vcd_file.empty()) sim_options.vcd_file = absolute_path(options.vcd_file);
+  if (!options.csv_file.empty()) sim_options.csv_file = absolute_path(options.csv_file);
+  sim_options.csv_interval_ms = numbers.csv_interval_ms;
   if (options.live) {
     // Runs until interrupted (or --duration); the terminals carry the console: nothing echoed.
-    if (!options.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
+    if (!numbers.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
     return sim_options;
   }
   sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
@@ -91,8 +121,13 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
       ->required();
   sim.add_option("--out", options.output_directory, "write the output files into this folder instead");
-  sim.add_option("--duration", options.duration_s, "simulated seconds to run instead of duration_s")
-      ->check(CLI::PositiveNumber);
+  sim.add_option("--duration", options.duration_s,
+                 "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS));
+  sim.add_option("--vcd", options.vcd_file,
+                 "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)");
+  sim.add_option("--csv", options.csv_file, "write the CSV of positions over time here");
+  sim.add_option("--csv-interval-ms", options.csv_interval_ms,
+                 "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs));
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
   sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
   sim.add_flag("--live", options.live,
@@ -106,13 +141,14 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
 }
 
 int run_sim_command(const SimCommandOptions& options) {
+  CheckedNumbers numbers;
+  LiveOptions live;
+  if (!check_numbers(options, numbers) || !parse_live_options(options, live)) return kExitBadInput;
   const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
   if (!loaded.ok()) {
     std::cerr << loaded.error_text();
     return kExitBadInput;
   }
-  LiveOptions live;
-  if (!parse_live_options(options, live)) return kExitBadInput;
   if (options.live && !loaded.scenario.hosts.empty()) {
     std::cerr << loaded.scenario.file << ":" << loaded.scenario.hosts.front().line
               << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";
@@ -121,7 +157,7 @@ int run_sim_command(const SimCommandOptions& options) {
   ProgressBar progress(!options.quiet && !options.live);
   ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;
-  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, progress, echo), error);
+  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, numbers, progress, echo), error);
   if (!simulation) {
     std::cerr << error.message << (error.message.empty() || error.message.back() != '\n' ? "\n" : "");
     return error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;

@@ -13,7 +13,10 @@ namespace stepdance::cli {
 struct SimCommandOptions {
   std::string scenario_path;
   std::string output_directory;     ///< empty: the scenario's [output] directory
-  std::optional<double> duration_s;  ///< replaces duration_s
+  std::string duration_s;           ///< replaces duration_s ("" = the file's); checked like it
+  std::string vcd_file;             ///< write a VCD here ("" = the scenario's)
+  std::string csv_file;             ///< write a CSV here ("" = the scenario's)
+  std::string csv_interval_ms;      ///< replaces csv_interval_ms ("" = the file's); checked like it
   bool no_vcd = false;
   bool quiet = false;
   std::string cache_directory;      ///< empty: the default sketch cache

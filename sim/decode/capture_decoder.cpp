@@ -66,7 +66,6 @@ DecodeResult decode_step_dir(const EdgeList& step, const EdgeList& dir, const De
   DirSampler dir_level(dir, initial.dir);
   FrameGrouper frames;
   const protocol::DirSampleEdge sample_edge = protocol::dir_sample_edge(options.mode);
-  const uint32_t mask = options.clock.counter_mask;
   const uint32_t ticks_per_us = options.clock.ticks_per_us;
 
   bool level = initial.step;
@@ -86,10 +85,9 @@ DecodeResult decode_step_dir(const EdgeList& step, const EdgeList& dir, const De
     if (!have_rise) continue;
     have_rise = false;
     const SimTime fall = edge.time;
-    protocol::CapturedPulse pulse;
-    pulse.rise_ticks = static_cast<uint32_t>(capture_ticks(rise, ticks_per_us)) & mask;
-    pulse.fall_ticks = static_cast<uint32_t>(capture_ticks(fall, ticks_per_us)) & mask;
-    pulse.dir_high = sample_edge == protocol::DirSampleEdge::kRising ? dir_at_rise : dir_level.at(fall);
+    const bool dir_high = sample_edge == protocol::DirSampleEdge::kRising ? dir_at_rise : dir_level.at(fall);
+    const protocol::CapturedPulse pulse = protocol::captured_from_ticks(
+        capture_ticks(rise, ticks_per_us), capture_ticks(fall, ticks_per_us), dir_high, options.clock);
     const protocol::DecodedPulse decoded =
         protocol::decode_pulse(pulse, options.clock, options.mode, options.step_dir_signal);
     if (decoded.verdict == protocol::PulseVerdict::kAccepted) {

@@ -67,8 +67,9 @@ struct DecodeResult {
 };
 
 /// Decodes every complete STEP pulse exactly as an input port does: rise and fall times are
-/// converted to capture ticks (ns × ticks_per_us / 1000, rounded half up, masked by the counter
-/// mask) and passed with the DIR level to protocol::decode_pulse. DIR is the level of its last
+/// converted to capture ticks (ns × ticks_per_us / 1000, rounded half up), made a wrapped
+/// capture with its whole counter periods (protocol::captured_from_ticks, as the Teensy backend
+/// and the simulator report long pulses) and passed with the DIR level to protocol::decode_pulse. DIR is the level of its last
 /// edge at or before the sampling STEP edge (an edge at the same ns counts as already happened).
 /// Edges that do not change a line's level are ignored. Preconditions: edges in time order,
 /// times ≥ 0. Pure.

@@ -1,6 +1,8 @@
 // Decode report formatting: aligned text columns and sorted-key JSON.
 #include "decode/decode_report.hpp"
 
+#include "common/plural.hpp"
+
 #include "output/number_format.hpp"
 
 namespace stepdance::sim {
@@ -55,8 +57,8 @@ std::string format_decode_report(const DecodeResult& result, const std::string& 
     out += "  rejected and " + std::to_string(rejected - result.first_rejected.size()) + " more\n";
   }
   const FrameStats& frames = result.frames;
-  out += "  frames   " + std::to_string(frames.count) + ", at most " + std::to_string(frames.max_pulses) +
-         " pulses per frame";
+  out += "  frames   " + std::to_string(frames.count) + ", at most " +
+         counted(frames.max_pulses, "pulse", "pulses") + " per frame";
   if (frames.count >= 2) {
     out += ", start spacing " + us_text(frames.min_start_spacing) + " to " + us_text(frames.max_start_spacing) + " us";
   }

@@ -2,6 +2,7 @@
 #include "decode/step_dir_pairs.hpp"
 
 #include <cctype>
+#include <unordered_map>
 
 namespace stepdance::sim {
 namespace {
@@ -26,20 +27,27 @@ std::string make_label(const VcdWire& step, std::string prefix) {
 
 }  // namespace
 
+// "scope\0prefix": the key a *DIR wire is found by (its name without the DIR, any case).
+std::string pair_key(const VcdWire& wire, size_t suffix_length) {
+  return wire.scope + '\0' + wire.name.substr(0, wire.name.size() - suffix_length);
+}
+
 std::vector<StepDirPair> find_step_dir_pairs(const VcdCapture& capture) {
-  std::vector<StepDirPair> pairs;
   const std::vector<VcdWire>& wires = capture.wires;
+  // One pass indexes the DIR wires (the first of a name wins), one pass pairs: linear in wires.
+  std::unordered_map<std::string, size_t> dirs;
+  for (size_t dir = 0; dir < wires.size(); ++dir) {
+    const VcdWire& wire = wires[dir];
+    if (wire.width != 1 || wire.name.size() < 3 || !iequals(wire.name.substr(wire.name.size() - 3), "DIR")) continue;
+    dirs.emplace(pair_key(wire, 3), dir);
+  }
+  std::vector<StepDirPair> pairs;
   for (size_t step = 0; step < wires.size(); ++step) {
     if (wires[step].width != 1 || !ends_with_step(wires[step].name)) continue;
+    const auto dir = dirs.find(pair_key(wires[step], 4));
+    if (dir == dirs.end()) continue;
     const std::string prefix = wires[step].name.substr(0, wires[step].name.size() - 4);
-    for (size_t dir = 0; dir < wires.size(); ++dir) {
-      const VcdWire& candidate = wires[dir];
-      if (candidate.width != 1 || candidate.scope != wires[step].scope) continue;
-      if (candidate.name.size() != prefix.size() + 3 || candidate.name.compare(0, prefix.size(), prefix) != 0) continue;
-      if (!iequals(candidate.name.substr(prefix.size()), "DIR")) continue;
-      pairs.push_back(StepDirPair{make_label(wires[step], prefix), step, dir});
-      break;
-    }
+    pairs.push_back(StepDirPair{make_label(wires[step], prefix), step, dir->second});
   }
   return pairs;
 }
@@ -68,8 +76,12 @@ WireLookup find_wire(const VcdCapture& capture, const std::string& name) {
     lookup.error = "'" + name + "' is ambiguous: " + matches;
     return lookup;
   }
+  constexpr size_t kListed = 20;  // a capture may have thousands of wires
   std::string all;
-  for (const VcdWire& wire : capture.wires) all += (all.empty() ? "" : ", ") + wire.full_name();
+  for (size_t i = 0; i < capture.wires.size() && i < kListed; ++i) {
+    all += (all.empty() ? "" : ", ") + capture.wires[i].full_name();
+  }
+  if (capture.wires.size() > kListed) all += " and " + std::to_string(capture.wires.size() - kListed) + " more";
   lookup.error = "no wire named '" + name + "' (wires: " + (all.empty() ? "none" : all) + ")";
   return lookup;
 }

@@ -19,9 +19,12 @@ constexpr int kNoLevel = -1;
 struct Token {
   std::string text;
   size_t line = 0;
+  bool cut = false;  ///< the last token of a file that ends without a newline: maybe a fragment
 };
 
 /// Splits a stream into whitespace-separated tokens, remembering each token's line (1-based).
+/// A last line without its newline is where a cut file ends: its last token may be a fragment
+/// ("#12" of "#1234"), so it is marked `cut` and the file counts as truncated.
 class Tokenizer {
  public:
   explicit Tokenizer(std::istream& in) : in_(in) {}
@@ -34,13 +37,23 @@ class Tokenizer {
         while (pos_ < line_.size() && !is_space(line_[pos_])) ++pos_;
         token.text.assign(line_, start, pos_ - start);
         token.line = line_number_;
+        token.cut = cut_ && pos_ == line_.size();
         return true;
       }
       if (!std::getline(in_, line_)) return false;
       ++line_number_;
       pos_ = 0;
+      if (in_.eof() && !line_.empty()) {
+        cut_ = true;
+        cut_line_ = line_number_;
+      }
     }
   }
+
+  /// Whether the file ended in the middle of a line.
+  bool cut() const { return cut_; }
+  /// The line the file was cut in (valid when cut()).
+  size_t cut_line() const { return cut_line_; }
 
   /// Drops the rest of the current line.
   void skip_line() { pos_ = line_.size(); }
@@ -55,6 +68,8 @@ class Tokenizer {
   std::string line_;
   size_t pos_ = 0;
   size_t line_number_ = 0;
+  bool cut_ = false;
+  size_t cut_line_ = 0;
 };
 
 /// A token quoted for an error message: non-printable bytes escaped, long tokens shortened.
@@ -115,6 +130,13 @@ class Parser {
     if (read_declarations() && read_values()) {
       result.ok = true;
       result.capture = std::move(capture_);
+      if (tokens_.cut() || dump_block_open_) {
+        result.truncated = true;
+        result.warning = name_ + ":" + std::to_string(tokens_.line()) + ": the capture is truncated (" +
+                         (tokens_.cut() ? "it ends in the middle of line " + std::to_string(tokens_.cut_line())
+                                        : std::string("a dump block has no $end")) +
+                         "); decoded up to there";
+      }
     } else {
       result.error = std::move(error_);
     }
@@ -281,6 +303,7 @@ class Parser {
     Token token;
     bool in_dump_block = false;
     while (tokens_.next(token)) {
+      if (token.cut) break;  // a possibly cut value change is not applied
       const std::string& text = token.text;
       const char first = text[0];
       if (first == '#') {
@@ -302,7 +325,7 @@ class Parser {
         return fail(token.line, "unexpected " + quoted(text) + " in value changes");
       }
     }
-    if (in_dump_block) return fail(tokens_.line(), "unexpected end of file: missing $end of a dump block");
+    dump_block_open_ = in_dump_block;  // a file cut inside $dumpvars: truncated, not wrong
     return true;
   }
 
@@ -317,6 +340,7 @@ class Parser {
     }
     Token id;
     if (!tokens_.next(id)) return fail(tokens_.line(), "unexpected end of file: value " + quoted(text) + " has no identifier");
+    if (id.cut) return true;  // the identifier may be cut: the value is not applied
     if (real) return apply(id.line, id.text, kNoLevel);
     return apply(id.line, id.text, text.back() == '1' ? 1 : 0);
   }
@@ -329,6 +353,7 @@ class Parser {
   std::unordered_map<std::string, std::vector<size_t>> ids_;
   std::vector<WireState> levels_;
   bool have_time_ = false;
+  bool dump_block_open_ = false;
   SimTime current_ns_ = 0;
   uint64_t last_units_ = 0;
 };

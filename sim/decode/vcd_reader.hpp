@@ -39,6 +39,10 @@ struct VcdReadResult {
   bool ok = false;
   /// "file:line: message" when !ok (line 0 when the file cannot be opened).
   std::string error;
+  /// The file ends mid-stream (its last line has no newline, or a dump block no $end): the
+  /// capture holds everything before the cut and `warning` says where it is.
+  bool truncated = false;
+  std::string warning;
   VcdCapture capture;
 };
 
@@ -50,7 +54,9 @@ struct VcdReadResult {
 /// declaration commands, value changes before the first timestamp (taken as time 0), and the
 /// "META samplerate: N" lines sigrok-cli writes before the header when it converts a file.
 /// Rejected with an error: time going backwards, undeclared identifiers, malformed commands,
-/// a missing `$enddefinitions` or `$end`, times that overflow 64-bit ns.
+/// a missing `$enddefinitions` or `$end` of a declaration, times that overflow 64-bit ns.
+/// Read but marked truncated: a file whose last line has no newline (its last, possibly cut,
+/// token is dropped) or whose value changes end inside a dump block.
 VcdReadResult read_vcd_file(const std::string& path);
 
 /// Reads VCD text from `in`; `name` is the file name used in error messages.

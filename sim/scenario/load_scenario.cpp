@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "scenario/parse_context.hpp"
 
@@ -12,25 +15,66 @@ namespace stepdance::sim::scenario {
 
 namespace {
 
-/// Longest run a scenario may ask for: SimTime holds ~292 years, a day is plenty.
-constexpr double kMaxDurationS = 86400;
-
 void read_top_level(TableReader& top, ParseContext& context) {
-  if (const auto duration = top.number("duration_s", Need::kRequired)) {
-    if (*duration > 0 && *duration <= kMaxDurationS) {
-      context.scenario.duration = from_seconds(*duration);
-      context.duration_valid = true;
-    } else {
-      top.error("duration_s", "'duration_s' must be > 0 and at most 86400, got " + format_number(*duration));
+  if (const auto duration = top.number("duration_s", ranges::kDurationS, Need::kRequired)) {
+    context.scenario.duration = from_seconds(*duration);
+    context.duration_valid = true;
+  }
+  if (const auto seed = top.integer("seed", ranges::kSeed)) context.scenario.seed = static_cast<uint64_t>(*seed);
+}
+
+/// For a folder without scenario.toml: the sibling folders' scenarios whose sketch lies in it
+/// (e.g. examples/ChainedKnobsBasic runs in examples/ChainedPlotterDriver/scenario.toml).
+std::vector<std::string> scenarios_using(const std::filesystem::path& folder) {
+  std::vector<std::string> users;
+  std::error_code error;
+  std::filesystem::path normal = folder.lexically_normal();
+  if (!normal.has_filename()) normal = normal.parent_path();  // "examples/Knobs/" → "examples/Knobs"
+  const std::string name = std::filesystem::absolute(normal, error).lexically_normal().filename().string();
+  const std::filesystem::path parent = normal.parent_path();
+  if (name.empty() || name == "." || name == "..") return users;
+  for (const auto& sibling : std::filesystem::directory_iterator(parent.empty() ? "." : parent, error)) {
+    const std::filesystem::path candidate = sibling.path() / "scenario.toml";
+    if (!std::filesystem::is_regular_file(candidate, error)) continue;
+    std::ifstream in(candidate);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.find("sketch") != std::string::npos && line.find("../" + name + "/") != std::string::npos) {
+        users.push_back(candidate.string());
+        break;
+      }
     }
   }
-  if (const auto seed = top.integer("seed")) {
-    if (*seed >= 0) {
-      context.scenario.seed = static_cast<uint64_t>(*seed);
-    } else {
-      top.error("seed", "'seed' must be >= 0, got " + std::to_string(*seed));
+  std::sort(users.begin(), users.end());
+  return users;
+}
+
+std::string missing_scenario_message(const std::string& path, bool folder) {
+  if (!folder) return "cannot read the scenario file (missing or not a file)";
+  std::string message = "this folder has no scenario.toml";
+  const std::vector<std::string> users = scenarios_using(path);
+  for (size_t i = 0; i < users.size(); ++i) {
+    message += (i == 0 ? "; its sketch runs in " : ", ") + users[i];
+  }
+  if (!users.empty()) {
+    message += " (stepdance sim " + std::filesystem::path(users.front()).parent_path().string() + ")";
+  }
+  return message;
+}
+
+/// The 1-based line and "U+0001"-style code of the first control character other than tab, LF
+/// and CR; line 0 when there is none.
+std::pair<int, std::string> first_control_character(std::string_view text) {
+  int line = 1;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte == '\n') ++line;
+    if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F) {
+      static const char kHex[] = "0123456789ABCDEF";
+      return {line, std::string("U+00") + kHex[byte >> 4] + kHex[byte & 15]};
     }
   }
+  return {0, ""};
 }
 
 }  // namespace
@@ -44,14 +88,13 @@ std::string LoadResult::error_text() const {
 LoadResult load_scenario(const std::string& path) {
   std::string file = path;
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    file = (std::filesystem::path(path) / "scenario.toml").string();
-  }
+  const bool folder = std::filesystem::is_directory(path, error);
+  if (folder) file = (std::filesystem::path(path) / "scenario.toml").string();
   std::ifstream in;
   if (std::filesystem::is_regular_file(file, error)) in.open(file, std::ios::binary);
   if (!in.is_open()) {
     LoadResult result;
-    result.errors.push_back(Diagnostic{file, 0, "cannot read the scenario file (missing or not a file)"});
+    result.errors.push_back(Diagnostic{folder ? path : file, 0, missing_scenario_message(path, folder)});
     return result;
   }
   std::ostringstream text;
@@ -62,6 +105,13 @@ LoadResult load_scenario(const std::string& path) {
 LoadResult parse_scenario(std::string_view text, const std::string& file) {
   LoadResult result;
   Reporter reporter(file);
+  // TOML allows no control character but tab, LF and CR anywhere; toml++ 3.3 asserts on one in a
+  // table header (found by fuzz/scenario_fuzz.cpp), so they are refused before it parses.
+  if (const auto [line, code] = first_control_character(text); line > 0) {
+    reporter.error(line, "control character " + code + " is not allowed in a scenario file");
+    result.errors = reporter.sorted();
+    return result;
+  }
   toml::table root;
   try {
     root = toml::parse(text, file);

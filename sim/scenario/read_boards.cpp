@@ -40,13 +40,10 @@ std::optional<SocketConfig> read_socket(char port, const toml::node& value, Repo
         ok = false;
       }
     }
-    if (const auto full_steps = reader.integer("full_steps_per_rev")) {
-      if (*full_steps > 0 && *full_steps <= 100000) {
-        socket.full_steps_per_rev = static_cast<int>(*full_steps);
-      } else {
-        reader.error("full_steps_per_rev", "'full_steps_per_rev' must be in 1..100000, got " + std::to_string(*full_steps));
-        ok = false;
-      }
+    if (reader.has("full_steps_per_rev")) {
+      const auto full_steps = reader.integer("full_steps_per_rev", IntegerRange{1, 100000, "full steps"});
+      if (full_steps) socket.full_steps_per_rev = static_cast<int>(*full_steps);
+      ok = ok && full_steps.has_value();
     }
     if (reader.has("build")) {
       reader.accept("build");
@@ -133,19 +130,9 @@ void read_board(const toml::table& table, ParseContext& context, std::map<std::s
       reader.error("module", "'module' must be \"driver\" or \"basic\", got \"" + *module + "\"");
     }
   }
-  if (const auto period = reader.integer("loop_period_us")) {
-    if (*period > 0) {
-      board.loop_period_us = *period;
-    } else {
-      reader.error("loop_period_us", "'loop_period_us' must be > 0, got " + std::to_string(*period));
-    }
-  }
-  if (const auto phase = reader.integer("frame_phase_us")) {
-    if (*phase >= 0 && *phase < kFramePeriodUs) {
-      board.frame_phase_us = static_cast<int>(*phase);
-    } else {
-      reader.error("frame_phase_us", "'frame_phase_us' must be in 0..39, got " + std::to_string(*phase));
-    }
+  if (const auto period = reader.integer("loop_period_us", ranges::kLoopPeriodUs)) board.loop_period_us = *period;
+  if (const auto phase = reader.integer("frame_phase_us", IntegerRange{0, kFramePeriodUs - 1, "µs"})) {
+    board.frame_phase_us = static_cast<int>(*phase);
   }
   read_sockets(reader, board, context);
   read_sd_card(reader, board, context);

@@ -35,28 +35,10 @@ void read_cable(const toml::table& table, ParseContext& context, PortUsers& outp
     cable.to = *to;
     claim(reader, "to", *to, "input", inputs);
   }
-  if (const auto delay = reader.integer("delay_ns")) {
-    if (*delay >= 0) {
-      cable.delay_ns = *delay;
-    } else {
-      reader.error("delay_ns", "'delay_ns' must be >= 0, got " + std::to_string(*delay));
-    }
-  }
-  if (const auto stretch = reader.integer("stretch_ns")) cable.stretch_ns = *stretch;
-  if (const auto every = reader.integer("glitch_every_us")) {
-    if (*every >= 0) {
-      cable.glitch_every_us = *every;
-    } else {
-      reader.error("glitch_every_us", "'glitch_every_us' must be >= 0, got " + std::to_string(*every));
-    }
-  }
-  if (const auto width = reader.integer("glitch_width_ns")) {
-    if (*width > 0) {
-      cable.glitch_width_ns = *width;
-    } else {
-      reader.error("glitch_width_ns", "'glitch_width_ns' must be > 0, got " + std::to_string(*width));
-    }
-  }
+  if (const auto delay = reader.integer("delay_ns", ranges::kCableDelayNs)) cable.delay_ns = *delay;
+  if (const auto stretch = reader.integer("stretch_ns", ranges::kCableStretchNs)) cable.stretch_ns = *stretch;
+  if (const auto every = reader.integer("glitch_every_us", ranges::kGlitchEveryUs)) cable.glitch_every_us = *every;
+  if (const auto width = reader.integer("glitch_width_ns", ranges::kGlitchWidthNs)) cable.glitch_width_ns = *width;
   reader.finish();
   if (from && to) context.scenario.cables.push_back(std::move(cable));
 }

@@ -30,17 +30,6 @@ constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"bounce_ms", DeviceType::kLimitSwitch},
 };
 
-/// bounce_ms of a button or limit switch: 0..1000 ms.
-void read_bounce_ms(TableReader& reader, DeviceConfig& device) {
-  if (const auto bounce = reader.number("bounce_ms")) {
-    if (*bounce >= 0 && *bounce <= 1000) {
-      device.bounce_ms = *bounce;
-    } else {
-      reader.error("bounce_ms", "'bounce_ms' must be in 0..1000, got " + format_number(*bounce));
-    }
-  }
-}
-
 std::optional<DeviceType> parse_type(std::string_view name) {
   for (const DeviceKind& kind : device_kinds()) {
     if (kind.name == name) return kind.type;
@@ -66,36 +55,33 @@ bool key_belongs(std::string_view key, DeviceType type) {
   return false;
 }
 
-/// A number in (low, high] (or [low, high] when `low_included`), else an error naming the range.
-void read_bounded(TableReader& reader, const char* key, double low, bool low_included, double high, double& out) {
-  const auto value = reader.number(key);
-  if (!value) return;
-  const bool above = low_included ? *value >= low : *value > low;
-  if (above && *value <= high) {
-    out = *value;
-    return;
-  }
-  reader.error(key, "'" + std::string(key) + "' must be in " + (low_included ? "[" : "(") + format_number(low) + ", " +
-                        format_number(high) + "], got " + format_number(*value));
+/// A number in its range into `out`; out of range is reported by the reader.
+void read_bounded(TableReader& reader, const char* key, const NumberRange& range, double& out) {
+  if (const auto value = reader.number(key, range)) out = *value;
+}
+
+/// bounce_ms of a button or limit switch: 0..1000 ms.
+void read_bounce_ms(TableReader& reader, DeviceConfig& device) {
+  read_bounded(reader, "bounce_ms", NumberRange{0, 1000, false, "ms"}, device.bounce_ms);
 }
 
 void read_pulses_per_revolution(TableReader& reader, DeviceConfig& device) {
-  const auto pulses = reader.integer("pulses_per_revolution");
-  if (!pulses) return;
-  if (*pulses > 0 && *pulses <= 1000000) {
+  if (const auto pulses = reader.integer("pulses_per_revolution", IntegerRange{1, 1000000, "pulses"})) {
     device.pulses_per_revolution = static_cast<int32_t>(*pulses);
-  } else {
-    reader.error("pulses_per_revolution", "'pulses_per_revolution' must be in 1..1000000, got " + std::to_string(*pulses));
   }
+}
+
+/// A moment of the run in seconds: [0, duration_s].
+NumberRange run_time_range(const ParseContext& context) {
+  return NumberRange{0, context.duration_valid ? to_seconds(context.scenario.duration) : ranges::kTimeS.high, false, "s"};
 }
 
 void read_pendulum(TableReader& reader, DeviceConfig& device, const ParseContext& context) {
   read_pulses_per_revolution(reader, device);
-  read_bounded(reader, "amplitude_deg", 0, false, 170, device.amplitude_deg);
-  read_bounded(reader, "period_s", 0.01, true, 3600, device.period_s);
-  read_bounded(reader, "decay_s", 0.01, true, 1e6, device.decay_s);
-  const double last_s = context.duration_valid ? to_seconds(context.scenario.duration) : 86400;
-  read_bounded(reader, "release_s", 0, true, last_s, device.release_s);
+  read_bounded(reader, "amplitude_deg", NumberRange{0, 170, true, "°"}, device.amplitude_deg);
+  read_bounded(reader, "period_s", NumberRange{0.01, 3600, false, "s"}, device.period_s);
+  read_bounded(reader, "decay_s", NumberRange{0.01, 1e6, false, "s"}, device.decay_s);
+  read_bounded(reader, "release_s", run_time_range(context), device.release_s);
 }
 
 /// Whether the scenario's machine has the axis, and its name for messages.
@@ -146,9 +132,8 @@ void read_five_bar_arm(TableReader& reader, DeviceConfig& device, const ParseCon
   device.pulses_per_revolution = 10000;  // 40,000 counts a turn, as on the original's pantograph
   read_pulses_per_revolution(reader, device);
   read_path(reader, device);
-  read_bounded(reader, "speed_mm_per_s", 0, false, 10000, device.speed_mm_per_s);
-  const double last_s = context.duration_valid ? to_seconds(context.scenario.duration) : 86400;
-  read_bounded(reader, "start_s", 0, true, last_s, device.start_s);
+  read_bounded(reader, "speed_mm_per_s", NumberRange{0, 10000, true, "mm/s"}, device.speed_mm_per_s);
+  read_bounded(reader, "start_s", run_time_range(context), device.start_s);
 }
 
 /// address: a 7-bit I2C address (0x08..0x77, the range not reserved by the I2C standard).
@@ -203,16 +188,10 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
       break;
     case DeviceType::kEncoder:
       read_pulses_per_revolution(reader, device);
-      if (const auto start = reader.integer("start_count")) device.start_count = *start;
+      if (const auto start = reader.integer("start_count", ranges::kEncoderCounts)) device.start_count = *start;
       break;
     case DeviceType::kPotentiometer:
-      if (const auto position = reader.number("position")) {
-        if (*position >= 0 && *position <= 1) {
-          device.position = *position;
-        } else {
-          reader.error("position", "'position' must be in 0..1, got " + format_number(*position));
-        }
-      }
+      read_bounded(reader, "position", NumberRange{0, 1, false, ""}, device.position);
       break;
     case DeviceType::kButton:
       read_bounce_ms(reader, device);
@@ -235,7 +214,7 @@ void read_type_keys(TableReader& reader, DeviceConfig& device, const ParseContex
           reader.error("axis", "'axis' must be \"x\", \"y\" or \"z\", got \"" + *axis + "\"");
         }
       }
-      if (const auto at = reader.number("at_mm", Need::kRequired)) device.at_mm = *at;
+      if (const auto at = reader.number("at_mm", ranges::kLengthMm, Need::kRequired)) device.at_mm = *at;
       if (const auto side = reader.string("side")) {
         if (*side == "below" || *side == "above") {
           device.side = *side == "below" ? LimitSide::kBelow : LimitSide::kAbove;

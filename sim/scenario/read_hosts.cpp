@@ -23,15 +23,12 @@ constexpr std::pair<const char*, const char*> kStepKeys[] = {
     {"poll", "stream or wait"},   {"poll_every_s", "stream or wait"},
 };
 
-std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool allow_zero) {
-  const auto seconds = reader.number(key);
+/// Polling: at most once per simulated millisecond (a USB frame), so a tiny interval cannot stall the run.
+constexpr double kMinPollSeconds = 0.001;
+
+std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool allow_zero, double low = 0) {
+  const auto seconds = reader.number(key, NumberRange{low, kMaxStepSeconds, !allow_zero, "s"});
   if (!seconds) return std::nullopt;
-  const bool in_range = (allow_zero ? *seconds >= 0 : *seconds > 0) && *seconds <= kMaxStepSeconds;
-  if (!in_range) {
-    reader.error(key, "'" + std::string(key) + "' must be in " + (allow_zero ? "[0, " : "(0, ") +
-                          format_number(kMaxStepSeconds) + "] seconds, got " + format_number(*seconds));
-    return std::nullopt;
-  }
   return from_seconds(*seconds);
 }
 
@@ -77,14 +74,10 @@ bool read_stream_options(TableReader& reader, HostStep& step) {
       ok = false;
     }
   }
-  if (const auto bytes = reader.integer("buffer_bytes")) {
-    if (*bytes >= 1 && *bytes <= kMaxBufferBytes) {
-      step.buffer_bytes = *bytes;
-    } else {
-      reader.error("buffer_bytes", "'buffer_bytes' must be in [1, " + std::to_string(kMaxBufferBytes) + "], got " +
-                                       std::to_string(*bytes));
-      ok = false;
-    }
+  if (reader.has("buffer_bytes")) {
+    const auto bytes = reader.integer("buffer_bytes", IntegerRange{1, kMaxBufferBytes, "bytes"});
+    if (bytes) step.buffer_bytes = *bytes;
+    ok = ok && bytes.has_value();
   }
   step.pattern = kDefaultAck;
   if (reader.has("ack")) ok = read_pattern(reader, "ack", step.pattern) && ok;
@@ -152,7 +145,7 @@ std::optional<HostStep> read_step(const toml::table& table, const ParseContext& 
   if (streams || chosen == "wait") {
     if (const auto poll = reader.string("poll")) step.poll = *poll;
     if (reader.has("poll_every_s")) {
-      const auto every = read_seconds(reader, "poll_every_s", false);
+      const auto every = read_seconds(reader, "poll_every_s", true, kMinPollSeconds);
       ok = every.has_value() && ok;
       if (every) step.poll_interval = *every;
     }

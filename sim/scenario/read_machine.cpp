@@ -42,15 +42,9 @@ class SocketChecker {
   std::map<char, std::string> users_;
 };
 
-/// Reads a number that must be > 0 into `target`.
-void positive(TableReader& reader, std::string_view key, double& target) {
-  if (const auto value = reader.number(key)) {
-    if (*value > 0) {
-      target = *value;
-    } else {
-      reader.error(key, "'" + std::string(key) + "' must be > 0, got " + format_number(*value));
-    }
-  }
+/// Reads a number in (0, 10^6] `unit` into `target`.
+void positive(TableReader& reader, std::string_view key, const char* unit, double& target) {
+  if (const auto value = reader.number(key, NumberRange{0, 1000000, true, unit})) target = *value;
 }
 
 CorexyConfig read_corexy(TableReader& reader, SocketChecker& sockets) {
@@ -58,8 +52,8 @@ CorexyConfig read_corexy(TableReader& reader, SocketChecker& sockets) {
   config.motor_a = sockets.take("motor_a", SocketDevice::kStepper, 'A').value_or('A');
   config.motor_b = sockets.take("motor_b", SocketDevice::kStepper, 'B').value_or('B');
   config.pen_servo = sockets.take("pen_servo", SocketDevice::kServo, 'C').value_or('C');
-  positive(reader, "steps_per_mm", config.steps_per_mm);
-  positive(reader, "pen_down_below_us", config.pen_down_below_us);
+  positive(reader, "steps_per_mm", "steps/mm", config.steps_per_mm);
+  positive(reader, "pen_down_below_us", "µs", config.pen_down_below_us);
   if (const toml::array* travel = reader.array("travel_mm")) {
     double values[2] = {0, 0};
     const bool ok = read_number_pair(*travel, values) && values[0] > 0 && values[1] > 0;
@@ -90,13 +84,13 @@ CartesianConfig read_cartesian(TableReader& reader, SocketChecker& sockets) {
   config.e = sockets.take("e", SocketDevice::kStepper, std::nullopt);
   if (const toml::table* per_axis = reader.table("steps_per_mm")) {
     TableReader axes(*per_axis, "steps_per_mm", reader.reporter());
-    positive(axes, "x", config.x_steps_per_mm);
-    positive(axes, "y", config.y_steps_per_mm);
-    positive(axes, "z", config.z_steps_per_mm);
-    positive(axes, "e", config.e_steps_per_mm);
+    positive(axes, "x", "steps/mm", config.x_steps_per_mm);
+    positive(axes, "y", "steps/mm", config.y_steps_per_mm);
+    positive(axes, "z", "steps/mm", config.z_steps_per_mm);
+    positive(axes, "e", "steps/mm", config.e_steps_per_mm);
     axes.finish();
   }
-  if (const auto threshold = reader.number("pen_down_at_or_below_mm")) config.pen_down_at_or_below_mm = *threshold;
+  if (const auto threshold = reader.number("pen_down_at_or_below_mm", ranges::kLengthMm)) config.pen_down_at_or_below_mm = *threshold;
   if (const auto draw = reader.string("draw")) {
     if (*draw == "z" || *draw == "extruding") {
       config.draws_while_extruding = *draw == "extruding";
@@ -113,9 +107,9 @@ PolarConfig read_polar(TableReader& reader, SocketChecker& sockets) {
   config.angle = sockets.take("angle", SocketDevice::kStepper, 'A').value_or('A');
   config.radius = sockets.take("radius", SocketDevice::kStepper, 'B').value_or('B');
   config.pen_servo = sockets.take("pen_servo", SocketDevice::kServo, std::nullopt);
-  positive(reader, "steps_per_rev", config.steps_per_rev);
-  positive(reader, "steps_per_mm", config.steps_per_mm);
-  positive(reader, "pen_down_below_us", config.pen_down_below_us);
+  positive(reader, "steps_per_rev", "steps", config.steps_per_rev);
+  positive(reader, "steps_per_mm", "steps/mm", config.steps_per_mm);
+  positive(reader, "pen_down_below_us", "µs", config.pen_down_below_us);
   return config;
 }
 

@@ -40,20 +40,10 @@ void read_output(TableReader& top, ParseContext& context) {
                                 {"summary", &summary}}) {
       if (const auto value = reader.string(key)) *target = *value;
     }
-    if (const auto px = reader.number("png_px_per_mm")) {
-      if (*px > 0 && *px <= 100) {
-        output.png_px_per_mm = *px;
-      } else {
-        reader.error("png_px_per_mm", "'png_px_per_mm' must be in (0, 100], got " + format_number(*px));
-      }
-    }
+    if (const auto px = reader.number("png_px_per_mm", NumberRange{0, 100, true, "px/mm"})) output.png_px_per_mm = *px;
     if (const auto travel = reader.boolean("pen_up_travel")) output.pen_up_travel = *travel;
-    if (const auto interval = reader.number("csv_interval_ms")) {
-      if (*interval > 0) {
-        output.csv_interval_ms = *interval;
-      } else {
-        reader.error("csv_interval_ms", "'csv_interval_ms' must be > 0, got " + format_number(*interval));
-      }
+    if (const auto interval = reader.number("csv_interval_ms", ranges::kCsvIntervalMs)) {
+      output.csv_interval_ms = *interval;
     }
     if (const toml::array* ports = reader.array("vcd_ports")) {
       for (const toml::node& item : *ports) {

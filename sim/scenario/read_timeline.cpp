@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <utility>
 
@@ -92,42 +93,30 @@ bool read_details(TableReader& reader, Action& action, ParseContext& context) {
   }
   switch (action.type) {
     case ActionType::kTurn: {
-      const auto counts = reader.integer("counts", Need::kRequired);
+      const auto counts = reader.integer("counts", ranges::kEncoderCounts, Need::kRequired);
       ok = ok && counts.has_value();
       if (counts) action.counts = *counts;
-      if (const auto over = reader.number("over_s")) {
-        if (*over >= 0) {
-          action.over = to_time(*over);
-        } else {
-          reader.error("over_s", "'over_s' must be >= 0, got " + format_number(*over));
-          ok = false;
-        }
+      if (reader.has("over_s")) {
+        const auto over = reader.number("over_s", ranges::kTimeS);
+        if (over) action.over = to_time(*over);
+        ok = ok && over.has_value();
       }
       check_end(reader, context, reader.has("over_s") ? "over_s" : "time_s", action.time + action.over, "the turn ends");
       break;
     }
     case ActionType::kClick:
-      if (const auto hold = reader.number("hold_ms")) {
-        if (*hold >= 0) {
-          action.hold = to_time(*hold / 1000);
-        } else {
-          reader.error("hold_ms", "'hold_ms' must be >= 0, got " + format_number(*hold));
-          ok = false;
-        }
+      if (reader.has("hold_ms")) {
+        const auto hold = reader.number("hold_ms", ranges::kTimeMs);
+        if (hold) action.hold = to_time(*hold / 1000);
+        ok = ok && hold.has_value();
       }
       check_end(reader, context, reader.has("hold_ms") ? "hold_ms" : "time_s", action.time + action.hold,
                 "the click releases");
       break;
     case ActionType::kSet: {
-      const auto position = reader.number("position", Need::kRequired);
-      if (position && (*position < 0 || *position > 1)) {
-        reader.error("position", "'position' must be in 0..1, got " + format_number(*position));
-        ok = false;
-      } else if (position) {
-        action.position = *position;
-      } else {
-        ok = false;
-      }
+      const auto position = reader.number("position", NumberRange{0, 1, false, ""}, Need::kRequired);
+      if (position) action.position = *position;
+      ok = ok && position.has_value();
       break;
     }
     case ActionType::kSerial: {
@@ -171,11 +160,8 @@ void read_action(const toml::table& table, ParseContext& context) {
   Action action;
   action.line = reader.line();
   bool ok = true;
-  if (const auto time = reader.number("time_s", Need::kRequired)) {
-    if (*time < 0) {
-      reader.error("time_s", "'time_s' must be >= 0, got " + format_number(*time));
-      ok = false;
-    } else if (context.duration_valid && to_time(*time) > context.scenario.duration) {
+  if (const auto time = reader.number("time_s", ranges::kTimeS, Need::kRequired)) {
+    if (context.duration_valid && to_time(*time) > context.scenario.duration) {
       reader.error("time_s", "'time_s' = " + format_number(*time) + " is after the end of the run (duration_s = " +
                                  format_number(to_seconds(context.scenario.duration)) + ")");
       ok = false;
@@ -207,10 +193,31 @@ void read_action(const toml::table& table, ParseContext& context) {
   if (ok) context.scenario.timeline.push_back(std::move(action));
 }
 
+/// An encoder's count is its start plus every turn: the sum must stay well inside int64.
+void check_encoder_totals(ParseContext& context) {
+  constexpr int64_t kLimit = int64_t{1} << 62;
+  std::map<std::string, int64_t> travel;  // |start| + Σ|counts| per encoder, at most kLimit
+  for (const Action& action : context.scenario.timeline) {
+    if (action.type != ActionType::kTurn) continue;
+    const DeviceConfig* device = context.scenario.device(action.target);
+    auto [entry, fresh] = travel.emplace(action.target, 0);
+    if (fresh && device != nullptr) entry->second = device->start_count < 0 ? -device->start_count : device->start_count;
+    const int64_t counts = action.counts < 0 ? -action.counts : action.counts;  // within ±10^12
+    if (entry->second <= kLimit - counts) {
+      entry->second += counts;
+    } else if (entry->second != kLimit + 1) {
+      context.reporter.error(action.line, "encoder '" + action.target + "' would turn more than " +
+                                              readable_integer(kLimit) + " counts in all; split the run");
+      entry->second = kLimit + 1;  // reported once
+    }
+  }
+}
+
 }  // namespace
 
 void read_timeline(TableReader& top, ParseContext& context) {
   for_each_table(top, "at", [&](const toml::table& table) { read_action(table, context); });
+  check_encoder_totals(context);
 }
 
 }  // namespace stepdance::sim::scenario

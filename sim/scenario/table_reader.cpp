@@ -96,6 +96,20 @@ std::optional<double> TableReader::number(std::string_view key, Need need) {
   return std::nullopt;
 }
 
+std::optional<double> TableReader::number(std::string_view key, const NumberRange& range, Need need) {
+  const std::optional<double> value = number(key, need);
+  if (!value || in_range(*value, range)) return value;
+  error(key, out_of_range(key, range, *value));
+  return std::nullopt;
+}
+
+std::optional<int64_t> TableReader::integer(std::string_view key, const IntegerRange& range, Need need) {
+  const std::optional<int64_t> value = integer(key, need);
+  if (!value || in_range(*value, range)) return value;
+  error(key, out_of_range(key, range, *value));
+  return std::nullopt;
+}
+
 std::optional<bool> TableReader::boolean(std::string_view key, Need need) {
   const toml::node* value = node(key, need);
   if (value == nullptr) return std::nullopt;

@@ -11,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "scenario/diagnostic.hpp"
+#include "scenario/value_range.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -55,6 +56,10 @@ class TableReader {
   std::optional<int64_t> integer(std::string_view key, Need need = Need::kOptional);
   /// Integers are accepted as numbers; nan and inf are reported.
   std::optional<double> number(std::string_view key, Need need = Need::kOptional);
+  /// A number checked against its range (scenario/value_range.hpp); out of range is reported
+  /// as "'key' must be in [low, high] unit, got value" and returns nothing.
+  std::optional<double> number(std::string_view key, const NumberRange& range, Need need = Need::kOptional);
+  std::optional<int64_t> integer(std::string_view key, const IntegerRange& range, Need need = Need::kOptional);
   std::optional<bool> boolean(std::string_view key, Need need = Need::kOptional);
   const toml::table* table(std::string_view key, Need need = Need::kOptional);
   const toml::array* array(std::string_view key, Need need = Need::kOptional);

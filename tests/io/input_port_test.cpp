@@ -115,6 +115,42 @@ TEST_F(InputPortTest, WidthsRoundToTheNearestMicrosecondAndRejectionsAreCountedB
   EXPECT_DOUBLE_EQ(port.output_e.read(ABSOLUTE), 1.0);
 }
 
+// A pulse of `width_us` from a capture unit that counts counter wraps (what the Teensy backend
+// and the simulator report): rises at 400 µs, near the first wrap at 436.9 µs.
+CapturedPulse held_pulse(uint64_t width_us, bool forward) {
+  const uint64_t rise = 400 * kTicksPerUs;
+  return protocol::captured_from_ticks(rise, rise + width_us * kTicksPerUs, forward, protocol::CaptureClock{});
+}
+
+constexpr uint64_t kLongWidthsUs[] = {8, 437, 439, 1000, 1000000};  // 8 µs … 1 s
+
+TEST_F(InputPortTest, LongPulsesAreTooLongInStepdanceModeWhateverTheirLength) {
+  InputPort port;
+  ASSERT_EQ(port.begin(INPUT_A), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  for (uint64_t width_us : kLongWidthsUs) inject(held_pulse(width_us, true));
+  hal_manual::run_frames(1);
+  EXPECT_EQ(port.rejected_too_long(), 5u);
+  EXPECT_EQ(port.rejected_too_short(), 0u);
+  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
+    EXPECT_EQ(port.pulses_received(signal, DIRECTION_FORWARD), 0u) << int{signal};  // no phantom X
+  }
+  EXPECT_DOUBLE_EQ(port.output_x.read(ABSOLUTE), 0.0);
+}
+
+TEST_F(InputPortTest, LongPulsesAreStepsInStepDirMode) {
+  InputPort port;
+  ASSERT_EQ(port.begin(INPUT_A), Status::kOk);
+  ASSERT_EQ(port.set_input_mode(INPUT_MODE_STEP_DIR, SIGNAL_Z), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  for (uint64_t width_us : kLongWidthsUs) inject(held_pulse(width_us, width_us != 1000));
+  hal_manual::run_frames(1);
+  EXPECT_EQ(port.pulses_received(SIGNAL_Z, DIRECTION_FORWARD), 4u);
+  EXPECT_EQ(port.pulses_received(SIGNAL_Z, DIRECTION_REVERSE), 1u);
+  EXPECT_EQ(port.rejected_too_long(), 0u);
+  EXPECT_DOUBLE_EQ(port.output_z.read(ABSOLUTE), 3.0);
+}
+
 TEST_F(InputPortTest, DisabledSignalsAreIgnoredAndCounted) {
   InputPort port;
   ASSERT_EQ(port.begin(INPUT_A), Status::kOk);

@@ -226,6 +226,51 @@ TEST(PulseDecoderRounding, CounterWrapInsideAPulse) {
   EXPECT_EQ(decoded.direction, 1);
 }
 
+// ---- Long pulses: the counter wraps (2^16 ticks = 436.9 µs at 150 ticks/µs) ----------------
+
+// A pulse of `width_ns` rising at `rise_ns` on an unwrapped time line, as a backend that counts
+// counter wraps (or the simulator) reports it.
+CapturedPulse long_pulse(int64_t width_ns, int64_t rise_ns = 3 * kNsPerUs) {
+  const auto ticks = [](int64_t ns) { return static_cast<uint64_t>(ns) * 150 / 1000; };
+  return captured_from_ticks(ticks(rise_ns), ticks(rise_ns + width_ns), true, kClock);
+}
+
+// 8 µs, 437 µs (just over one counter period), 439 µs (its wrapped rest would be 2.09 µs, an X),
+// 1 ms and 1 s.
+constexpr int64_t kLongWidthsNs[] = {8 * kNsPerUs, 437 * kNsPerUs, 439 * kNsPerUs, 1000 * kNsPerUs,
+                                     1000000 * kNsPerUs};
+
+TEST(PulseDecoderLongPulses, CaptureKeepsTheWholeCounterPeriods) {
+  // 439 µs = 65,850 ticks = one period of 65,536 + 314.
+  const CapturedPulse pulse = long_pulse(439 * kNsPerUs, 0);
+  EXPECT_EQ(pulse.extra_periods, 1u);
+  EXPECT_EQ((pulse.fall_ticks - pulse.rise_ticks) & 0xFFFFu, 314u);
+  EXPECT_EQ(width_ticks(pulse, kClock), 65850u);
+  // 1 s = 150,000,000 ticks = 2,288 periods + 58,432 ticks (2,288 × 65,536 = 149,946,368).
+  const CapturedPulse second = long_pulse(1000000 * kNsPerUs, 0);
+  EXPECT_EQ(second.extra_periods, 2288u);
+  EXPECT_EQ(width_ticks(second, kClock), 150000000u);
+}
+
+TEST(PulseDecoderLongPulses, StepdanceModeRejectsEveryLongPulseAsTooLong) {
+  for (int64_t width_ns : kLongWidthsNs) {
+    for (int64_t rise_ns : {int64_t{0}, 400 * kNsPerUs, 436 * kNsPerUs}) {  // rises before and near a wrap
+      const DecodedPulse decoded = decode_stepdance(long_pulse(width_ns, rise_ns));
+      EXPECT_EQ(decoded.verdict, PulseVerdict::kTooLong) << width_ns << " ns rising at " << rise_ns;
+    }
+  }
+  EXPECT_EQ(rounded_width_us(long_pulse(1000 * kNsPerUs), kClock), 255);  // saturates
+}
+
+TEST(PulseDecoderLongPulses, StepDirModeCountsEveryLongPulseAsOneStep) {
+  for (int64_t width_ns : kLongWidthsNs) {
+    const DecodedPulse decoded = decode_pulse(long_pulse(width_ns), kClock, INPUT_MODE_STEP_DIR, SIGNAL_R);
+    EXPECT_EQ(decoded.verdict, PulseVerdict::kAccepted) << width_ns;
+    EXPECT_EQ(decoded.signal, SIGNAL_R) << width_ns;
+    EXPECT_EQ(decoded.direction, 1) << width_ns;
+  }
+}
+
 // ---- STEP_DIR mode -------------------------------------------------------------------------
 
 DecodedPulse decode_step_dir(uint32_t ticks, uint8_t signal, bool dir_high = true) {

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 5u
+#define STEPDANCE_BOARD_ABI_VERSION 6u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -35,11 +35,13 @@ enum StepdancePinMode {
 /* How a storage file is opened (same order as stepdance::FileMode). */
 enum StepdanceFileMode { STEPDANCE_FILE_READ = 0, STEPDANCE_FILE_WRITE = 1, STEPDANCE_FILE_APPEND = 2 };
 
-/* One captured STEP pulse as the board's capture unit reports it (150 ticks per µs, 16 bits). */
+/* One captured STEP pulse as the board's capture unit reports it (150 ticks per µs, 16 bits),
+ * with the counter periods beyond the wrapped width (protocol::CapturedPulse::extra_periods). */
 typedef struct StepdanceCapturedPulseV1 {
   uint32_t rise_ticks;
   uint32_t fall_ticks;
   uint8_t dir_high;
+  uint32_t extra_periods;
 } StepdanceCapturedPulseV1;
 
 /* What a board reports about itself at the end of a run (or whenever asked). */

@@ -14,10 +14,11 @@ constexpr SimTime kAdcConversionNs = 100 * kMicrosecond;
 /// Capture timer: 150 ticks per µs into a 16-bit counter.
 constexpr int64_t kCaptureTicksPerUs = 150;
 
-// The capture counter at a time: ticks rounded half up (as `stepdance decode` converts edges),
-// wrapping at 16 bits.
-uint32_t capture_ticks(SimTime time_ns) {
-  return static_cast<uint32_t>(((time_ns * kCaptureTicksPerUs + 500) / 1000) & 0xFFFF);
+// The capture counter at a time, unwrapped: ticks rounded half up (as `stepdance decode` converts
+// edges). The board's 16-bit counter is this modulo 2^16; captured_from_ticks keeps the overflow
+// count, as the Teensy backend does by counting counter reloads.
+uint64_t capture_ticks(SimTime time_ns) {
+  return static_cast<uint64_t>((time_ns * kCaptureTicksPerUs + 500) / 1000);
 }
 
 
@@ -189,11 +190,13 @@ void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
     return;
   }
   const bool at_rising = state.edge == protocol::DirSampleEdge::kRising;
-  const protocol::CapturedPulse captured{capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns),
-                                         at_rising ? pulse.dir_at_rise : pulse.dir_at_fall};
+  const protocol::CapturedPulse captured = protocol::captured_from_ticks(
+      capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns), at_rising ? pulse.dir_at_rise : pulse.dir_at_fall,
+      protocol::CaptureClock{});
   const InputMode mode = at_rising ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
   state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
-  const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks, captured.dir_high ? uint8_t{1} : uint8_t{0}};
+  const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks,
+                                           captured.dir_high ? uint8_t{1} : uint8_t{0}, captured.extra_periods};
   in_isr_ = true;
   board_->deliver_pulse(scheduler_.now(), port, &delivered);
   in_isr_ = false;

@@ -53,7 +53,7 @@ void run_khz_isr() {
 
 void deliver_captured_pulse(uint8_t port, const StepdanceCapturedPulseV1& pulse) {
   if (port >= kPorts || capture_sinks[port].sink == nullptr) return;
-  const protocol::CapturedPulse captured{pulse.rise_ticks, pulse.fall_ticks, pulse.dir_high != 0};
+  const protocol::CapturedPulse captured{pulse.rise_ticks, pulse.fall_ticks, pulse.dir_high != 0, pulse.extra_periods};
   capture_sinks[port].sink(capture_sinks[port].context, captured);
 }
 

@@ -54,12 +54,10 @@ void Simulation::apply_timeline() {
 }
 
 void Simulation::build_vcd() {
-  const std::string path = output_path(scenario_.output.vcd);
-  if (path.empty() || !options_.write_vcd) return;
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  vcd_ = std::make_unique<VcdRecorder>(path);
+  if (vcd_path_.empty()) return;
+  vcd_ = std::make_unique<VcdRecorder>(vcd_path_);
   vcd_->set_end_time(duration_);
-  for (const scenario::PortLineRef& port : scenario_.output.vcd_ports) {
+  for (const scenario::PortLineRef& port : vcd_ports()) {
     const uint8_t index = static_cast<uint8_t>(port.port - 'A');
     if (port.output) {
       slot(port.board).board->add_wire_listener(index, vcd_->record_output(port.board, port.port));
@@ -91,7 +89,7 @@ void Simulation::build_cables() {
 // Columns: the pen (with a machine), every socket's model, then each device's own (knob counts,
 // pot readings, ...).
 void Simulation::build_csv() {
-  const std::string path = output_path(scenario_.output.csv);
+  const std::string& path = csv_path_;
   if (path.empty()) return;
   std::vector<CsvProbe> probes;
   if (machine_) {
@@ -112,7 +110,6 @@ void Simulation::build_csv() {
     }
   }
   for (const auto& [name, device] : devices_) device->add_probes(name, probes);
-  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   const SimTime interval = static_cast<SimTime>(scenario_.output.csv_interval_ms * 1e6 + 0.5);
   csv_ = std::make_unique<CsvSampler>(scheduler_, path, std::move(probes), interval);
 }

@@ -31,7 +31,12 @@ Simulation::Simulation(const scenario::Scenario& scenario, const SimulationOptio
       duration_(options.duration.value_or(scenario.duration)),
       output_directory_(options.output_directory.value_or(scenario.output.directory)),
       delivery_(scheduler_),
-      serial_actions_(scheduler_, &on_serial_action, this) {}
+      serial_actions_(scheduler_, &on_serial_action, this) {
+  vcd_path_ = options.vcd_file.value_or(output_path(scenario.output.vcd));
+  if (!options.write_vcd) vcd_path_.clear();
+  csv_path_ = options.csv_file.value_or(output_path(scenario.output.csv));
+  if (options.csv_interval_ms) scenario_.output.csv_interval_ms = *options.csv_interval_ms;
+}
 
 Simulation::~Simulation() {
   csv_.reset();
@@ -43,6 +48,7 @@ Simulation::~Simulation() {
 std::unique_ptr<Simulation> Simulation::create(const scenario::Scenario& scenario, const SimulationOptions& options,
                                                SimulationError& error) {
   std::unique_ptr<Simulation> simulation(new Simulation(scenario, options));
+  if (!simulation->prepare_outputs(error)) return nullptr;
   if (!simulation->build_boards(error) || !simulation->build_machine(error)) return nullptr;
   simulation->build_devices();
   simulation->apply_timeline();
@@ -124,11 +130,11 @@ SimulationReport Simulation::finish() {
   report.wall_s = wall_s_;
   if (vcd_) {
     vcd_->close(duration_);
-    report.files.push_back(output_path(scenario_.output.vcd));
+    report.files.push_back(vcd_path_);
   }
   if (csv_) {
     csv_->close();
-    report.files.push_back(output_path(scenario_.output.csv));
+    report.files.push_back(csv_path_);
   }
   write_drawings(report);
   write_device_outputs(report);

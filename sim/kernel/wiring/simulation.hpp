@@ -39,6 +39,13 @@ struct SimulationOptions {
   std::optional<std::string> output_directory;
   /// False skips the VCD even if the scenario asks for one.
   bool write_vcd = true;
+  /// Write the VCD (or CSV) here, whatever the scenario says (exact paths, not moved by
+  /// output_directory). A VCD asked for this way records every output port and every cabled
+  /// input port when the scenario names no vcd_ports.
+  std::optional<std::string> vcd_file;
+  std::optional<std::string> csv_file;
+  /// Replaces the scenario's csv_interval_ms (checked by the caller against ranges::kCsvIntervalMs).
+  std::optional<double> csv_interval_ms;
   /// Called now and then with (simulated time so far, total), for a progress bar.
   std::function<void(SimTime, SimTime)> progress;
   /// Called with every line a sketch prints on Serial: (board name, line).
@@ -145,6 +152,13 @@ class Simulation {
   const BoardSlot* find_slot(const std::string& name) const;
   /// A configured output file's path, moved into --out's directory when that was given.
   std::string output_path(const std::string& configured) const;
+  /// Every file the run will write (empty paths left out).
+  std::vector<std::string> output_files() const;
+  /// Creates the folders of every output file and checks that each can be written, before any
+  /// sketch is built; false with a kBadInput error naming the folder otherwise.
+  bool prepare_outputs(SimulationError& error) const;
+  /// The lines the VCD records: the scenario's vcd_ports, or everything (see vcd_file).
+  std::vector<scenario::PortLineRef> vcd_ports() const;
 
   // Running.
   static void on_serial_action(void* context, SimTime time, const size_t& action_index);
@@ -164,6 +178,8 @@ class Simulation {
   SimulationOptions options_;
   SimTime duration_ = 0;
   std::string output_directory_;
+  std::string vcd_path_;  ///< "" = no VCD
+  std::string csv_path_;  ///< "" = no CSV
 
   Scheduler scheduler_;
   std::vector<BoardSlot> boards_;

@@ -47,8 +47,9 @@ class InputPort : public Block {
   Status begin(uint8_t port);
 
   /// Chooses how pulses are decoded. INPUT_MODE_STEPDANCE (default): axis by pulse width, DIR
-  /// sampled at the STEP falling edge. INPUT_MODE_STEP_DIR: every pulse ≥ 1 µs is one step of
-  /// `step_dir_signal`, DIR sampled at the STEP rising edge, for ordinary step/dir sources.
+  /// sampled at the STEP falling edge. INPUT_MODE_STEP_DIR: every pulse longer than 0.5 µs (it
+  /// rounds to ≥ 1 µs), however long, is one step of `step_dir_signal`, DIR sampled at the STEP
+  /// rising edge, for ordinary step/dir sources.
   /// After begin() it re-arms the capture with the edge the mode needs. kBadArgument if
   /// step_dir_signal is not SIGNAL_X..SIGNAL_E. Context: loop.
   Status set_input_mode(InputMode mode, uint8_t step_dir_signal = SIGNAL_X);
@@ -76,7 +77,8 @@ class InputPort : public Block {
   uint32_t pulses_received(uint8_t signal, uint8_t direction) const;
   /// Pulses rejected for being shorter than the mode accepts (noise, glitches). Context: any.
   uint32_t rejected_too_short() const { return rejected_too_short_; }
-  /// Pulses rejected for being longer than the widest signal (STEPDANCE mode). Context: any.
+  /// Pulses rejected for being longer than the widest signal (STEPDANCE mode), however long:
+  /// the backends measure pulses past the capture counter's wrap. Context: any.
   uint32_t rejected_too_long() const { return rejected_too_long_; }
   /// Accepted pulses of disabled signals, which were not passed on. Context: any.
   uint32_t ignored() const { return ignored_; }

@@ -3,11 +3,30 @@
 
 namespace stepdance::protocol {
 
+CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool dir_high,
+                                  const CaptureClock& clock) {
+  const uint64_t period = uint64_t{clock.counter_mask} + 1;
+  const uint64_t width = fall_ticks >= rise_ticks ? fall_ticks - rise_ticks : 0;
+  const uint64_t extra = width / period;
+  CapturedPulse pulse;
+  pulse.rise_ticks = static_cast<uint32_t>(rise_ticks & clock.counter_mask);
+  pulse.fall_ticks = static_cast<uint32_t>((rise_ticks + width) & clock.counter_mask);
+  pulse.dir_high = dir_high;
+  pulse.extra_periods = extra > UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(extra);
+  return pulse;
+}
+
+uint64_t width_ticks(const CapturedPulse& pulse, const CaptureClock& clock) {
+  const uint64_t wrapped = (pulse.fall_ticks - pulse.rise_ticks) & clock.counter_mask;
+  return uint64_t{pulse.extra_periods} * (uint64_t{clock.counter_mask} + 1) + wrapped;
+}
+
 uint8_t rounded_width_us(const CapturedPulse& pulse, const CaptureClock& clock) {
-  const uint32_t ticks = (pulse.fall_ticks - pulse.rise_ticks) & clock.counter_mask;
-  const uint32_t whole_us = ticks / clock.ticks_per_us;
-  const uint32_t remainder = ticks % clock.ticks_per_us;
-  const uint32_t rounded = whole_us + (2 * remainder > clock.ticks_per_us ? 1u : 0u);
+  const uint64_t ticks = width_ticks(pulse, clock);
+  const uint64_t per_us = clock.ticks_per_us > 0 ? clock.ticks_per_us : 1;
+  const uint64_t whole_us = ticks / per_us;
+  const uint64_t remainder = ticks % per_us;
+  const uint64_t rounded = whole_us + (2 * remainder > per_us ? 1u : 0u);
   return static_cast<uint8_t>(rounded > 255 ? 255 : rounded);
 }
 

@@ -166,16 +166,17 @@ TEST(CaptureDecoder, CaptureTicksRoundHalfUp) {
   EXPECT_EQ(capture_ticks(600 * kSecond, 150), 90'000'000'000u);
 }
 
-TEST(CaptureDecoder, CounterWrapMeasuresLikeTheFirmware) {
+TEST(CaptureDecoder, PulsesPastTheCounterWrapAreMeasuredWholeLikeTheFirmware) {
   EdgeList step;
   append_pulse(step, 10 * kSecond + 123, 2 * kMicrosecond);  // far into the run: still X
-  append_pulse(step, 11 * kSecond, 437 * kMicrosecond);       // 65550 ticks wrap to 14: too short
-  append_pulse(step, 12 * kSecond, 500 * kMicrosecond);       // 75000 ticks wrap to 9464 (63 µs): too long
+  append_pulse(step, 11 * kSecond, 437 * kMicrosecond);       // 65550 ticks (wrapped alone: 14, "too short")
+  append_pulse(step, 12 * kSecond, 439 * kMicrosecond);       // 65850 ticks (wrapped alone: 314, an X)
+  append_pulse(step, 13 * kSecond, 500 * kMicrosecond);       // 75000 ticks (wrapped alone: 63 µs)
   const DecodeResult result = decode_step_dir(step, EdgeList{}, DecodeOptions{});
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{0, 1}));
-  EXPECT_EQ(result.too_short, 1u);
-  EXPECT_EQ(result.too_long, 1u);
-  EXPECT_EQ(result.first_rejected[1].width_us, 63);
+  EXPECT_EQ(result.too_short, 0u);
+  EXPECT_EQ(result.too_long, 3u);
+  for (const RejectedPulse& pulse : result.first_rejected) EXPECT_EQ(pulse.width_us, 255);  // saturated
 }
 
 // DIR low; pulses at 10 (2 µs), 21 (2 µs, DIR high since 20), 31..33 (DIR falls at 32 inside

@@ -71,5 +71,32 @@ TEST(StepDirPairs, AmbiguousAndUnknownNamesExplainThemselves) {
   EXPECT_EQ(find_wire(VcdCapture{}, "D0").error, "no wire named 'D0' (wires: none)");
 }
 
+TEST(StepDirPairs, TwoHundredThousandWiresPairInLinearTime) {
+  // 100,000 pairs, DIR declared after its STEP, in reverse order of the STEPs: pairing each STEP
+  // by scanning every wire took about a minute; an index makes it one pass (the test runner's
+  // timeout is the bound, not a timed assertion).
+  constexpr size_t kPairs = 100000;
+  std::vector<std::pair<std::string, std::string>> names;
+  for (size_t pair = 0; pair < kPairs; ++pair) names.push_back({"wide", "P" + std::to_string(pair) + "_STEP"});
+  for (size_t pair = kPairs; pair-- > 0;) names.push_back({"wide", "P" + std::to_string(pair) + "_DIR"});
+  const std::vector<StepDirPair> pairs = find_step_dir_pairs(wires_named(names));
+  ASSERT_EQ(pairs.size(), kPairs);
+  for (size_t pair = 0; pair < kPairs; pair += 9999) {
+    EXPECT_EQ(pairs[pair].step, pair);
+    EXPECT_EQ(pairs[pair].dir, 2 * kPairs - 1 - pair);  // P<pair>_DIR sits at 2N − 1 − pair
+    EXPECT_EQ(pairs[pair].label, "wide.P" + std::to_string(pair));
+  }
+}
+
+TEST(StepDirPairs, AMissingWireInAWideCaptureListsTheFirstTwenty) {
+  std::vector<std::pair<std::string, std::string>> names;
+  for (int wire = 0; wire < 25; ++wire) names.push_back({"", "w" + std::to_string(wire)});
+  const WireLookup lookup = find_wire(wires_named(names), "nope");
+  EXPECT_FALSE(lookup.ok);
+  std::string first_twenty;
+  for (int wire = 0; wire < 20; ++wire) first_twenty += (wire == 0 ? "w" : ", w") + std::to_string(wire);
+  EXPECT_EQ(lookup.error, "no wire named 'nope' (wires: " + first_twenty + " and 5 more)");
+}
+
 }  // namespace
 }  // namespace stepdance::sim

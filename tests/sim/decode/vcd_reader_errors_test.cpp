@@ -85,20 +85,56 @@ TEST(VcdReaderErrors, MalformedValues) {
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nhello\n"), "bad.vcd:5: unexpected 'hello' in value changes");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n1\n"), "bad.vcd:5: value '1' has no identifier");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb102 !\n"), "bad.vcd:5: bad binary value 'b102'");
-  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb1"), "bad.vcd:5: unexpected end of file: value 'b1' has no identifier");
+  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb1\n"), "bad.vcd:5: unexpected end of file: value 'b1' has no identifier");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n$bogus\n"), "bad.vcd:5: unexpected '$bogus' in value changes");
 }
 
+/// Reads text that should be accepted as a truncated capture; returns the warning.
+std::string truncation_of(const std::string& text) {
+  std::istringstream in(text);
+  const VcdReadResult result = read_vcd(in, "cut.vcd");
+  EXPECT_TRUE(result.ok) << result.error;
+  EXPECT_TRUE(result.truncated) << text;
+  return result.warning;
+}
+
+TEST(VcdReaderTruncation, AFileCutInsideADumpBlockIsTruncatedNotWrong) {
+  EXPECT_EQ(truncation_of(std::string(kDeclarations) + "#0\n$dumpvars\n0!\n"),
+            "cut.vcd:6: the capture is truncated (a dump block has no $end); decoded up to there");
+}
+
+TEST(VcdReaderTruncation, ALastLineWithoutNewlineLosesItsLastTokenOnly) {
+  // "#2000" cut to "#20" must not become a timestamp of 20 ns; "1!" before it on the line stays.
+  const std::string text = std::string(kDeclarations) + "#0\n0!\n#1000\n1! #20";
+  std::istringstream in(text);
+  const VcdReadResult result = read_vcd(in, "cut.vcd");
+  ASSERT_TRUE(result.ok) << result.error;
+  EXPECT_TRUE(result.truncated);
+  EXPECT_EQ(result.warning, "cut.vcd:7: the capture is truncated (it ends in the middle of line 7); decoded up to there");
+  ASSERT_EQ(result.capture.wires[0].edges.size(), 1u);
+  EXPECT_EQ(result.capture.wires[0].edges[0].time, 1000);
+  EXPECT_EQ(result.capture.end_time, 1000);
+  // A value cut off its identifier ("b1" of "b1 !") is dropped, not an error.
+  EXPECT_EQ(truncation_of(std::string(kDeclarations) + "#0\nb1"),
+            "cut.vcd:5: the capture is truncated (it ends in the middle of line 5); decoded up to there");
+}
+
+TEST(VcdReaderTruncation, AFileEndingInANewlineIsComplete) {
+  std::istringstream in(std::string(kDeclarations) + "#0\n0!\n#1000\n1!\n");
+  const VcdReadResult result = read_vcd(in, "whole.vcd");
+  ASSERT_TRUE(result.ok);
+  EXPECT_FALSE(result.truncated);
+  EXPECT_EQ(result.warning, "");
+}
+
 TEST(VcdReaderErrors, DumpBlocks) {
-  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n$dumpvars\n0!\n"),
-            "bad.vcd:6: unexpected end of file: missing $end of a dump block");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n$end\n"), "bad.vcd:5: $end without an open command");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "$dumpvars\n$dumpvars\n"),
             "bad.vcd:5: $dumpvars inside another dump block");
 }
 
 TEST(VcdReaderErrors, LongTokensAreShortenedInMessages) {
-  EXPECT_EQ(error_of(std::string(60, 'q')), "bad.vcd:1: expected a declaration command, found '" + std::string(40, 'q') + "...'");
+  EXPECT_EQ(error_of(std::string(60, 'q') + "\n"), "bad.vcd:1: expected a declaration command, found '" + std::string(40, 'q') + "...'");
 }
 
 TEST(VcdReaderErrors, MissingFile) {

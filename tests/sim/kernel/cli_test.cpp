@@ -1,28 +1,10 @@
 // The `stepdance` command as a user runs it: exit statuses, `file:line:` errors, decode output.
-#include <sys/wait.h>
-
 #include <nlohmann/json.hpp>
 
-#include "simulation_fixture.hpp"
+#include "cli_runner.hpp"
 
 namespace stepdance::sim::test {
 namespace {
-
-const std::string kStepdance = STEPDANCE_BUILD_DIR "/stepdance";
-
-struct CommandResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-/// Runs `stepdance <arguments>` through the shell, capturing stdout and stderr.
-CommandResult stepdance(const std::string& arguments, const std::string& scratch) {
-  std::filesystem::create_directories(scratch);
-  const std::string out = scratch + "/stdout.txt", err = scratch + "/stderr.txt";
-  const int status = std::system((kStepdance + " " + arguments + " >" + out + " 2>" + err).c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
-}
 
 std::string write_scenario(const std::string& directory, const std::string& text) {
   std::filesystem::create_directories(directory);

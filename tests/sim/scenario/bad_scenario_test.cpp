@@ -37,7 +37,7 @@ std::vector<BadCase> cases() {
       {"unknown_board", {{9, "unknown board 'drvier'"}}},
       {"missing_port", {{14, "board 'basic' (basic module) has no output port B"}}},
       {"basic_sockets", {{9, "a basic module has no driver sockets"}}},
-      {"negative_time", {{15, "'time_s' must be >= 0, got -1"}}},
+      {"negative_time", {{15, "'time_s' must be in [0, 86,400] s, got -1"}}},
       {"time_after_end",
        {{15, "'time_s' = 12 is after the end of the run (duration_s = 10)"},
         {23, "the turn ends at 10.5 s, after the end of the run (duration_s = 10)"}}},
@@ -53,7 +53,7 @@ std::vector<BadCase> cases() {
        {{12, "'pen_servo' needs a servo in socket C of board 'driver', but it is empty"},
         {15, "'motor_b' must be a socket letter A..D, got \"E\""}}},
       {"socket_values",
-       {{7, "'frame_phase_us' must be in 0..39, got 40"},
+       {{7, "'frame_phase_us' must be in [0, 39] µs, got 40"},
         {10, "'microsteps' must be 1, 2, 4, 8, 16, 32 or 64, got 3"},
         {11, "'build' must be \"90deg\" or \"180deg\", got \"270deg\""},
         {12, "unknown socket 'E' (sockets are A, B, C and D)"}}},
@@ -100,7 +100,22 @@ TEST(BadScenarioFile, AFolderWithoutScenarioToml) {
   const LoadResult result = load_scenario(kBad);
   ASSERT_EQ(result.errors.size(), 1u);
   EXPECT_EQ(result.errors[0].to_string(),
-            kBad + "/scenario.toml: cannot read the scenario file (missing or not a file)");
+            kBad + ": this folder has no scenario.toml");  // and no sibling scenario runs a sketch in it
+}
+
+}  // namespace
+}  // namespace stepdance::sim::scenario
+
+namespace stepdance::sim::scenario {
+namespace {
+
+// Found by fuzz/scenario_fuzz.cpp: toml++ 3.3 asserts on a control character in a table header.
+// TOML allows none but tab, LF and CR, so the scenario reader refuses them first.
+TEST(BadScenarioText, AControlCharacterIsRefusedWithItsLine) {
+  const LoadResult result = parse_scenario("duration_s = 1\n[[\x01" "board]]\n", "x.toml");
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.errors[0].to_string(), "x.toml:2: control character U+0001 is not allowed in a scenario file");
+  EXPECT_TRUE(parse_scenario("duration_s = 1\t# a tab is fine\r\n", "x.toml").ok());
 }
 
 }  // namespace

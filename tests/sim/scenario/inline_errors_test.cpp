@@ -61,7 +61,7 @@ std::vector<InlineCase> cases() {
       {"pot_out_of_range",
        "[[device]]\nname = \"pot\"\ntype = \"potentiometer\"\nboard = \"driver\"\nconnector = \"A2\"\n"
        "[[at]]\ntime_s = 1\nset = \"pot\"\nposition = 1.5\n",
-       {{14, "'position' must be in 0..1, got 1.5"}}},
+       {{14, "'position' must be in [0, 1], got 1.5"}}},
       {"serial_text_and_file",
        "[[at]]\ntime_s = 1\nserial = \"driver\"\ntext = \"x\"\nfile = \"commands.txt\"\n",
        {{10, "'serial' takes 'text' or 'file', not both"}}},
@@ -71,7 +71,7 @@ std::vector<InlineCase> cases() {
        {{12, "the click releases at 5.05 s, after the end of the run (duration_s = 5)"}}},
       {"cable_values",
        "[[cable]]\nfrom = \"driver:D\"\nto = \"driver:B\"\ndelay_ns = -1\nglitch_width_ns = 0\n",
-       {{9, "'delay_ns' must be >= 0, got -1"}, {10, "'glitch_width_ns' must be > 0, got 0"}}},
+       {{9, "'delay_ns' must be in [0, 1,000,000,000] ns, got -1"}, {10, "'glitch_width_ns' must be in [1, 1,000,000] ns, got 0"}}},
       {"cable_bad_form", "[[cable]]\nfrom = \"driver\"\nto = \"driver:E\"\n",
        {{7, "'from' must look like \"board:A\", got \"driver\""},
         {8, "board 'driver' (driver module) has no input port E"}}},
@@ -101,9 +101,9 @@ std::vector<InlineCase> cases() {
        "amplitude_deg = 200\nperiod_s = 0\nrelease_s = 9\nstart_count = 3\n"
        "[[at]]\ntime_s = 1\nturn = \"swing\"\ncounts = 5\n",
        {{10, "a pendulum cannot use connector A1 (use ENC1 or ENC2)"},
-        {11, "'amplitude_deg' must be in (0, 170], got 200"},
-        {12, "'period_s' must be in [0.01, 3600], got 0"},
-        {13, "'release_s' must be in [0, 5], got 9"},
+        {11, "'amplitude_deg' must be in (0, 170] °, got 200"},
+        {12, "'period_s' must be in [0.01, 3,600] s, got 0"},
+        {13, "'release_s' must be in [0, 5] s, got 9"},
         {14, "'start_count' does not apply to a pendulum"},
         {17, "'turn' needs an encoder, but 'swing' is a pendulum"}}},
       {"printer_checks_need_a_printer",
@@ -121,7 +121,7 @@ std::vector<InlineCase> cases() {
        "[[expect]]\ntraces = \"ghost\"\n",
        {{11, "connector ENC1 of board 'driver' is already used by device 'arm'"},
         {12, "'path_mm' must be a list of [x, y] or [x, y, dwell_s] points (mm, s; dwell in 0..86400)"},
-        {13, "'speed_mm_per_s' must be in (0, 10000], got 0"},
+        {13, "'speed_mm_per_s' must be in (0, 10,000] mm/s, got 0"},
         {14, "[[device]] is missing required key 'left_connector'"},
         {19, "'path_mm' needs at least one point"},
         {21, "'traces' must name a five_bar_arm device, got 'ghost'"},
@@ -129,8 +129,8 @@ std::vector<InlineCase> cases() {
       {"geometry_needs_a_machine", "[[expect]]\ndrawn_mm = 3\n", {{7, "'drawn_mm' needs a [machine]"}}},
       {"output_values",
        "[output]\npng_px_per_mm = 0\ncsv_interval_ms = -5\npen_up_travel = \"yes\"\nvcd_ports = [\"ghost:IN_A\", 3]\n",
-       {{7, "'png_px_per_mm' must be in (0, 100], got 0"},
-        {8, "'csv_interval_ms' must be > 0, got -5"},
+       {{7, "'png_px_per_mm' must be in (0, 100] px/mm, got 0"},
+        {8, "'csv_interval_ms' must be in [0.04, 86,400,000] ms, got -5"},
         {9, "'pen_up_travel' must be true or false, not a string"},
         {10, "unknown board 'ghost'"},
         {10, "'vcd_ports' must hold strings like \"board:OUT_A\", not an integer"}}},
@@ -138,7 +138,7 @@ std::vector<InlineCase> cases() {
        "[[device]]\nname = \"pen\"\ntype = \"button\"\nboard = \"driver\"\nconnector = \"D1\"\n"
        "[[at]]\ntime_s = nan\npress = \"pen\"\n[[at]]\ntime_s = 1e300\nrelease = \"pen\"\n",
        {{12, "'time_s' must be a finite number"},
-        {15, "'time_s' = 1e+300 is after the end of the run (duration_s = 5)"}}},
+        {15, "'time_s' must be in [0, 86,400] s, got 1e+300"}}},
       {"host_without_steps_and_unknown_board",
        "[[host]]\nboard = \"driver\"\n[[host]]\nboard = \"ghost\"\n[[host.step]]\nsend = \"?\"\n",
        {{6, "a [[host]] needs at least one [[host.step]]"}, {9, "unknown board 'ghost'"}}},
@@ -153,8 +153,8 @@ std::vector<InlineCase> cases() {
        {{10, "a step does one thing, but has both 'send' and 'wait'"},
         {12, "'wait' is not a valid regular expression (ECMAScript syntax)"},
         {15, "'flow' must be \"ack\" or \"character_counting\", got \"xon\""},
-        {16, "'buffer_bytes' must be in [1, 1048576], got 0"},
-        {18, "'pause_s' must be in [0, 86400] seconds, got -1"},
+        {16, "'buffer_bytes' must be in [1, 1,048,576] bytes, got 0"},
+        {18, "'pause_s' must be in [0, 86,400] s, got -1"},
         {21, "'timeout_s' only goes with stream or wait"},
         {24, "'timeout_s' must be a finite number"}}},
       {"host_checks_that_are_wrong",
@@ -188,8 +188,8 @@ INSTANTIATE_TEST_SUITE_P(Texts, InlineErrors, ::testing::ValuesIn(cases()),
 TEST(InlineErrors, DurationMustBePositive) {
   const LoadResult result = parse_scenario("seed = -3\nduration_s = 0\n", kFile);
   ASSERT_EQ(result.errors.size(), 2u);
-  EXPECT_EQ(result.errors[0].to_string(), kFile + ":1: 'seed' must be >= 0, got -3");
-  EXPECT_EQ(result.errors[1].to_string(), kFile + ":2: 'duration_s' must be > 0 and at most 86400, got 0");
+  EXPECT_EQ(result.errors[0].to_string(), kFile + ":1: 'seed' must be in [0, 9,223,372,036,854,775,807], got -3");
+  EXPECT_EQ(result.errors[1].to_string(), kFile + ":2: 'duration_s' must be in (0, 86,400] s, got 0");
 }
 
 TEST(InlineErrors, TheBaseTextIsValid) {

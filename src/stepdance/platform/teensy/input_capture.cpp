@@ -2,14 +2,20 @@
 // fast GPIO at the edge the input mode asks for.
 //
 // Each port owns one PWM submodule whose 16-bit counter runs free at the IPG clock (INIT 0,
-// VAL1 0xFFFF: it wraps every 65536 ticks). Capture circuit 0 latches the counter on the STEP
-// rising edge, circuit 1 on the falling edge; in free-running mode they alternate, so every pulse
-// yields (rise, fall). The width is fall − rise modulo 2^16, computed by the decoder.
+// VAL1 0xFFFF: it wraps every 65536 ticks, 437 µs at 150 MHz). Capture circuit 0 latches the
+// counter on the STEP rising edge, circuit 1 on the falling edge; in free-running mode they
+// alternate, so every pulse yields (rise, fall).
+//
+// Long pulses: a wrapped 16-bit difference alone would read a 439 µs pulse as 2 µs (an X step).
+// So the reload interrupt counts counter wraps, and every capture is placed on the extended time
+// line (wraps × 2^16 + counter) when its interrupt runs: both capture edges interrupt, so a
+// capture is always less than one counter period old when it is read. The decoder gets the
+// wrapped values plus the whole periods in between (CapturedPulse::extra_periods).
 //
 // DIR sampling: the capture ISR runs at the highest priority we use and reads DIR as its first
-// action. Falling-edge mode (STEPDANCE) interrupts on capture 1 only, so DIR is read just after
-// the falling edge (Stepdance senders hold DIR 1 µs past it). Rising-edge mode (STEP_DIR) also
-// interrupts on capture 0 and keeps the DIR level read there for the pulse.
+// action. In falling-edge mode (STEPDANCE) DIR is the level read just after the falling edge
+// (Stepdance senders hold DIR 1 µs past it); in rising-edge mode (STEP_DIR) it is the level read
+// at the rising edge, kept for the pulse.
 #if defined(__IMXRT1062__)
 
 #include "stepdance/hal/hal.hpp"
@@ -57,7 +63,8 @@ struct CaptureState {
   bool dir_at_rise = false;  // STEP_DIR mode: DIR is the level read at the rising edge
   bool have_rise = false;
   bool rise_dir_high = false;
-  uint16_t rise_ticks = 0;
+  uint64_t rise_ticks = 0;  // on the extended time line
+  uint64_t wraps = 0;       // counter wraps seen by the reload interrupt
 };
 
 CaptureState states[4];
@@ -76,26 +83,44 @@ uint16_t flag_rise(const CaptureWiring& w) { return w.channel_b ? pwm::kCaptureB
 uint16_t flag_fall(const CaptureWiring& w) { return w.channel_b ? pwm::kCaptureB1 : pwm::kCaptureA1; }
 volatile uint16_t& sm(const CaptureWiring& w, uint32_t offset) { return pwm::sm_reg(w.pwm_base, w.submodule, offset); }
 
+// Now on the extended time line: counts a pending wrap first, and one that lands between reading
+// the flags and the counter (the counter then reads small).
+uint64_t extended_now(const CaptureWiring& w, CaptureState& s, uint16_t status) {
+  if (status & pwm::kReload) {
+    sm(w, pwm::kSmSts) = pwm::kReload;
+    ++s.wraps;
+  }
+  const uint16_t counter = sm(w, pwm::kSmCnt);
+  if ((sm(w, pwm::kSmSts) & pwm::kReload) && counter < 0x8000u) {
+    sm(w, pwm::kSmSts) = pwm::kReload;
+    ++s.wraps;
+  }
+  return (s.wraps << 16) | counter;
+}
+
+// A capture latched less than one counter period before `now`, on the extended time line.
+uint64_t extended_capture(uint64_t now, uint16_t captured) {
+  return now - ((static_cast<uint16_t>(now) - captured) & 0xFFFFu);
+}
+
 void service(uint8_t port) {
   const CaptureWiring& w = kWiring[port];
   CaptureState& s = states[port];
   const bool dir_high = pin_level(*pin_info(w.dir_pin));  // first, as close to the edge as we can
   const uint16_t status = sm(w, pwm::kSmSts);
+  const uint64_t now = extended_now(w, s, status);
   if (status & flag_rise(w)) {
-    s.rise_ticks = sm(w, w.channel_b ? pwm::kSmCval4 : pwm::kSmCval2);
+    s.rise_ticks = extended_capture(now, sm(w, w.channel_b ? pwm::kSmCval4 : pwm::kSmCval2));
     s.rise_dir_high = dir_high;
     s.have_rise = true;
     sm(w, pwm::kSmSts) = flag_rise(w);
   }
   if (status & flag_fall(w)) {
-    const uint16_t fall_ticks = sm(w, w.channel_b ? pwm::kSmCval5 : pwm::kSmCval3);
+    const uint64_t fall_ticks = extended_capture(now, sm(w, w.channel_b ? pwm::kSmCval5 : pwm::kSmCval3));
     sm(w, pwm::kSmSts) = flag_fall(w);
     if (s.have_rise && s.sink != nullptr) {
-      protocol::CapturedPulse pulse;
-      pulse.rise_ticks = s.rise_ticks;
-      pulse.fall_ticks = fall_ticks;
-      pulse.dir_high = s.dir_at_rise ? s.rise_dir_high : dir_high;
-      s.sink(s.context, pulse);
+      const bool pulse_dir = s.dir_at_rise ? s.rise_dir_high : dir_high;
+      s.sink(s.context, protocol::captured_from_ticks(s.rise_ticks, fall_ticks, pulse_dir, capture_clock));
     }
     s.have_rise = false;
   }
@@ -119,8 +144,9 @@ void attach_pins(const CaptureWiring& w) {
   pin_make_gpio(dir, false);
 }
 
-// A free-running 16-bit counter on the IPG clock with both capture circuits armed (RM §55.8).
-void start_capture(const CaptureWiring& w, bool interrupt_on_rise) {
+// A free-running 16-bit counter on the IPG clock with both capture circuits armed (RM §55.8);
+// both capture edges and the reload (counter wrap) interrupt.
+void start_capture(const CaptureWiring& w) {
   const unsigned n = w.submodule;
   volatile uint16_t& mctrl = pwm::mctrl(w.pwm_base);
   mctrl = static_cast<uint16_t>(mctrl & ~pwm::mctrl_run(n));
@@ -142,7 +168,7 @@ void start_capture(const CaptureWiring& w, bool interrupt_on_rise) {
   sm(w, w.channel_b ? pwm::kSmCaptctrlB : pwm::kSmCaptctrlA) =
       pwm::kCaptEdge0Rising | pwm::kCaptEdge1Falling | pwm::kCaptArm;
   mctrl = static_cast<uint16_t>(mctrl | pwm::mctrl_run(n));
-  sm(w, pwm::kSmInten) = static_cast<uint16_t>(flag_fall(w) | (interrupt_on_rise ? flag_rise(w) : 0u));
+  sm(w, pwm::kSmInten) = static_cast<uint16_t>(flag_fall(w) | flag_rise(w) | pwm::kReload);
 }
 
 }  // namespace
@@ -166,7 +192,7 @@ Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink,
   state.sink = sink;
   state.context = context;
   state.dir_at_rise = edge == protocol::DirSampleEdge::kRising;
-  teensy::start_capture(wiring, state.dir_at_rise);
+  teensy::start_capture(wiring);
   teensy::irq::install(wiring.irq, teensy::kIsrs[port], teensy::irq::kCapturePriority);
   return Status::kOk;
 }

@@ -18,6 +18,7 @@ constexpr uint32_t kSubmoduleStride = 0x60u;
 inline volatile uint16_t& sm_reg(uint32_t base, unsigned sm, uint32_t offset) {
   return reg16(base + kSubmoduleStride * sm + offset);
 }
+constexpr uint32_t kSmCnt = 0x00;        // SMnCNT: the counter (read only)
 constexpr uint32_t kSmInit = 0x02;       // SMnINIT: counter start value
 constexpr uint32_t kSmCtrl2 = 0x04;      // SMnCTRL2
 constexpr uint32_t kSmCtrl = 0x06;       // SMnCTRL
@@ -44,6 +45,8 @@ constexpr uint16_t kCaptureB0 = 1u << 8;
 constexpr uint16_t kCaptureB1 = 1u << 9;
 constexpr uint16_t kCaptureA0 = 1u << 10;
 constexpr uint16_t kCaptureA1 = 1u << 11;
+// SMnSTS RF / SMnINTEN RIE, bit 12 (RM §55.8): set at every reload, i.e. every counter wrap here.
+constexpr uint16_t kReload = 1u << 12;
 
 // SMnCAPTCTRLA/B fields (RM §55.8): ARM bit 0, ONESHOT bit 1 (0 = free running, circuits 0 and 1
 // alternate), EDGx0 bits 3:2, EDGx1 bits 5:4 (1 = falling, 2 = rising).
