@@ -1,5 +1,5 @@
 // libFuzzer target: arbitrary lines into the RPC block (JSON parsing, argument checks, calls,
-// the chunked index), on the manual board with a few enrolled names of every kind.
+// the chunked index and __describe__, subscriptions and their events), on the manual board with a few enrolled names of every kind.
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -41,6 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   hal_manual::reset();
   engine().clear();
   clear_fault();
+  clear_fault_subscribers();
   FuzzStream stream;
   stream.data = data;
   stream.size = size;
@@ -61,6 +62,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     for (int pass = 0; pass < 64 && (stream.offset < size || stream.write_room == 0); ++pass) {
       dance_loop();
       hal_manual::run_frames(2);
+      if (pass % 8 == 7) {
+        report_fault(FaultLevel::kWarning, FaultReason::kRefused, "fuzz", "now and then");
+        hal_manual::advance_us(RPC::kMinEventIntervalUs);
+      }
+      level += 1;  // a subscribed value changes
       stream.write_room = 300;  // the host reads
     }
   }

@@ -1,8 +1,9 @@
-// The `stepdance` command: simulate scenarios and decode captures.
+// The `stepdance` command: simulate scenarios, decode captures, serve a web control page.
 #include <CLI/CLI.hpp>
 
 #include "decode_command.hpp"
 #include "exit_codes.hpp"
+#include "serve/serve_command.hpp"
 #include "sim_command.hpp"
 #include "usage.hpp"
 
@@ -15,6 +16,8 @@ int main(int argc, char** argv) {
   CLI::App& sim_command = add_sim_command(app, sim);
   DecodeCommandOptions decode;
   CLI::App& decode_command = add_decode_command(app, decode);
+  ServeCommandOptions serve;
+  CLI::App& serve_command = add_serve_command(app, serve);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -22,5 +25,6 @@ int main(int argc, char** argv) {
   }
   if (sim_command.parsed()) return run_sim_command(sim);
   if (decode_command.parsed()) return run_decode_command(decode);
+  if (serve_command.parsed()) return run_serve_command(serve);
   return kExitBadInput;
 }

@@ -115,6 +115,92 @@ TEST_F(RpcTest, IndexListsExactlyTheEnrolledNames) {
   EXPECT_EQ(entries, rpc.enrolled() + 1);  // each name once, plus "result":"ok"
 }
 
+TEST_F(RpcTest, DescribeGivesEachNameItsArgumentAndReturnTypes) {
+  const std::string described = call(R"({"name":"__describe__","id":"d"})");
+  ASSERT_EQ(described.substr(0, 25), "{\"result\":\"ok\",\"return\":{");
+  EXPECT_EQ(described.substr(described.size() - 13), "},\"id\":\"d\"}\r\n");
+  // The letters follow the C++ declarations at the top of this file and in the planner's header.
+  for (const char* entry : {"\"hello\":\"function - v\"", "\"add\":\"function nn n\"", "\"small\":\"function i i\"",
+                            "\"is_positive\":\"function n b\"", "\"echo\":\"function s s\"",
+                            "\"sum6\":\"function iiiiii i\"", "\"gain\":\"parameter n\"", "\"count\":\"parameter i\"",
+                            "\"armed\":\"parameter b\"", "\"tbi.add_move\":\"function innnnnnn i\"",
+                            "\"tbi.output_x.read\":\"function - n\"", "\"tbi.output_x.reset_deep\":\"function n v\""}) {
+    EXPECT_NE(described.find(entry), std::string::npos) << entry << " in " << described;
+  }
+  size_t entries = 0;
+  for (size_t at = described.find("\":\""); at != std::string::npos; at = described.find("\":\"", at + 1)) ++entries;
+  EXPECT_EQ(entries, rpc.enrolled() + 2);  // each name once, plus "result":"ok" and "id":"d"
+}
+
+TEST_F(RpcTest, APlainClientNeverSeesAnEvent) {
+  EXPECT_EQ(call(R"({"name":"hello"})"), "{\"result\":\"ok\"}\r\n");
+  gain = 9.0;
+  report_fault(FaultLevel::kWarning, FaultReason::kRefused, "test", "a refusal");
+  for (int pass = 0; pass < 5; ++pass) {
+    hal_manual::advance_us(RPC::kMinEventIntervalUs);
+    dance_loop();
+  }
+  EXPECT_EQ(host.take(), "");
+}
+
+TEST_F(RpcTest, ASubscribedValueIsSentNowAndWhenItChanges) {
+  EXPECT_EQ(call(R"({"name":"__subscribe__","args":["gain"],"id":5})"),
+            "{\"result\":\"ok\",\"id\":5}\r\n{\"event\":\"changed\",\"name\":\"gain\",\"value\":1.5}\r\n");
+  hal_manual::advance_us(RPC::kMinEventIntervalUs);
+  dance_loop();
+  EXPECT_EQ(host.take(), "");  // unchanged: nothing
+  gain = 2.25;
+  dance_loop();
+  EXPECT_EQ(host.take(), "{\"event\":\"changed\",\"name\":\"gain\",\"value\":2.25}\r\n");
+  gain = 3.0;  // within kMinEventIntervalUs of the last event: held back, then sent
+  dance_loop();
+  EXPECT_EQ(host.take(), "");
+  hal_manual::advance_us(RPC::kMinEventIntervalUs);
+  dance_loop();
+  EXPECT_EQ(host.take(), "{\"event\":\"changed\",\"name\":\"gain\",\"value\":3}\r\n");
+  EXPECT_EQ(call(R"({"name":"__unsubscribe__","args":["gain"]})"), "{\"result\":\"ok\"}\r\n");
+  gain = 4.0;
+  hal_manual::advance_us(RPC::kMinEventIntervalUs);
+  dance_loop();
+  EXPECT_EQ(host.take(), "");
+}
+
+TEST_F(RpcTest, FaultEventsGoOnlyToAHostThatAskedForThem) {
+  EXPECT_EQ(call(R"({"name":"__subscribe__","args":["__faults__"]})"), "{\"result\":\"ok\"}\r\n");
+  report_fault(FaultLevel::kWarning, FaultReason::kRefused, "test", "a refusal");
+  dance_loop();  // delivers the report to the RPC
+  dance_loop();
+  EXPECT_EQ(host.take(),
+            "{\"event\":\"fault\",\"level\":\"" + std::string(to_string(FaultLevel::kWarning)) +
+                "\",\"reason\":\"" + to_string(FaultReason::kRefused) +
+                "\",\"source\":\"test\",\"detail\":\"a refusal\",\"sequence\":1}\r\n");
+  EXPECT_EQ(call(R"({"name":"__unsubscribe__"})"), "{\"result\":\"ok\"}\r\n");
+  report_fault(FaultLevel::kWarning, FaultReason::kRefused, "test", "another");
+  dance_loop();
+  dance_loop();
+  EXPECT_EQ(host.take(), "");
+}
+
+TEST_F(RpcTest, OnlyParametersAndReadersCanBeSubscribed) {
+  EXPECT_EQ(call(R"({"name":"__subscribe__","args":["hello"],"id":1})"),
+            "{\"result\":\"error\",\"error\":\"not a parameter or reader\",\"code\":15,\"id\":1}\r\n");
+  EXPECT_EQ(call(R"({"name":"__subscribe__","args":["nope"],"id":2})"),
+            "{\"result\":\"error\",\"error\":\"Unknown Function or Parameter\",\"code\":10,\"id\":2}\r\n");
+  EXPECT_EQ(call(R"({"name":"__subscribe__","args":[1],"id":3})"),
+            "{\"result\":\"error\",\"error\":\"wrong argument type\",\"code\":12,\"id\":3}\r\n");
+  EXPECT_EQ(hellos, 0);  // refusing it did not call it
+  // A port's read is a reader; the table holds kMaxSubscriptions names.
+  const char* readers[] = {"gain", "count", "armed", "tbi.output_x.read", "tbi.output_y.read",
+                           "tbi.output_z.read", "tbi.speed_override", "tbi.slots_remaining"};
+  static_assert(sizeof(readers) / sizeof(readers[0]) == RPC::kMaxSubscriptions);
+  for (const char* name : readers) {
+    const std::string reply = call(std::string(R"({"name":"__subscribe__","args":[")") + name + R"("]})");
+    EXPECT_EQ(reply.substr(0, 17), "{\"result\":\"ok\"}\r\n") << name << ": " << reply;
+  }
+  EXPECT_EQ(call(R"({"name":"__subscribe__","args":["tbi.output_e.read"],"id":4})"),
+            "{\"result\":\"error\",\"error\":\"too many subscriptions\",\"code\":16,\"id\":4}\r\n");
+}
+
 TEST_F(RpcTest, BlocksAreCallableByTheirDottedNames) {
   EXPECT_EQ(call(R"({"name":"tbi.add_move","args":[1, 50, 10, 0, 0, 0, 0, 0]})"),
             "{\"result\":\"ok\",\"return\":127}\r\n");  // the planner's slots left

@@ -50,6 +50,7 @@ RPC::Entry* RPC::add(const char* prefix, const char* suffix, bool parameter) {
   *entry = Entry{};
   memcpy(entry->name, name, length + 1);
   entry->parameter = parameter;
+  entry->watchable = parameter;
   return entry;
 }
 
@@ -61,6 +62,8 @@ void RPC::enroll_port(const char* name, BlockPort& port) {
     entry->object = &port;
     entry->callable[0] = operation;
     entry->invoke = &invoke_port;
+    entry->signature = operation == 2 ? "n:v" : ":n";
+    entry->watchable = operation != 2;
   }
 }
 
@@ -114,6 +117,7 @@ void RPC::loop() {
     line_length_ = 0;
     line_overrun_ = false;
   }
+  send_events();
   flush_replies();
 }
 
@@ -130,10 +134,11 @@ void RPC::handle_line() {
     reply_error(static_cast<int>(error), rpc::to_string(error), request.id);
     return;
   }
-  if (strcmp(request.name, "__index__") == 0) {
-    reply_index(request);
+  if (strcmp(request.name, "__index__") == 0 || strcmp(request.name, "__describe__") == 0) {
+    reply_index(request, request.name[2] == 'd');
     return;
   }
+  if (handle_subscription(request)) return;
   for (size_t i = 0; i < entry_count_; ++i) {
     Entry& entry = entries_[i];
     if (strcmp(entry.name, request.name) != 0) continue;
@@ -173,8 +178,9 @@ void RPC::reply_error(int code, const char* message, const char* id) {
   send_line(reply);
 }
 
-void RPC::reply_index(const rpc::JsonRequest& request) {
+void RPC::reply_index(const rpc::JsonRequest& request, bool describe) {
   memcpy(index_id_, request.id, sizeof(index_id_));
+  index_describes_ = describe;
   char storage[32];
   TextWriter start(storage, sizeof(storage));
   start.text("{\"result\":\"ok\",\"return\":{");
@@ -199,7 +205,11 @@ void RPC::continue_index() {
       const Entry& entry = entries_[index_cursor_];
       if (index_cursor_ > 0) piece.character(',');
       write_string(piece, entry.name);
-      piece.text(entry.parameter ? ":\"parameter\"" : ":\"function\"");
+      if (index_describes_) {
+        write_description(piece, entry);
+      } else {
+        piece.text(entry.parameter ? ":\"parameter\"" : ":\"function\"");
+      }
     }
     if (piece.size() > kReplyBufferBytes - reply_count_) return;  // wait for the host to read
     for (const char* c = piece.c_str(); *c != '\0'; ++c) {
@@ -207,6 +217,21 @@ void RPC::continue_index() {
     }
     index_cursor_ = last ? -1 : index_cursor_ + 1;
   }
+}
+
+void RPC::write_description(TextWriter& out, const Entry& entry) {
+  if (entry.parameter) {
+    out.text(":\"parameter ").text(entry.signature).character('"');
+    return;
+  }
+  const char* colon = strchr(entry.signature, ':');
+  out.text(":\"function ");
+  if (colon == nullptr || colon == entry.signature) {
+    out.character('-');
+  } else {
+    for (const char* c = entry.signature; c != colon; ++c) out.character(*c);
+  }
+  out.character(' ').text(colon != nullptr ? colon + 1 : "v").character('"');
 }
 
 void RPC::send_line(const TextWriter& line) {

@@ -13,11 +13,41 @@
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
 #include "stepdance/core/byte_stream.hpp"
+#include "stepdance/core/fault.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/interfaces/rpc/json_request.hpp"
 #include "stepdance/interfaces/text_writer.hpp"
 
 namespace stepdance {
+
+namespace rpc {
+/// The __describe__ letter of an argument or return type. Context: compile time.
+template <typename T>
+constexpr char type_letter() {
+  using U = std::remove_cv_t<std::remove_reference_t<T>>;
+  if constexpr (std::is_void_v<U>) {
+    return 'v';
+  } else if constexpr (std::is_same_v<U, const char*> || std::is_same_v<U, char*>) {
+    return 's';
+  } else if constexpr (std::is_same_v<U, bool>) {
+    return 'b';
+  } else if constexpr (std::is_integral_v<U> || std::is_enum_v<U>) {
+    return 'i';
+  } else {
+    return 'n';
+  }
+}
+/// "<argument letters>:<return letter>", one static string per enrolled signature.
+template <typename Ret, typename... Args>
+struct FunctionSignature {
+  static constexpr char text[sizeof...(Args) + 3] = {type_letter<Args>()..., ':', type_letter<Ret>(), '\0'};
+};
+/// "<type letter>" of a parameter.
+template <typename T>
+struct ParameterSignature {
+  static constexpr char text[2] = {type_letter<T>(), '\0'};
+};
+}  // namespace rpc
 
 /// Remote procedure calls over a serial line, compatible with the original library's format:
 /// a request is one line `{"name": "<path>", "args": [...], "id": <any>}` ("args" and "id"
@@ -25,9 +55,20 @@ namespace stepdance {
 /// `{"result":"error","error":"…","code":<n>[,"id":<id>]}` (the original's "error" key and
 /// text, plus a code). `__index__` returns every enrolled
 /// name with "function" or "parameter". A parameter is read with no arguments and written with
-/// one. Error codes: 1 malformed JSON, 2 no name, 3 too many / nested arguments, 4 too long,
+/// one. `__describe__` returns every name with its signature: "function <args> <return>" or
+/// "parameter <type>", one letter per type (n number, i integer, b boolean, s string, v nothing;
+/// "-" for no arguments), e.g. "function nnn i" — so a host can build a form for each name.
+/// A host that wants to be told of changes subscribes: `__subscribe__` with a parameter's or a
+/// reader's name (a port's read, a const method without arguments) gets
+/// `{"event":"changed","name":…,"value":…}` now and whenever the value changes (at most every
+/// kMinEventIntervalUs per name); `__subscribe__` with "__faults__" gets
+/// `{"event":"fault","level":…,"reason":…,"source":…,"detail":…,"sequence":…}` for every
+/// report on the fault path. `__unsubscribe__` with the name (or no argument: everything) stops
+/// them. Nothing is ever sent unasked, so a client of the original library sees no events.
+/// Error codes: 1 malformed JSON, 2 no name, 3 too many / nested arguments, 4 too long,
 /// 10 unknown name, 11 wrong argument count, 12 wrong argument type, 13 value out of range,
-/// 14 line over kMaxLineBytes.
+/// 14 line over kMaxLineBytes, 15 not a parameter or reader (cannot subscribe), 16 no room for
+/// another subscription (kMaxSubscriptions).
 ///
 /// Enrolled names live in a fixed registry of kMaxEntries (names up to kMaxNameBytes); an enroll
 /// that does not fit is refused, counted (enroll_failures()) and reported as a warning. No heap,
@@ -39,8 +80,14 @@ class RPC : public Block {
   static constexpr size_t kMaxEntries = 96;
   static constexpr size_t kMaxNameBytes = 63;
   static constexpr size_t kMaxLineBytes = 512;
+  static constexpr size_t kMaxSubscriptions = 8;
+  static constexpr uint32_t kMinEventIntervalUs = 20000;  // 50 change events per second per name
+  static constexpr size_t kMaxPendingFaultEvents = 4;
 
   RPC() = default;
+  ~RPC();
+  RPC(const RPC&) = delete;
+  RPC& operator=(const RPC&) = delete;
 
   /// Serves the board's console (USB Serial). Context: loop.
   Status begin();
@@ -66,6 +113,7 @@ class RPC : public Block {
     if (entry == nullptr) return;
     memcpy(entry->callable, &function, sizeof(function));
     entry->invoke = &invoke_function<Ret, Args...>;
+    entry->signature = rpc::FunctionSignature<Ret, Args...>::text;
   }
   /// A method of an object, enrolled as "<instance_name>.<name>" (blocks use this in their
   /// enroll()). Context: loop.
@@ -77,6 +125,7 @@ class RPC : public Block {
     entry->object = &instance;
     memcpy(entry->callable, &method, sizeof(method));
     entry->invoke = &invoke_method<Obj, Ret, Args...>;
+    entry->signature = rpc::FunctionSignature<Ret, Args...>::text;
   }
   /// A const method of an object (a reader such as encoder.read), as above.
   template <class Name1, class Name2, class Obj, typename Ret, typename... Args>
@@ -87,6 +136,8 @@ class RPC : public Block {
     entry->object = &instance;
     memcpy(entry->callable, &method, sizeof(method));
     entry->invoke = &invoke_const_method<Obj, Ret, Args...>;
+    entry->signature = rpc::FunctionSignature<Ret, Args...>::text;
+    entry->watchable = sizeof...(Args) == 0 && !std::is_void_v<Ret>;
   }
   /// A variable (int, float, double, bool, a ControlParameter …): read or written by name.
   template <class Name, typename T,
@@ -96,6 +147,7 @@ class RPC : public Block {
     if (entry == nullptr) return;
     entry->object = const_cast<std::remove_cv_t<T>*>(&parameter);
     entry->invoke = &invoke_parameter<std::remove_cv_t<T>>;
+    entry->signature = rpc::ParameterSignature<std::remove_cv_t<T>>::text;
   }
   /// A block's variable as "<instance_name>.<name>". Context: loop.
   template <typename T, typename = std::enable_if_t<std::is_arithmetic_v<std::remove_cv_t<T>>>>
@@ -104,6 +156,7 @@ class RPC : public Block {
     if (entry == nullptr) return;
     entry->object = const_cast<std::remove_cv_t<T>*>(&parameter);
     entry->invoke = &invoke_parameter<std::remove_cv_t<T>>;
+    entry->signature = rpc::ParameterSignature<std::remove_cv_t<T>>::text;
   }
   /// A block's BlockPort as "<instance_name>.<name>.read" etc. Context: loop.
   void enroll_port(const char* instance_name, const char* name, BlockPort& port);
@@ -123,6 +176,8 @@ class RPC : public Block {
   size_t enrolled() const { return entry_count_; }
   /// Requests answered with an error since begin. Context: any.
   uint32_t errors_replied() const { return errors_replied_; }
+  /// Fault events that did not fit kMaxPendingFaultEvents before they could be sent. Context: any.
+  uint32_t events_lost() const { return events_lost_; }
 
   /// Reads requests and answers them. Context: loop (dance_loop).
   void loop() override;
@@ -134,6 +189,14 @@ class RPC : public Block {
     void* object = nullptr;
     alignas(void*) unsigned char callable[2 * sizeof(void*)] = {};
     bool (*invoke)(Entry& entry, const rpc::JsonRequest& request, TextWriter& reply) = nullptr;
+    const char* signature = "";  ///< static: "nnn:i" for a function, "n" for a parameter
+    bool watchable = false;      ///< a parameter or a reader: may be subscribed to
+  };
+  struct Subscription {
+    int entry = -1;  ///< -1: free
+    bool sent = false;
+    uint32_t sent_us = 0;
+    char last[32] = {};  ///< the value as last sent, as JSON text
   };
   enum class ArgError : uint8_t { kNone, kType, kRange };
 
@@ -153,7 +216,13 @@ class RPC : public Block {
   void continue_index();
   void enroll_port(const char* name, BlockPort& port);
   void handle_line();
-  void reply_index(const rpc::JsonRequest& request);
+  void reply_index(const rpc::JsonRequest& request, bool describe);
+  bool handle_subscription(const rpc::JsonRequest& request);
+  int subscribe(const char* name);
+  void send_events();
+  void send_fault_events();
+  static void on_fault_report(const FaultReport& report);
+  static void write_description(TextWriter& out, const Entry& entry);
   void reply_error(int code, const char* message, const char* id);
   void send_line(const TextWriter& line);
   void flush_replies();
@@ -311,7 +380,14 @@ class RPC : public Block {
   size_t reply_head_ = 0;
   size_t reply_count_ = 0;
   int index_cursor_ = -1;  // __index__ being sent: next entry, or −1
+  bool index_describes_ = false;  // sending __describe__ rather than __index__
   char index_id_[rpc::JsonRequest::kMaxIdBytes + 1] = {};
+  Subscription subscriptions_[kMaxSubscriptions];
+  bool fault_events_ = false;
+  FaultReport pending_faults_[kMaxPendingFaultEvents];
+  size_t pending_fault_count_ = 0;
+  uint32_t events_lost_ = 0;
+  static RPC* fault_listener_;  // the RPC whose host asked for fault events (on_fault takes no context)
   // An error found during a call: code and message, picked up by handle_line.
   static int pending_code_;
   static const char* pending_message_;

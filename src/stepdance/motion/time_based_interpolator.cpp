@@ -139,7 +139,10 @@ void TimeBasedInterpolator::commit_final_blocks() {
     if (!planner_.take_final(block, must_commit_now())) break;
     const uint32_t now_us = hal::micros_now();
     if (committed_.empty() && executor_.idle()) committed_until_us_ = now_us;
-    committed_until_us_ += static_cast<uint32_t>(planner::block_time_s(block) * 1e6);
+    // A block longer than kMaxCommitAheadUs (a far target at a low speed) counts as that long:
+    // the commit clock only needs to know the frame has plenty ahead, and the µs count must fit.
+    const double block_us = planner::block_time_s(block) * 1e6;
+    committed_until_us_ += block_us < kMaxCommitAheadUs ? static_cast<uint32_t>(block_us) : kMaxCommitAheadUs;
     committed_.push(block);  // cannot fail: checked not full, and only this context pushes
     oldest_waiting_since_us_ = now_us;
   }

@@ -62,6 +62,8 @@ class TimeBasedInterpolator : public Block {
   static constexpr uint32_t kCommitAheadUs = 10000;
   /// The last waiting block (planned to stop) is handed over only when the frame holds less.
   static constexpr uint32_t kLastBlockAheadUs = 3000;
+  /// A block counts as at most this long (16.7 min) on the commit clock, µs.
+  static constexpr uint32_t kMaxCommitAheadUs = 1000000000;
   /// From rest, the first move waits this long for followers to plan with, microseconds.
   static constexpr uint32_t kStartDelayUs = 20000;
 

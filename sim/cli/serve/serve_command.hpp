@@ -1,0 +1,34 @@
+// `stepdance serve`: a web control page for a board, bridged over WebSocket to its serial line.
+#pragma once
+
+#include <stdint.h>
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace stepdance::cli {
+
+/// Options of `stepdance serve`.
+struct ServeCommandOptions {
+  std::string target;                        ///< a serial device, or a scenario / example folder
+  std::string host = "127.0.0.1";            ///< address to listen on
+  uint16_t port = 8001;                      ///< 0: any free port (announced)
+  std::vector<std::string> allowed_origins;  ///< other web origins that may connect
+  unsigned baud = 115200;                    ///< serial device only
+  std::string board;                         ///< simulation: the board to bridge (default the first)
+  double speed = 1.0;                        ///< simulation: simulated seconds per wall second
+  std::string output_directory;              ///< simulation: write the outputs here instead
+  std::string cache_directory;               ///< simulation: compiled sketch cache
+};
+
+/// Adds the `serve` subcommand to `app`, filling `options` when it is parsed.
+CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options);
+
+/// Serves until SIGINT or SIGTERM; a simulation then writes its outputs. Announces
+/// `serving http://<host>:<port>/ for <board>` on stdout (flushed) once listening. Returns
+/// kExitOk, kExitBadInput (bad options, scenario or sketch) or kExitFailure.
+int run_serve_command(const ServeCommandOptions& options);
+
+}  // namespace stepdance::cli

@@ -1,0 +1,72 @@
+// WebServer: the listening socket and the client registry.
+#include "web_server.hpp"
+
+#include <stdexcept>
+
+#include "web_sessions.hpp"
+
+namespace stepdance::cli::serve {
+
+namespace net = boost::asio;
+using tcp = net::ip::tcp;
+
+WebServer::WebServer(net::io_context& io, const std::string& address, uint16_t port,
+                     std::vector<std::string> allowed_origins, WebServerHooks hooks)
+    : acceptor_(io), policy_(address, port, std::move(allowed_origins)), hooks_(std::move(hooks)) {
+  boost::system::error_code error;
+  const net::ip::address ip = net::ip::make_address(address, error);
+  if (error) throw std::runtime_error("--host: '" + address + "' is not an IP address");
+  const tcp::endpoint endpoint(ip, port);
+  acceptor_.open(endpoint.protocol(), error);
+  if (!error) acceptor_.set_option(net::socket_base::reuse_address(true), error);
+  if (!error) acceptor_.bind(endpoint, error);
+  if (!error) acceptor_.listen(net::socket_base::max_listen_connections, error);
+  if (error) throw std::runtime_error("cannot listen on " + address + ":" + std::to_string(port) + ": " + error.message());
+  port_ = acceptor_.local_endpoint().port();
+  policy_.set_port(port_);
+  accept();
+}
+
+WebServer::~WebServer() = default;
+
+void WebServer::accept() {
+  acceptor_.async_accept([this](boost::system::error_code error, tcp::socket socket) {
+    if (stopped_) return;
+    if (!error) std::make_shared<HttpSession>(std::move(socket), *this)->run();
+    accept();
+  });
+}
+
+ClientId WebServer::add_client(const std::shared_ptr<WebSocketSession>& session) {
+  const ClientId client = next_client_++;
+  clients_[client] = session;
+  if (hooks_.connected) hooks_.connected(client);
+  return client;
+}
+
+void WebServer::remove_client(ClientId client) {
+  if (clients_.erase(client) > 0 && hooks_.disconnected) hooks_.disconnected(client);
+}
+
+void WebServer::send(ClientId client, const std::string& message) {
+  auto found = clients_.find(client);
+  if (found == clients_.end()) return;
+  if (auto session = found->second.lock()) session->send(message);
+}
+
+void WebServer::broadcast(const std::string& message) {
+  for (const auto& [client, weak] : clients_) {
+    if (auto session = weak.lock()) session->send(message);
+  }
+}
+
+void WebServer::stop() {
+  stopped_ = true;
+  boost::system::error_code ignored;
+  acceptor_.close(ignored);
+  for (const auto& [client, weak] : clients_) {
+    if (auto session = weak.lock()) session->close();
+  }
+}
+
+}  // namespace stepdance::cli::serve
