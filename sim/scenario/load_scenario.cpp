@@ -77,6 +77,32 @@ std::pair<int, std::string> first_control_character(std::string_view text) {
   return {0, ""};
 }
 
+/// True for a character that can follow a line's opening '[' in valid TOML: the start of a key
+/// (a table header) or of a value (a line of a multi-line array).
+bool can_follow_opening_bracket(char c) {
+  const bool bare_key = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+  return bare_key || c == '"' || c == '\'' || c == '+' || c == '.' || c == '{' || c == '[' || c == ']' || c == '#' ||
+         c == '\r' || c == '\n';
+}
+
+/// The 1-based line of the first line that opens with '[' (or "[[", spaces allowed after either)
+/// followed by a character that starts neither a key nor a value; 0 when there is none.
+int first_bad_bracket_line(std::string_view text) {
+  int line = 1;
+  for (size_t start = 0; start < text.size(); ++line) {
+    const size_t end = std::min(text.find('\n', start), text.size());
+    size_t i = text.find_first_not_of(" \t", start);
+    if (i < end && text[i] == '[') {
+      ++i;
+      if (i < end && text[i] == '[') ++i;
+      while (i < end && (text[i] == ' ' || text[i] == '\t')) ++i;
+      if (i < end && !can_follow_opening_bracket(text[i])) return line;
+    }
+    start = end + 1;
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::string LoadResult::error_text() const {
@@ -109,6 +135,13 @@ LoadResult parse_scenario(std::string_view text, const std::string& file) {
   // table header (found by fuzz/scenario_fuzz.cpp), so they are refused before it parses.
   if (const auto [line, code] = first_control_character(text); line > 0) {
     reporter.error(line, "control character " + code + " is not allowed in a scenario file");
+    result.errors = reporter.sorted();
+    return result;
+  }
+  // toml++ 3.3 also asserts (undefined behaviour in a release build) on a table header whose
+  // name starts with a character no key can start with, e.g. "[^at]" (found by the same fuzzer).
+  if (const int line = first_bad_bracket_line(text); line > 0) {
+    reporter.error(line, "a table header must start with a name (letters, digits, '_', '-' or a quoted key)");
     result.errors = reporter.sorted();
     return result;
   }

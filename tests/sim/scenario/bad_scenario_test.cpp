@@ -118,5 +118,20 @@ TEST(BadScenarioText, AControlCharacterIsRefusedWithItsLine) {
   EXPECT_TRUE(parse_scenario("duration_s = 1\t# a tab is fine\r\n", "x.toml").ok());
 }
 
+// Found by the same fuzzer: toml++ 3.3 asserts on a table header whose name starts with a
+// character no key can start with. Lines of a multi-line array that open with '[' stay valid.
+TEST(BadScenarioText, ATableHeaderWithoutANameIsRefusedWithItsLine) {
+  for (const char* header : {"[^at]]\n", "[[ !board]]\n", "[=x]\n"}) {
+    const LoadResult result = parse_scenario(std::string("duration_s = 1\n") + header, "x.toml");
+    ASSERT_EQ(result.errors.size(), 1u) << header;
+    EXPECT_EQ(result.errors[0].to_string(),
+              "x.toml:2: a table header must start with a name (letters, digits, '_', '-' or a quoted key)");
+  }
+  const LoadResult arrays = parse_scenario("duration_s = 1\nx = [\n  [+1, 2],\n  [.5, 3],\n  [ ]\n]\n", "x.toml");
+  for (const Diagnostic& error : arrays.errors) {
+    EXPECT_EQ(error.to_string().find("table header"), std::string::npos) << error.to_string();
+  }
+}
+
 }  // namespace
 }  // namespace stepdance::sim::scenario
