@@ -103,6 +103,42 @@ int first_bad_bracket_line(std::string_view text) {
   return 0;
 }
 
+/// The 1-based line of the first non-ASCII byte outside comments and strings (where TOML allows
+/// none); 0 when there is none. A small lexer: comments run to the line's end; basic strings
+/// ("…", """…""") take backslash escapes, literal strings ('…', \'\'\'…\'\'\') do not.
+int first_non_ascii_outside_strings(std::string_view text) {
+  int line = 1;
+  size_t i = 0;
+  auto starts = [&text](size_t at, const char* what) { return text.compare(at, 3, what) == 0; };
+  while (i < text.size()) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (static_cast<unsigned char>(c) >= 0x80) return line;
+    if (c == '#') {
+      i = std::min(text.find('\n', i), text.size());
+      continue;
+    }
+    if (c != '"' && c != '\'') {
+      ++i;
+      continue;
+    }
+    const bool multi = starts(i, c == '"' ? "\"\"\"" : "\'\'\'");
+    const std::string_view close = multi ? (c == '"' ? "\"\"\"" : "\'\'\'") : (c == '"' ? "\"" : "'");
+    i += close.size();
+    bool escaped = false;
+    while (i < text.size() && (escaped || text.compare(i, close.size(), close) != 0)) {
+      if (text[i] == '\n') {
+        ++line;
+        if (!multi) break;  // an unterminated string: toml++ reports it
+      }
+      escaped = c == '"' && text[i] == '\\' && !escaped;
+      ++i;
+    }
+    i += close.size();
+  }
+  return 0;
+}
+
 }  // namespace
 
 std::string LoadResult::error_text() const {
@@ -142,6 +178,14 @@ LoadResult parse_scenario(std::string_view text, const std::string& file) {
   // name starts with a character no key can start with, e.g. "[^at]" (found by the same fuzzer).
   if (const int line = first_bad_bracket_line(text); line > 0) {
     reporter.error(line, "a table header must start with a name (letters, digits, '_', '-' or a quoted key)");
+    result.errors = reporter.sorted();
+    return result;
+  }
+  // toml++ 3.3 reaches an unreachable point (undefined behaviour) classifying some non-ASCII
+  // characters outside strings, e.g. 'µ' in an inline table (found by the same fuzzer). TOML
+  // allows them only in comments and strings, so anything else is refused first.
+  if (const int line = first_non_ascii_outside_strings(text); line > 0) {
+    reporter.error(line, "a non-ASCII character outside a string or comment is not allowed in a scenario file");
     result.errors = reporter.sorted();
     return result;
   }

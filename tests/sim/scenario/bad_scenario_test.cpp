@@ -118,6 +118,22 @@ TEST(BadScenarioText, AControlCharacterIsRefusedWithItsLine) {
   EXPECT_TRUE(parse_scenario("duration_s = 1\t# a tab is fine\r\n", "x.toml").ok());
 }
 
+// Found by the same fuzzer: toml++ 3.3 reaches an unreachable point classifying 'µ' outside a
+// string. TOML allows non-ASCII text only in comments and strings, where it stays welcome.
+TEST(BadScenarioText, NonAsciiOutsideStringsAndCommentsIsRefusedWithItsLine) {
+  const LoadResult result = parse_scenario("duration_s = 1\nx = { a = 1, m\xc2\xb5s = 2 }\n", "x.toml");
+  ASSERT_EQ(result.errors.size(), 1u);
+  EXPECT_EQ(result.errors[0].to_string(),
+            "x.toml:2: a non-ASCII character outside a string or comment is not allowed in a scenario file");
+  const LoadResult fine = parse_scenario(
+      "# 3 \xc2\xb5s \xe2\x86\x92 X\nduration_s = 1 # \xc2\xb1 0.1\n", "x.toml");
+  EXPECT_TRUE(fine.ok()) << fine.error_text();
+  const LoadResult quoted = parse_scenario("duration_s = 1\n\"k\\\"\xc2\xb5\" = 'x\xc2\xb5'\n", "x.toml");
+  for (const Diagnostic& error : quoted.errors) {
+    EXPECT_EQ(error.to_string().find("non-ASCII"), std::string::npos) << error.to_string();
+  }
+}
+
 // Found by the same fuzzer: toml++ 3.3 asserts on a table header whose name starts with a
 // character no key can start with. Lines of a multi-line array that open with '[' stay valid.
 TEST(BadScenarioText, ATableHeaderWithoutANameIsRefusedWithItsLine) {
