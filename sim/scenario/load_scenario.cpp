@@ -77,52 +77,54 @@ std::pair<int, std::string> first_control_character(std::string_view text) {
   return {0, ""};
 }
 
-/// True for a character that can follow a line's opening '[' in valid TOML: the start of a key
-/// (a table header) or of a value (a line of a multi-line array).
-bool can_follow_opening_bracket(char c) {
-  const bool bare_key = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
-  return bare_key || c == '"' || c == '\'' || c == '+' || c == '.' || c == '{' || c == '[' || c == ']' || c == '#' ||
-         c == '\r' || c == '\n';
+/// What toml++ 3.3 cannot be trusted with (it asserts, or reaches an unreachable point, where
+/// TOML only asks for an error), found by fuzz/scenario_fuzz.cpp.
+struct UnsafeText {
+  int line = 0;  ///< 1-based; 0 when the text is safe
+  const char* message = "";
+};
+
+bool starts_a_key(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+         c == '"' || c == '\'';
 }
 
-/// The 1-based line of the first line that opens with '[' (or "[[", spaces allowed after either)
-/// followed by a character that starts neither a key nor a value; 0 when there is none.
-int first_bad_bracket_line(std::string_view text) {
-  int line = 1;
-  for (size_t start = 0; start < text.size(); ++line) {
-    const size_t end = std::min(text.find('\n', start), text.size());
-    size_t i = text.find_first_not_of(" \t", start);
-    if (i < end && text[i] == '[') {
-      ++i;
-      if (i < end && text[i] == '[') ++i;
-      while (i < end && (text[i] == ' ' || text[i] == '\t')) ++i;
-      if (i < end && !can_follow_opening_bracket(text[i])) return line;
-    }
-    start = end + 1;
-  }
-  return 0;
-}
-
-/// The 1-based line of the first non-ASCII byte outside comments and strings (where TOML allows
-/// none); 0 when there is none. A small lexer: comments run to the line's end; basic strings
-/// ("…", """…""") take backslash escapes, literal strings ('…', \'\'\'…\'\'\') do not.
-int first_non_ascii_outside_strings(std::string_view text) {
-  int line = 1;
+/// A small lexer over the text: comments run to the line's end; basic strings ("…", """…""")
+/// take backslash escapes, literal strings ('…', \'\'\'…\'\'\') do not; '[' and '{' inside values
+/// nest. Outside strings and comments it finds the first non-ASCII byte (TOML allows none there)
+/// and the first table header — a '[' opening a line outside any value — whose name does not
+/// start like a key.
+UnsafeText find_unsafe_text(std::string_view text) {
+  int line = 1, depth = 0;
+  bool line_start = true;
   size_t i = 0;
-  auto starts = [&text](size_t at, const char* what) { return text.compare(at, 3, what) == 0; };
   while (i < text.size()) {
     const char c = text[i];
-    if (c == '\n') ++line;
-    if (static_cast<unsigned char>(c) >= 0x80) return line;
+    if (c == '\n') ++line, line_start = true;
+    if (static_cast<unsigned char>(c) >= 0x80) return {line, "a non-ASCII character outside a string or comment is not allowed in a scenario file"};
     if (c == '#') {
       i = std::min(text.find('\n', i), text.size());
       continue;
     }
+    if (c == '[' && depth == 0 && line_start) {  // a table header
+      size_t j = i + 1;
+      if (j < text.size() && text[j] == '[') ++j;
+      while (j < text.size() && (text[j] == ' ' || text[j] == '\t')) ++j;
+      if (j >= text.size() || (!starts_a_key(text[j]) && text[j] != ']')) {
+        return {line, "a table header must start with a name (letters, digits, '_', '-' or a quoted key)"};
+      }
+      line_start = false;
+      i = j;
+      continue;
+    }
+    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') line_start = false;
+    if (c == '[' || c == '{') ++depth;
+    if ((c == ']' || c == '}') && depth > 0) --depth;
     if (c != '"' && c != '\'') {
       ++i;
       continue;
     }
-    const bool multi = starts(i, c == '"' ? "\"\"\"" : "\'\'\'");
+    const bool multi = text.compare(i, 3, c == '"' ? "\"\"\"" : "\'\'\'") == 0;
     const std::string_view close = multi ? (c == '"' ? "\"\"\"" : "\'\'\'") : (c == '"' ? "\"" : "'");
     i += close.size();
     bool escaped = false;
@@ -136,7 +138,7 @@ int first_non_ascii_outside_strings(std::string_view text) {
     }
     i += close.size();
   }
-  return 0;
+  return {};
 }
 
 }  // namespace
@@ -174,18 +176,10 @@ LoadResult parse_scenario(std::string_view text, const std::string& file) {
     result.errors = reporter.sorted();
     return result;
   }
-  // toml++ 3.3 also asserts (undefined behaviour in a release build) on a table header whose
-  // name starts with a character no key can start with, e.g. "[^at]" (found by the same fuzzer).
-  if (const int line = first_bad_bracket_line(text); line > 0) {
-    reporter.error(line, "a table header must start with a name (letters, digits, '_', '-' or a quoted key)");
-    result.errors = reporter.sorted();
-    return result;
-  }
-  // toml++ 3.3 reaches an unreachable point (undefined behaviour) classifying some non-ASCII
-  // characters outside strings, e.g. 'µ' in an inline table (found by the same fuzzer). TOML
-  // allows them only in comments and strings, so anything else is refused first.
-  if (const int line = first_non_ascii_outside_strings(text); line > 0) {
-    reporter.error(line, "a non-ASCII character outside a string or comment is not allowed in a scenario file");
+  // toml++ 3.3 asserts or reaches an unreachable point on some text TOML only calls an error
+  // (a table header starting with '^', a 'µ' outside a string), so that text is refused first.
+  if (const UnsafeText unsafe = find_unsafe_text(text); unsafe.line > 0) {
+    reporter.error(unsafe.line, unsafe.message);
     result.errors = reporter.sorted();
     return result;
   }

@@ -137,7 +137,7 @@ TEST(BadScenarioText, NonAsciiOutsideStringsAndCommentsIsRefusedWithItsLine) {
 // Found by the same fuzzer: toml++ 3.3 asserts on a table header whose name starts with a
 // character no key can start with. Lines of a multi-line array that open with '[' stay valid.
 TEST(BadScenarioText, ATableHeaderWithoutANameIsRefusedWithItsLine) {
-  for (const char* header : {"[^at]]\n", "[[ !board]]\n", "[=x]\n"}) {
+  for (const char* header : {"[^at]]\n", "[[ !board]]\n", "[=x]\n", "[[.02\n", "[+x]\n", "[\n"}) {
     const LoadResult result = parse_scenario(std::string("duration_s = 1\n") + header, "x.toml");
     ASSERT_EQ(result.errors.size(), 1u) << header;
     EXPECT_EQ(result.errors[0].to_string(),
