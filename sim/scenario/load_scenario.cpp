@@ -100,7 +100,10 @@ UnsafeText find_unsafe_text(std::string_view text) {
   size_t i = 0;
   while (i < text.size()) {
     const char c = text[i];
-    if (c == '\n') ++line, line_start = true;
+    if (c == '\n') {
+      ++line;
+      line_start = true;
+    }
     if (static_cast<unsigned char>(c) >= 0x80) return {line, "a non-ASCII character outside a string or comment is not allowed in a scenario file"};
     if (c == '#') {
       i = std::min(text.find('\n', i), text.size());
