@@ -31,7 +31,7 @@ build_target() {
   for entry in ${target_sources[$name]}; do
     if [ "$entry" = core ]; then
       mapfile -t -O "${#sources[@]}" sources < <(find src/stepdance -name '*.cpp' -not -path '*/platform/*' | sort)
-      sources+=(host/hal_manual/hal_manual.cpp)
+      sources+=(host/hal_manual/*.cpp)
     elif [ -d "$entry" ]; then
       sources+=("$entry"/*.cpp)
     else
