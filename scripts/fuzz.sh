@@ -2,6 +2,8 @@
 # Builds the libFuzzer targets in fuzz/ with clang (ASan + UBSan) and runs them on their corpora.
 #   scripts/fuzz.sh                 short smoke run of every target (CI)
 #   scripts/fuzz.sh gcode 10000000  one target for a number of executions (the documented long run)
+# STEPDANCE_FUZZ_TIMEOUT_S (default 10) is libFuzzer's per-input wall-clock limit: raise it for a
+# long run on a loaded machine, which stretches wall time, not the work.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${STEPDANCE_FUZZ_DIR:-build-fuzz}
@@ -26,21 +28,60 @@ declare -A target_flags=(
 # Longest input per target (default 4096 bytes): the example scenarios are up to 6 KB.
 declare -A target_max_len=([scenario]=8192)
 
-build_target() {
-  local name=$1 sources=()
+# Sources of one target, one per line.
+sources_of() {
+  local name=$1
   for entry in ${target_sources[$name]}; do
     if [ "$entry" = core ]; then
-      mapfile -t -O "${#sources[@]}" sources < <(find src/stepdance -name '*.cpp' -not -path '*/platform/*' | sort)
-      sources+=(host/hal_manual/*.cpp)
+      find src/stepdance -name '*.cpp' -not -path '*/platform/*' | sort
+      printf '%s\n' host/hal_manual/*.cpp
     elif [ -d "$entry" ]; then
-      sources+=("$entry"/*.cpp)
+      printf '%s\n' "$entry"/*.cpp
     else
-      sources+=("$entry")
+      printf '%s\n' "$entry"
     fi
   done
+  echo "fuzz/${name}_fuzz.cpp"
+}
+
+# Object of a source compiled with a target's extra flags; targets with the same flags share it.
+object_of() {
+  local flags_key
+  flags_key=$(printf '%s' "$1" | md5sum | cut -c1-8)
+  echo "$build/obj/$flags_key/${2//\//__}.o"
+}
+
+compile_object() {
+  local flags=$1 source=$2 object=$3
+  mkdir -p "$(dirname "$object")"
   # shellcheck disable=SC2086 # the flags are words
-  clang++ -std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-    -Isrc -Ihost/hal_manual ${target_flags[$name]:-} "fuzz/${name}_fuzz.cpp" "${sources[@]}" -o "$build/${name}_fuzz"
+  clang++ -std=c++17 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
+    -Isrc -Ihost/hal_manual $flags -c "$source" -o "$object"
+}
+export -f compile_object
+
+# Compiles every object the targets need once, on every core, then links each target.
+build_targets() {
+  local name source flags jobs=()
+  declare -A seen=()
+  for name in "$@"; do
+    flags=${target_flags[$name]:-}
+    while read -r source; do
+      local object
+      object=$(object_of "$flags" "$source")
+      [ -n "${seen[$object]:-}" ] && continue
+      seen[$object]=1
+      jobs+=("$flags" "$source" "$object")
+    done < <(sources_of "$name")
+  done
+  printf '%s\0' "${jobs[@]}" |
+    xargs -0 -n 3 -P "$(nproc)" bash -c 'compile_object "$1" "$2" "$3"' _
+  for name in "$@"; do
+    local objects=()
+    flags=${target_flags[$name]:-}
+    while read -r source; do objects+=("$(object_of "$flags" "$source")"); done < <(sources_of "$name")
+    clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$build/${name}_fuzz"
+  done
 }
 
 run_target() {
@@ -53,7 +94,7 @@ run_target() {
   fi
   # The checked-in seeds stay untouched; new inputs go to the build folder.
   local log="$build/${name}.log"
-  if ! "$build/${name}_fuzz" -runs="$runs" ${seed_flag} -max_len="${target_max_len[$name]:-4096}" -timeout=10 -print_final_stats=1 \
+  if ! "$build/${name}_fuzz" -runs="$runs" ${seed_flag} -max_len="${target_max_len[$name]:-4096}" -timeout="${STEPDANCE_FUZZ_TIMEOUT_S:-10}" -print_final_stats=1 \
       -artifact_prefix="$build/${name}-" "$work" "fuzz/corpus/$name" >"$log" 2>&1; then
     grep -A 30 -E "ERROR|runtime error|deadly signal|timeout" "$log" | head -n 60
     echo "fuzz: $name FAILED (full log: $log; reproducer: $build/${name}-*)"
@@ -73,8 +114,9 @@ else
   # alone), so CI's verdict repeats; long runs take a new random seed each time.
   seed_flag="-seed=${STEPDANCE_FUZZ_SEED:-1}"
 fi
+export build
+build_targets "${targets[@]}"
 for name in "${targets[@]}"; do
   echo "fuzz: $name, $runs executions"
-  build_target "$name"
   run_target "$name" "$runs"
 done
