@@ -6,17 +6,23 @@
 # and a short smoke run of every libFuzzer target (the long runs are documented in docs/fuzzing.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-scripts/setup-npm-clients.sh
-scripts/check-core-portability.sh
-scripts/build-target.sh
-scripts/build-teensy.sh
-scripts/test-target-qemu.sh
-scripts/build-host.sh
-ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)"
+# Each stage prints the seconds since the start, so a slow stage shows in the log.
+stage() {
+  echo "== [${SECONDS} s] $*"
+  "$@"
+}
+stage scripts/setup.sh
+stage scripts/setup-npm-clients.sh
+stage scripts/check-core-portability.sh
+stage scripts/build-target.sh
+stage scripts/build-teensy.sh
+stage scripts/test-target-qemu.sh
+stage scripts/build-host.sh
+stage ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)"
 echo "== again under AddressSanitizer and UBSan"
-STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
+stage env STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
 # Slow integration tests (live pseudo-terminals, browsers, npm clients) run once, above.
-ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)" -LE integration
+stage ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)" -LE integration
 echo "== fuzz smoke runs"
-scripts/fuzz.sh
+stage scripts/fuzz.sh
+echo "== [${SECONDS} s] all tests passed"
