@@ -55,6 +55,7 @@ class ConsoleStream final : public ByteStream {
 class MemoryStorage final : public FileStorage {
  public:
   Status open(const char* name, FileMode mode, int& handle) override {
+    if (!present) return Status::kUnsupported;
     if (name == nullptr || std::strlen(name) > kMaxNameLength) return Status::kBadArgument;
     if (mode == FileMode::kRead && !files.count(name)) return Status::kIoError;
     auto& file = files[name];
@@ -93,6 +94,7 @@ class MemoryStorage final : public FileStorage {
   }
   std::map<std::string, std::vector<uint8_t>> files;
   std::vector<OpenFile> handles;
+  bool present = true;  // false: a board without a card slot (a Teensy 4.0)
 };
 
 /// EEPROM emulation: a Teensy 4.0's 1080 bytes, erased (0xFF) at reset(), kept by reboot().
@@ -264,6 +266,7 @@ void reboot(uint32_t start_us) {
 
 uint8_t* eeprom_bytes() { return board().eeprom.bytes.data(); }
 uint32_t eeprom_writes() { return board().eeprom.writes; }
+void set_storage_present(bool present) { board().storage.present = present; }
 
 void run_frames(uint32_t n) {
   for (uint32_t i = 0; i < n; ++i) {

@@ -23,6 +23,10 @@ constexpr size_t kEepromBytes = 1080;
 uint8_t* eeprom_bytes();
 uint32_t eeprom_writes();
 
+/// Takes the card slot away (false: open() answers kUnsupported, as on a Teensy 4.0) or gives it
+/// back; reset() gives it back.
+void set_storage_present(bool present);
+
 /// Runs n frame ticks: each advances time by 40 µs and calls the frame ISR if the frame timer
 /// runs; every 25th tick also calls the kilohertz ISR after the frame (if that timer runs).
 void run_frames(uint32_t n);

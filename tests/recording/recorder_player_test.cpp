@@ -234,6 +234,20 @@ TEST_F(RecordingTest, NamesTooLongForTheCardAreRefusedClearly) {
   EXPECT_EQ(player.start("missing"), Status::kIoError);
 }
 
+TEST_F(RecordingTest, ABoardWithoutACardSlotIsNamedAsSuchOnTheConsole) {
+  hal_manual::set_storage_present(false);  // a Teensy 4.0: its core defines BUILTIN_SDCARD, no slot
+  hal_manual::take_console_output();
+  EXPECT_EQ(recorder.start("take"), Status::kUnsupported);
+  EXPECT_FALSE(recorder.recorder_active);
+  EXPECT_EQ(player.start("take"), Status::kUnsupported);
+  EXPECT_FALSE(player.playback_active);
+  const std::string console = hal_manual::take_console_output();
+  EXPECT_NE(console.find("FourTrackRecorder::start: this board has no SD card slot"), std::string::npos) << console;
+  EXPECT_NE(console.find("FourTrackPlayer::start: this board has no SD card slot"), std::string::npos) << console;
+  hal_manual::set_storage_present(true);
+  EXPECT_EQ(recorder.start("take"), Status::kOk);  // the slot back, recording works again
+}
+
 TEST_F(RecordingTest, PauseLeavesOutTheMovesMadeMeanwhile) {
   ASSERT_EQ(recorder.start("paused"), Status::kOk);
   sources[0].play(std::vector<double>(30, kStep));

@@ -56,7 +56,12 @@ Status FourTrackPlayer::open_files(const char* name) {
   FileName data_name;
   recording_file_name(name, ".bin", data_name);
   FileStorage& storage = hal::storage();
-  if (storage.open(data_name, FileMode::kRead, handle_) != Status::kOk) {
+  const Status opened = storage.open(data_name, FileMode::kRead, handle_);
+  if (opened == Status::kUnsupported) {
+    fail("FourTrackPlayer::start: this board has no SD card slot (a Teensy 4.0 has none; play back on a 4.1)", opened);
+    return opened;
+  }
+  if (opened != Status::kOk) {
     fail("FourTrackPlayer::start: cannot open the recording", Status::kIoError);
     return Status::kIoError;
   }

@@ -37,8 +37,8 @@ class FourTrackPlayer : public Block {
   Status begin();
   /// Starts playing `<name>.bin` from its beginning (a playback under way is stopped first).
   /// kBadArgument for an empty or too long name, kIoError if the file cannot be read,
-  /// kUnsupported for a file of our format this version cannot play (all reported on the
-  /// console). Context: loop.
+  /// kUnsupported for a file of our format this version cannot play or a board without a card
+  /// slot (a Teensy 4.0) (all reported on the console). Context: loop.
   Status start(const char* name = "recording");
   /// Holds playback where it is. Context: loop.
   void pause() { paused_ = true; }

@@ -38,7 +38,13 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
     return Status::kBadArgument;
   }
   FileStorage& storage = hal::storage();
-  if (storage.open(data_name_, FileMode::kWriteTruncate, handle_) != Status::kOk) {
+  const Status opened = storage.open(data_name_, FileMode::kWriteTruncate, handle_);
+  if (opened == Status::kUnsupported) {
+    hal::log_message("FourTrackRecorder::start: this board has no SD card slot (a Teensy 4.0 has none; record on a 4.1)");
+    report_fault(FaultLevel::kWarning, FaultReason::kRefused, kSource, "no SD card slot on this board");
+    return Status::kUnsupported;
+  }
+  if (opened != Status::kOk) {
     hal::log_message("FourTrackRecorder::start: cannot create the recording file (no card?)");
     report_fault(FaultLevel::kWarning, FaultReason::kHardware, kSource, "cannot create the recording file");
     return Status::kIoError;

@@ -48,8 +48,8 @@ class FourTrackRecorder : public Block {
   Status begin();
   /// Starts recording into `<name>.bin` (created or emptied) for at most `minutes`; while
   /// already recording it only resumes. kBadArgument if the name is empty or too long for the
-  /// storage with "_len.bin" appended, kIoError if the file cannot be created (both reported on
-  /// the console). Context: loop.
+  /// storage with "_len.bin" appended, kUnsupported on a board without a card slot (a Teensy
+  /// 4.0), kIoError if the file cannot be created (all reported on the console). Context: loop.
   Status start(const char* name, uint32_t minutes = 30);
   /// Stops adding samples (the inputs' moves meanwhile are not recorded). Context: loop.
   void pause() { paused_ = true; }

@@ -14,8 +14,12 @@
 //                micros()
 //                F_CPU_ACTUAL, F_BUS_ACTUAL       running core and peripheral bus clocks, in Hz
 //                IRQ_NUMBER_t, attachInterruptVector(irq, handler)   RAM vector table entry
-//     SD.h       BUILTIN_SDCARD, FILE_READ, FILE_WRITE
-//                File: read, write, close, operator bool; SDClass SD: begin, open, remove
+//     SdFat.h    SdFs: begin(SdioConfig(FIFO_SDIO)), remove; FsFile: open(volume, path, flags),
+//                read, write, close; O_RDONLY, O_WRONLY, O_CREAT, O_TRUNC, O_AT_END
+//   Modelled, not used by the backend
+//     SD.h       BUILTIN_SDCARD, FILE_READ, FILE_WRITE; File, SDClass SD: begin, open, remove —
+//                allocating its file objects on the heap like the real library, so the build's
+//                no-heap check sees a sketch (or a backend change) that uses it
 //   For sketches
 //     Arduino.h  setup(), loop()                  the sketch's entry points, called by main()
 //                HIGH, LOW                        1, 0

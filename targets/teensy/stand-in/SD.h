@@ -1,5 +1,8 @@
-// Stand-in declarations of the Teensy SD library, as far as the Teensy backend uses it (the list is
-// in Arduino.h). The definitions in teensyduino_stand_in.cpp behave as if no card were inserted.
+// Stand-in declarations of Teensyduino's SD library, modelling its allocation: SD.open() returns a
+// File that owns a heap-allocated file object, shared by copies and freed by the last one. Our
+// backend does not use this library (it uses SdFat without the heap); a sketch that does pulls
+// operator new and delete into its image, and the build's no-heap check reports it. The
+// definitions in SD.cpp behave as if no card were inserted.
 #pragma once
 
 #include <stddef.h>
@@ -13,17 +16,22 @@
 class File {
  public:
   File() = default;
-  File(const File&) = default;
-  File& operator=(const File&) = default;
-  ~File() = default;
+  File(const File& other);
+  File& operator=(const File& other);
+  ~File();
 
   size_t read(void* buffer, size_t length);
   size_t write(const void* buffer, size_t length);
   void close();
   operator bool();
 
+  struct Shared;  // the heap object an open File refers to
+
  private:
-  bool open_ = false;
+  explicit File(Shared* shared) : shared_(shared) {}
+  void release();
+  Shared* shared_ = nullptr;
+  friend class SDClass;
 };
 
 /// The card: start it, open and remove files.
@@ -32,6 +40,9 @@ class SDClass {
   bool begin(uint8_t chip_select_pin);
   File open(const char* path, uint8_t mode);
   bool remove(const char* path);
+
+ private:
+  bool card_ = false;
 };
 
 extern SDClass SD;

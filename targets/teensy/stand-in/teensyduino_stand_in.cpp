@@ -1,7 +1,6 @@
 // Do-nothing definitions of the stand-in Teensyduino services, so a CI firmware image links.
 // They only make the link and the size report possible: an image built with them is not flashable.
 #include "Arduino.h"
-#include "SD.h"
 #include "Wire.h"
 #include "avr/eeprom.h"
 
@@ -42,7 +41,6 @@ size_t usb_serial_class::write(const uint8_t*, size_t length) { return length; }
 int usb_serial_class::availableForWrite() { return 0; }
 usb_serial_class::operator bool() const { return true; }
 
-SDClass SD;
 TwoWire Wire;
 TwoWire Wire1;
 
@@ -54,15 +52,6 @@ uint8_t TwoWire::endTransmission(uint8_t) { return 2; }
 uint8_t TwoWire::requestFrom(uint8_t, uint8_t, uint8_t) { return 0; }
 int TwoWire::available() { return 0; }
 int TwoWire::read() { return -1; }
-
-size_t File::read(void*, size_t) { return 0; }
-size_t File::write(const void*, size_t) { return 0; }
-void File::close() { open_ = false; }
-File::operator bool() { return open_; }
-
-bool SDClass::begin(uint8_t) { return false; }
-File SDClass::open(const char*, uint8_t) { return File(); }
-bool SDClass::remove(const char*) { return false; }
 
 namespace {
 // Cortex-M7 exceptions (16) plus the i.MX RT1062's 160 interrupts.

@@ -1,4 +1,5 @@
-// The ONLY door from the Teensy backend to the Teensyduino core and its SD library.
+// The ONLY door from the Teensy backend to the Teensyduino core (SdFat has its own,
+// teensyduino_storage.hpp, so only sketches that use storage see it).
 //
 // Everything else in platform/teensy talks to the hardware through our own regs_*.hpp. Keep this
 // list tiny: the CI stand-in (targets/teensy/stand-in/) declares exactly these, with these
@@ -18,21 +19,6 @@
 //     enum IRQ_NUMBER_t { ... };                          // any enum able to hold 0..159
 //     void attachInterruptVector(IRQ_NUMBER_t irq, void (*function)(void));
 //                                                         // writes the RAM vector table entry
-//   <SD.h>
-//     #define BUILTIN_SDCARD, FILE_READ, FILE_WRITE       // FILE_WRITE opens at the end, creating
-//     class File {                                        //   the file if needed
-//       File();  File& operator=(const File&);  ~File();
-//       size_t read(void* buf, size_t nbyte);
-//       size_t write(const void* buf, size_t size);
-//       void close();
-//       operator bool();                                  // true while open
-//     };
-//     class SDClass {
-//       bool begin(uint8_t csPin);                        // called with BUILTIN_SDCARD
-//       File open(const char* filepath, uint8_t mode);
-//       bool remove(const char* filepath);
-//     };
-//     extern SDClass SD;
 //   <Wire.h>
 //     class TwoWire {
 //       void begin();  void setClock(uint32_t frequency);
@@ -58,7 +44,6 @@
 #if defined(__IMXRT1062__)
 
 #include <Arduino.h>
-#include <SD.h>
 #include <Wire.h>
 #include <avr/eeprom.h>
 #include <stddef.h>
@@ -82,14 +67,6 @@ inline uint32_t bus_clock_hz() { return F_BUS_ACTUAL; }
 inline void set_vector(uint8_t irq, void (*handler)()) {
   attachInterruptVector(static_cast<IRQ_NUMBER_t>(irq), handler);
 }
-
-// ---- SD card ------------------------------------------------------------------------------------
-using SdFileHandle = ::File;
-inline bool sd_begin_builtin() { return SD.begin(BUILTIN_SDCARD); }
-inline SdFileHandle sd_open_read(const char* name) { return SD.open(name, FILE_READ); }
-/// Opens for writing at the end of the file, creating it if needed.
-inline SdFileHandle sd_open_append(const char* name) { return SD.open(name, FILE_WRITE); }
-inline bool sd_remove(const char* name) { return SD.remove(name); }
 
 // ---- I2C (Wire = QWIIC0, Wire1 = QWIIC1); each call blocks until its bytes are on the wire -------
 inline TwoWire& wire(uint8_t bus) { return bus == 0 ? Wire : Wire1; }
