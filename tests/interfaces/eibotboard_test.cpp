@@ -13,6 +13,7 @@
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
+#include "stepdance/core/fault.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"
 
@@ -341,6 +342,39 @@ TEST_F(EibotboardTest, QueryMotorsFollowsExecutionAndEmergencyStopFlushes) {
   EXPECT_LT(stopped, 1000);
   for (int i = 0; i < 1000; ++i) step();
   EXPECT_EQ(motor(0), stopped);
+}
+
+TEST_F(EibotboardTest, AnAlarmStopsTheMotorsRefusesMotorMovesAndStillLiftsThePen) {
+  ASSERT_EQ(exchange("CU,4,8\r"), "OK\r\n");  // FIFO depth 8: one move running, one waiting
+  ASSERT_EQ(exchange("SP,0\r"), "OK\r\n");  // pen down
+  ASSERT_EQ(exchange("SM,1000,1000,0\r"), "OK\r\n");
+  ASSERT_EQ(exchange("SM,1000,1000,0\r"), "OK\r\n");
+  for (int i = 0; i < 200; ++i) step();
+  const int64_t before = motor(0);
+  ASSERT_GT(before, 0);
+  report_fault(FaultLevel::kAlarm, FaultReason::kLimitHit, "test", "limit switch");
+  step();
+  const int64_t stopped = motor(0);
+  EXPECT_LE(stopped - before, 1);  // at most the step of the frame that saw the alarm
+  EXPECT_EQ(exchange("QM\r"), "QM,0,0,0,0\n\r");  // the running and the waiting move are gone
+  for (int i = 0; i < 1000; ++i) step();
+  EXPECT_EQ(motor(0), stopped);
+  EXPECT_EQ(exchange("SM,100,50,0\r"), "!9 Err: Alarm raised: motor moves refused until it is cleared\r\n");
+  EXPECT_EQ(exchange("LM,85899346,100,0,0,0,0\r"), "!9 Err: Alarm raised: motor moves refused until it is cleared\r\n");
+  ASSERT_EQ(exchange("SP,1\r"), "OK\r\n");  // the pen still lifts
+  run_until_idle();
+  EXPECT_EQ(exchange("QP\r"), "1\n\rOK\r\n");
+  EXPECT_EQ(motor(0), stopped);
+  struct Counters final : CounterSink {
+    std::map<std::string, uint64_t> values;
+    void counter(const char* name, uint64_t value) override { values[name] = value; }
+  } counters;
+  ebb.report_counters(counters);
+  EXPECT_EQ(counters.values["alarm_stops"], 2u);  // the running move and the waiting one
+  clear_alarm();
+  ASSERT_EQ(exchange("SM,100,50,0\r"), "OK\r\n");  // cleared: motion again, from where it stopped
+  run_until_idle();
+  EXPECT_EQ(motor(0), stopped + 50);
 }
 
 TEST_F(EibotboardTest, PenMovesTheServoOutputWithRateAndDelay) {

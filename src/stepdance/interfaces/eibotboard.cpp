@@ -3,6 +3,7 @@
 
 #include <math.h>
 
+#include "stepdance/core/fault.hpp"
 #include "stepdance/core/file_storage.hpp"
 
 namespace stepdance {
@@ -17,6 +18,11 @@ constexpr uint8_t kLineFeed = 0x0A;
 constexpr double kServoNeutralSteps = 1500.0;  // servo-board steps (µs) at the neutral 1.5 ms
 constexpr double kServoUnitsPerStep = 12.0;     // 1/12 µs per servo-board step
 constexpr int kZeroTimeMovesPerFrame = 8;       // bounds how many EM/pen entries one frame applies
+
+/// True for the moves that turn the motors (not pen, delay or enable moves).
+bool moves_motors(const EbbMove& move) {
+  return move.kind == EbbMove::Kind::kSteps || move.kind == EbbMove::Kind::kTime || move.kind == EbbMove::Kind::kHome;
+}
 
 }  // namespace
 
@@ -125,6 +131,7 @@ void Eibotboard::report_counters(CounterSink& sink) const {
   sink.counter("moves_started", moves_started_);
   sink.counter("errors_replied", errors_replied_);
   sink.counter("replies_dropped", replies_dropped_);
+  sink.counter("alarm_stops", alarm_stops_);
 }
 
 void Eibotboard::send(const char* text) {
@@ -164,6 +171,7 @@ bool Eibotboard::queue(const EbbMove& move) {
 
 void Eibotboard::run() {
   apply_controls();
+  if (alarm_active()) stop_motion_for_alarm();
   if (!executor_.busy()) load_next_move();
   if (executor_.tick()) {
     ++move_ticks_done_;
@@ -218,11 +226,23 @@ void Eibotboard::apply_controls() {
   }
 }
 
+// An alarm on the fault path stops the motors at once, as ES does (EBB moves carry no
+// deceleration of their own); pen, delay and enable moves go on, so the client can still lift the pen.
+void Eibotboard::stop_motion_for_alarm() {
+  if (!executor_.motor_moving(0) && !executor_.motor_moving(1)) return;
+  executor_.stop();
+  alarm_stops_ = alarm_stops_ + 1;
+}
+
 void Eibotboard::load_next_move() {
   for (int i = 0; i < kZeroTimeMovesPerFrame; ++i) {
     EbbMove move;
     if (fifo_.pop(move) != Status::kOk) return;
     moves_started_ = moves_started_ + 1;
+    if (alarm_active() && moves_motors(move)) {  // queued before the loop saw the alarm
+      alarm_stops_ = alarm_stops_ + 1;
+      continue;
+    }
     move_ticks_done_ = 0;
     move_duration_s_ = move_duration_s(move);
     executor_.start(move);

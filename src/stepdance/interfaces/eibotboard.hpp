@@ -137,6 +137,7 @@ class Eibotboard : public Block {
   size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
   // Frame (eibotboard.cpp)
   void apply_controls();
+  void stop_motion_for_alarm();
   void load_next_move();
   void update_outputs();
   double move_duration_s(const ebb::EbbMove& move) const;
@@ -178,6 +179,7 @@ class Eibotboard : public Block {
   SpscQueue<Control, 8> controls_;
   volatile uint32_t moves_queued_ = 0;    // loop: moves pushed
   volatile uint32_t moves_started_ = 0;   // frame: moves taken from the FIFO
+  volatile uint32_t alarm_stops_ = 0;     // frame: motor moves stopped or skipped while an alarm is raised
   // frame side
   ebb::EbbMotionExecutor executor_;
   double mm_per_sixteenth_ = 25.4 / 2032.0;

@@ -3,6 +3,8 @@
 
 #include "stepdance/interfaces/eibotboard.hpp"
 
+#include "stepdance/core/fault.hpp"
+
 namespace stepdance {
 
 using ebb::EbbError;
@@ -57,6 +59,11 @@ bool Eibotboard::reply_parameter_error(const EbbParameters& parameters) {
 }
 
 bool Eibotboard::dispatch(const char* name, EbbParameters& p) {
+  // Motor moves are refused while an alarm is raised (the fault path); pen commands still run.
+  if (alarm_active() && (is(name, "SM") || is(name, "XM") || is(name, "LM") || is(name, "LT") || is(name, "HM"))) {
+    reply_error(EbbError::kAlarm, command_name_);
+    return true;
+  }
   // Motion (queued; false while the FIFO has no room, so the line waits)
   if (is(name, "SM")) return command_sm(p, false);
   if (is(name, "XM")) return command_sm(p, true);

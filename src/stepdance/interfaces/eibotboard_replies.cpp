@@ -35,6 +35,7 @@ void Eibotboard::reply_error(EbbError error, const char* name, char offending) {
   switch (error) {
     case EbbError::kRateTooHigh: line.text("!0 Err: <axis").character(offending).text("> step rate too high"); break;
     case EbbError::kOverrun: line.text("!3 Err: RX Buffer overrun"); break;
+    case EbbError::kAlarm: line.text("!9 Err: Alarm raised: motor moves refused until it is cleared"); break;
     case EbbError::kMissing: line.text("!4 Err: Missing parameter(s)"); break;
     case EbbError::kNeedComma: line.text("!5 Err: Need comma next, found: '").character(offending).text("'"); break;
     case EbbError::kInvalid: line.text("!6 Err: Invalid parameter value"); break;

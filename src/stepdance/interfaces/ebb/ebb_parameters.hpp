@@ -16,6 +16,7 @@ enum class EbbError : uint8_t {
   kExtra = 7,           ///< "!7 Err: Extra parameter"
   kUnknownCommand = 8,  ///< "!8 Err: Unknown command 'XX:hhhh'"
   kOverrun = 3,         ///< "!3 Err: RX Buffer overrun"
+  kAlarm = 9,           ///< ours: "!9 Err: Alarm raised: motor moves refused until it is cleared"
 };
 
 /// Walks the parameters after a command name: each is ",value". The first problem sticks: once
