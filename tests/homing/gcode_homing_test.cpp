@@ -61,16 +61,41 @@ TEST_F(GCodeHomingTest, DollarHHomesAndTheInterfaceAdoptsTheHomedPosition) {
   ASSERT_EQ(dance_start(), Status::kOk);
   run_ms(10);
   host.take();
-  host.send("$H\n");
+  host.send("$H\nG91 G1 X1 F600\n");
+  run_ms(20);
+  EXPECT_TRUE(homing.is_homing());
+  EXPECT_EQ(host.take(), "");  // as on Grbl, `$H` is answered when the routine ends
   run_ms(3000);
   EXPECT_TRUE(homing.is_homed());
-  EXPECT_NE(host.take().find("ok"), std::string::npos);
-  // The switch point is 0 and the axis rests a 1 mm pull-off above it; G-code's X agrees.
-  EXPECT_NEAR(carriage_mm(), 1.0, 1.0 / kStepsPerMm);
-  EXPECT_NEAR(gcode.output_x.read_absolute(), 1.0, 1.0 / kStepsPerMm);
+  EXPECT_EQ(host.take(), "ok\r\nok\r\n");  // then the line after it runs
+  run_ms(2000);
+  // The switch point is 0, the axis rests a 1 mm pull-off above it, and the relative move queued
+  // behind `$H` took it 1 mm further; G-code's X agrees.
+  EXPECT_NEAR(carriage_mm(), 2.0, 1.0 / kStepsPerMm);
+  EXPECT_NEAR(gcode.output_x.read_absolute(), 2.0, 1.0 / kStepsPerMm);
   host.send("G90 G1 X5 F600\n");
   run_ms(2000);
   EXPECT_NEAR(carriage_mm(), 5.0, 1.0 / kStepsPerMm);
+}
+
+TEST_F(GCodeHomingTest, ASwitchThatNeverClosesAnswersDollarHWithAlarm9ThenOk) {
+  ASSERT_EQ(homing.add_axis(kSwitchPin, 0.0, HOMING_DIR_BWD, 20.0f, &channel.input_target_position), Status::kOk);
+  homing.axis(0).set_timeout_ms(300);  // the switch is never wired: the seek times out
+  ASSERT_EQ(homing.begin(), Status::kOk);
+  gcode.set_homing(&homing);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  run_ms(10);
+  host.take();
+  host.send("$H\n");
+  for (int i = 0; i < 500 * 25; ++i) {  // the pin stays low
+    hal_manual::run_frames(1);
+    if (i % 5 == 0) dance_loop();
+  }
+  EXPECT_FALSE(homing.is_homed());
+  EXPECT_EQ(host.take(), "ALARM:9\r\nok\r\n");
+  host.send("G0 X1\n");  // locked until $X or a successful $H, as on Grbl
+  run_ms(10);
+  EXPECT_EQ(host.take(), "error:9\r\n");
 }
 
 }  // namespace

@@ -11,6 +11,8 @@ gcode::GrblError GCodeInterface::home() {
   return gcode::GrblError::kOk;
 }
 
+bool GCodeInterface::homing_succeeded() { return homing_ != nullptr && homing_->is_homed(); }
+
 // Once the routine ends, the planner's outputs take the machine position the chain now holds.
 void GCodeInterface::adopt_homed_position() {
   if (!homing_started_ || homing_->is_homing()) return;

@@ -117,6 +117,8 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   void set_overrides(uint8_t feed_percent, uint8_t rapid_percent) override;
   double steps_per_mm(int axis) override;
   gcode::GrblError home() override;
+  bool homing_in_progress() override { return homing_started_; }
+  bool homing_succeeded() override;
   void adopt_homed_position();
 
   void push_pending(const Pending& request);

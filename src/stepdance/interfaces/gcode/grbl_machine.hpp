@@ -48,8 +48,14 @@ class GrblMachine : public GcodeSink {
   virtual void jog_cancel() = 0;
   /// Feed and rapid overrides in percent (feed 10–200, rapid 25/50/100).
   virtual void set_overrides(uint8_t feed_percent, uint8_t rapid_percent) = 0;
-  /// `$H`. kHomingDisabled until the sketch configures homing.
+  /// `$H`. kHomingDisabled until the sketch configures homing. Context: loop.
   virtual GrblError home() { return GrblError::kHomingDisabled; }
+  /// True from a successful home() until the routine has ended (the `$H` line is answered then).
+  /// Context: loop.
+  virtual bool homing_in_progress() { return false; }
+  /// Whether the last routine ended with every axis homed (false: it timed out or faulted).
+  /// Context: loop.
+  virtual bool homing_succeeded() { return true; }
   /// Steps per mm of an axis's channel (the sketch sets them; `$100`–`$102` report them).
   virtual double steps_per_mm(int axis) = 0;
 

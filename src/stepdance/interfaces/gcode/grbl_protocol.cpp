@@ -9,6 +9,7 @@ namespace {
 constexpr size_t kLargestReplyBytes = 640;  // `$$` and `$#` with their `ok`
 constexpr size_t kStatusReportBytes = 164;  // the longest report and its line end
 constexpr int kLinesPerPoll = 4;            // bounds the time one loop pass spends here
+constexpr uint8_t kAlarmHomingFailed = 9;   // Grbl's "homing fail: could not find limit switch"
 
 /// Holds a line's requests until its travel check passes, then hands them on in order.
 class DeferredRequests final : public GcodeSink {
@@ -82,7 +83,7 @@ void GrblProtocol::poll() {
     status_requested_ = false;
     report_status();
   }
-  for (int i = 0; i < kLinesPerPoll; ++i) {
+  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done(); ++i) {
     if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) break;
     ReceivedLine line;
     if (!receiver_.next_line(line)) break;
@@ -151,7 +152,7 @@ void GrblProtocol::execute_line(const ReceivedLine& line) {
     error = execute_gcode(text, length);
   }
   if (error == GrblError::kOk) {
-    send_text("ok");
+    if (!homing_reply_pending_) send_text("ok");
   } else {
     char storage[16];
     TextWriter reply(storage, sizeof(storage));
@@ -207,6 +208,17 @@ void GrblProtocol::sync_position_when_idle() {
   interpreter_.set_position_mm(position);
 }
 
+// While `$H` runs no further line is read; when its routine ends the line gets its `ok`, after
+// `ALARM:9` (homing failed) if an axis did not home. Returns true once no `$H` answer is owed.
+bool GrblProtocol::answer_homing_when_done() {
+  if (!homing_reply_pending_) return true;
+  if (machine_->homing_in_progress()) return false;
+  homing_reply_pending_ = false;
+  if (!machine_->homing_succeeded()) raise_alarm(kAlarmHomingFailed);
+  send_text("ok");
+  return true;
+}
+
 void GrblProtocol::raise_alarm(uint8_t code) {
   alarm_ = code;
   char storage[16];
@@ -217,6 +229,7 @@ void GrblProtocol::raise_alarm(uint8_t code) {
 
 void GrblProtocol::soft_reset() {
   reset_requested_ = false;
+  homing_reply_pending_ = false;  // the reset answers for the `$H` line, as on Grbl
   const bool was_moving = machine_->soft_reset();
   receiver_.clear();
   const CoordinateData coordinates = interpreter_.coordinate_data();

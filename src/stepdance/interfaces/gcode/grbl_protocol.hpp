@@ -36,6 +36,7 @@ class GrblProtocol final : private RealtimeHandler {
   bool alarm_active() const { return alarm_ != 0; }
   /// Raises a Grbl alarm (ALARM:N is sent); e.g. a limit or fault from the machine.
   void raise_alarm(uint8_t code);
+  bool answer_homing_when_done();
 
   /// Replies that found no room (should stay 0: lines are taken only when their reply fits).
   uint32_t replies_dropped() const { return replies_dropped_; }
@@ -78,6 +79,7 @@ class GrblProtocol final : private RealtimeHandler {
   GcodeInterpreter interpreter_;
   ParserOptions parser_options_;
   uint8_t alarm_ = 0;
+  bool homing_reply_pending_ = false;  // `$H` is answered when its routine ends, as Grbl does
   bool check_mode_ = false;
   bool status_requested_ = false;
   bool reset_requested_ = false;

@@ -37,7 +37,10 @@ GrblError GrblProtocol::execute_system(const char* text, size_t length) {
   } else if (equals(command, length, "H")) {
     if (!idle) return GrblError::kNotIdle;
     const GrblError error = machine_->home();
-    if (error == GrblError::kOk) alarm_ = 0;
+    if (error == GrblError::kOk) {
+      alarm_ = 0;
+      homing_reply_pending_ = machine_->homing_in_progress();
+    }
     if (error == GrblError::kHomingDisabled) send_text("[MSG:Homing is not set up on this machine]");
     return error;
   } else if (equals(command, length, "C")) {
