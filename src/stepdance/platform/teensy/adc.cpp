@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 
+#include "stepdance/boards/board.hpp"
 #include "stepdance/hal/hal.hpp"
 #include "stepdance/platform/teensy/irq.hpp"
 #include "stepdance/platform/teensy/pins.hpp"
@@ -37,6 +38,28 @@ constexpr AnalogWiring kAnalogPins[] = {
 #endif
 };
 constexpr size_t kMaxPinsPerModule = sizeof(kAnalogPins) / sizeof(kAnalogPins[0]);
+
+constexpr bool has_adc_channel(uint8_t pin) {
+  for (const AnalogWiring& wiring : kAnalogPins) {
+    if (wiring.pin == pin) return true;
+  }
+  return false;
+}
+// Every analog pin of the board tables (A1..A4, and the drivers' VREF read-back) has a channel.
+constexpr bool analog_pins_have_channels(const BoardDefinition& board) {
+  for (uint8_t pin : board.io_a) {
+    if (!has_adc_channel(pin)) return false;
+  }
+  for (uint8_t port = 0; port < board.output_port_count; ++port) {
+    const uint8_t vref = board.output_ports[port].vref;
+    if (vref != kNoPin && !has_adc_channel(vref)) return false;
+  }
+  return true;
+}
+static_assert(analog_pins_have_channels(kBasicModuleV1), "a Basic Module analog pin has no ADC channel");
+#if !defined(ARDUINO_TEENSY40)
+static_assert(analog_pins_have_channels(kDriverModuleV1), "a Driver Module analog pin has no ADC channel");
+#endif
 
 /// One ADC's round robin: the pins it converts, in begin() order.
 struct RoundRobin {
