@@ -8,12 +8,39 @@
 # Usage: scripts/build-teensy.sh      (output in build-teensy/, or $STEPDANCE_TEENSY_BUILD_DIR)
 # The images link against do-nothing stand-ins for Teensyduino's core (targets/teensy/stand-in):
 # they prove the code compiles and links for the target and give its size; they are not flashable.
+#
+# Developer check against the real core (not in CI; scripts/check-teensyduino.sh wraps it):
+#   STEPDANCE_TEENSYDUINO=DIR scripts/build-teensy.sh
+# DIR is a Teensyduino tree laid out as hardware/teensy/avr: cores/teensy4 and libraries/{SD,SdFat,SPI,
+# Wire}. The core and those libraries are then compiled with Teensyduino's own flags (their warnings
+# silenced, as in the IDE), our library and the examples with ours (-Werror); the images link with
+# the core's linker scripts and sizes are printed as Teensyduino's teensy_size prints them.
+#
+# Third-party headers (the stand-in or the real core and its libraries) are system headers
+# (-isystem): their warnings cannot fail our -Werror build.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensy}
 stand_in=targets/teensy/stand-in
 ld_dir=targets/teensy/ld
+teensyduino=${STEPDANCE_TEENSYDUINO:-}
+core_dir=
+library_dirs=()
+third_party_includes=(-isystem "$stand_in")
+if [ -n "$teensyduino" ]; then
+  core_dir=$teensyduino/cores/teensy4
+  [ -f "$core_dir/imxrt.h" ] || { echo "build-teensy: FAILED: $core_dir/imxrt.h not found" >&2; exit 1; }
+  out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensyduino}
+  third_party_includes=(-isystem "$core_dir")
+  for lib in SD SdFat SPI Wire; do
+    lib_dir=$teensyduino/libraries/$lib
+    [ -d "$lib_dir" ] || { echo "build-teensy: FAILED: $lib_dir not found" >&2; exit 1; }
+    [ -d "$lib_dir/src" ] && lib_dir=$lib_dir/src
+    library_dirs+=("$lib_dir")
+    third_party_includes+=(-isystem "$lib_dir")
+  done
+fi
 
 fail() {
   echo "build-teensy: FAILED: $*" >&2
@@ -28,7 +55,8 @@ done
 mcu=(-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb)
 # What Teensyduino passes for a Teensy 4.x at 600 MHz, "Faster" optimisation, plus our warnings.
 common=("${mcu[@]}" -O2 -g -ffunction-sections -fdata-sections -Wall -Wextra -Werror -Wundef -Wshadow
-  -D__IMXRT1062__ -DF_CPU=600000000 -DARDUINO=10819 -DTEENSYDUINO=159 -Isrc "-I$stand_in")
+  -D__IMXRT1062__ -DF_CPU=600000000 -DARDUINO=10819 -DTEENSYDUINO=159 -DLAYOUT_US_ENGLISH -Isrc
+  "${third_party_includes[@]}")
 cxx_flags=(-std=gnu++17 -fno-exceptions -fno-rtti)
 c_flags=(-std=gnu11)
 
@@ -60,6 +88,24 @@ compile() {
   compiled=$((compiled + 1))
 }
 
+# third_party_compile SOURCE OBJECT EXTRA_FLAGS...: Teensyduino's core or library source, with the
+# flags of Teensyduino's platform.txt and warnings off (they are not ours to fix).
+third_party_compile() {
+  local source=$1 object=$2
+  shift 2
+  up_to_date "$object" && return 0
+  mkdir -p "$(dirname "$object")"
+  local flags=("${mcu[@]}" -O2 -g -ffunction-sections -fdata-sections -w -D__IMXRT1062__ -DF_CPU=600000000
+    -DARDUINO=10819 -DTEENSYDUINO=159 -DLAYOUT_US_ENGLISH "${third_party_includes[@]}" "$@" -MMD -MP)
+  case $source in
+    *.c) arm-none-eabi-gcc "${flags[@]}" "${c_flags[@]}" -c "$source" -o "$object" ;;
+    *.S) arm-none-eabi-gcc "${flags[@]}" -x assembler-with-cpp -c "$source" -o "$object" ;;
+    *) arm-none-eabi-g++ "${flags[@]}" -std=gnu++17 -fno-exceptions -fpermissive -fno-rtti -fno-threadsafe-statics \
+      -felide-constructors -c "$source" -o "$object" ;;
+  esac || fail "compiling $source ($*)"
+  compiled=$((compiled + 1))
+}
+
 # ---- The IDE's sketch preparation, as a host tool -------------------------------------------------
 
 prep="$out/tools/stepdance-sketch-prep"
@@ -87,7 +133,14 @@ prepare_sketch() {
 # ---- What to build ----------------------------------------------------------------------------
 
 mapfile -t library_sources < <(find src -type f \( -name '*.cpp' -o -name '*.c' \) | LC_ALL=C sort)
-mapfile -t stand_in_sources < <(find "$stand_in" -type f -name '*.cpp' | LC_ALL=C sort)
+if [ -z "$teensyduino" ]; then
+  mapfile -t stand_in_sources < <(find "$stand_in" -type f -name '*.cpp' | LC_ALL=C sort)
+  third_party_sources=()
+else
+  stand_in_sources=()
+  mapfile -t third_party_sources < <( (find "$core_dir" -maxdepth 1 -type f \( -name '*.c' -o -name '*.cpp' -o -name '*.S' \)
+    find "${library_dirs[@]}" -type f \( -name '*.c' -o -name '*.cpp' \) -not -path '*/examples/*') | LC_ALL=C sort)
+fi
 mapfile -t example_dirs < <(find examples -mindepth 1 -maxdepth 1 -type d | LC_ALL=C sort)
 [ ${#example_dirs[@]} -gt 0 ] || fail "no example folders under examples/"
 
@@ -100,6 +153,7 @@ done
 # board id -> Teensyduino board macro and linker script
 declare -A board_macro=([teensy41]=ARDUINO_TEENSY41 [teensy40]=ARDUINO_TEENSY40)
 declare -A board_script=([teensy41]=imxrt1062_t41.ld [teensy40]=imxrt1062_t40.ld)
+declare -A core_script=([teensy41]=imxrt1062_t41.ld [teensy40]=imxrt1062.ld)
 
 # Every example builds for the Teensy 4.1; Basic Module sketches also for the Teensy 4.0.
 # Sketches that print to SerialUSB1 need Tools > USB Type > Dual Serial, as in the IDE.
@@ -139,8 +193,13 @@ build_configuration() {
     compile "$source" "$object" "${flags[@]}"
     objects+=("$object")
   done
+  all_objects+=("${objects[@]}")  # ours: checked for heap symbols below
+  for source in "${third_party_sources[@]}"; do
+    object="$dir/third-party/${source#"$teensyduino"/}.o"
+    third_party_compile "$source" "$object" "${flags[@]}"
+    objects+=("$object")
+  done
   config_objects[$board-$usb]="${objects[*]}"
-  all_objects+=("${objects[@]}")
 }
 
 backend_present() {
@@ -154,9 +213,14 @@ backend_present() {
 link_elf() {
   local elf=$1 board=$2
   shift 2
-  arm-none-eabi-g++ "${mcu[@]}" -O2 -nostartfiles --specs=nano.specs -Wl,--gc-sections \
-    -Wl,--no-warn-rwx-segments "-L$ld_dir" "-T${board_script[$board]}" "-Wl,-Map=${elf%.elf}.map" \
-    -o "$elf" "$@" -lm
+  if [ -n "$teensyduino" ]; then  # Teensyduino's own link line (platform.txt)
+    arm-none-eabi-gcc "${mcu[@]}" -O2 -Wl,--gc-sections,--relax -Wl,--no-warn-rwx-segments \
+      "-T$core_dir/${core_script[$board]}" "-Wl,-Map=${elf%.elf}.map" -o "$elf" "$@" -lm -lstdc++
+  else
+    arm-none-eabi-g++ "${mcu[@]}" -O2 -nostartfiles --specs=nano.specs -Wl,--gc-sections \
+      -Wl,--no-warn-rwx-segments "-L$ld_dir" "-T${board_script[$board]}" "-Wl,-Map=${elf%.elf}.map" \
+      -o "$elf" "$@" -lm
+  fi
 }
 
 link_example() {
@@ -268,6 +332,7 @@ for object in "${all_objects[@]}"; do
   fi
 done
 for elf in "${images[@]}"; do
+  [ -z "$teensyduino" ] || break  # the real core brings its own allocator (used by USB and new)
   hits=$(arm-none-eabi-nm "$elf" | awk '{print $NF}' | grep -E "$forbidden" || true)
   if [ -n "$hits" ]; then
     echo "build-teensy: FORBIDDEN: $elf contains" $hits >&2
@@ -275,28 +340,70 @@ for elf in "${images[@]}"; do
   fi
 done
 [ $status -eq 0 ] || fail "heap or exception symbols found (see above)"
-echo "build-teensy: no malloc/free, operator new/delete or exception symbols in any object or image"
+if [ -n "$teensyduino" ]; then
+  echo "build-teensy: no malloc/free, operator new/delete or exception symbols in our objects (images not checked: the core has its allocator)"
+else
+  echo "build-teensy: no malloc/free, operator new/delete or exception symbols in any object or image"
+fi
 
-# The check must see the real core's allocations: an image opening a file through Teensyduino's SD
-# library (as our backend once did) has to trip it.
-probe_dir="$out/teensy41-serial/heap-probe"
-compile targets/teensy/heap-probe/sd_library_probe.cpp "$probe_dir/sd_library_probe.o" -DARDUINO_TEENSY41 -DUSB_SERIAL
-read -r -a probe_library <<<"${config_objects[teensy41-serial]}"
-link_elf "$probe_dir/sd_library_probe.elf" teensy41 "$probe_dir/sd_library_probe.o" "${probe_library[@]}" ||
-  fail "linking the SD library heap probe"
-arm-none-eabi-nm "$probe_dir/sd_library_probe.elf" | awk '{print $NF}' | grep -E "$forbidden" >/dev/null ||
-  fail "the no-heap check does not see the SD library's allocation (targets/teensy/stand-in/SD.cpp)"
-echo "build-teensy: the no-heap check catches an image that uses Teensyduino's SD library (heap probe)"
+if [ -z "$teensyduino" ]; then
+  # The check must see the real core's allocations: an image opening a file through Teensyduino's SD
+  # library (as our backend once did) has to trip it.
+  probe_dir="$out/teensy41-serial/heap-probe"
+  compile targets/teensy/heap-probe/sd_library_probe.cpp "$probe_dir/sd_library_probe.o" -DARDUINO_TEENSY41 -DUSB_SERIAL
+  read -r -a probe_library <<<"${config_objects[teensy41-serial]}"
+  link_elf "$probe_dir/sd_library_probe.elf" teensy41 "$probe_dir/sd_library_probe.o" "${probe_library[@]}" ||
+    fail "linking the SD library heap probe"
+  arm-none-eabi-nm "$probe_dir/sd_library_probe.elf" | awk '{print $NF}' | grep -E "$forbidden" >/dev/null ||
+    fail "the no-heap check does not see the SD library's allocation (targets/teensy/stand-in/SD.cpp)"
+  echo "build-teensy: the no-heap check catches an image that uses Teensyduino's SD library (heap probe)"
 
-# Storage links only into sketches that record or play back (SdFat's volume symbols mark it).
-sd_linked() { arm-none-eabi-nm "$1" | grep 'SdFs5begin' >/dev/null; }
-! sd_linked "$out/teensy41-serial/StepASketch.elf" || fail "StepASketch links SD card storage it never uses"
-sd_linked "$out/teensy41-serial/AxiDrawRecorder.elf" || fail "AxiDrawRecorder does not link SD card storage"
-echo "build-teensy: SD card storage links only into sketches that use it (AxiDrawRecorder yes, StepASketch no)"
+  # Storage links only into sketches that record or play back (SdFat's volume symbols mark it).
+  sd_linked() { arm-none-eabi-nm "$1" | grep 'SdFs5begin' >/dev/null; }
+  ! sd_linked "$out/teensy41-serial/StepASketch.elf" || fail "StepASketch links SD card storage it never uses"
+  sd_linked "$out/teensy41-serial/AxiDrawRecorder.elf" || fail "AxiDrawRecorder does not link SD card storage"
+  echo "build-teensy: SD card storage links only into sketches that use it (AxiDrawRecorder yes, StepASketch no)"
+fi
 
 # ---- The Step-A-Sketch firmware: hex and size report -----------------------------------------
 
 section_size() { awk -v s="$2" '$1 == s {print $2; found=1} END {if (!found) print 0}' <<<"$1"; }
+
+# ---- Against the real core: sizes as Teensyduino's teensy_size prints them ---------------------
+
+# teensy_size ELF BOARD: the three lines the IDE shows after a build (same sections, same sums).
+teensy_size() {
+  local elf=$1 board=$2 sections
+  sections=$(arm-none-eabi-size -A -d "$elf")
+  local headers code progmem itcm exidx data bss dma csf
+  headers=$(section_size "$sections" .text.headers) code=$(section_size "$sections" .text.code)
+  progmem=$(section_size "$sections" .text.progmem) itcm=$(section_size "$sections" .text.itcm)
+  exidx=$(section_size "$sections" .ARM.exidx) data=$(section_size "$sections" .data)
+  bss=$(section_size "$sections" .bss) dma=$(section_size "$sections" .bss.dma) csf=$(section_size "$sections" .text.csf)
+  local flash_size=8126464 model="Teensy 4.1"
+  [ "$board" = teensy40 ] && flash_size=2031616 model="Teensy 4.0"
+  local ram1_code=$((itcm + exidx))
+  local ram1_total=$(((ram1_code + 32767) / 32768 * 32768))
+  echo "Memory Usage on $model:"
+  echo "  FLASH: code:$((code + itcm + exidx)), data:$((progmem + data)), headers:$((headers + csf))" \
+    "  free for files:$((flash_size - headers - code - progmem - itcm - exidx - data - csf))"
+  echo "   RAM1: variables:$((data + bss)), code:$ram1_code, padding:$((ram1_total - ram1_code))" \
+    "  free for local variables:$((524288 - ram1_total - data - bss))"
+  echo "   RAM2: variables:$dma  free for malloc/new:$((524288 - dma))"
+}
+
+if [ -n "$teensyduino" ]; then
+  for build in "${builds[@]}"; do
+    read -r name board usb <<<"$build"
+    echo
+    echo "$name ($board, $usb) against $core_dir:"
+    teensy_size "$out/$board-$usb/$name.elf" "$board" | sed 's/^/  /'
+  done
+  echo "build-teensy: OK against the real Teensyduino core ($teensyduino)"
+  exit 0
+fi
+
+# ---- The Step-A-Sketch firmware: hex and size report -----------------------------------------
 
 report_size() {
   local elf=$1 flash_total=$2 sections

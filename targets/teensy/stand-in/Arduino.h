@@ -65,18 +65,21 @@ void loop();
 
 // ---- Pins and time -----------------------------------------------------------------------------
 
+// C linkage, as in the core's core_pins.h: a sketch's .c file can call these, and the linker sees
+// the same unmangled names as with the real core.
+extern "C" {
 void pinMode(uint8_t pin, uint8_t mode);
 uint8_t digitalRead(uint8_t pin);
 void digitalWrite(uint8_t pin, uint8_t value);
-inline uint8_t digitalReadFast(uint8_t pin) { return digitalRead(pin); }
-inline void digitalWriteFast(uint8_t pin, uint8_t value) { digitalWrite(pin, value); }
 int analogRead(uint8_t pin);
-
 uint32_t millis();
 uint32_t micros();
 void delay(uint32_t ms);
 void delayMicroseconds(uint32_t us);
 void yield();
+}
+inline uint8_t digitalReadFast(uint8_t pin) { return digitalRead(pin); }
+inline void digitalWriteFast(uint8_t pin, uint8_t value) { digitalWrite(pin, value); }
 
 /// Counts milliseconds up from the last assignment.
 class elapsedMillis {
@@ -95,8 +98,8 @@ class elapsedMillis {
 
 // ---- Clocks ------------------------------------------------------------------------------------
 
-extern volatile uint32_t F_CPU_ACTUAL;
-extern volatile uint32_t F_BUS_ACTUAL;
+extern "C" volatile uint32_t F_CPU_ACTUAL;
+extern "C" volatile uint32_t F_BUS_ACTUAL;
 
 // ---- Byte streams ------------------------------------------------------------------------------
 

@@ -1,5 +1,5 @@
 // Stand-in SD library: a slot with no card in it, allocating like the real one.
-#include "SD.h"
+#include <SD.h>
 
 struct File::Shared {
   unsigned users = 1;

@@ -40,6 +40,11 @@ class SDClass {
   bool begin(uint8_t chip_select_pin);
   File open(const char* path, uint8_t mode);
   bool remove(const char* path);
+  /// The old Arduino SD interface, which Teensyduino's SD.h keeps: it ignores the speed, and its
+  /// unused parameter warns under -Wextra there as here. Kept on purpose: it proves that
+  /// scripts/build-teensy.sh includes third-party headers as system headers (-isystem), which
+  /// the real core and its libraries need under our -Werror.
+  bool init(uint32_t speed, uint8_t chip_select_pin) { return begin(chip_select_pin); }
 
  private:
   bool card_ = false;

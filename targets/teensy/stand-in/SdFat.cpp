@@ -1,5 +1,5 @@
 // Stand-in SdFat: a slot with no card in it. Nothing allocates, as in the real library.
-#include "SdFat.h"
+#include <SdFat.h>
 
 bool FsVolume::remove(const char*) { return false; }
 bool SdFs::begin(SdioConfig) { return mounted_ = false; }

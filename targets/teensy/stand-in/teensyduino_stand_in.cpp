@@ -1,8 +1,9 @@
 // Do-nothing definitions of the stand-in Teensyduino services, so a CI firmware image links.
 // They only make the link and the size report possible: an image built with them is not flashable.
-#include "Arduino.h"
-#include "Wire.h"
-#include "avr/eeprom.h"
+// The stand-in headers are included as system headers (<...>), as the real core's are.
+#include <Arduino.h>
+#include <Wire.h>
+#include <avr/eeprom.h>
 
 volatile uint32_t F_CPU_ACTUAL = 600000000;
 volatile uint32_t F_BUS_ACTUAL = 150000000;

@@ -8,6 +8,7 @@
 
 #include <stddef.h>
 
+#include "stepdance/boards/board.hpp"
 #include "stepdance/hal/hal.hpp"
 #include "stepdance/platform/teensy/irq.hpp"
 #include "stepdance/platform/teensy/pins.hpp"
@@ -38,6 +39,28 @@ constexpr AnalogWiring kAnalogPins[] = {
 };
 constexpr size_t kMaxPinsPerModule = sizeof(kAnalogPins) / sizeof(kAnalogPins[0]);
 
+constexpr bool has_adc_channel(uint8_t pin) {
+  for (const AnalogWiring& wiring : kAnalogPins) {
+    if (wiring.pin == pin) return true;
+  }
+  return false;
+}
+// Every analog pin of the board tables (A1..A4, and the drivers' VREF read-back) has a channel.
+constexpr bool analog_pins_have_channels(const BoardDefinition& board) {
+  for (uint8_t pin : board.io_a) {
+    if (!has_adc_channel(pin)) return false;
+  }
+  for (uint8_t port = 0; port < board.output_port_count; ++port) {
+    const uint8_t vref = board.output_ports[port].vref;
+    if (vref != kNoPin && !has_adc_channel(vref)) return false;
+  }
+  return true;
+}
+static_assert(analog_pins_have_channels(kBasicModuleV1), "a Basic Module analog pin has no ADC channel");
+#if !defined(ARDUINO_TEENSY40)
+static_assert(analog_pins_have_channels(kDriverModuleV1), "a Driver Module analog pin has no ADC channel");
+#endif
+
 /// One ADC's round robin: the pins it converts, in begin() order.
 struct RoundRobin {
   uint8_t pins[kMaxPinsPerModule] = {};
@@ -48,6 +71,7 @@ struct RoundRobin {
 };
 
 RoundRobin modules[2];
+bool calibration_done[2] = {};  // our calibration, with our settings, has succeeded on this module
 volatile uint16_t values[kMaxPin + 1] = {};
 volatile uint32_t sample_counts[kMaxPin + 1] = {};
 bool begun[kMaxPin + 1] = {};
@@ -76,18 +100,32 @@ void service(uint8_t module) {
 void adc1_isr() { service(0); }
 void adc2_isr() { service(1); }
 
-// Configures and calibrates an ADC (busy-waits a few ms for the calibration). RM ADC chapter.
+// Busy-waits until `bits` of `reg` are clear, at most 100 ms. Context: loop.
+bool wait_clear(regs::Reg32 reg, uint32_t bits) {
+  const uint32_t started = hal::micros_now();
+  while (reg & bits) {
+    if (hal::micros_now() - started > 100000u) return false;
+  }
+  return true;
+}
+
+// Configures and calibrates an ADC once (busy-waits a few ms for the calibration). Safe on top of
+// Teensyduino's boot calibration and any analogRead(): a calibration still running is waited for,
+// a conversion in progress is stopped, and only then do CFG and GC change (RM ADC chapter:
+// calibrate with the final clock and sample settings, with no conversion running).
 Status calibrate(uint8_t module) {
+  if (calibration_done[module]) return Status::kOk;
   ccm::gate_on(module == 0 ? ccm::kGateAdc1 : ccm::kGateAdc2);
+  if (!wait_clear(adc::gc(module), adc::kGcCalibrate)) return Status::kUnsupported;
+  adc::hc0(module) = adc::kHcChannelOff;
+  if (!wait_clear(adc::gs(module), adc::kGsConversionActive)) return Status::kUnsupported;
   adc::cfg(module) = adc::cfg_input_clock(1) | adc::cfg_divider(3) | adc::cfg_mode(1) | adc::kCfgLongSample |
                      adc::cfg_sample_time(3) | adc::cfg_average(3) | adc::kCfgOverwrite;
   adc::gs(module) = adc::kGsCalibrationFailed;
   adc::gc(module) = adc::kGcAverageEnable | adc::kGcCalibrate;
-  const uint32_t started = hal::micros_now();
-  while (adc::gc(module) & adc::kGcCalibrate) {
-    if (hal::micros_now() - started > 100000u) return Status::kUnsupported;
-  }
+  if (!wait_clear(adc::gc(module), adc::kGcCalibrate)) return Status::kUnsupported;
   if (adc::gs(module) & adc::kGsCalibrationFailed) return Status::kUnsupported;
+  calibration_done[module] = true;
   return Status::kOk;
 }
 

@@ -83,8 +83,10 @@ void settle_writes() {
 
 bool tick_flag() { return (fio::timstat() & timer_bit(kTickMarkerTimer)) != 0; }
 
+bool guard_flag() { return (fio::timstat() & timer_bit(kCommitGuardTimer)) != 0; }
+
 void clear_tick_flag() {
-  fio::timstat() = timer_bit(kTickMarkerTimer);
+  fio::timstat() = timer_bit(kTickMarkerTimer) | timer_bit(kCommitGuardTimer);
   regs::data_sync_barrier();
 }
 
@@ -92,6 +94,7 @@ Status start_frame_clock(uint32_t period_us) {
   // The 16-bit timer counts half a period: at most 65536 clocks, 1092 µs at 120 MHz.
   if (period_us <= kFrameBits || period_us > 2u * 0x10000u / kClocksPerBit) return Status::kBadArgument;
   const uint32_t half_period = period_us * kClocksPerBit / 2u;
+  if (half_period <= kCommitGuardClocks) return Status::kBadArgument;
   fio::timctl(kFrameClockTimer) = fio::kTimodDisabled;
   fio::timctl(kTickMarkerTimer) = fio::kTimodDisabled;
   fio::timcmp(kTickMarkerTimer) = kMarkerDelayClocks - 1u;
@@ -99,7 +102,15 @@ Status start_frame_clock(uint32_t period_us) {
       fio::timcfg_enable(fio::kTimenaTriggerRising) | fio::timcfg_disable(fio::kTimdisOnCompare);
   fio::timctl(kTickMarkerTimer) =
       fio::timctl_trigger_timer(kFrameClockTimer) | fio::kTimctlTriggerInternal | fio::kTimod16Bit;
-  fio::timstat() = timer_bit(kTickMarkerTimer);
+  // The commit guard starts at mid-period (trigger inverted: the frame clock's falling edge) and
+  // raises its flag kCommitGuardClocks before the next rising edge.
+  fio::timctl(kCommitGuardTimer) = fio::kTimodDisabled;
+  fio::timcmp(kCommitGuardTimer) = half_period - kCommitGuardClocks - 1u;
+  fio::timcfg(kCommitGuardTimer) =
+      fio::timcfg_enable(fio::kTimenaTriggerRising) | fio::timcfg_disable(fio::kTimdisOnCompare);
+  fio::timctl(kCommitGuardTimer) = fio::timctl_trigger_timer(kFrameClockTimer) | fio::kTimctlTriggerInternal |
+                                   fio::kTimctlTriggerActiveLow | fio::kTimod16Bit;
+  fio::timstat() = timer_bit(kTickMarkerTimer) | timer_bit(kCommitGuardTimer);
   fio::timien() |= timer_bit(kTickMarkerTimer);
   // The frame clock's output is high from enable and toggles every half period.
   fio::timcmp(kFrameClockTimer) = half_period - 1u;
@@ -113,6 +124,7 @@ void stop_frame_clock() {
   fio::timien() &= ~timer_bit(kTickMarkerTimer);
   fio::timctl(kFrameClockTimer) = fio::kTimodDisabled;
   fio::timctl(kTickMarkerTimer) = fio::kTimodDisabled;
+  fio::timctl(kCommitGuardTimer) = fio::kTimodDisabled;
   clear_tick_flag();
 }
 

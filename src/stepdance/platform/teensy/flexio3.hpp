@@ -7,6 +7,9 @@
 //                            shifter n+4 (DIR) shift on this one timer, so they stay in lock-step.
 //   timer 5  "tick marker"   enabled on the same edge, disabled 4 FlexIO clocks later; its status
 //                            flag raises the FlexIO3 interrupt (the tick ISR) once per frame.
+//   timer 6  "commit guard"  enabled on the frame clock's falling edge (mid-period), disabled
+//                            kCommitGuardClocks before the next tick; its flag (no interrupt)
+//                            tells the commit that too little time is left to write every port.
 //
 // Shifters load SHIFTBUF when their timer is enabled (no start bit), so whatever sits in the
 // buffers at a tick goes out at that tick, 1 µs per bit, LSB first. RM chapter 50 (FlexIO).
@@ -29,8 +32,13 @@ constexpr uint32_t kFrameBits = 32;
 /// Timer numbers (timers 0..3 are the ports).
 constexpr uint8_t kFrameClockTimer = 4;
 constexpr uint8_t kTickMarkerTimer = 5;
+constexpr uint8_t kCommitGuardTimer = 6;
 /// FlexIO clocks from a tick to the marker's status flag.
 constexpr uint32_t kMarkerDelayClocks = 4;
+/// FlexIO clocks before a tick in which a commit no longer starts (3 µs): writing the 8 buffers
+/// and settling takes under 1 µs, and the capture ISRs (priority 0, not masked by the commit) may
+/// preempt it for up to 4 × 0.5 µs.
+constexpr uint32_t kCommitGuardClocks = 3u * kClocksPerBit;
 
 /// Clocks FlexIO2/3 from PLL3 at 120 MHz and enables FlexIO3 (once; later calls do nothing).
 /// Note: FlexIO2 shares this clock root. Context: loop.
@@ -50,11 +58,16 @@ void settle_writes();
 
 /// True if a tick happened since clear_tick_flag(). Context: any.
 bool tick_flag();
-/// Clears the tick marker's status flag (which also ends its interrupt request). Context: any.
+/// True if the next tick is less than kCommitGuardClocks away (or has passed) since the last
+/// clear_tick_flag(). Context: any.
+bool guard_flag();
+/// Clears the tick marker's and the commit guard's status flags (which also ends the tick
+/// interrupt request). Context: any.
 void clear_tick_flag();
 
 /// Starts the frame clock with a period of period_us (first tick immediately) and enables the
-/// tick interrupt. kBadArgument if the period cannot hold a 32 µs frame or overflows the timer.
+/// tick interrupt. kBadArgument if the period cannot hold a 32 µs frame or overflows the timer
+/// (half a period must also be longer than the commit guard).
 /// Context: loop.
 Status start_frame_clock(uint32_t period_us);
 /// Stops the frame clock: no further ticks; a frame already being shifted completes. Context: any.

@@ -15,9 +15,15 @@
 //    buffers right after each launch (its flag is raised 4 FlexIO clocks after the same edge, so
 //    the launch has always happened). It runs above the frame ISR, so an overrunning frame cannot
 //    hold it back.
-//  - Never sent late. The commit runs with interrupts off, waits until any tick that preceded the
-//    buffer writes has raised its flag, and checks it: if a tick came first, the words are zeroed
-//    and counted in FrameDiagnostics::late_frames (dropped, as the slot has passed).
+//  - Never sent late, and all ports or none. The commit masks the tick ISR and everything below it
+//    (BASEPRI, so the capture ISRs at priority 0 keep running). It first checks whether the tick
+//    has already come or is less than the commit guard away: then it writes no port at all and
+//    counts the frame in FrameDiagnostics::late_frames. Otherwise it writes every staged port,
+//    well inside the guard, and checks again; a tick that still slipped in (captures preempting
+//    the writes for longer than the guard) zeroes every written port and counts it too.
+//  - Exact restart. A start after a stop waits until one full period has passed since the stop, so
+//    the previous run's last transmission has ended (every port timer is idle and takes the first
+//    new tick) and no two launches are ever closer than the period.
 #if defined(__IMXRT1062__)
 
 #include "stepdance/hal/hal.hpp"
@@ -41,6 +47,8 @@ volatile uint32_t frame_epoch = 0;  // tick_count when the current frame ISR beg
 volatile uint32_t frame_count = 0;
 volatile uint32_t ticks_without_frame = 0;
 volatile uint32_t late_frames = 0;
+volatile bool stopped_once = false;
+volatile uint32_t stopped_at_cycles = 0;  // DWT cycles at the last frame_timer_stop()
 
 void tick_isr() {
   flexio::clear_tick_flag();
@@ -49,17 +57,38 @@ void tick_isr() {
   irq::pend(kFrameIrq);
 }
 
-// Writes the frame's words for the next tick, or drops them if that tick has already passed.
+// True if the tick this frame is due for has come since the frame ISR began (or, with
+// `with_guard`, is too close to start writing).
+bool slot_passed(uint32_t epoch, bool with_guard) {
+  return flexio::tick_flag() || tick_count != epoch || (with_guard && flexio::guard_flag());
+}
+
+// Writes the frame's words on every port for the next tick, or on none if that tick is too close
+// or has passed. BASEPRI at the tick priority: the tick ISR (which zeroes the buffers and bumps
+// tick_count) cannot run between the check and the writes; the capture ISRs still can.
 void commit_frame(uint32_t epoch) {
-  const uint32_t state = hal::irq_save();
-  const uint8_t written = output_ports_commit_staged();
-  flexio::settle_writes();
-  const bool late = flexio::tick_flag() || tick_count != epoch;
-  if (late && written != 0) {
-    output_ports_zero(written);
+  const uint32_t mask = irq::mask_from(irq::kTickPriority);
+  if (slot_passed(epoch, true)) {
+    output_ports_drop_staged();
     late_frames = late_frames + 1;
+  } else {
+    const uint8_t written = output_ports_commit_staged();
+    flexio::settle_writes();
+    if (slot_passed(epoch, false)) {
+      output_ports_zero(written);
+      late_frames = late_frames + 1;
+    }
   }
-  hal::irq_restore(state);
+  irq::unmask(mask);
+}
+
+// After a stop, waits until a full period has passed: the last launch is then over and at least a
+// period away from the first new one.
+void wait_after_stop(uint32_t period_us) {
+  if (!stopped_once) return;
+  const uint32_t cycles_per_us = hal::cycles_per_second() / 1000000u;
+  while (hal::cycles_now() - stopped_at_cycles < period_us * cycles_per_us) {
+  }
 }
 
 void frame_isr() {
@@ -76,6 +105,8 @@ void frame_isr() {
 
 void frame_timer_stop() {
   flexio::stop_frame_clock();
+  stopped_at_cycles = hal::cycles_now();
+  stopped_once = true;
   irq::disable(kTickIrq);
   irq::disable(kFrameIrq);
   running = false;
@@ -103,13 +134,14 @@ Status frame_timer_start(uint32_t period_us, Isr on_frame) {
   teensy::irq::install(teensy::kFrameIrq, &teensy::frame_isr, teensy::irq::kFramePriority);
   teensy::irq::install(teensy::kTickIrq, &teensy::tick_isr, teensy::irq::kTickPriority);
   teensy::running = true;
+  teensy::wait_after_stop(period_us);
+  const uint32_t ticks_before = teensy::tick_count;  // read first: the first tick comes at once
   const Status started = teensy::flexio::start_frame_clock(period_us);
   if (started != Status::kOk) {
     teensy::frame_timer_stop();
     return started;
   }
   // Fail loudly rather than run without frames: the first tick must arrive within a few periods.
-  const uint32_t ticks_before = teensy::tick_count;
   const uint32_t waited_from = micros_now();
   while (teensy::tick_count == ticks_before) {
     if (micros_now() - waited_from > 3u * period_us + 10u) {

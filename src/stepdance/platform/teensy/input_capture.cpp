@@ -18,6 +18,8 @@
 // at the rising edge, kept for the pulse.
 #if defined(__IMXRT1062__)
 
+#include "stepdance/boards/board.hpp"
+#include "stepdance/core/fault.hpp"
 #include "stepdance/hal/hal.hpp"
 #include "stepdance/platform/teensy/clocks.hpp"
 #include "stepdance/platform/teensy/irq.hpp"
@@ -46,16 +48,29 @@ struct CaptureWiring {
   uint8_t irq;
 };
 
+// STEP and DIR pins come from the board table (boards/board.hpp); the rest depends on the STEP
+// pad, checked below so a changed board pin cannot silently keep the wrong ALT or select.
 constexpr CaptureWiring kWiring[4] = {
     // A: pin 4 = EMC_06 → PWM2 SM0 A (ALT1), DIR pin 6
-    {pwm::kPwm2Base, 0, false, 4, 6, 1, iomuxc::kSelectFlexpwm2PwmA0, 0, nvic::kIrqFlexpwm2Sm0},
+    {pwm::kPwm2Base, 0, false, kDriverModuleV1.input_ports[0].step, kDriverModuleV1.input_ports[0].dir, 1,
+     iomuxc::kSelectFlexpwm2PwmA0, 0, nvic::kIrqFlexpwm2Sm0},
     // B: pin 5 = EMC_08 → PWM2 SM1 A (ALT1), DIR pin 7
-    {pwm::kPwm2Base, 1, false, 5, 7, 1, iomuxc::kSelectFlexpwm2PwmA1, 0, nvic::kIrqFlexpwm2Sm1},
+    {pwm::kPwm2Base, 1, false, kDriverModuleV1.input_ports[1].step, kDriverModuleV1.input_ports[1].dir, 1,
+     iomuxc::kSelectFlexpwm2PwmA1, 0, nvic::kIrqFlexpwm2Sm1},
     // C: pin 8 = B1_00 → PWM1 SM3 A (ALT6), DIR pin 10
-    {pwm::kPwm1Base, 3, false, 8, 10, 6, iomuxc::kSelectFlexpwm1PwmA3, 4, nvic::kIrqFlexpwm1Sm3},
+    {pwm::kPwm1Base, 3, false, kDriverModuleV1.input_ports[2].step, kDriverModuleV1.input_ports[2].dir, 6,
+     iomuxc::kSelectFlexpwm1PwmA3, 4, nvic::kIrqFlexpwm1Sm3},
     // D: pin 9 = B0_11 → PWM2 SM2 B (ALT2), DIR pin 11
-    {pwm::kPwm2Base, 2, true, 9, 11, 2, iomuxc::kSelectFlexpwm2PwmB2, 1, nvic::kIrqFlexpwm2Sm2},
+    {pwm::kPwm2Base, 2, true, kDriverModuleV1.input_ports[3].step, kDriverModuleV1.input_ports[3].dir, 2,
+     iomuxc::kSelectFlexpwm2PwmB2, 1, nvic::kIrqFlexpwm2Sm2},
 };
+static_assert(pin_pad(kWiring[0].step_pin).mux == pad::emc(6).mux, "input A STEP must be pad EMC_06 (ALT1)");
+static_assert(pin_pad(kWiring[1].step_pin).mux == pad::emc(8).mux, "input B STEP must be pad EMC_08 (ALT1)");
+static_assert(pin_pad(kWiring[2].step_pin).mux == pad::b1(0).mux, "input C STEP must be pad B1_00 (ALT6)");
+static_assert(pin_pad(kWiring[3].step_pin).mux == pad::b0(11).mux, "input D STEP must be pad B0_11 (ALT2)");
+static_assert(kBasicModuleV1.input_ports[0].step == kWiring[0].step_pin &&
+                  kBasicModuleV1.input_ports[0].dir == kWiring[0].dir_pin,
+              "Basic Module input port = port A");
 
 struct CaptureState {
   hal::PulseSink sink = nullptr;
@@ -81,7 +96,7 @@ void refresh_capture_clock() {
 // Flags, capture registers and interrupt enables of a port's channel.
 uint16_t flag_rise(const CaptureWiring& w) { return w.channel_b ? pwm::kCaptureB0 : pwm::kCaptureA0; }
 uint16_t flag_fall(const CaptureWiring& w) { return w.channel_b ? pwm::kCaptureB1 : pwm::kCaptureA1; }
-volatile uint16_t& sm(const CaptureWiring& w, uint32_t offset) { return pwm::sm_reg(w.pwm_base, w.submodule, offset); }
+regs::Reg16 sm(const CaptureWiring& w, uint32_t offset) { return pwm::sm_reg(w.pwm_base, w.submodule, offset); }
 
 // Now on the extended time line: counts a pending wrap first, and one that lands between reading
 // the flags and the counter (the counter then reads small).
@@ -133,12 +148,42 @@ void capture_isr_c() { service(2); }
 void capture_isr_d() { service(3); }
 constexpr void (*kIsrs[4])() = {capture_isr_a, capture_isr_b, capture_isr_c, capture_isr_d};
 
-// Pads: STEP to the PWM input (ALT + input select), DIR to a fast-GPIO input.
+/// A Teensy pin whose pad can carry another channel of an input port's PWM submodule: Teensyduino's
+/// analogWrite() on it puts the pad in `pwm_alt` and reprograms the whole submodule (its counter
+/// period, VAL registers and RUN bit), which breaks the capture. Facts from the Teensy 4.x PWM pin
+/// list (FlexPWM2_0: pins 4, 33; FlexPWM2_1: pin 5; FlexPWM1_3: pins 7, 8, 25; FlexPWM2_2: 6, 9).
+struct SharedPwmPin {
+  uint8_t port;
+  uint8_t pin;
+  uint8_t pwm_alt;
+};
+constexpr SharedPwmPin kSharedPwmPins[] = {{0, 33, 1}, {2, 7, 6}, {2, 25, 4}, {3, 6, 2}};
+/// The fault detail per input port (static strings: log_fault keeps the pointer).
+constexpr const char* kSharedPwmMessages[4] = {
+    "input port A: analogWrite on pin 33 uses its FlexPWM2 submodule 0",
+    "input port B: no shared PWM pin",
+    "input port C: analogWrite on pin 7 or 25 uses its FlexPWM1 submodule 3",
+    "input port D: analogWrite on pin 6 uses its FlexPWM2 submodule 2",
+};
+
+// True if a pin sharing `port`'s submodule has its pad in its PWM function (analogWrite ran on it).
+bool pwm_pin_in_use(uint8_t port) {
+  for (const SharedPwmPin& shared : kSharedPwmPins) {
+    if (shared.port != port) continue;
+    const uint32_t mux = iomuxc::pad_mux(pin_info(shared.pin)->mux);
+    if ((mux & iomuxc::kMuxModeMask) == shared.pwm_alt) return true;
+  }
+  return false;
+}
+
+// Pads: STEP to the PWM input (ALT + input select), DIR to a fast-GPIO input. SION: the RM
+// (§11.7, SW_MUX_CTL_PAD SION) asks for the input path to be forced on when a pad mux carries an
+// input to a peripheral through the daisy chain (the IOMUXC_*_SELECT_INPUT registers).
 void attach_pins(const CaptureWiring& w) {
   const PinInfo& step = *pin_info(w.step_pin);
   pad_configure(step, kPadInput);
   iomuxc::select_input(w.select_input) = w.select_value;
-  pad_select(step, w.alt);
+  pad_select(step, w.alt | iomuxc::kMuxSion);
   const PinInfo& dir = *pin_info(w.dir_pin);
   pad_configure(dir, kPadInput);
   pin_make_gpio(dir, false);
@@ -148,7 +193,7 @@ void attach_pins(const CaptureWiring& w) {
 // both capture edges and the reload (counter wrap) interrupt.
 void start_capture(const CaptureWiring& w) {
   const unsigned n = w.submodule;
-  volatile uint16_t& mctrl = pwm::mctrl(w.pwm_base);
+  regs::Reg16 mctrl = pwm::mctrl(w.pwm_base);
   mctrl = static_cast<uint16_t>(mctrl & ~pwm::mctrl_run(n));
   sm(w, pwm::kSmInten) = 0;
   sm(w, pwm::kSmCaptctrlA) = 0;
@@ -161,7 +206,7 @@ void start_capture(const CaptureWiring& w) {
   sm(w, pwm::kSmVal1) = 0xFFFF;
   for (uint32_t val = 0; val < 4; ++val) sm(w, pwm::kSmVal2 + 4u * val) = 0;
   sm(w, pwm::kSmOctrl) = 0;
-  volatile uint16_t& outen = pwm::outen(w.pwm_base);
+  regs::Reg16 outen = pwm::outen(w.pwm_base);
   outen = static_cast<uint16_t>(outen & ~(w.channel_b ? pwm::outen_b(n) : pwm::outen_a(n)));
   mctrl = static_cast<uint16_t>(mctrl | pwm::mctrl_load_ok(n));
   sm(w, pwm::kSmSts) = 0xFFFF;
@@ -181,6 +226,11 @@ namespace teensy = platform::teensy;
 Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink, void* context) {
   if (port >= 4) return Status::kNoSuchPin;
   if (sink == nullptr) return Status::kBadArgument;
+  if (teensy::pwm_pin_in_use(port)) {  // refused before touching the submodule
+    report_fault(FaultLevel::kWarning, FaultReason::kBadConfiguration, "port_in_begin",
+                 teensy::kSharedPwmMessages[port]);
+    return Status::kBusy;
+  }
   const teensy::CaptureWiring& wiring = teensy::kWiring[port];
   teensy::irq::disable(wiring.irq);  // no capture ISR while the port is rebuilt
   namespace ccm = teensy::regs::ccm;

@@ -1,9 +1,11 @@
-// Interrupt plumbing: NVIC registers (ARMv7-M ARM §B3.4), PRIMASK critical sections (§B1.4.3).
+// Interrupt plumbing: NVIC registers (ARMv7-M ARM §B3.4), PRIMASK critical sections and BASEPRI
+// priority masking (§B1.4.3).
 #if defined(__IMXRT1062__)
 
 #include "stepdance/platform/teensy/irq.hpp"
 
 #include "stepdance/hal/hal.hpp"
+#include "stepdance/platform/teensy/regs_core.hpp"
 #include "stepdance/platform/teensy/regs_nvic.hpp"
 #include "stepdance/platform/teensy/teensyduino_services.hpp"
 
@@ -28,23 +30,27 @@ void disable(uint8_t irq) {
 
 void pend(uint8_t irq) { nvic::ispr(irq) = nvic::irq_bit(irq); }
 
-bool in_thread_mode() {
-  uint32_t ipsr;
-  __asm__ volatile("mrs %0, ipsr" : "=r"(ipsr));
-  return (ipsr & 0x1FFu) == 0;
+bool in_thread_mode() { return (regs::core::ipsr() & 0x1FFu) == 0; }
+
+uint32_t mask_from(uint8_t priority) {
+  const uint32_t previous = regs::core::basepri();
+  regs::core::raise_basepri(priority);
+  return previous;
 }
+
+void unmask(uint32_t previous) { regs::core::set_basepri(previous); }
 
 }  // namespace stepdance::platform::teensy::irq
 
 namespace stepdance::hal {
 
 uint32_t irq_save() {
-  uint32_t primask;
-  __asm__ volatile("mrs %0, primask\n\tcpsid i" : "=r"(primask)::"memory");
+  const uint32_t primask = platform::teensy::regs::core::primask();
+  platform::teensy::regs::core::disable_irqs();
   return primask;
 }
 
-void irq_restore(uint32_t state) { __asm__ volatile("msr primask, %0" ::"r"(state) : "memory"); }
+void irq_restore(uint32_t state) { platform::teensy::regs::core::set_primask(state); }
 
 }  // namespace stepdance::hal
 

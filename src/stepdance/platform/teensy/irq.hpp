@@ -28,6 +28,12 @@ void install(uint8_t irq, void (*handler)(), uint8_t priority);
 void disable(uint8_t irq);
 /// Requests an interrupt from software (used for the frame ISR). Context: any.
 void pend(uint8_t irq);
+/// Masks every interrupt of priority number `priority` or more (BASEPRI_MAX; never lowers a
+/// level already set); more urgent ones keep running. Returns the previous BASEPRI for unmask().
+/// `priority` must be a non-zero multiple of 16. Context: any.
+uint32_t mask_from(uint8_t priority);
+/// Restores the BASEPRI mask_from() returned. Context: any.
+void unmask(uint32_t previous);
 /// True in thread mode (the loop), false inside any exception handler. Context: any.
 bool in_thread_mode();
 

@@ -3,6 +3,7 @@
 
 #include "stepdance/platform/teensy/output_ports.hpp"
 
+#include "stepdance/boards/board.hpp"
 #include "stepdance/hal/hal.hpp"
 #include "stepdance/platform/teensy/flexio3.hpp"
 #include "stepdance/platform/teensy/pins.hpp"
@@ -18,14 +19,31 @@ struct OutputWiring {
   uint8_t dir_flexio;
 };
 
-// Pads: 23 = AD_B1_09, 22 = AD_B1_08, 21 = AD_B1_11, 20 = AD_B1_10 (FlexIO3 pin = AD_B1 index);
-// 37 = B1_03, 36 = B1_02, 35 = B1_12, 34 = B1_13 (FlexIO3 pin = 16 + B1 index).
-constexpr OutputWiring kWiring[4] = {{23, 22, 9, 8}, {21, 20, 11, 10}, {37, 36, 19, 18}, {35, 34, 28, 29}};
+// The pins are the board table's (written once, in boards/board.hpp); the FlexIO3 pins follow
+// from their pads: 23 = AD_B1_09 → 9, 22 = AD_B1_08 → 8, 21 = AD_B1_11 → 11, 20 = AD_B1_10 → 10,
+// 37 = B1_03 → 19, 36 = B1_02 → 18, 35 = B1_12 → 28, 34 = B1_13 → 29.
+constexpr OutputWiring wiring_of(const OutputPortPins& pins) {
+  return {pins.step, pins.dir, flexio3_pin(pins.step), flexio3_pin(pins.dir)};
+}
+constexpr OutputWiring kWiring[4] = {
+    wiring_of(kDriverModuleV1.output_ports[0]), wiring_of(kDriverModuleV1.output_ports[1]),
+    wiring_of(kDriverModuleV1.output_ports[2]), wiring_of(kDriverModuleV1.output_ports[3])};
+// The Basic Module's one output port is port A's pins.
+static_assert(kBasicModuleV1.output_ports[0].step == kWiring[0].step_pin &&
+                  kBasicModuleV1.output_ports[0].dir == kWiring[0].dir_pin,
+              "Basic Module output port = port A");
 #if defined(ARDUINO_TEENSY40)
 constexpr uint8_t kPortCount = 2;  // pins 34..37 of a Teensy 4.0 are SD pads without FlexIO3
 #else
 constexpr uint8_t kPortCount = 4;
 #endif
+constexpr bool ports_have_flexio3_pads() {
+  for (uint8_t port = 0; port < kPortCount; ++port) {
+    if (kWiring[port].step_flexio == 0xFF || kWiring[port].dir_flexio == 0xFF) return false;
+  }
+  return true;
+}
+static_assert(ports_have_flexio3_pads(), "every output port pin needs a pad with a FlexIO3 function");
 
 // Between transmissions a pin shows bit 0 of a word (the shifter's last load), so the lines idle
 // low only because the frame layout never uses bit 0: STEP starts at 2 µs, DIR 1 µs before it.
@@ -66,6 +84,8 @@ uint8_t output_ports_commit_staged() {
   staged = 0;
   return ports;
 }
+
+void output_ports_drop_staged() { staged = 0; }
 
 void output_ports_zero(uint8_t mask) {
   for (uint8_t port = 0; port < kPortCount; ++port) {

@@ -15,8 +15,10 @@ namespace stepdance::platform::teensy {
 /// Zeroes the buffers of every claimed port (their words were just launched). Context: tick ISR.
 void output_ports_disarm();
 /// Writes the staged words of this frame into the FlexIO buffers; returns the ports written.
-/// Context: frame ISR, interrupts disabled.
+/// Context: frame ISR, tick ISR masked.
 uint8_t output_ports_commit_staged();
+/// Forgets the staged words of this frame (its slot has passed). Context: frame ISR.
+void output_ports_drop_staged();
 /// Zeroes the buffers of the ports in `mask`. Context: any.
 void output_ports_zero(uint8_t mask);
 /// Hands the claimed ports' pads back to FlexIO3 (after a safe state). Context: loop.

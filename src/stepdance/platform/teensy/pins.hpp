@@ -66,6 +66,20 @@ constexpr PinInfo kBoardPins[8] = {pad::b1(13),  pad::b1(12), pad::b1(2),  pad::
 /// Highest pin number this backend knows on the selected Teensy.
 constexpr uint8_t kMaxPin = static_cast<uint8_t>(34u + sizeof(kBoardPins) / sizeof(kBoardPins[0]) - 1u);
 
+/// The pad and GPIO bit of a Teensy pin (constant expression), or {0, 0, 0} if there is none.
+constexpr PinInfo pin_pad(uint8_t pin) {
+  return pin < 34 ? kCommonPins[pin] : pin <= kMaxPin ? kBoardPins[pin - 34u] : PinInfo{0, 0, 0};
+}
+
+/// The FlexIO3 pin a Teensy pin's pad carries in ALT9 (AD_B1_nn → nn, B1_nn → 16 + nn), or 0xFF
+/// if its pad has no FlexIO3 function. RM §11.7 (pad ALT9 = FLEXIO3_FLEXIOnn).
+constexpr uint8_t flexio3_pin(uint8_t pin) {
+  const PinInfo pad = pin_pad(pin);
+  const bool ad_b1 = pad.mux >= regs::iomuxc::kMuxAdB100 && pad.mux < regs::iomuxc::kMuxB000;
+  const bool b1 = pad.mux >= regs::iomuxc::kMuxB100 && pad.mux < regs::iomuxc::kMuxSdB000;
+  return ad_b1 ? static_cast<uint8_t>(pad.bit - 16u) : b1 ? pad.bit : uint8_t{0xFF};
+}
+
 /// The pad and GPIO bit of a Teensy pin, or nullptr if the board has no such pin.
 inline const PinInfo* pin_info(uint8_t pin) {
   if (pin < 34) return &kCommonPins[pin];

@@ -1,6 +1,7 @@
 // Quadrature decoders: pins 0/1 → ENC1 and 2/3 → ENC2 through XBAR1 (RM chapters 56 and 61).
 #if defined(__IMXRT1062__)
 
+#include "stepdance/boards/board.hpp"
 #include "stepdance/hal/hal.hpp"
 #include "stepdance/platform/teensy/clocks.hpp"
 #include "stepdance/platform/teensy/pins.hpp"
@@ -32,16 +33,25 @@ struct EncoderWiring {
   ccm::ClockGate gate;
 };
 
+// Pins from the board table (boards/board.hpp); the rest depends on the pad, checked below.
 // Pin 0 = AD_B0_03 (ALT1, INOUT17, select 1), pin 1 = AD_B0_02 (ALT1, INOUT16, select 0),
 // pin 2 = EMC_04 (ALT3, INOUT06, select 0), pin 3 = EMC_05 (ALT3, INOUT07, select 0).
+constexpr const uint8_t (&kPins)[2][2] = kDriverModuleV1.encoder_pins;
 constexpr EncoderWiring kWiring[2] = {
-    {{0, 1, 17, iomuxc::kSelectXbar1In17, 1, xbar1::kOutEnc1PhaseA},
-     {1, 1, 16, iomuxc::kSelectXbar1In16, 0, xbar1::kOutEnc1PhaseB},
+    {{kPins[0][0], 1, 17, iomuxc::kSelectXbar1In17, 1, xbar1::kOutEnc1PhaseA},
+     {kPins[0][1], 1, 16, iomuxc::kSelectXbar1In16, 0, xbar1::kOutEnc1PhaseB},
      ccm::kGateEnc1},
-    {{2, 3, 6, iomuxc::kSelectXbar1In06, 0, xbar1::kOutEnc2PhaseA},
-     {3, 3, 7, iomuxc::kSelectXbar1In07, 0, xbar1::kOutEnc2PhaseB},
+    {{kPins[1][0], 3, 6, iomuxc::kSelectXbar1In06, 0, xbar1::kOutEnc2PhaseA},
+     {kPins[1][1], 3, 7, iomuxc::kSelectXbar1In07, 0, xbar1::kOutEnc2PhaseB},
      ccm::kGateEnc2},
 };
+static_assert(pin_pad(kPins[0][0]).mux == pad::ad_b0(3).mux && pin_pad(kPins[0][1]).mux == pad::ad_b0(2).mux,
+              "ENC1 phases must be pads AD_B0_03/AD_B0_02 (XBAR1 INOUT17/16)");
+static_assert(pin_pad(kPins[1][0]).mux == pad::emc(4).mux && pin_pad(kPins[1][1]).mux == pad::emc(5).mux,
+              "ENC2 phases must be pads EMC_04/EMC_05 (XBAR1 INOUT06/07)");
+static_assert(kBasicModuleV1.encoder_pins[0][0] == kPins[0][0] && kBasicModuleV1.encoder_pins[0][1] == kPins[0][1] &&
+                  kBasicModuleV1.encoder_pins[1][0] == kPins[1][0] && kBasicModuleV1.encoder_pins[1][1] == kPins[1][1],
+              "both modules wire the encoders alike");
 
 volatile bool begun[2] = {false, false};
 

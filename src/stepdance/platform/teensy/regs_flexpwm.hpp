@@ -15,7 +15,7 @@ constexpr uint32_t kPwm2Base = 0x403E0000u;  // RM §55.8, PWM2 base address
 constexpr uint32_t kSubmoduleStride = 0x60u;
 
 /// A register of submodule `sm` at `offset` (RM §55.8, SMn* registers).
-inline volatile uint16_t& sm_reg(uint32_t base, unsigned sm, uint32_t offset) {
+inline Reg16 sm_reg(uint32_t base, unsigned sm, uint32_t offset) {
   return reg16(base + kSubmoduleStride * sm + offset);
 }
 constexpr uint32_t kSmCnt = 0x00;        // SMnCNT: the counter (read only)
@@ -55,12 +55,12 @@ constexpr uint16_t kCaptEdge0Rising = 2u << 2;
 constexpr uint16_t kCaptEdge1Falling = 1u << 4;
 
 /// OUTEN: output enables (PWMA_EN bits 11:8, PWMB_EN bits 7:4, one bit per submodule). RM §55.8.
-inline volatile uint16_t& outen(uint32_t base) { return reg16(base + 0x180u); }
+inline Reg16 outen(uint32_t base) { return reg16(base + 0x180u); }
 constexpr uint16_t outen_a(unsigned sm) { return static_cast<uint16_t>(1u << (8u + sm)); }
 constexpr uint16_t outen_b(unsigned sm) { return static_cast<uint16_t>(1u << (4u + sm)); }
 
 /// MCTRL: master control (RUN bits 11:8, CLDOK bits 7:4, LDOK bits 3:0). RM §55.8.
-inline volatile uint16_t& mctrl(uint32_t base) { return reg16(base + 0x188u); }
+inline Reg16 mctrl(uint32_t base) { return reg16(base + 0x188u); }
 constexpr uint16_t mctrl_run(unsigned sm) { return static_cast<uint16_t>(1u << (8u + sm)); }
 constexpr uint16_t mctrl_clear_load_ok(unsigned sm) { return static_cast<uint16_t>(1u << (4u + sm)); }
 constexpr uint16_t mctrl_load_ok(unsigned sm) { return static_cast<uint16_t>(1u << sm); }

@@ -13,15 +13,15 @@ namespace stepdance::platform::teensy::regs::gpio {
 constexpr uint32_t base(unsigned fast_index) { return 0x42000000u + 0x4000u * fast_index; }
 
 /// DR: data register. RM §12.5, GPIO_DR.
-inline volatile uint32_t& dr(unsigned fast_index) { return reg32(base(fast_index) + 0x00u); }
+inline Reg32 dr(unsigned fast_index) { return reg32(base(fast_index) + 0x00u); }
 /// GDIR: direction, 1 = output. RM §12.5, GPIO_GDIR.
-inline volatile uint32_t& gdir(unsigned fast_index) { return reg32(base(fast_index) + 0x04u); }
+inline Reg32 gdir(unsigned fast_index) { return reg32(base(fast_index) + 0x04u); }
 /// PSR: pad status (the level on the pin). RM §12.5, GPIO_PSR.
-inline volatile uint32_t& psr(unsigned fast_index) { return reg32(base(fast_index) + 0x08u); }
+inline Reg32 psr(unsigned fast_index) { return reg32(base(fast_index) + 0x08u); }
 /// DR_SET: write 1 to set DR bits. RM §12.5, GPIO_DR_SET.
-inline volatile uint32_t& dr_set(unsigned fast_index) { return reg32(base(fast_index) + 0x84u); }
+inline Reg32 dr_set(unsigned fast_index) { return reg32(base(fast_index) + 0x84u); }
 /// DR_CLEAR: write 1 to clear DR bits. RM §12.5, GPIO_DR_CLEAR.
-inline volatile uint32_t& dr_clear(unsigned fast_index) { return reg32(base(fast_index) + 0x88u); }
+inline Reg32 dr_clear(unsigned fast_index) { return reg32(base(fast_index) + 0x88u); }
 
 }  // namespace stepdance::platform::teensy::regs::gpio
 

@@ -24,12 +24,13 @@ constexpr uint16_t kMuxSdB000 = 0x1BC;
 constexpr uint16_t kPadCtlFromMux = 0x1F0;
 
 /// SW_MUX_CTL_PAD register of a pad. RM §11.7.
-inline volatile uint32_t& pad_mux(uint16_t mux_offset) { return reg32(kBase + mux_offset); }
+inline Reg32 pad_mux(uint16_t mux_offset) { return reg32(kBase + mux_offset); }
 /// SW_PAD_CTL_PAD register of the same pad. RM §11.7.
-inline volatile uint32_t& pad_ctl(uint16_t mux_offset) { return reg32(kBase + mux_offset + kPadCtlFromMux); }
+inline Reg32 pad_ctl(uint16_t mux_offset) { return reg32(kBase + mux_offset + kPadCtlFromMux); }
 
 // SW_MUX_CTL_PAD fields (RM §11.7): MUX_MODE bits 3:0, SION bit 4.
 constexpr uint32_t kMuxSion = 1u << 4;
+constexpr uint32_t kMuxModeMask = 0xFu;
 constexpr uint32_t kAltGpio = 5;     // ALT5 is GPIO on every pad we use
 constexpr uint32_t kAltFlexio3 = 9;  // ALT9 is FlexIO3 on the AD_B1 and B1 pads we use
 
@@ -56,15 +57,15 @@ constexpr uint16_t kSelectXbar1In16 = 0x64C;
 constexpr uint16_t kSelectXbar1In17 = 0x62C;
 
 /// An IOMUXC_*_SELECT_INPUT register. RM §11.7.
-inline volatile uint32_t& select_input(uint16_t offset) { return reg32(kBase + offset); }
+inline Reg32 select_input(uint16_t offset) { return reg32(kBase + offset); }
 
 // ---- General-purpose registers (RM §11.4).
 /// GPR6: XBAR_INOUTn direction select, bit (n + 12) for n = 4..19; 0 = input.
-inline volatile uint32_t& gpr6() { return reg32(kGprBase + 0x18u); }
+inline Reg32 gpr6() { return reg32(kGprBase + 0x18u); }
 constexpr uint32_t gpr6_xbar_output(unsigned inout) { return 1u << (inout + 12u); }
 
 /// GPR26..GPR29: per-bit choice between GPIO1..4 (0) and the fast GPIO6..9 (1).
-inline volatile uint32_t& gpr_fast_gpio_select(unsigned fast_gpio_index) {
+inline Reg32 gpr_fast_gpio_select(unsigned fast_gpio_index) {
   return reg32(kGprBase + 0x68u + 4u * fast_gpio_index);
 }
 

@@ -11,16 +11,16 @@
 namespace stepdance::platform::teensy::regs::nvic {
 
 /// ISERn: set-enable, one bit per interrupt. ARMv7-M ARM §B3.4.4, NVIC_ISER.
-inline volatile uint32_t& iser(unsigned irq) { return reg32(0xE000E100u + 4u * (irq / 32u)); }
+inline Reg32 iser(unsigned irq) { return reg32(0xE000E100u + 4u * (irq / 32u)); }
 /// ICERn: clear-enable. ARMv7-M ARM §B3.4.5, NVIC_ICER.
-inline volatile uint32_t& icer(unsigned irq) { return reg32(0xE000E180u + 4u * (irq / 32u)); }
+inline Reg32 icer(unsigned irq) { return reg32(0xE000E180u + 4u * (irq / 32u)); }
 /// ISPRn: set-pending. ARMv7-M ARM §B3.4.6, NVIC_ISPR.
-inline volatile uint32_t& ispr(unsigned irq) { return reg32(0xE000E200u + 4u * (irq / 32u)); }
+inline Reg32 ispr(unsigned irq) { return reg32(0xE000E200u + 4u * (irq / 32u)); }
 /// ICPRn: clear-pending. ARMv7-M ARM §B3.4.7, NVIC_ICPR.
-inline volatile uint32_t& icpr(unsigned irq) { return reg32(0xE000E280u + 4u * (irq / 32u)); }
+inline Reg32 icpr(unsigned irq) { return reg32(0xE000E280u + 4u * (irq / 32u)); }
 /// IPRn: one priority byte per interrupt; the RT1062 implements the top 4 bits (16 levels).
 /// ARMv7-M ARM §B3.4.9, NVIC_IPR.
-inline volatile uint8_t& ipr(unsigned irq) { return reg8(0xE000E400u + irq); }
+inline Reg8 ipr(unsigned irq) { return reg8(0xE000E400u + irq); }
 /// Bit of an interrupt in its ISER/ICER/ISPR/ICPR word.
 constexpr uint32_t irq_bit(unsigned irq) { return 1u << (irq % 32u); }
 

@@ -15,7 +15,7 @@ constexpr uint32_t kBase = 0x403BC000u;  // RM §61.4, XBARA1 base address
 /// Connects XBAR1 input `input` to output `output`: SELn (16 bits at 2n) holds output 2n in
 /// bits 6:0 and output 2n+1 in bits 14:8. RM §61.4, XBARA_SELn.
 inline void connect(uint8_t input, uint8_t output) {
-  volatile uint16_t& sel = reg16(kBase + 2u * (output / 2u));
+  Reg16 sel = reg16(kBase + 2u * (output / 2u));
   const unsigned shift = (output & 1u) ? 8u : 0u;
   sel = static_cast<uint16_t>((sel & ~(0x7Fu << shift)) | ((input & 0x7Fu) << shift));
 }
