@@ -24,7 +24,8 @@ struct EngineCapacity {
   static constexpr size_t kFrameFunctions = 8;
 };
 
-/// Runs registered blocks: one frame every 40 µs in stage order, kilohertz blocks every 1 ms,
+/// Runs registered blocks: one frame every frame_period_us() (40 µs unless the sketch chose
+/// another with set_frame_period_us()) in stage order, kilohertz blocks every 1 ms,
 /// loop blocks on every dance_loop(). One instance per board (see engine()).
 class Engine {
  public:
@@ -44,7 +45,8 @@ class Engine {
   /// start() it runs after the post-channel stage. kFull → fault. Context: loop.
   Status add_frame_function(FrameFunction function);
 
-  /// Orders every stage from the BlockPort graph (producers before consumers; a cycle is
+  /// Asks every block to accept the chosen frame period (a refusal → kBadArgument), orders every
+  /// stage from the BlockPort graph (producers before consumers; a cycle is
   /// reported once as a warning naming the blocks and that stage keeps begin() order), then
   /// starts the frame and kilohertz timers through the HAL. Refuses (kBadArgument) while a fault
   /// is recorded. Context: loop.
@@ -87,6 +89,8 @@ class Engine {
   const Registry& registry(Stage stage) const { return registries_[static_cast<uint8_t>(stage)]; }
   void run_stage(Registry& blocks);
   void order_stages();
+  // Asks every block whether it can run at the chosen period (each refusal is on the fault path).
+  bool blocks_accept_frame_period();
 
   Registry registries_[kNumStages];
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> early_functions_;

@@ -32,8 +32,11 @@ class Channel : public Block {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "Channel"; }
-  /// Highest pulse rate: one pulse per frame.
-  static constexpr double kMaxPulseRatePerS = kFrameRateHz;
+  /// Highest pulse rate: one pulse per frame of the chosen period. Context: any.
+  static double max_pulse_rate_per_s() { return frame_rate_hz(); }
+  /// Refuses (fault path) a period at which its output port cannot carry its signal, e.g. E on
+  /// a port begun with OUTPUT_FRAME_8US. Context: loop (dance_start).
+  bool accept_frame_period(uint32_t period_us) override;
   /// Default number of samples of the EMA filter (α = 1/n).
   static constexpr uint16_t kDefaultFilterSamples = 20;
 
