@@ -1,4 +1,4 @@
-// The frame engine: fixed registries per stage, the 25 kHz frame, the 1 kHz tick and the loop.
+// The frame engine: fixed registries per stage, the frame (25 kHz by default), the 1 kHz tick and the loop.
 #pragma once
 
 #include <stddef.h>
@@ -66,7 +66,7 @@ class Engine {
   /// Loop passes run so far (wraps; compare for equality): lets loop blocks share a per-pass
   /// budget, e.g. one I2C transfer per pass. Context: loop.
   uint32_t loop_passes() const { return loop_passes_; }
-  /// Frames run since start (wraps after ~2 days at 25 kHz; use differences). Context: any.
+  /// Frames run since start (wraps after ~2 days at 25 kHz, ~12 hours at 100 kHz; use differences). Context: any.
   uint32_t frame_count() const { return frame_count_; }
   /// Frame-ISR load statistics. Context: any (reads are not atomic across fields).
   const LoadMetrics& load() const { return load_; }

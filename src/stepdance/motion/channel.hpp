@@ -42,15 +42,16 @@ class Channel : public Block {
 
   Channel();
 
-  /// Resets the state, the rate (25 000 pulses/s) and the statistics, begins both inputs and
+  /// Resets the state, the rate (one pulse per frame: 25 000 pulses/s at 40 µs) and the statistics, begins both inputs and
   /// registers the channel in the channel stage. kBadArgument if signal ≥ 6 (nothing begun);
   /// kFull if the channel registry is full (a fault is recorded). Context: loop.
   Status begin(OutputPort* port, uint8_t signal);
   /// As begin(port, signal) without a port: the channel runs but emits nothing. Context: loop.
   Status begin();
 
-  /// Caps the pulse rate, in pulses per second (clamped to 0 .. 25 000; resolution 0.001).
-  /// Over any 25 000 consecutive frames of continuous one-way demand the channel emits exactly
+  /// Caps the pulse rate, in pulses per second (0 .. the frame rate, 25 000 at 40 µs; resolution
+  /// 0.001). Over any frame-rate's worth of consecutive frames (one second) of continuous one-way
+  /// demand the channel emits exactly
   /// round(pulses_per_s) pulses when that is an integer. Context: any.
   void set_max_pulse_rate(double pulses_per_s);
   /// world_units of the inputs equal channel_units steps (25.4, 2032 → 80 steps/mm). Also
