@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Counts Cortex-M7 instructions per frame of a benchmark graph under QEMU (mps2-an500) and turns
-# them into an estimated share of the 40 us frame at 600 MHz. Method: docs/benchmarks-target.md.
+# them into an estimated share of the frame at 600 MHz (40 us, or STEPDANCE_BENCH_FRAME_PERIOD_US:
+# 10, 20, 25 or 40). Method: docs/benchmarks-target.md; periods: docs/high-speed.md.
 # Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave]
 #        (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|Release|...)
 set -euo pipefail
@@ -8,12 +9,15 @@ cd "$(dirname "$0")/.."
 frames=${1:-20000}
 workload=${2:-step_a_sketch}
 build_type=${STEPDANCE_QEMU_BUILD_TYPE:-MinSizeRel}
-build_dir=${STEPDANCE_QEMU_BENCH_DIR:-build-qemu-m7-bench-$build_type-$workload}
-budget_cycles=24000                        # 40 us at 600 MHz
+period_us=${STEPDANCE_BENCH_FRAME_PERIOD_US:-40}
+period_suffix=$([ "$period_us" = 40 ] && echo "" || echo "-${period_us}us")
+build_dir=${STEPDANCE_QEMU_BENCH_DIR:-build-qemu-m7-bench-$build_type-$workload$period_suffix}
+budget_cycles=$((period_us * 600))         # the frame period at 600 MHz (24 000 at 40 us)
 run_frame_symbol=_ZN9stepdance6Engine9run_frameEv
 
 cmake -S targets/qemu-m7 -B "$build_dir" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/cortex-m7.cmake" \
-  -DCMAKE_BUILD_TYPE="$build_type" -DSTEPDANCE_BENCH_FRAMES="$frames" -DSTEPDANCE_BENCH_WORKLOAD="$workload" >/dev/null
+  -DCMAKE_BUILD_TYPE="$build_type" -DSTEPDANCE_BENCH_FRAMES="$frames" -DSTEPDANCE_BENCH_WORKLOAD="$workload" \
+  -DSTEPDANCE_BENCH_FRAME_PERIOD_US="$period_us" >/dev/null
 cmake --build "$build_dir" -j"$(nproc)" --target bench_frame >/dev/null
 image="$build_dir/bench_frame.elf"
 qemu=(qemu-system-arm -M mps2-an500 -cpu cortex-m7 -nographic -monitor none

@@ -102,6 +102,7 @@ using stepdance::disable_drivers;
 using stepdance::enable_drivers;
 using stepdance::iterate_across_all_output_ports;
 using stepdance::transmit_frames_on_all_output_ports;
+using stepdance::set_frame_period_us;
 
 // Constants the original exposed globally.
 using stepdance::ABSOLUTE;
@@ -144,6 +145,9 @@ using stepdance::OUTPUT_FRAME_16US;
 using stepdance::OUTPUT_FRAME_32US;
 using stepdance::OUTPUT_FRAME_4US;
 using stepdance::OUTPUT_FRAME_8US;
+using stepdance::OUTPUT_MODE_STEP_DIR;
+using stepdance::OUTPUT_MODE_STEPDANCE;
+using stepdance::OutputMode;
 using stepdance::OUTPUT_TRANSMIT_MANUAL;
 using stepdance::OUTPUT_TRANSMIT_ON_FRAME;
 using stepdance::SIGNAL_E;

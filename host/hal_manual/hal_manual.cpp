@@ -270,9 +270,9 @@ void set_storage_present(bool present) { board().storage.present = present; }
 
 void run_frames(uint32_t n) {
   for (uint32_t i = 0; i < n; ++i) {
-    board().micros += kFramePeriodUs;
+    board().micros += frame_period_us();
     if (board().frame_isr != nullptr) board().frame_isr();
-    if (++board().frames_since_tick == kFramesPerKilohertzTick) {
+    if (++board().frames_since_tick >= frames_per_kilohertz_tick()) {
       board().frames_since_tick = 0;
       if (board().khz_isr != nullptr) board().khz_isr();
     }

@@ -9,6 +9,7 @@
 #define STEPDANCE_BENCH_GRAPH_CLASS StepASketchGraph
 #endif
 #include STEPDANCE_BENCH_GRAPH_HEADER
+#include "stepdance/core/frame_period.hpp"
 using BenchGraph = stepdance::workloads::STEPDANCE_BENCH_GRAPH_CLASS;
 
 #ifndef STEPDANCE_BENCH_FRAMES
@@ -58,6 +59,9 @@ constexpr uint32_t kKnownLoopIterations = 1000000;
 }  // namespace
 
 int main(int, char**) {
+#if defined(STEPDANCE_BENCH_FRAME_PERIOD_US)
+  stepdance::set_frame_period_us(STEPDANCE_BENCH_FRAME_PERIOD_US);  // before the graph starts the engine
+#endif
   BenchGraph graph;
   timer_start();
 

@@ -288,6 +288,22 @@ TEST_F(EibotboardTest, StepperMovesEndExactlyAndHomeReturns) {
   ASSERT_EQ(exchange("CS\r"), "OK\r\n");
 }
 
+// The emulation keeps the EBB's 40 µs tick at any frame period: a 1000 ms move takes 1000 ms of
+// 10 µs frames (100 000 of them), not a quarter of that.
+TEST_F(EibotboardTest, MovesKeepTheEbbTimeBaseInTenMicrosecondFrames) {
+  engine().stop();
+  ASSERT_EQ(set_frame_period_us(10), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  ASSERT_EQ(exchange("SM,1000,250,-766\r"), "OK\r\n");
+  const uint32_t started = engine().frame_count();
+  for (int i = 0; i < 200000 && (motor(0) != 250 || motor(1) != -766); ++i) step();
+  const uint32_t frames = engine().frame_count() - started;
+  EXPECT_EQ(motor(0), 250);
+  EXPECT_EQ(motor(1), -766);
+  EXPECT_GE(frames, 99000u);  // 1000 ms: 25 000 EBB ticks of 4 frames
+  EXPECT_LE(frames, 100000u);
+}
+
 TEST_F(EibotboardTest, MicrostepModeScalesMotionAndEnableClearsTheCounters) {
   ASSERT_EQ(exchange("EM,2,2\r"), "OK\r\n");  // 1/8: one step is two 1/16 steps
   ASSERT_EQ(exchange("SM,100,40,-20\r"), "OK\r\n");

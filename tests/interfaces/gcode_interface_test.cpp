@@ -129,6 +129,33 @@ TEST_F(GCodeInterfaceTest, ManyMoreLinesThanThePlannerHoldsAreAllExecutedInOrder
   EXPECT_DOUBLE_EQ(gcode.output_y.read_absolute(), 300 * 0.25);
 }
 
+// At 10 µs frames the planner keeps real time: the same rapid takes the same 1.2 s (four times
+// the frames) and ends exactly; a dwell still waits its 0.5 s.
+TEST_F(GCodeInterfaceTest, AtTenMicrosecondFramesMovesAndDwellsKeepRealTime) {
+  engine().stop();
+  ASSERT_EQ(set_frame_period_us(10), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  constexpr double kDt10 = 10e-6;
+  host.send("$110=6000\n$120=500\nG0 X100\n");
+  run_until_idle();
+  size_t first = 0, last = 0;
+  for (size_t i = 1; i < x.size(); ++i) {
+    if (x[i] == x[i - 1]) continue;
+    if (first == 0) first = i;
+    last = i;
+  }
+  EXPECT_NEAR((last - first + 1) * kDt10, 100.0 / 100.0 + 100.0 / 500.0, 0.001);
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 100.0);
+  host.take();
+  host.send("G4 P0.5\nG1 X101 F600\n");
+  int frames = 0;
+  while (gcode.output_x.read_absolute() == 100.0 && frames < 400000) {
+    step();
+    ++frames;
+  }
+  EXPECT_NEAR(frames * kDt10, 0.5, 0.002);
+}
+
 TEST_F(GCodeInterfaceTest, DwellWaitsItsTime) {
   host.send("G4 P0.5\nG1 X1 F600\n");
   int frames = 0;

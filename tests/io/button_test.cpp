@@ -39,7 +39,7 @@ void attach_all(Button& button) {
 }
 
 // Runs n kilohertz ticks (25 frames each).
-void run_ms(uint32_t n) { hal_manual::run_frames(n * kFramesPerKilohertzTick); }
+void run_ms(uint32_t n) { hal_manual::run_frames(n * frames_per_kilohertz_tick()); }
 
 // Holds the pin at each level for one millisecond, in turn.
 void drive(const std::vector<bool>& levels) {

@@ -62,9 +62,8 @@ TEST_F(OutputPortTest, ReadsDriveCurrentAndLimitSwitch) {
   EXPECT_TRUE(a.read_limit_switch());
 }
 
-TEST_F(OutputPortTest, OnlyThe32UsFormatIsAccepted) {
+TEST_F(OutputPortTest, ManualTransmitModeLeavesTheFrameToTheSketch) {
   OutputPort a;
-  EXPECT_EQ(a.begin(OUTPUT_A, OUTPUT_FRAME_16US, OUTPUT_TRANSMIT_ON_FRAME), Status::kUnsupported);
   EXPECT_EQ(a.begin(OUTPUT_A, OUTPUT_FRAME_32US, OUTPUT_TRANSMIT_MANUAL), Status::kOk);
   EXPECT_EQ(engine().count(Stage::kOutputPorts), 0u);  // manual: the sketch transmits
 }

@@ -193,6 +193,34 @@ TEST_F(RecordingTest, FortyMinutesPlanSixtyMillionSamples) {
   recorder.stop();
 }
 
+// At 10 µs frames our format records the period in its header (bytes 12..15, ns) and plays back
+// exactly; the original format, which stores no period, is refused; and a 10 µs recording does
+// not play at 40 µs, where it would run four times too slow.
+TEST_F(RecordingTest, AtTenMicrosecondFramesOurFormatStoresThePeriodAndTheOriginalIsRefused) {
+  engine().stop();
+  ASSERT_EQ(set_frame_period_us(10), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  EXPECT_EQ(recorder.start("orig10"), Status::kUnsupported);
+  recorder.set_file_format(RECORDING_FORMAT_STEPDANCE);
+  ASSERT_EQ(recorder.start("minute", 1), Status::kOk);
+  EXPECT_EQ(recorder.max_num_samples, 60ull * 100000);  // one minute of 10 µs frames
+  recorder.stop();
+  const size_t frames = 2000;
+  const auto steps = random_steps(frames, 100, 5);
+  record("fast10", steps);
+  const std::vector<uint8_t> data = test_support::read_file("fast10.bin");
+  ASSERT_GE(data.size(), 16u);
+  EXPECT_EQ(data[12] | data[13] << 8 | data[14] << 16 | data[15] << 24, 10000);
+  const auto played = play("fast10", frames + 5);
+  for (int track = 0; track < 4; ++track) {
+    for (size_t frame = 0; frame < frames; ++frame) ASSERT_EQ(played[track][frame], steps[track][frame]) << frame;
+  }
+  engine().stop();
+  ASSERT_EQ(set_frame_period_us(40), Status::kOk);
+  ASSERT_EQ(dance_start(), Status::kOk);
+  EXPECT_EQ(player.start("fast10"), Status::kUnsupported);
+}
+
 TEST_F(RecordingTest, AFullBufferStopsTheRecordingCleanlyWithACountedWarning) {
   ASSERT_EQ(recorder.start("slow"), Status::kOk);
   sources[0].play(std::vector<double>(20000, kStep));

@@ -56,6 +56,22 @@ TEST(RecordingFormat, HeaderRoundTripsAndIsTellableFromOriginalData) {
   EXPECT_EQ(read_header(bytes, sizeof(bytes), back), HeaderCheck::kUnsupported);
 }
 
+TEST(RecordingFormat, HeaderAcceptsEverySupportedFramePeriodAndNoOther) {
+  for (uint32_t period_ns = 0; period_ns <= 50000; period_ns += 500) {
+    RecordingHeader header;
+    header.frame_period_ns = period_ns;
+    uint8_t bytes[kHeaderBytes];
+    write_header(header, bytes);
+    RecordingHeader back;
+    const bool supported = period_ns == 10000 || period_ns == 20000 || period_ns == 25000 || period_ns == 40000;
+    EXPECT_EQ(read_header(bytes, sizeof(bytes), back), supported ? HeaderCheck::kOk : HeaderCheck::kUnsupported)
+        << period_ns;
+    if (supported) {
+      EXPECT_EQ(back.frame_period_ns, period_ns);
+    }
+  }
+}
+
 TEST(RecordingFormat, LengthFileIsDecimalWithCrLfAndReadsBack) {
   char text[kLengthTextBytes];
   EXPECT_EQ(format_length(60000000, text), 10u);

@@ -8,6 +8,7 @@
 #include "hal_manual.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/core/frame_period.hpp"
 
 namespace stepdance::test_support {
 
@@ -16,6 +17,7 @@ namespace stepdance::test_support {
 inline void reset_global_state(uint32_t start_us = 0) {
   stepdance::hal_manual::reset(start_us);
   stepdance::engine().clear();
+  stepdance::set_frame_period_us(stepdance::kDefaultFramePeriodUs);
   stepdance::clear_fault();
   stepdance::clear_fault_subscribers();
 }

@@ -56,11 +56,11 @@ namespace arduino_backend {
 void delay_us(uint32_t us) {
   the_state.delayed_us += us;
   ++the_state.delay_calls;
-  for (uint32_t frame = 0; frame < us / kFramePeriodUs; ++frame) {
+  for (uint32_t frame = 0; frame < us / frame_period_us(); ++frame) {
     hal_manual::run_frames(1);
     arduino::run_interval_timers();  // as the simulator does at each frame tick
   }
-  hal_manual::advance_us(us % kFramePeriodUs);
+  hal_manual::advance_us(us % frame_period_us());
   arduino::run_interval_timers();
 }
 

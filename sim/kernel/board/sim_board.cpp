@@ -127,7 +127,7 @@ void SimBoard::play_pending_frames(SimTime start_ns) {
   if ((pending_ports_ | idle_listening_ports_) == 0) return;
   for (PortState& port : ports_) {
     if (!port.frame_pending) {
-      for (WireListener* listener : port.idle_listeners) listener->on_frame(start_ns, protocol::FrameWords{});
+      for (WireListener* listener : port.idle_listeners) listener->on_frame(start_ns, protocol::FrameWords{}, frame_timer_.period_ns());
       continue;
     }
     port.frame_pending = false;
@@ -137,7 +137,7 @@ void SimBoard::play_pending_frames(SimTime start_ns) {
     } else {
       count_frame_pulses(port.pending, port.sent, (end_ns_ - start_ns) / kMicrosecond);
     }
-    for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending);
+    for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending, frame_timer_.period_ns());
   }
   pending_ports_ = 0;
 }

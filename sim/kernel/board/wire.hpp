@@ -16,9 +16,11 @@ class WireListener {
   /// tick, e.g. by a cable that injects glitches between frames. Asked once, when added.
   virtual bool wants_idle_frames() const { return false; }
   /// `words` play from `start_ns`: bit n is the level during [start + n µs, start + (n+1) µs),
-  /// and both lines are low again from start + 32 µs. Called at `start_ns`, so a listener sees
-  /// the whole frame up to 32 µs before its last edge (it must use the edge times, not now()).
-  virtual void on_frame(SimTime start_ns, const protocol::FrameWords& words) = 0;
+  /// and both lines are low again from start + 32 µs (earlier in a shorter format). The next
+  /// frame starts at start + frame_ns (the board's frame period). Called at `start_ns`, so a
+  /// listener sees the whole frame up to 32 µs before its last edge (it must use the edge times,
+  /// not now()).
+  virtual void on_frame(SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) = 0;
 };
 
 /// One STEP pulse as it reaches an input port's pins, after any cable effects.

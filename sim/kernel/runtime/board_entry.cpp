@@ -28,7 +28,7 @@ void read_stats(StepdanceBoardStatsV1* stats) {
   stats->fault_detail = fault_detail();
   const LoadMetrics& load = engine().load();
   stats->load_peak_cycles = load.peak_cycles();
-  stats->load_budget_cycles = hal::cycles_per_second() / kFrameRateHz;
+  stats->load_budget_cycles = hal::cycles_per_second() / frame_rate_hz();
   stats->load_total_cycles = load.total_cycles();
   stats->load_frames = load.frames();
 }

@@ -9,9 +9,9 @@ namespace stepdance::sim {
 CableLink::CableLink(const CableSettings& settings, SimBoard& receiver, uint8_t input_port, PulseDelivery& delivery)
     : cable_(settings), receiver_(receiver), input_port_(input_port), delivery_(delivery) {}
 
-void CableLink::on_frame(SimTime start_ns, const protocol::FrameWords& words) {
+void CableLink::on_frame(SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
   frame_waveform(start_ns, words, input_);
-  const SimTime end_ns = start_ns + SimTime{kFramePeriodUs} * kMicrosecond;
+  const SimTime end_ns = start_ns + frame_ns;
   const PortWaveform output = cable_.transmit(input_, start_ns, end_ns);
   if (tap_) tap_(output);
   forward_pulses(output);

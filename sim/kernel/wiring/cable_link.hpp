@@ -25,7 +25,7 @@ class CableLink final : public WireListener {
 
   /// Glitches happen between frames too, so a glitching cable sees every window.
   bool wants_idle_frames() const override { return cable_.settings().glitch_every > 0; }
-  void on_frame(SimTime start_ns, const protocol::FrameWords& words) override;
+  void on_frame(SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) override;
   void set_tap(Tap tap) { tap_ = std::move(tap); }
 
   /// What the cable model counted (pulses in, passed, removed, merged, glitches).

@@ -13,7 +13,7 @@ template <typename Model>
 class StepFeeder final : public WireListener {
  public:
   explicit StepFeeder(Model& model, bool* activity = nullptr) : model_(model), activity_(activity) {}
-  void on_frame(SimTime start_ns, const protocol::FrameWords& words) override {
+  void on_frame(SimTime start_ns, const protocol::FrameWords& words, SimTime /*frame_ns*/) override {
     for_each_step_rise(start_ns, words, [this](SimTime time, bool dir_high) { model_.on_step_rising(time, dir_high); });
     if (activity_ != nullptr && words.step_bits != 0) *activity_ = true;
   }

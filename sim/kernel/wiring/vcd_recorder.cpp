@@ -9,7 +9,7 @@ namespace stepdance::sim {
 class VcdRecorder::OutputTap final : public WireListener {
  public:
   OutputTap(VcdRecorder& recorder, LinePair lines) : recorder_(recorder), lines_(lines) {}
-  void on_frame(SimTime start_ns, const protocol::FrameWords& words) override {
+  void on_frame(SimTime start_ns, const protocol::FrameWords& words, SimTime /*frame_ns*/) override {
     frame_waveform(start_ns, words, waveform_);
     recorder_.record(lines_, waveform_);
   }

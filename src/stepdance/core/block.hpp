@@ -1,6 +1,8 @@
 // Base class of every engine block (ports, channels, generators, kinematics, interfaces).
 #pragma once
 
+#include <stdint.h>
+
 #include "stepdance/core/counters.hpp"
 #include "stepdance/core/stage.hpp"
 #include "stepdance/core/status.hpp"
@@ -58,6 +60,13 @@ class Block {
   virtual void run_kilohertz() { run(); }
   /// Runs once per dance_loop() (loop stage). Called by the engine only.
   virtual void loop() {}
+  /// Called by the engine at start with the frame period it is about to run: a block that cannot
+  /// work at that period reports why on the fault path and returns false, and the engine does
+  /// not start. Default: any period. Context: loop.
+  virtual bool accept_frame_period(uint32_t period_us) {
+    (void)period_us;
+    return true;
+  }
 
  protected:
   /// Unregisters the block. Blocks are never deleted through a Block pointer (they are globals

@@ -13,12 +13,12 @@ void dance_loop();
 /// Adds a raw function to every frame (before dance_start: ahead of the stages; after: behind).
 /// Context: loop.
 stepdance::Status add_function_to_frame(void (*function)());
-/// Peak frame-ISR load since the last reset, as a fraction of the 40 µs frame (0..1+).
+/// Peak frame-ISR load since the last reset, as a fraction of the frame period (0..1+).
 /// Context: any.
 float stepdance_get_cpu_usage();
 /// Mean frame-ISR load since the last reset, as a fraction of the frame. Context: any.
 float stepdance_get_average_cpu_usage();
-/// Frames that took longer than 40 µs since the last reset. Context: any.
+/// Frames that took longer than the frame period since the last reset. Context: any.
 uint32_t stepdance_get_frame_overruns();
 /// Clears the load statistics. Context: loop.
 void stepdance_metrics_reset();

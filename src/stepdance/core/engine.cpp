@@ -78,10 +78,11 @@ Status Engine::add_frame_function(FrameFunction function) {
 Status Engine::start() {
   if (fault_reason() != FaultReason::kNone) return Status::kBadArgument;
   if (running_) return Status::kOk;
+  if (!blocks_accept_frame_period()) return Status::kBadArgument;
   order_stages();
   running_ = true;
-  frame_budget_cycles_ = hal::cycles_per_second() / kFrameRateHz;
-  const Status frame = hal::frame_timer_start(kFramePeriodUs, &frame_isr);
+  frame_budget_cycles_ = hal::cycles_per_second() / frame_rate_hz();
+  const Status frame = hal::frame_timer_start(frame_period_us(), &frame_isr);
   if (frame != Status::kOk) {
     running_ = false;
     return frame;
@@ -89,6 +90,16 @@ Status Engine::start() {
   const Status tick = hal::khz_timer_start(kKilohertzPeriodUs, &kilohertz_isr);
   if (tick != Status::kOk) stop();
   return tick;
+}
+
+bool Engine::blocks_accept_frame_period() {
+  bool accepted = true;
+  for_each_block(
+      [](Block* block, void* all) {
+        if (!block->accept_frame_period(frame_period_us())) *static_cast<bool*>(all) = false;
+      },
+      &accepted);
+  return accepted;
 }
 
 void Engine::order_stages() {

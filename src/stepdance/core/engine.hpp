@@ -1,4 +1,4 @@
-// The frame engine: fixed registries per stage, the 25 kHz frame, the 1 kHz tick and the loop.
+// The frame engine: fixed registries per stage, the frame (25 kHz by default), the 1 kHz tick and the loop.
 #pragma once
 
 #include <stddef.h>
@@ -24,7 +24,8 @@ struct EngineCapacity {
   static constexpr size_t kFrameFunctions = 8;
 };
 
-/// Runs registered blocks: one frame every 40 µs in stage order, kilohertz blocks every 1 ms,
+/// Runs registered blocks: one frame every frame_period_us() (40 µs unless the sketch chose
+/// another with set_frame_period_us()) in stage order, kilohertz blocks every 1 ms,
 /// loop blocks on every dance_loop(). One instance per board (see engine()).
 class Engine {
  public:
@@ -44,7 +45,8 @@ class Engine {
   /// start() it runs after the post-channel stage. kFull → fault. Context: loop.
   Status add_frame_function(FrameFunction function);
 
-  /// Orders every stage from the BlockPort graph (producers before consumers; a cycle is
+  /// Asks every block to accept the chosen frame period (a refusal → kBadArgument), orders every
+  /// stage from the BlockPort graph (producers before consumers; a cycle is
   /// reported once as a warning naming the blocks and that stage keeps begin() order), then
   /// starts the frame and kilohertz timers through the HAL. Refuses (kBadArgument) while a fault
   /// is recorded. Context: loop.
@@ -64,7 +66,7 @@ class Engine {
   /// Loop passes run so far (wraps; compare for equality): lets loop blocks share a per-pass
   /// budget, e.g. one I2C transfer per pass. Context: loop.
   uint32_t loop_passes() const { return loop_passes_; }
-  /// Frames run since start (wraps after ~2 days at 25 kHz; use differences). Context: any.
+  /// Frames run since start (wraps after ~2 days at 25 kHz, ~12 hours at 100 kHz; use differences). Context: any.
   uint32_t frame_count() const { return frame_count_; }
   /// Frame-ISR load statistics. Context: any (reads are not atomic across fields).
   const LoadMetrics& load() const { return load_; }
@@ -87,6 +89,8 @@ class Engine {
   const Registry& registry(Stage stage) const { return registries_[static_cast<uint8_t>(stage)]; }
   void run_stage(Registry& blocks);
   void order_stages();
+  // Asks every block whether it can run at the chosen period (each refusal is on the fault path).
+  bool blocks_accept_frame_period();
 
   Registry registries_[kNumStages];
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> early_functions_;

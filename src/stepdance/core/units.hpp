@@ -1,7 +1,9 @@
-// Numeric types, frame timing constants and the position modes shared by every block.
+// Numeric types, the frame timing names of the original and the position modes shared by every block.
 #pragma once
 
 #include <stdint.h>
+
+#include "stepdance/core/frame_period.hpp"
 
 namespace stepdance {
 
@@ -9,17 +11,6 @@ namespace stepdance {
 using DecimalPosition = volatile double;
 /// A knob-style parameter (speed, amplitude, ratio), written by AnalogInput or user code.
 using ControlParameter = volatile float;
-
-/// Frame period of the real-time engine in microseconds (25 kHz).
-constexpr uint32_t kFramePeriodUs = 40;
-/// Frame rate in hertz.
-constexpr uint32_t kFrameRateHz = 1000000 / kFramePeriodUs;
-/// Frame period in seconds.
-constexpr double kFramePeriodS = kFramePeriodUs / 1e6;
-/// Period of the 1 kHz context in microseconds.
-constexpr uint32_t kKilohertzPeriodUs = 1000;
-/// Frames per kilohertz tick.
-constexpr uint32_t kFramesPerKilohertzTick = kKilohertzPeriodUs / kFramePeriodUs;
 
 /// How a value moves through a BlockPort: as a change, or as a position.
 enum PositionMode : uint8_t {
@@ -45,8 +36,10 @@ constexpr double STANDARD_RATIO_IN = 0.0003937;
 
 }  // namespace stepdance
 
-// Names the original library exposed as macros; kept so existing sketches compile.
-constexpr uint32_t CORE_FRAME_PERIOD_US = stepdance::kFramePeriodUs;
-constexpr uint32_t CORE_FRAME_FREQ_HZ = stepdance::kFrameRateHz;
-constexpr double CORE_FRAME_PERIOD_S = stepdance::kFramePeriodS;
+// Names the original library exposed as macros, kept so existing sketches compile. They follow
+// the period chosen with set_frame_period_us(), so they are values read at run time (a global
+// initialised from them before setup() sees the 40 µs default).
+#define CORE_FRAME_PERIOD_US (::stepdance::frame_period_us())
+#define CORE_FRAME_FREQ_HZ (::stepdance::frame_rate_hz())
+#define CORE_FRAME_PERIOD_S (::stepdance::frame_period_s())
 constexpr uint32_t KILOHERTZ_PLUGIN_PERIOD_US = stepdance::kKilohertzPeriodUs;

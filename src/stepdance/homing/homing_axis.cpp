@@ -9,7 +9,6 @@
 namespace stepdance {
 namespace {
 
-constexpr uint32_t kDefaultDebounceFrames = 2 * (1000 / kFramePeriodUs);  // 2 ms
 
 }  // namespace
 
@@ -20,7 +19,7 @@ void HomingAxis::configure(uint8_t limit_pin, double value_at_limit, float direc
   direction_ = direction < 0 ? -1.0 : 1.0;
   fast_velocity_ = fabs(static_cast<double>(velocity));
   target_ = target;
-  switch_.set_stable_samples(kDefaultDebounceFrames);
+  set_debounce_ms(debounce_ms_);
 }
 
 Status HomingAxis::begin() {
@@ -33,12 +32,16 @@ Status HomingAxis::begin() {
 }
 
 void HomingAxis::set_debounce_ms(double ms) {
-  const double frames = ms * 1000.0 / kFramePeriodUs;
+  debounce_ms_ = ms;
+  const double frames = ms * 1000.0 / frame_period_us();
   switch_.set_stable_samples(frames < 1.0 ? 1u : static_cast<uint32_t>(frames + 0.5));
 }
 
 void HomingAxis::start() {
   frames_ = 0;
+  // Frames follow the period chosen before dance_start(); the times set in ms stay the same.
+  set_debounce_ms(debounce_ms_);
+  timeout_frames_ = timeout_ms_ * (1000u / frame_period_us());
   state_ = HOMING_AXIS_STATE_BEGIN;
 }
 
@@ -100,7 +103,7 @@ void HomingAxis::run_state(bool active, bool released) {
 // Moves one frame at `velocity`; a pull-off lands exactly on its distance. False when a seek or
 // approach has gone farther than the maximum travel.
 bool HomingAxis::move(double velocity) {
-  double step = velocity * kFramePeriodS;
+  double step = velocity * frame_period_s();
   const double moved = fabs(position_ - phase_start_);
   const bool pulling = state_ == HOMING_AXIS_STATE_PULLING_OFF || state_ == HOMING_AXIS_STATE_FINAL_PULL_OFF;
   if (pulling && moved < pull_off_ && fabs(step) > pull_off_ - moved) step = step > 0 ? pull_off_ - moved : moved - pull_off_;

@@ -60,7 +60,7 @@ class HomingAxis : public Block {
   /// How long a switch level must hold to count, ms (default 2). Context: loop.
   void set_debounce_ms(double ms);
   /// Longest the whole routine may take, ms (default 60 000; 0 = no limit). Context: loop.
-  void set_timeout_ms(uint32_t ms) { timeout_frames_ = ms * (1000 / kFramePeriodUs); }
+  void set_timeout_ms(uint32_t ms) { timeout_ms_ = ms; }
   /// Farthest a seek or approach may travel before failing, world units (0 = no limit, the
   /// default). Context: loop.
   void set_max_travel(double units) { max_travel_ = units; }
@@ -106,7 +106,9 @@ class HomingAxis : public Block {
   double slow_velocity_ = 0.0;  // 0: a tenth of the fast speed
   double pull_off_ = 1.0;
   double max_travel_ = 0.0;
-  uint32_t timeout_frames_ = 60000u * (1000 / kFramePeriodUs);
+  uint32_t timeout_ms_ = 60000u;
+  uint32_t timeout_frames_ = 0;  // timeout_ms_ in frames of the period at start()
+  double debounce_ms_ = 2.0;
   uint8_t pin_ = 255;
   bool active_low_ = false;
 

@@ -182,6 +182,7 @@ class Eibotboard : public Block {
   volatile uint32_t alarm_stops_ = 0;     // frame: motor moves stopped or skipped while an alarm is raised
   // frame side
   ebb::EbbMotionExecutor executor_;
+  uint32_t tick_time_us_ = 0;  // frame time not yet spent on an EBB tick (< 40 µs)
   double mm_per_sixteenth_ = 25.4 / 2032.0;
   double z_units_per_step_ = 1.0 / 50.0;
   uint32_t move_ticks_done_ = 0;

@@ -5,6 +5,7 @@
 
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
+#include "stepdance/core/fault.hpp"
 #include "stepdance/core/fixed_list.hpp"
 #include "stepdance/core/units.hpp"
 #include "stepdance/hal/hal.hpp"
@@ -38,10 +39,57 @@ void OutputPort::release_previous_owner(uint8_t port) {
   previous->port_ = 255;
 }
 
-Status OutputPort::begin(uint8_t port) { return begin(port, OUTPUT_FRAME_32US, OUTPUT_TRANSMIT_ON_FRAME); }
+Status OutputPort::begin(uint8_t port) { return claim(port, kFormatForPeriod, OUTPUT_TRANSMIT_ON_FRAME); }
 
 Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
-  if (format != OUTPUT_FRAME_32US) return Status::kUnsupported;
+  if (format >= kNumOutputFrameFormats) {
+    fault(FaultReason::kBadConfiguration, "OutputPort::begin: unknown format (OUTPUT_FRAME_32US/16US/8US/4US)");
+    return Status::kBadArgument;
+  }
+  if (transmit_mode != OUTPUT_TRANSMIT_ON_FRAME && transmit_mode != OUTPUT_TRANSMIT_MANUAL) {
+    fault(FaultReason::kBadConfiguration, "OutputPort::begin: unknown transmit mode");
+    return Status::kBadArgument;
+  }
+  requested_format_ = format;
+  if (!accept_frame_period(frame_period_us())) return Status::kBadArgument;
+  return claim(port, format, transmit_mode);
+}
+
+bool OutputPort::accept_frame_period(uint32_t period_us) {
+  if (requested_format_ == kFormatForPeriod) {
+    layout_ = protocol::layout_for_period(period_us);
+    return true;
+  }
+  if (protocol::format_fits_period(requested_format_, period_us)) {
+    layout_ = protocol::frame_layout(requested_format_);
+    return true;
+  }
+  fault(FaultReason::kBadConfiguration,
+        "OutputPort: the transmission format does not end before the frame period does (32US needs "
+        "> 32 us, 16US > 16 us, 8US > 8 us, 4US > 4 us)");
+  return false;
+}
+
+bool OutputPort::can_carry(uint8_t signal, uint32_t period_us) const {
+  if (mode_ == OUTPUT_MODE_STEP_DIR) return signal == step_dir_signal_;
+  const protocol::FrameLayout layout = requested_format_ == kFormatForPeriod ? protocol::layout_for_period(period_us)
+                                                                             : protocol::frame_layout(requested_format_);
+  return protocol::signal_fits(layout, signal);
+}
+
+Status OutputPort::set_output_mode(OutputMode mode, uint8_t step_dir_signal) {
+  if ((mode != OUTPUT_MODE_STEPDANCE && mode != OUTPUT_MODE_STEP_DIR) || step_dir_signal >= kNumSignals) {
+    return Status::kBadArgument;
+  }
+  hal::CriticalSection guard;
+  step_dir_signal_ = step_dir_signal;
+  mode_ = mode;
+  return Status::kOk;
+}
+
+Status OutputPort::claim(uint8_t port, uint8_t format, uint8_t transmit_mode) {
+  requested_format_ = format;
+  if (format == kFormatForPeriod) accept_frame_period(frame_period_us());
   if (port >= active_board().output_port_count) {
     hal::log_message("OutputPort::begin: this board has no such output port");
     return Status::kNoSuchPin;
@@ -59,7 +107,18 @@ Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
 
 void OutputPort::add_signal(uint8_t signal, uint8_t direction) {
   if (signal >= kNumSignals) return;
+  const bool carried = mode_ == OUTPUT_MODE_STEP_DIR ? signal == step_dir_signal_ : protocol::signal_fits(layout_, signal);
+  if (!carried) {
+    refuse_pulse();
+    return;
+  }
   set_pending(signal, pending_[signal] + (direction == DIRECTION_FORWARD ? 1 : -1));
+}
+
+void OutputPort::refuse_pulse() {
+  if (pulses_refused_++ != 0) return;
+  report_fault(FaultLevel::kWarning, FaultReason::kBadConfiguration, "OutputPort",
+               "pulse refused: a STEP_DIR port sends one signal, and a short frame has no room for the wide ones");
 }
 
 void OutputPort::set_pending(uint8_t signal, int32_t count) {
@@ -75,19 +134,35 @@ void OutputPort::step_now(uint8_t direction, uint8_t signal) {
 }
 
 void OutputPort::transmit_frame() {
+  if (idle_timeout_ms_ != 0) idle_check(pending_mask_ != 0);
+  const protocol::FrameWords words = mode_ == OUTPUT_MODE_STEP_DIR ? encode_step_dir() : encode_stepdance();
+  if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, words);
+}
+
+protocol::FrameWords OutputPort::encode_stepdance() {
   protocol::FrameRequest request;
   request.active_mask = pending_mask_;
+  if (request.active_mask == 0) return {};
   request.forward_mask = forward_mask_;
-  if (idle_timeout_frames_ != 0) idle_check(request.active_mask != 0);
-  protocol::EncodedFrame frame;
-  if (request.active_mask != 0) {
-    request.priority_mask = carried_mask_ & request.active_mask;
-    frame = protocol::encode_frame(request);
-    account_sent(frame.sent_mask);
-    carried_mask_ = frame.carried_mask;
-    for (uint8_t carried = frame.carried_mask; carried != 0; carried &= carried - 1) ++signals_carried_;
-  }
-  if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, frame.words);
+  request.priority_mask = carried_mask_ & request.active_mask;
+  const protocol::EncodedFrame frame = protocol::encode_frame(request, layout_);
+  account_sent(frame.sent_mask);
+  carried_mask_ = frame.carried_mask;
+  for (uint8_t carried = frame.carried_mask; carried != 0; carried &= carried - 1) ++signals_carried_;
+  return frame.words;
+}
+
+protocol::FrameWords OutputPort::encode_step_dir() {
+  const uint8_t signal = step_dir_signal_;
+  const int32_t pending = pending_[signal];
+  if (pending == 0) return {};
+  const bool forward = pending > 0;
+  const uint32_t count = forward ? static_cast<uint32_t>(pending) : static_cast<uint32_t>(-pending);
+  const protocol::StepDirFrame frame = protocol::encode_step_dir_frame(count, forward, layout_);
+  set_pending(signal, forward ? pending - frame.sent : pending + frame.sent);
+  sent_[signal][forward ? DIRECTION_FORWARD : DIRECTION_REVERSE] += frame.sent;
+  if (count > frame.sent) ++signals_carried_;
+  return frame.words;
 }
 
 void OutputPort::report_counters(CounterSink& sink) const {
@@ -108,6 +183,7 @@ void OutputPort::clear_statistics() {
   hal::CriticalSection guard;
   carried_mask_ = 0;
   signals_carried_ = 0;
+  pulses_refused_ = 0;
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
     set_pending(signal, 0);
     sent_[signal][0] = sent_[signal][1] = 0;
@@ -137,7 +213,7 @@ Status OutputPort::enable_driver() {
   }
   const Status mode = hal::gpio_mode(p->enable, hal::PinMode::kOutput);
   if (mode != Status::kOk) return mode;
-  idle_frames_ = 0;
+  idle_us_ = 0;
   idle_disabled_ = false;
   driver_enabled_ = true;
   hal::gpio_write(p->enable, false);
@@ -155,8 +231,7 @@ Status OutputPort::disable_driver() {
 }
 
 void OutputPort::set_driver_idle_timeout_ms(uint32_t ms) {
-  const uint64_t frames = (static_cast<uint64_t>(ms) * 1000u + kFramePeriodUs - 1) / kFramePeriodUs;
-  idle_timeout_frames_ = frames > UINT32_MAX ? UINT32_MAX : static_cast<uint32_t>(frames);
+  idle_timeout_ms_ = ms;
   if (ms == 0 && idle_disabled_) write_enable_pin(true);  // turned off while idle: back on
 }
 
@@ -164,11 +239,13 @@ void OutputPort::set_driver_idle_timeout_ms(uint32_t ms) {
 void OutputPort::idle_check(bool moving) {
   if (!driver_enabled_) return;
   if (moving) {
-    idle_frames_ = 0;
+    idle_us_ = 0;
     if (idle_disabled_) write_enable_pin(true);
     return;
   }
-  if (idle_disabled_ || ++idle_frames_ < idle_timeout_frames_) return;
+  if (idle_disabled_) return;
+  idle_us_ += frame_period_us();
+  if (idle_us_ < uint64_t{idle_timeout_ms_} * 1000u) return;
   write_enable_pin(false);
 }
 

@@ -17,7 +17,7 @@ class AngleSource {
  public:
   /// Advances and returns the new angle, radians. `input` has been pulled and updated.
   double advance(double rate, bool use_input, const BlockPort& input) {
-    const double step = use_input ? rate * input.read(INCREMENTAL) : ramp_.follow(rate) * kFramePeriodS;
+    const double step = use_input ? rate * input.read(INCREMENTAL) : ramp_.follow(rate) * frame_period_s();
     theta_ = wrap(theta_ + step);
     return theta_;
   }

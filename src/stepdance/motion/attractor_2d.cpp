@@ -26,7 +26,7 @@ void Attractor2D::run() {
   const double dx = target_x_ - output_x.read_deep();
   const double dy = target_y_ - output_y.read_deep();
   const double distance = hypot(dx, dy);
-  const double reach = fabs(static_cast<double>(max_speed_)) * kFramePeriodS;
+  const double reach = fabs(static_cast<double>(max_speed_)) * frame_period_s();
   const double scale = distance > reach && distance > 1e-9 ? reach / distance : 1.0;
   output_x.set(output_x.convert_world_to_block_units(dx * scale), INCREMENTAL);
   output_y.set(output_y.convert_world_to_block_units(dy * scale), INCREMENTAL);

@@ -1,6 +1,7 @@
 // Channel: the per-frame stepping law, its exact rate limiter, soft limits and deep sync.
 #include "stepdance/motion/channel.hpp"
 
+#include "stepdance/core/fault.hpp"
 #include "stepdance/hal/hal.hpp"
 #include "stepdance/io/output_port.hpp"
 #include "stepdance/protocol/signals.hpp"
@@ -10,10 +11,13 @@ namespace {
 
 // The rate limiter counts credit in milli-pulses per second, one add per frame. A pulse costs
 // one second's worth of frames of credit, so a rate of N pulses/s earns exactly N pulses in any
-// 25 000 frames; fractional rates keep a resolution of 0.001 pulses/s.
+// second of frames; fractional rates keep a resolution of 0.001 pulses/s. At the shortest period
+// (200 000 frames/s) a reversal's price is 4e8, so credit stays well inside 32 bits.
 constexpr uint32_t kCreditScale = 1000;
-constexpr uint32_t kCreditPerPulse = kFrameRateHz * kCreditScale;
-constexpr uint32_t kMaxCreditPerFrame = kCreditPerPulse;  // one pulse per frame
+// credit_per_frame_ when no limit is set: one pulse every frame, whatever the period.
+constexpr uint32_t kUnlimitedCredit = UINT32_MAX;
+
+uint32_t credit_per_pulse() { return frame_rate_hz() * kCreditScale; }
 
 // Half a step: the dead band around the target.
 constexpr double kDeadBandSteps = 0.5;
@@ -28,6 +32,14 @@ Status Channel::begin(OutputPort* port, uint8_t signal) {
 }
 
 Status Channel::begin() { return start(nullptr, 255); }
+
+bool Channel::accept_frame_period(uint32_t period_us) {
+  if (port_ == nullptr || port_->can_carry(signal_, period_us)) return true;
+  fault(FaultReason::kBadConfiguration,
+        "Channel: its output port cannot carry its signal (a STEP_DIR port sends one signal; "
+        "OUTPUT_FRAME_8US has no room for E, OUTPUT_FRAME_4US only for X)");
+  return false;
+}
 
 Status Channel::start(OutputPort* port, uint8_t signal) {
   port_ = port;
@@ -45,8 +57,8 @@ void Channel::reset_state() {
   filtered_target_position = 0;
   direction_ = 1;
   last_pulse_step_ = 0;
-  credit_per_frame_ = kMaxCreditPerFrame;
-  credit_ = kCreditPerPulse - 1;  // as after a long idle time: the first pulse may go at once
+  credit_per_frame_ = kUnlimitedCredit;
+  credit_ = credit_per_pulse() - 1;  // as after a long idle time: the first pulse may go at once
   pulses_forward_ = 0;
   pulses_reverse_ = 0;
   pulses_withheld_ = 0;
@@ -57,8 +69,9 @@ void Channel::set_max_pulse_rate(double pulses_per_s) {
     credit_per_frame_ = 0;
     return;
   }
-  if (pulses_per_s >= kMaxPulseRatePerS) {
-    credit_per_frame_ = kMaxCreditPerFrame;
+  // Kept as asked even above today's frame rate: a shorter period chosen later raises the cap.
+  if (pulses_per_s * kCreditScale >= static_cast<double>(kUnlimitedCredit)) {
+    credit_per_frame_ = kUnlimitedCredit;
     return;
   }
   credit_per_frame_ = static_cast<uint32_t>(pulses_per_s * kCreditScale + 0.5);
@@ -158,14 +171,15 @@ bool Channel::limit_allows(int8_t step) const {
 
 uint32_t Channel::threshold_for(int8_t step) const {
   const bool reversing = step != 0 && last_pulse_step_ != 0 && step != last_pulse_step_;
-  return reversing ? 2 * kCreditPerPulse : kCreditPerPulse;
+  return reversing ? 2 * credit_per_pulse() : credit_per_pulse();
 }
 
 // Earns this frame's credit and pulses if the step is affordable. Without a pulse the credit is
 // capped just below the price, so idle (or blocked) time never banks a burst, while a pending
 // reversal may still save up its double price.
 void Channel::meter_credit(int8_t step) {
-  credit_ += credit_per_frame_;
+  const uint32_t one_pulse = credit_per_pulse();
+  credit_ += credit_per_frame_ < one_pulse ? credit_per_frame_ : one_pulse;
   const uint32_t price = threshold_for(step);
   if (step != 0 && credit_ >= price) {
     credit_ -= price;  // keep the remainder: exact long-run rate

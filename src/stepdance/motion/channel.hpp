@@ -32,22 +32,26 @@ class Channel : public Block {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "Channel"; }
-  /// Highest pulse rate: one pulse per frame.
-  static constexpr double kMaxPulseRatePerS = kFrameRateHz;
+  /// Highest pulse rate: one pulse per frame of the chosen period. Context: any.
+  static double max_pulse_rate_per_s() { return frame_rate_hz(); }
+  /// Refuses (fault path) a period at which its output port cannot carry its signal, e.g. E on
+  /// a port begun with OUTPUT_FRAME_8US. Context: loop (dance_start).
+  bool accept_frame_period(uint32_t period_us) override;
   /// Default number of samples of the EMA filter (α = 1/n).
   static constexpr uint16_t kDefaultFilterSamples = 20;
 
   Channel();
 
-  /// Resets the state, the rate (25 000 pulses/s) and the statistics, begins both inputs and
+  /// Resets the state, the rate (one pulse per frame: 25 000 pulses/s at 40 µs) and the statistics, begins both inputs and
   /// registers the channel in the channel stage. kBadArgument if signal ≥ 6 (nothing begun);
   /// kFull if the channel registry is full (a fault is recorded). Context: loop.
   Status begin(OutputPort* port, uint8_t signal);
   /// As begin(port, signal) without a port: the channel runs but emits nothing. Context: loop.
   Status begin();
 
-  /// Caps the pulse rate, in pulses per second (clamped to 0 .. 25 000; resolution 0.001).
-  /// Over any 25 000 consecutive frames of continuous one-way demand the channel emits exactly
+  /// Caps the pulse rate, in pulses per second (0 .. the frame rate, 25 000 at 40 µs; resolution
+  /// 0.001). Over any frame-rate's worth of consecutive frames (one second) of continuous one-way
+  /// demand the channel emits exactly
   /// round(pulses_per_s) pulses when that is an integer. Context: any.
   void set_max_pulse_rate(double pulses_per_s);
   /// world_units of the inputs equal channel_units steps (25.4, 2032 → 80 steps/mm). Also

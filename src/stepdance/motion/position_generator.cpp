@@ -96,7 +96,7 @@ void PositionGenerator::run() {
 
 double PositionGenerator::max_step_block_units() const {
   const double speed = fabs(static_cast<double>(speed_units_per_sec));
-  return speed * kFramePeriodS / fabs(output.ratio());
+  return speed * frame_period_s() / fabs(output.ratio());
 }
 
 // Someone reset the output since this block last set it: move the target by the same amount.

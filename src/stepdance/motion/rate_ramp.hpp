@@ -23,7 +23,7 @@ class RateRamp {
       current_ = target;
       return current_;
     }
-    const double most = limit_per_s_ * kFramePeriodS;
+    const double most = limit_per_s_ * frame_period_s();
     const double change = target - current_;
     current_ = fabs(change) <= most ? target : current_ + copysign(most, change);
     return current_;

@@ -214,7 +214,7 @@ void TimeBasedInterpolator::run() {
   }
   double before[kPlannerAxes];
   for (int axis = 0; axis < kPlannerAxes; ++axis) before[axis] = now[axis];
-  executor_.advance(kFramePeriodS, speed_overide, committed_, now);
+  executor_.advance(frame_period_s(), speed_overide, committed_, now);
   if (frame_stopping_ && !executor_.stopping()) frame_stopping_ = false;
   for (int axis = 0; axis < kPlannerAxes; ++axis) {
     if (now[axis] == before[axis]) continue;

@@ -11,7 +11,7 @@ Status VelocityGenerator::begin() {
 }
 
 void VelocityGenerator::run() {
-  const double step_world = ramp_.follow(static_cast<double>(speed_units_per_sec)) * kFramePeriodS;
+  const double step_world = ramp_.follow(static_cast<double>(speed_units_per_sec)) * frame_period_s();
   output.set(output.convert_world_to_block_units(step_world), INCREMENTAL);
   output.push();
 }

@@ -29,7 +29,7 @@ void WaveGenerator2D::run() {
   const double frequency = input_frequency.read(ABSOLUTE);
   double theta;
   if (no_input_) {
-    free_theta_ = fmod(free_theta_ + frequency * kFramePeriodS, 2.0 * kPi);
+    free_theta_ = fmod(free_theta_ + frequency * frame_period_s(), 2.0 * kPi);
     theta = free_theta_;
   } else {
     theta = kPi * frequency * input_t.read(ABSOLUTE);

@@ -1,57 +1,38 @@
-// Frame encoder: picks the signals that fit a 32 µs frame and lays out their STEP/DIR bits.
+// Frame encoder: picks the signals that fit a frame of the port's layout and lays out their bits.
 #include "stepdance/protocol/frame_encoder.hpp"
 
 namespace stepdance::protocol {
 namespace {
 
-// A set of signals fits if the sum of (width + gap) is at most 31: the first pulse starts at
-// 2 µs and the last must end by bit 31, i.e. 2 + Σ(w + 2) − 2 ≤ 31.
-constexpr uint8_t kFrameRoomUs = kLastPulseBitUs;
-
-constexpr uint8_t slots_used_us(uint8_t mask) {
-  uint8_t used = 0;
-  for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    if (mask & (1u << signal)) used = static_cast<uint8_t>(used + slot_length_us(signal));
-  }
-  return used;
-}
-
-// Bit m is set when signal set m fits in one frame; computed at compile time.
-constexpr uint64_t fit_table() {
-  uint64_t table = 0;
-  for (uint8_t mask = 0; mask <= kAllSignalsMask; ++mask) {
-    if (slots_used_us(mask) <= kFrameRoomUs) table |= uint64_t{1} << mask;
-  }
-  return table;
-}
-constexpr uint64_t kFitTable = fit_table();
-
 // Ones from bit `first` for `count` bits (count < 32).
 constexpr uint32_t bit_run(uint8_t first, uint8_t count) { return ((1u << count) - 1u) << first; }
 
 // Adds signals from `candidates` (lowest index first) while they still fit beside `chosen`.
-uint8_t fill(uint8_t chosen, uint8_t candidates) {
+uint8_t fill(uint8_t chosen, uint8_t candidates, const FrameLayout& layout) {
   for (uint8_t signal = 0; candidates >> signal; ++signal) {
     const uint8_t grown = static_cast<uint8_t>(chosen | (1u << signal));
-    if ((candidates & (1u << signal)) && signals_fit(grown)) chosen = grown;
+    if ((candidates & (1u << signal)) && signals_fit(grown, layout)) chosen = grown;
   }
   return chosen;
 }
 
+// The step/dir pulse: X's width, X's slot.
+constexpr uint8_t kStepDirSlotUs = slot_length_us(SIGNAL_X);
+
 }  // namespace
 
-bool signals_fit(uint8_t mask) { return (kFitTable >> (mask & kAllSignalsMask)) & 1u; }
+bool signals_fit(uint8_t mask, const FrameLayout& layout) { return (layout.fit_table >> (mask & kAllSignalsMask)) & 1u; }
 
-EncodedFrame encode_frame(const FrameRequest& request) {
+EncodedFrame encode_frame(const FrameRequest& request, const FrameLayout& layout) {
   const uint8_t active = request.active_mask & kAllSignalsMask;
   EncodedFrame frame;
   if (active == 0) return frame;
-  const uint8_t carried_first = fill(0, active & request.priority_mask);
-  const uint8_t sent = signals_fit(active) ? active : fill(carried_first, active);
+  const uint8_t carried_first = fill(0, active & request.priority_mask, layout);
+  const uint8_t sent = signals_fit(active, layout) ? active : fill(carried_first, active, layout);
 
   frame.sent_mask = sent;
   frame.carried_mask = static_cast<uint8_t>(active & ~sent);
-  uint8_t start_us = kFirstPulseStartUs;
+  uint8_t start_us = layout.first_pulse_us;
   for (uint8_t signal = 0; sent >> signal; ++signal) {
     if (!(sent & (1u << signal))) continue;
     const uint8_t width = pulse_width_us(signal);
@@ -61,6 +42,26 @@ EncodedFrame encode_frame(const FrameRequest& request) {
                                       static_cast<uint8_t>(width + 2 * kDirMarginUs));
     }
     start_us = static_cast<uint8_t>(start_us + slot_length_us(signal));
+  }
+  return frame;
+}
+
+uint8_t step_dir_pulses_per_frame(const FrameLayout& layout) {
+  return static_cast<uint8_t>(slot_room_us(layout.window_us, layout.first_pulse_us) / kStepDirSlotUs);
+}
+
+StepDirFrame encode_step_dir_frame(uint32_t count, bool forward, const FrameLayout& layout) {
+  StepDirFrame frame;
+  const uint8_t room = step_dir_pulses_per_frame(layout);
+  frame.sent = static_cast<uint8_t>(count < room ? count : room);
+  if (frame.sent == 0) return frame;
+  for (uint8_t pulse = 0; pulse < frame.sent; ++pulse) {
+    const uint8_t rise_us = static_cast<uint8_t>(layout.first_pulse_us + pulse * kStepDirSlotUs);
+    frame.words.step_bits |= bit_run(rise_us, kMinPulseWidthUs);
+  }
+  if (forward) {
+    const uint8_t span_us = static_cast<uint8_t>(frame.sent * kStepDirSlotUs - kInterPulseGapUs + 2 * kDirMarginUs);
+    frame.words.dir_bits = bit_run(static_cast<uint8_t>(layout.first_pulse_us - kDirMarginUs), span_us);
   }
   return frame;
 }

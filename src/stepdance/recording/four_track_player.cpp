@@ -5,6 +5,7 @@
 
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/core/frame_period.hpp"
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
@@ -109,6 +110,10 @@ Status FourTrackPlayer::take_header(const uint8_t* data, size_t length, size_t& 
   recording::RecordingHeader header;
   const recording::HeaderCheck check = recording::read_header(data, length, header);
   if (check == recording::HeaderCheck::kNotOurs) {
+    if (frame_period_us() != recording::kOriginalFramePeriodUs) {
+      fail("FourTrackPlayer::start: an original-format recording plays at 40 us frames only", Status::kUnsupported);
+      return Status::kUnsupported;
+    }
     file_format_ = recording::RecordingFormat::kOriginal;
     for (BlockPort& port : output_BlockPorts) port.set_ratio(resolution_, 1.0);
     data_start = 0;
@@ -116,6 +121,10 @@ Status FourTrackPlayer::take_header(const uint8_t* data, size_t length, size_t& 
   }
   if (check != recording::HeaderCheck::kOk) {
     fail("FourTrackPlayer::start: a recording of a format version this library cannot play", Status::kUnsupported);
+    return Status::kUnsupported;
+  }
+  if (header.frame_period_ns != frame_period_us() * 1000u) {
+    fail("FourTrackPlayer::start: the recording was made at another frame period", Status::kUnsupported);
     return Status::kUnsupported;
   }
   file_format_ = recording::RecordingFormat::kStepdance;

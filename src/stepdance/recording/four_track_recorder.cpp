@@ -4,6 +4,7 @@
 
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/core/frame_period.hpp"
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
@@ -37,6 +38,11 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
     report_fault(FaultLevel::kWarning, FaultReason::kRefused, kSource, "recording name empty or too long");
     return Status::kBadArgument;
   }
+  if (format_ == RecordingFormat::kOriginal && frame_period_us() != recording::kOriginalFramePeriodUs) {
+    hal::log_message("FourTrackRecorder::start: the original format holds 40 us frames only; use RECORDING_FORMAT_STEPDANCE");
+    report_fault(FaultLevel::kWarning, FaultReason::kRefused, kSource, "the original format holds 40 us frames only");
+    return Status::kUnsupported;
+  }
   FileStorage& storage = hal::storage();
   const Status opened = storage.open(data_name_, FileMode::kWriteTruncate, handle_);
   if (opened == Status::kUnsupported) {
@@ -56,6 +62,7 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
   bytes_written_ = 0;
   if (file_format_ == RecordingFormat::kStepdance) {
     recording::RecordingHeader header;
+    header.frame_period_ns = frame_period_us() * 1000u;
     for (size_t track = 0; track < recording::kTracks; ++track) header.resolution[track] = tracks[track].resolution();
     uint8_t bytes[recording::kHeaderBytes];
     recording::write_header(header, bytes);
@@ -66,7 +73,7 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
     bytes_written_ = sizeof(bytes);
   }
   current_sample_index = 0;
-  max_num_samples = recording::frames_for_minutes(minutes);
+  max_num_samples = recording::frames_for_minutes(minutes, frame_rate_hz());
   stop_cause_ = StopCause::kNone;
   paused_ = false;
   recorder_active = true;

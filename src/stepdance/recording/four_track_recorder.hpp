@@ -87,7 +87,7 @@ class FourTrackRecorder : public Block {
   /// Samples (frames) recorded so far in the current or last recording. Context: read in the
   /// loop (the frame writes it).
   volatile uint64_t current_sample_index = 0;
-  /// Most samples the current recording may take (minutes × 60 × 25 000).
+  /// Most samples the current recording may take (minutes × 60 × frames per second).
   uint64_t max_num_samples = 0;
   /// True from start() until the recording stops (a pause keeps it true).
   volatile bool recorder_active = false;

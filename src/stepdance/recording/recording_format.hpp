@@ -29,8 +29,13 @@ constexpr int32_t kMaxStepsPerFrameStepdance = 127;
 /// Bytes each frame takes in the data part of a file.
 constexpr size_t bytes_per_frame(RecordingFormat format) { return format == RecordingFormat::kOriginal ? 1 : kTracks; }
 
-/// Frames in `minutes` of recording at 25 kHz, in 64 bits (the original overflowed past 35 min).
-constexpr uint64_t frames_for_minutes(uint32_t minutes) { return uint64_t{minutes} * 60u * 25000u; }
+/// Frames in `minutes` of recording at `frames_per_s` (25 kHz: 40 µs frames), in 64 bits (the
+/// original overflowed past 35 min).
+constexpr uint64_t frames_for_minutes(uint32_t minutes, uint32_t frames_per_s = 25000u) {
+  return uint64_t{minutes} * 60u * frames_per_s;
+}
+/// The only frame period the original format can mean (it stores none).
+constexpr uint32_t kOriginalFramePeriodUs = 40;
 
 // ---- The original format ----------------------------------------------------------------------
 
@@ -46,7 +51,7 @@ void unpack_original_frame(uint8_t byte, int8_t (&steps)[kTracks]);
 ///   0  8 bytes  magic "SDRECORD"
 ///   8  u16      format version (1)
 ///  10  u16      header length in bytes (64; a later version may grow it, data starts there)
-///  12  u32      frame period in nanoseconds (40 000)
+///  12  u32      frame period in nanoseconds (40 000, or 10 000 / 20 000 / 25 000)
 ///  16  u8       tracks (4)
 ///  17  u8       bytes per track per frame (1: a signed step count)
 ///  18  6 bytes  zero
@@ -65,7 +70,7 @@ constexpr uint16_t kFormatVersion = 1;
 enum class HeaderCheck : uint8_t {
   kOk,                  ///< a header this code can play
   kNotOurs,             ///< no magic: an original-format file
-  kUnsupported,         ///< our magic, but a version, track layout or frame period we cannot play
+  kUnsupported,         ///< our magic, but a version, track layout or frame period (not 10, 20, 25, 40 µs) we cannot play
   kTruncated,           ///< our magic, but shorter than the header
 };
 

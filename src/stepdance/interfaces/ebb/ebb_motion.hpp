@@ -9,6 +9,8 @@ namespace stepdance::ebb {
 constexpr int64_t kStepThreshold = int64_t{1} << 31;
 /// Ticks per second (the EBB's 25 kHz motion interrupt, Stepdance's frame rate).
 constexpr uint32_t kTicksPerSecond = 25000;
+/// One tick in microseconds: the emulation ticks once per 40 µs of frames at any frame period.
+constexpr uint32_t kTickPeriodUs = 1000000u / kTicksPerSecond;
 
 /// One entry of the EBB motion FIFO. Everything is in motor steps and 40 µs ticks; the protocol
 /// layer converts SM/XM/HM/SP/S2/EM parameters into these.

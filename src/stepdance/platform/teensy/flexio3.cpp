@@ -15,6 +15,11 @@ namespace fio = regs::flexio3;
 namespace {
 
 volatile bool is_powered = false;
+// Bits each port shifts per frame: 32, or fewer in a frame of 32 µs or less (set by the clock).
+uint32_t port_bits = kFrameBits;
+
+// Baud mode: lower byte = half a bit period - 1, upper byte = 2 × bits - 1.
+constexpr uint32_t port_timer_compare(uint32_t bits) { return ((2u * bits - 1u) << 8) | (kClocksPerBit / 2u - 1u); }
 
 constexpr uint32_t timer_bit(uint8_t timer) { return 1u << timer; }
 
@@ -59,8 +64,7 @@ void configure_port(uint8_t port, uint8_t step_pin, uint8_t dir_pin) {
       fio::shiftctl_timer(port) | fio::kShiftctlPinOutput | fio::shiftctl_pin(dir_pin) | fio::kShiftctlTransmit;
   fio::shiftbuf(step) = 0;
   fio::shiftbuf(dir) = 0;
-  // Baud mode: lower byte = half a bit period - 1, upper byte = 2 × bits - 1.
-  fio::timcmp(port) = ((2u * kFrameBits - 1u) << 8) | (kClocksPerBit / 2u - 1u);
+  fio::timcmp(port) = port_timer_compare(port_bits);
   fio::timcfg(port) = fio::timcfg_enable(fio::kTimenaTriggerRising) | fio::timcfg_disable(fio::kTimdisOnCompare);
   fio::timctl(port) = fio::timctl_trigger_timer(kFrameClockTimer) | fio::kTimctlTriggerInternal | fio::kTimodDual8Baud;
 }
@@ -91,10 +95,14 @@ void clear_tick_flag() {
 }
 
 Status start_frame_clock(uint32_t period_us) {
-  // The 16-bit timer counts half a period: at most 65536 clocks, 1092 µs at 120 MHz.
-  if (period_us <= kFrameBits || period_us > 2u * 0x10000u / kClocksPerBit) return Status::kBadArgument;
+  // The 16-bit timer counts half a period: at most 65536 clocks, 1092 µs at 120 MHz. A frame
+  // shifts 32 bits, or period − 1 in a shorter one, so each ends with its lines low (the core's
+  // formats are low from their window on; see protocol/frame_format.hpp).
+  if (period_us < kMinFramePeriodUs || period_us > 2u * 0x10000u / kClocksPerBit) return Status::kBadArgument;
   const uint32_t half_period = period_us * kClocksPerBit / 2u;
   if (half_period <= kCommitGuardClocks) return Status::kBadArgument;
+  port_bits = period_us > kFrameBits ? kFrameBits : period_us - 1u;
+  for (uint8_t port = 0; port < kPorts; ++port) fio::timcmp(port) = port_timer_compare(port_bits);
   fio::timctl(kFrameClockTimer) = fio::kTimodDisabled;
   fio::timctl(kTickMarkerTimer) = fio::kTimodDisabled;
   fio::timcmp(kTickMarkerTimer) = kMarkerDelayClocks - 1u;

@@ -29,6 +29,10 @@ constexpr uint32_t kClockHz = 120000000u;
 constexpr uint32_t kClocksPerBit = kClockHz / 1000000u;
 /// Bits in one frame transmission.
 constexpr uint32_t kFrameBits = 32;
+/// Shortest frame period the frame clock runs (a 4 µs transmission and 1 µs low).
+constexpr uint32_t kMinFramePeriodUs = 5;
+/// Ports on FlexIO3 (timers 0..3).
+constexpr uint8_t kPorts = 4;
 /// Timer numbers (timers 0..3 are the ports).
 constexpr uint8_t kFrameClockTimer = 4;
 constexpr uint8_t kTickMarkerTimer = 5;
