@@ -5,23 +5,8 @@
 #include "stepdance/core/fault.hpp"
 
 namespace stepdance {
-namespace {
 
-// Written only by set_frame_period_us() while the engine is stopped; read everywhere.
-struct FramePeriod {
-  uint32_t period_us = kDefaultFramePeriodUs;
-  uint32_t rate_hz = 1000000u / kDefaultFramePeriodUs;
-  double period_s = kDefaultFramePeriodUs / 1e6;
-  uint32_t frames_per_khz_tick = kKilohertzPeriodUs / kDefaultFramePeriodUs;
-};
-FramePeriod chosen;
-
-}  // namespace
-
-uint32_t frame_period_us() { return chosen.period_us; }
-uint32_t frame_rate_hz() { return chosen.rate_hz; }
-double frame_period_s() { return chosen.period_s; }
-uint32_t frames_per_kilohertz_tick() { return chosen.frames_per_khz_tick; }
+FramePeriod detail::chosen_frame_period;
 
 Status set_frame_period_us(uint32_t period_us) {
   if (engine().running()) {
@@ -32,6 +17,7 @@ Status set_frame_period_us(uint32_t period_us) {
     fault(FaultReason::kBadConfiguration, "set_frame_period_us: unsupported period (10, 20, 25 or 40 us)");
     return Status::kBadArgument;
   }
+  FramePeriod& chosen = detail::chosen_frame_period;
   chosen.period_us = period_us;
   chosen.rate_hz = 1000000u / period_us;
   chosen.period_s = period_us / 1e6;

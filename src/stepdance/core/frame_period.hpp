@@ -24,14 +24,27 @@ constexpr bool frame_period_supported(uint32_t period_us) {
          kKilohertzPeriodUs % period_us == 0;
 }
 
+/// The chosen period and the rates derived from it, kept together. Frame code reads them every
+/// frame (rate limits, time steps), so the readers below are inline loads, not calls.
+struct FramePeriod {
+  uint32_t period_us = kDefaultFramePeriodUs;
+  uint32_t rate_hz = 1000000u / kDefaultFramePeriodUs;
+  double period_s = kDefaultFramePeriodUs / 1e6;
+  uint32_t frames_per_khz_tick = kKilohertzPeriodUs / kDefaultFramePeriodUs;
+};
+namespace detail {
+/// Written only by set_frame_period_us(), while the engine is stopped; read everywhere.
+extern FramePeriod chosen_frame_period;
+}  // namespace detail
+
 /// The chosen frame period in microseconds. Context: any.
-uint32_t frame_period_us();
+inline uint32_t frame_period_us() { return detail::chosen_frame_period.period_us; }
 /// Frames per second (1 000 000 / frame_period_us()). Context: any.
-uint32_t frame_rate_hz();
+inline uint32_t frame_rate_hz() { return detail::chosen_frame_period.rate_hz; }
 /// The frame period in seconds. Context: any.
-double frame_period_s();
+inline double frame_period_s() { return detail::chosen_frame_period.period_s; }
 /// Frames per kilohertz tick (1000 / frame_period_us()). Context: any.
-uint32_t frames_per_kilohertz_tick();
+inline uint32_t frames_per_kilohertz_tick() { return detail::chosen_frame_period.frames_per_khz_tick; }
 
 /// Chooses the frame period. Call in setup() before any begin() (output ports check their
 /// format against it) and before dance_start(). An unsupported period, or a call while the engine

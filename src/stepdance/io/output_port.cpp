@@ -191,8 +191,8 @@ void OutputPort::clear_statistics() {
 }
 
 void OutputPort::account_sent(uint8_t sent_mask) {
-  for (uint8_t signal = 0; sent_mask >> signal; ++signal) {
-    if (!(sent_mask & bit(signal))) continue;
+  for (uint8_t rest = sent_mask; rest != 0; rest &= static_cast<uint8_t>(rest - 1)) {
+    const uint8_t signal = lowest_signal(rest);
     const bool forward = pending_[signal] > 0;
     set_pending(signal, pending_[signal] + (forward ? -1 : 1));
     ++sent_[signal][forward ? DIRECTION_FORWARD : DIRECTION_REVERSE];

@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "stepdance/motion/sine_cosine.hpp"
+
 namespace stepdance {
 namespace {
 
@@ -28,19 +30,21 @@ bool intersect(Point a, double ra, Point b, double rb, Point& first, Point& seco
 }  // namespace
 
 bool FiveBarGeometry::forward(double a1, double a2, double& x, double& y) const {
-  const Point c{s / 2 + l1 * cos(a1), -l1 * sin(a1)};
-  const Point d{-s / 2 + l2 * cos(a2), -l2 * sin(a2)};
+  // Runs every frame of a pantograph: each angle's sine and cosine share one argument reduction.
+  const SineCosine w1 = sine_cosine(a1), w2 = sine_cosine(a2);
+  const Point c{s / 2 + l1 * w1.cosine, -l1 * w1.sine};
+  const Point d{-s / 2 + l2 * w2.cosine, -l2 * w2.sine};
   const double l6 = d.y - c.y, l7 = c.x - d.x;
   const double a3 = atan2(l6, l7);
   const double l8 = hypot(l6, l7);
   const double cosine = (l8 * l8 + l3 * l3 - l4 * l4) / (2 * l8 * l3);
   if (!(l8 > 0.0) || cosine < -1.0 || cosine > 1.0) return false;  // the links cannot meet
   const double a4 = acos(cosine);
-  const double a5 = kHalfPi + a3 - a4;
-  const Point e{c.x - l3 * sin(a5), c.y - l3 * cos(a5)};
-  const double a7 = a6 - kHalfPi + a5;
-  x = e.x + l5 * cos(a7);
-  y = -(e.y - l5 * sin(a7));
+  const SineCosine w5 = sine_cosine(kHalfPi + a3 - a4);    // A5
+  const Point e{c.x - l3 * w5.sine, c.y - l3 * w5.cosine};
+  const SineCosine w7 = sine_cosine(a6 - a4 + a3);         // A7 = A6 − π/2 + A5
+  x = e.x + l5 * w7.cosine;
+  y = -(e.y - l5 * w7.sine);
   return true;
 }
 

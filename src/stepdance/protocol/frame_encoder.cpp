@@ -33,8 +33,8 @@ EncodedFrame encode_frame(const FrameRequest& request, const FrameLayout& layout
   frame.sent_mask = sent;
   frame.carried_mask = static_cast<uint8_t>(active & ~sent);
   uint8_t start_us = layout.first_pulse_us;
-  for (uint8_t signal = 0; sent >> signal; ++signal) {
-    if (!(sent & (1u << signal))) continue;
+  for (uint8_t rest = sent; rest != 0; rest &= static_cast<uint8_t>(rest - 1)) {
+    const uint8_t signal = lowest_signal(rest);
     const uint8_t width = pulse_width_us(signal);
     frame.words.step_bits |= bit_run(start_us, width);
     if (request.forward_mask & (1u << signal)) {

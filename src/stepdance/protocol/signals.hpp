@@ -21,6 +21,11 @@ constexpr uint8_t NUM_SIGNALS = kNumSignals;
 /// Bit mask with every signal set.
 constexpr uint8_t kAllSignalsMask = (1u << kNumSignals) - 1;
 
+/// The lowest signal in a non-empty mask of signals (bit n = signal n). Frame code walks masks
+/// with it, `for (m = mask; m != 0; m &= m - 1) use(lowest_signal(m));`, visiting only the set
+/// signals in ascending order (one count-trailing-zeros instruction each on the M7). Context: any.
+inline uint8_t lowest_signal(uint8_t mask) { return static_cast<uint8_t>(__builtin_ctz(mask)); }
+
 /// Step direction as carried on DIR: high means forward.
 constexpr uint8_t DIRECTION_FORWARD = 1;
 constexpr uint8_t DIRECTION_REVERSE = 0;
