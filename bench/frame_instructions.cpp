@@ -1,5 +1,5 @@
 // Runs N frames of a benchmark graph (step_a_sketch, step_a_sketch_tbi, harmonograph,
-// clay_texturizer or axidraw_wave); measured with callgrind to count instructions per frame (see measure_frame_instructions.sh).
+// clay_texturizer, axidraw_wave or pantograph); measured with callgrind to count instructions per frame (see measure_frame_instructions.sh).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -7,6 +7,7 @@
 #include "axidraw_wave_graph.hpp"
 #include "clay_texturizer_graph.hpp"
 #include "harmonograph_graph.hpp"
+#include "pantograph_graph.hpp"
 #include "step_a_sketch_graph.hpp"
 #include "step_a_sketch_tbi_graph.hpp"
 
@@ -36,8 +37,10 @@ int main(int argc, char** argv) {
     pulses = run<stepdance::workloads::ClayTexturizerGraph>(frames);
   } else if (std::strcmp(workload, "axidraw_wave") == 0) {
     pulses = run<stepdance::workloads::AxiDrawWaveGraph>(frames);
+  } else if (std::strcmp(workload, "pantograph") == 0) {
+    pulses = run<stepdance::workloads::PantographGraph>(frames);
   } else {
-    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph, clay_texturizer or axidraw_wave)\n", workload);
+    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph, clay_texturizer, axidraw_wave or pantograph)\n", workload);
     return 2;
   }
   std::printf("workload=%s frames=%u pulses_a=%u\n", workload, frames, pulses);

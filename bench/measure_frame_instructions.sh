@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Counts host instructions per frame of a benchmark graph with callgrind: only Engine::run_frame
 # (and what it calls) is collected, then divided by the frame count.
-# Usage: bench/measure_frame_instructions.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave]
+# Usage: bench/measure_frame_instructions.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave|pantograph]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${STEPDANCE_BUILD_DIR:-build}

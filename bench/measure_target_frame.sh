@@ -2,7 +2,7 @@
 # Counts Cortex-M7 instructions per frame of a benchmark graph under QEMU (mps2-an500) and turns
 # them into an estimated share of the frame at 600 MHz (40 us, or STEPDANCE_BENCH_FRAME_PERIOD_US:
 # 10, 20, 25 or 40). Method: docs/benchmarks-target.md; periods: docs/high-speed.md.
-# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave]
+# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave|pantograph]
 #        (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|Release|...)
 set -euo pipefail
 cd "$(dirname "$0")/.."
