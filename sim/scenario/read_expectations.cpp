@@ -1,11 +1,11 @@
 // [[expect]]: end-of-run checks (motor steps, pen position, strokes, port pulses, cables, rejections).
 #include <algorithm>
 #include <cmath>
-#include <regex>
 #include <utility>
 
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
+#include "scenario/regex_check.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -315,13 +315,9 @@ bool read_port_check(TableReader& reader, Expectation& check, ParseContext& cont
 }
 
 bool valid_pattern(TableReader& reader, const char* key, const std::string& pattern) {
-  try {
-    std::regex check(pattern, std::regex::ECMAScript);
-  } catch (const std::regex_error&) {
-    reader.error(key, "'" + std::string(key) + "' is not a valid regular expression (ECMAScript syntax)");
-    return false;
-  }
-  return true;
+  const std::string problem = regex_problem(pattern);
+  if (!problem.empty()) reader.error(key, "'" + std::string(key) + "' " + problem);
+  return problem.empty();
 }
 
 /// host = "board" with reply/replies (+ count, within_ms, after), or completed = true.

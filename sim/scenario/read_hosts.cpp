@@ -1,10 +1,10 @@
 // [[host]]: scripted host clients on boards' USB serial ports (send, stream, wait, pause).
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include "scenario/parse_context.hpp"
+#include "scenario/regex_check.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -35,10 +35,9 @@ std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool a
 bool read_pattern(TableReader& reader, const char* key, std::string& out) {
   const auto text = reader.string(key);
   if (!text) return false;
-  try {
-    std::regex check(*text, std::regex::ECMAScript);
-  } catch (const std::regex_error&) {
-    reader.error(key, "'" + std::string(key) + "' is not a valid regular expression (ECMAScript syntax)");
+  const std::string problem = regex_problem(*text);
+  if (!problem.empty()) {
+    reader.error(key, "'" + std::string(key) + "' " + problem);
     return false;
   }
   out = *text;

@@ -157,6 +157,22 @@ std::vector<InlineCase> cases() {
         {18, "'pause_s' must be in [0, 86,400] s, got -1"},
         {21, "'timeout_s' only goes with stream or wait"},
         {24, "'timeout_s' must be a finite number"}}},
+      {"host_patterns_beyond_the_limits",
+       "[[host]]\nboard = \"driver\"\n[[host.step]]\nsend = \"?\"\n"
+       "[[host.step]]\nwait = '(a)\\99999999999999999999'\n"
+       "[[host.step]]\nwait = 'a{99999999999999999999}'\n"
+       "[[host.step]]\nwait = 'a{2,1001}'\n"
+       "[[host.step]]\nwait = '[{99999}]\\{99999\\}(o)k{3}x{1000}\\1'\n"
+       "[[host.step]]\nwait = '" + std::string(1001, 'a') + "'\n",
+       {{11, "'wait' refers to a group beyond \\999"},
+        {13, "'wait' repeats more than 1,000 times"},
+        {15, "'wait' repeats more than 1,000 times"},
+        {19, "'wait' is longer than 1,000 characters (a reply check is a short pattern)"}}},
+      {"host_check_patterns_beyond_the_limits",
+       "[[host]]\nboard = \"driver\"\n[[host.step]]\nsend = \"?\"\n"
+       "[[expect]]\nhost = \"driver\"\nreplies = [\"ok\", \"x{1001}\"]\n"
+       "[[expect]]\nhost = \"driver\"\nreply = \"ok\"\nwithin_ms = 5\nafter = '\\1234'\n",
+       {{12, "'replies' repeats more than 1,000 times"}, {17, "'after' refers to a group beyond \\999"}}},
       {"host_checks_that_are_wrong",
        "[[host]]\nboard = \"driver\"\n[[host.step]]\nsend = \"?\"\n"
        "[[expect]]\nhost = \"nobody\"\ncompleted = true\n"
