@@ -93,10 +93,11 @@ bool starts_a_key(char c) {
 /// take backslash escapes, literal strings ('…', \'\'\'…\'\'\') do not; '[' and '{' inside values
 /// nest. Outside strings and comments it finds the first non-ASCII byte (TOML allows none there)
 /// and the first table header — a '[' opening a line outside any value — whose name does not
-/// start like a key.
+/// start like a key, and the first '}' right after '[' or ',' (whitespace and comments between).
 UnsafeText find_unsafe_text(std::string_view text) {
   int line = 1, depth = 0;
   bool line_start = true;
+  char previous = '\n';  // the last character outside whitespace, comments and strings
   size_t i = 0;
   while (i < text.size()) {
     const char c = text[i];
@@ -120,7 +121,12 @@ UnsafeText find_unsafe_text(std::string_view text) {
       i = j;
       continue;
     }
-    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') line_start = false;
+    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') {
+      line_start = false;
+      // toml++ 3.3 asserts (undefined behaviour without assertions) on "[}" or ",}" in an array.
+      if (c == '}' && (previous == '[' || previous == ',')) return {line, "'}' cannot follow '[' or ','"};
+      previous = c;
+    }
     if (c == '[' || c == '{') ++depth;
     if ((c == ']' || c == '}') && depth > 0) --depth;
     if (c != '"' && c != '\'') {
@@ -180,7 +186,8 @@ LoadResult parse_scenario(std::string_view text, const std::string& file) {
     return result;
   }
   // toml++ 3.3 asserts or reaches an unreachable point on some text TOML only calls an error
-  // (a table header starting with '^', a 'µ' outside a string), so that text is refused first.
+  // (a table header starting with '^', a 'µ' outside a string, '}' after '[' or ',' in an array),
+  // so that text is refused first.
   if (const UnsafeText unsafe = find_unsafe_text(text); unsafe.line > 0) {
     reporter.error(unsafe.line, unsafe.message);
     result.errors = reporter.sorted();

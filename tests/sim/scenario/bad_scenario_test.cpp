@@ -3,6 +3,7 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scenario/load_scenario.hpp"
@@ -146,6 +147,24 @@ TEST(BadScenarioText, ATableHeaderWithoutANameIsRefusedWithItsLine) {
   const LoadResult arrays = parse_scenario("duration_s = 1\nx = [\n  [+1, 2],\n  [.5, 3],\n  [ ]\n]\n", "x.toml");
   for (const Diagnostic& error : arrays.errors) {
     EXPECT_EQ(error.to_string().find("table header"), std::string::npos) << error.to_string();
+  }
+}
+
+// Found by the same fuzzer: toml++ 3.3 asserts on '}' where an array expects a value (after '['
+// or ',', whitespace, line breaks or comments between). Braces in strings and comments, and
+// inline tables in arrays, stay valid.
+TEST(BadScenarioText, ABraceWhereAnArrayValueBelongsIsRefusedWithItsLine) {
+  const std::pair<const char*, int> cases[] = {
+      {"x = [}]\n", 2}, {"x = [1,}]\n", 2}, {"x = [1, # c\n }]\n", 3}, {"x = [[ }]]\n", 2}, {"x = { a = [}] }\n", 2}};
+  for (const auto& [text, line] : cases) {
+    const LoadResult result = parse_scenario(std::string("duration_s = 1\n") + text, "x.toml");
+    ASSERT_EQ(result.errors.size(), 1u) << text;
+    EXPECT_EQ(result.errors[0].to_string(), "x.toml:" + std::to_string(line) + ": '}' cannot follow '[' or ','") << text;
+  }
+  const LoadResult fine = parse_scenario(
+      "duration_s = 1\nx = [{}, { a = 1 }, \"[}\", ',}'] # [}\n", "x.toml");
+  for (const Diagnostic& error : fine.errors) {
+    EXPECT_EQ(error.to_string().find("cannot follow"), std::string::npos) << error.to_string();
   }
 }
 
