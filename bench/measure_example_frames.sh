@@ -19,8 +19,8 @@ cd "$(dirname "$0")/.."
 build_dir=${STEPDANCE_BUILD_DIR:-build}
 binary="$build_dir/stepdance"
 window_blocks=${STEPDANCE_WINDOW_BLOCKS:-2000000}
-m7_per_host=${STEPDANCE_M7_PER_HOST:-1.15}
-worst_per_mean=${STEPDANCE_M7_WORST_PER_MEAN:-1.55}
+m7_per_host=${STEPDANCE_M7_PER_HOST:-1.2}
+worst_per_mean=${STEPDANCE_M7_WORST_PER_MEAN:-1.4}
 [ -x "$binary" ] || { echo "build first: scripts/build-host.sh (missing $binary)" >&2; exit 1; }
 if [ $# -eq 0 ]; then
   set -- $(for scenario in examples/*/scenario.toml; do dirname "$scenario"; done)
