@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "scenario/parse_context.hpp"
+#include "scenario/toml_guard.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -62,94 +62,6 @@ std::string missing_scenario_message(const std::string& path, bool folder) {
   return message;
 }
 
-/// The 1-based line and "U+0001"-style code of the first control character other than tab, LF
-/// and CR; line 0 when there is none.
-std::pair<int, std::string> first_control_character(std::string_view text) {
-  int line = 1;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte == '\n') ++line;
-    if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F) {
-      static const char kHex[] = "0123456789ABCDEF";
-      return {line, std::string("U+00") + kHex[byte >> 4] + kHex[byte & 15]};
-    }
-  }
-  return {0, ""};
-}
-
-/// What toml++ 3.3 cannot be trusted with (it asserts, or reaches an unreachable point, where
-/// TOML only asks for an error), found by fuzz/scenario_fuzz.cpp.
-struct UnsafeText {
-  int line = 0;  ///< 1-based; 0 when the text is safe
-  const char* message = "";
-};
-
-bool starts_a_key(char c) {
-  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
-         c == '"' || c == '\'';
-}
-
-/// A small lexer over the text: comments run to the line's end; basic strings ("…", """…""")
-/// take backslash escapes, literal strings ('…', \'\'\'…\'\'\') do not; '[' and '{' inside values
-/// nest. Outside strings and comments it finds the first non-ASCII byte (TOML allows none there)
-/// and the first table header — a '[' opening a line outside any value — whose name does not
-/// start like a key, and the first '}' right after '[' or ',' (whitespace and comments between).
-UnsafeText find_unsafe_text(std::string_view text) {
-  int line = 1, depth = 0;
-  bool line_start = true;
-  char previous = '\n';  // the last character outside whitespace, comments and strings
-  size_t i = 0;
-  while (i < text.size()) {
-    const char c = text[i];
-    if (c == '\n') {
-      ++line;
-      line_start = true;
-    }
-    if (static_cast<unsigned char>(c) >= 0x80) return {line, "a non-ASCII character outside a string or comment is not allowed in a scenario file"};
-    if (c == '#') {
-      i = std::min(text.find('\n', i), text.size());
-      continue;
-    }
-    if (c == '[' && depth == 0 && line_start) {  // a table header
-      size_t j = i + 1;
-      if (j < text.size() && text[j] == '[') ++j;
-      while (j < text.size() && (text[j] == ' ' || text[j] == '\t')) ++j;
-      if (j >= text.size() || (!starts_a_key(text[j]) && text[j] != ']')) {
-        return {line, "a table header must start with a name (letters, digits, '_', '-' or a quoted key)"};
-      }
-      line_start = false;
-      i = j;
-      continue;
-    }
-    if (c != ' ' && c != '\t' && c != '\r' && c != '\n') {
-      line_start = false;
-      // toml++ 3.3 asserts (undefined behaviour without assertions) on "[}" or ",}" in an array.
-      if (c == '}' && (previous == '[' || previous == ',')) return {line, "'}' cannot follow '[' or ','"};
-      previous = c;
-    }
-    if (c == '[' || c == '{') ++depth;
-    if ((c == ']' || c == '}') && depth > 0) --depth;
-    if (c != '"' && c != '\'') {
-      ++i;
-      continue;
-    }
-    const bool multi = text.compare(i, 3, c == '"' ? "\"\"\"" : "\'\'\'") == 0;
-    const std::string_view close = multi ? (c == '"' ? "\"\"\"" : "\'\'\'") : (c == '"' ? "\"" : "'");
-    i += close.size();
-    bool escaped = false;
-    while (i < text.size() && (escaped || text.compare(i, close.size(), close) != 0)) {
-      if (text[i] == '\n') {
-        ++line;
-        if (!multi) break;  // an unterminated string: toml++ reports it
-      }
-      escaped = c == '"' && text[i] == '\\' && !escaped;
-      ++i;
-    }
-    i += close.size();
-  }
-  return {};
-}
-
 }  // namespace
 
 std::string LoadResult::error_text() const {
@@ -178,17 +90,9 @@ LoadResult load_scenario(const std::string& path) {
 LoadResult parse_scenario(std::string_view text, const std::string& file) {
   LoadResult result;
   Reporter reporter(file);
-  // TOML allows no control character but tab, LF and CR anywhere; toml++ 3.3 asserts on one in a
-  // table header (found by fuzz/scenario_fuzz.cpp), so they are refused before it parses.
-  if (const auto [line, code] = first_control_character(text); line > 0) {
-    reporter.error(line, "control character " + code + " is not allowed in a scenario file");
-    result.errors = reporter.sorted();
-    return result;
-  }
-  // toml++ 3.3 asserts or reaches an unreachable point on some text TOML only calls an error
-  // (a table header starting with '^', a 'µ' outside a string, '}' after '[' or ',' in an array),
-  // so that text is refused first.
-  if (const UnsafeText unsafe = find_unsafe_text(text); unsafe.line > 0) {
+  // toml++ 3.3 asserts or reaches an unreachable point on some text TOML only calls an error;
+  // that text is refused first (toml_guard.hpp lists it).
+  if (const UnsafeToml unsafe = find_unsafe_toml(text); unsafe.line > 0) {
     reporter.error(unsafe.line, unsafe.message);
     result.errors = reporter.sorted();
     return result;

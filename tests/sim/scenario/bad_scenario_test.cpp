@@ -168,5 +168,31 @@ TEST(BadScenarioText, ABraceWhereAnArrayValueBelongsIsRefusedWithItsLine) {
   }
 }
 
+// Found by the same fuzzer: toml++ 3.3's whitespace test reaches an unreachable point for most
+// non-ASCII characters (here U+048C), which it asks about outside strings (also after a quote
+// it reads as a stray character, as in `1"…`) and after a backslash in a string. Strings and
+// comments keep their non-ASCII text.
+TEST(BadScenarioText, NonAsciiWhereTomlPlusPlusTestsForWhitespaceIsRefusedWithItsLine) {
+  const std::string u048c = "\xd2\x8c";
+  const std::pair<std::string, std::string> cases[] = {
+      {"sketch = 1\"C" + u048c + "x\n", "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
+      {"x = \"a\" \"" + u048c + "\"\n", "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
+      {"x = 1.\"" + u048c + "\"\n", "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
+      {"x = \"\"\"a \\ " + u048c + "\"\"\"\n", "a non-ASCII character after a backslash in a string is not allowed in a scenario file"},
+      {"x = \"a\\" + u048c + "\"\n", "a non-ASCII character after a backslash in a string is not allowed in a scenario file"},
+      {"x = \"\"\"a\\\n\n  " + u048c + "\"\"\"\n", "a non-ASCII character after a backslash in a string is not allowed in a scenario file"}};
+  for (const auto& [text, message] : cases) {
+    const LoadResult result = parse_scenario("duration_s = 1\n" + text, "x.toml");
+    ASSERT_EQ(result.errors.size(), 1u) << text;
+    EXPECT_EQ(result.errors[0].to_string(), "x.toml:2: " + message) << text;
+  }
+  const LoadResult fine = parse_scenario("duration_s = 1\n# " + u048c + "\n[a]\nb = [\"" + u048c + "\", '" + u048c +
+                                             "']\n\"k" + u048c + "\" = { \"c\" = \"\"\"x\\\n  y" + u048c + "\"\"\" }\n",
+                                         "x.toml");
+  for (const Diagnostic& error : fine.errors) {
+    EXPECT_EQ(error.to_string().find("non-ASCII"), std::string::npos) << error.to_string();
+  }
+}
+
 }  // namespace
 }  // namespace stepdance::sim::scenario

@@ -1,0 +1,179 @@
+// find_unsafe_toml: a control-character pass, then one pass of a small TOML lexer that follows
+// strings, comments, table headers, open brackets and whether a key or a value comes next.
+#include "scenario/toml_guard.hpp"
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+namespace stepdance::sim::scenario {
+namespace {
+
+constexpr const char* kNonAscii = "a non-ASCII character outside a string or comment is not allowed in a scenario file";
+constexpr const char* kNonAsciiAfterBackslash =
+    "a non-ASCII character after a backslash in a string is not allowed in a scenario file";
+constexpr const char* kNamelessHeader =
+    "a table header must start with a name (letters, digits, '_', '-' or a quoted key)";
+constexpr const char* kBraceAfterOpening = "'}' cannot follow '[' or ','";
+
+bool is_ascii(char c) { return static_cast<unsigned char>(c) < 0x80; }
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+bool starts_a_key(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
+         c == '"' || c == '\'';
+}
+
+/// The first control character other than tab, LF and CR, anywhere (strings and comments too).
+UnsafeToml find_control_character(std::string_view text) {
+  int line = 1;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte == '\n') ++line;
+    if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F) {
+      static const char kHex[] = "0123456789ABCDEF";
+      return {line, std::string("control character U+00") + kHex[byte >> 4] + kHex[byte & 15] +
+                        " is not allowed in a scenario file"};
+    }
+  }
+  return {};
+}
+
+class Scanner {
+ public:
+  explicit Scanner(std::string_view text) : text_(text) {}
+
+  UnsafeToml run() {
+    UnsafeToml found;
+    while (at_ < text_.size() && found.line == 0) {
+      const char c = text_[at_];
+      if (c == '\n') {
+        new_line();
+      } else if (is_blank(c)) {
+        ++at_;
+      } else if (!is_ascii(c)) {
+        found = unsafe(kNonAscii);
+      } else if (c == '#') {
+        at_ = std::min(text_.find('\n', at_), text_.size());
+      } else if (c == '[' && line_start_ && open_.empty() && !in_value_) {
+        found = table_header();
+      } else if ((c == '"' || c == '\'') && string_may_start()) {
+        found = string();
+      } else if (c == '}' && (previous_ == '[' || previous_ == ',')) {
+        found = unsafe(kBraceAfterOpening);
+      } else {
+        follow_structure(c);
+        significant(c);
+        ++at_;
+      }
+    }
+    return found;
+  }
+
+ private:
+  UnsafeToml unsafe(const char* message) const { return {line_, message}; }
+
+  void new_line() {
+    ++line_;
+    ++at_;
+    line_start_ = true;
+    if (open_.empty()) in_value_ = false;  // a value ends with its line unless a bracket is open
+  }
+
+  void significant(char c) {
+    previous_ = c;
+    line_start_ = false;
+  }
+
+  /// Where TOML lets a string start: a value after '=', '[' or ','; a key at a line's start,
+  /// after '{', ',' or '.', or first in a table header.
+  bool string_may_start() const {
+    if (in_value_) return previous_ == '=' || previous_ == '[' || previous_ == ',';
+    return line_start_ || previous_ == '[' || previous_ == '{' || previous_ == ',' || previous_ == '.';
+  }
+
+  void follow_structure(char c) {
+    switch (c) {
+      case '=':
+        in_value_ = true;
+        break;
+      case '[':
+        if (in_value_) open_.push_back('[');  // an array
+        break;
+      case '{':
+        open_.push_back('{');  // an inline table: a key comes next
+        in_value_ = false;
+        break;
+      case ',':
+        if (!open_.empty()) in_value_ = open_.back() == '[';
+        break;
+      case ']':
+      case '}':
+        if (!open_.empty()) open_.pop_back();
+        in_value_ = true;  // after a value; ',' or the line's end says what comes next
+        break;
+      default:
+        break;
+    }
+  }
+
+  /// A '[' or "[[" opening a line outside any value: its name must start like a key.
+  UnsafeToml table_header() {
+    std::size_t name = at_ + 1;
+    if (name < text_.size() && text_[name] == '[') ++name;
+    while (name < text_.size() && is_blank(text_[name])) ++name;
+    if (name >= text_.size() || (!starts_a_key(text_[name]) && text_[name] != ']')) return unsafe(kNamelessHeader);
+    significant('[');
+    at_ = name;
+    return {};
+  }
+
+  /// The string whose quote is at at_, up to its closing quotes (or the line's end, if a
+  /// single-line string is not closed: toml++ reports that). Basic strings take escapes, and
+  /// what follows a backslash (after blanks, and in a multi-line string line breaks) must be
+  /// ASCII.
+  UnsafeToml string() {
+    const char quote = text_[at_];
+    const bool basic = quote == '"';
+    const std::string_view triple = basic ? "\"\"\"" : "'''";
+    const bool multi_line = text_.compare(at_, 3, triple) == 0;
+    const std::string_view close = multi_line ? triple : triple.substr(0, 1);
+    significant(quote);
+    at_ += close.size();
+    while (at_ < text_.size() && text_.compare(at_, close.size(), close) != 0) {
+      char c = text_[at_];
+      if (basic && c == '\\') {
+        // toml++ tests what follows for whitespace: after a line-ending backslash, across lines.
+        std::size_t next = at_ + 1;
+        while (next < text_.size() && (is_blank(text_[next]) || (multi_line && text_[next] == '\n'))) ++next;
+        if (next < text_.size() && !is_ascii(text_[next])) return unsafe(kNonAsciiAfterBackslash);
+        if (++at_ >= text_.size()) break;
+        c = text_[at_];  // the escaped character is never a closing quote
+      }
+      if (c == '\n') {
+        if (!multi_line) return {};  // the main loop counts this line break
+        ++line_;
+      }
+      ++at_;
+    }
+    at_ = std::min(at_ + close.size(), text_.size());
+    return {};
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0;
+  int line_ = 1;
+  bool line_start_ = true;
+  bool in_value_ = false;  // a value comes next or is being read, not a key
+  char previous_ = '\n';   // the last character outside blanks, line breaks, comments and strings
+  std::string open_;       // the values' open '[' and '{', innermost last
+};
+
+}  // namespace
+
+UnsafeToml find_unsafe_toml(std::string_view text) {
+  if (UnsafeToml control = find_control_character(text); control.line != 0) return control;
+  return Scanner(text).run();
+}
+
+}  // namespace stepdance::sim::scenario
