@@ -11,6 +11,7 @@
 #include "decode/decode_report.hpp"
 #include "decode/step_dir_pairs.hpp"
 #include "decode/vcd_reader.hpp"
+#include "stepdance/core/frame_period.hpp"
 
 namespace stepdance::cli {
 namespace {
@@ -47,6 +48,12 @@ bool choose_pairs(const DecodeCommandOptions& options, const VcdCapture& capture
 
 bool decode_options(const DecodeCommandOptions& options, sim::DecodeOptions& decode, std::string& error) {
   decode.mode = options.mode == "step_dir" ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
+  if (!frame_period_supported(options.frame_period_us)) {
+    error = "--frame-us must be 10, 20, 25 or 40 (the sending board's frame period), got " +
+            std::to_string(options.frame_period_us);
+    return false;
+  }
+  decode.frame_period_us = options.frame_period_us;
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
     if (options.axis == sim::signal_name(signal)) {
       decode.step_dir_signal = signal;
@@ -74,6 +81,10 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
       ->check(CLI::IsMember({"stepdance", "step_dir"}))
       ->capture_default_str();
   decode.add_option("--axis", options.axis, "the axis step_dir pulses count as (X, Y, R, T, Z, E)")->capture_default_str();
+  decode.add_option("--frame-us", options.frame_period_us,
+                    "the sending board's frame period in us (10, 20, 25 or 40): how pulses group into "
+                    "frames for the frame statistics; the counts do not depend on it")
+      ->capture_default_str();
   decode.add_flag("--json", options.json, "print JSON instead of text");
   return decode;
 }

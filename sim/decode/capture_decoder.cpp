@@ -25,9 +25,11 @@ class DirSampler {
 /// Groups accepted pulses into frames as they arrive in time order.
 class FrameGrouper {
  public:
+  explicit FrameGrouper(uint32_t frame_period_us) : window_ns_(frame_window_ns(frame_period_us)) {}
+
   void add(SimTime rise, SimTime fall) {
     const bool new_frame = stats_.count == 0 || rise - last_fall_ > kFrameGapNs ||
-                           rise - frame_start_ > kFrameWindowNs;
+                           rise - frame_start_ > window_ns_;
     if (new_frame) {
       if (stats_.count > 0) {
         const SimTime spacing = rise - frame_start_;
@@ -46,6 +48,7 @@ class FrameGrouper {
   const FrameStats& stats() const { return stats_; }
 
  private:
+  SimTime window_ns_;
   FrameStats stats_;
   SimTime frame_start_ = 0;
   SimTime last_fall_ = 0;
@@ -64,7 +67,7 @@ DecodeResult decode_step_dir(const EdgeList& step, const EdgeList& dir, const De
   DecodeResult result;
   result.options = options;
   DirSampler dir_level(dir, initial.dir);
-  FrameGrouper frames;
+  FrameGrouper frames(options.frame_period_us);
   const protocol::DirSampleEdge sample_edge = protocol::dir_sample_edge(options.mode);
   const uint32_t ticks_per_us = options.clock.ticks_per_us;
 

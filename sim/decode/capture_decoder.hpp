@@ -21,6 +21,8 @@ struct DecodeOptions {
   uint8_t step_dir_signal = SIGNAL_X;
   /// The capture timer the firmware measures widths with (150 ticks/µs, 16-bit counter).
   protocol::CaptureClock clock{};
+  /// The sender's frame period in µs (10, 20, 25 or 40): how accepted pulses group into frames.
+  uint32_t frame_period_us = 40;
   /// How many rejected pulses to keep as examples.
   size_t max_rejected_examples = 10;
 };
@@ -40,12 +42,17 @@ struct RejectedPulse {
 };
 
 /// A new frame starts when the gap from the previous accepted pulse's falling edge to the next
-/// rising edge exceeds this (ns). Within a frame the gaps are 2 µs, between frames at least 11 µs.
+/// rising edge exceeds this (ns): within a frame the gaps are 2 µs.
 constexpr SimTime kFrameGapNs = 8 * kMicrosecond;
-/// A new frame also starts when a pulse rises more than this (ns) after the frame's first rise.
-constexpr SimTime kFrameWindowNs = 32 * kMicrosecond;
+/// A new frame also starts when a pulse rises more than this (ns) after the frame's first rise:
+/// 4/5 of the period (32 µs at 40 µs, 8 µs at 10 µs). Every frame's first pulse rises at the same
+/// offset, one period after the last frame's, and a frame's pulses rise within the period less
+/// 4 µs of its first. At 10 µs the gap alone would not tell frames apart (it can be 3 µs).
+constexpr SimTime frame_window_ns(uint32_t frame_period_us) {
+  return static_cast<SimTime>(frame_period_us) * kMicrosecond * 4 / 5;
+}
 
-/// Accepted pulses grouped into frames by kFrameGapNs and kFrameWindowNs.
+/// Accepted pulses grouped into frames by kFrameGapNs and frame_window_ns().
 struct FrameStats {
   uint64_t count = 0;            ///< frames holding at least one accepted pulse
   uint32_t max_pulses = 0;       ///< most accepted pulses in one frame

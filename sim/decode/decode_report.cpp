@@ -57,7 +57,8 @@ std::string format_decode_report(const DecodeResult& result, const std::string& 
     out += "  rejected and " + std::to_string(rejected - result.first_rejected.size()) + " more\n";
   }
   const FrameStats& frames = result.frames;
-  out += "  frames   " + std::to_string(frames.count) + ", at most " +
+  out += "  frames   " + std::to_string(frames.count) + " of " + std::to_string(result.options.frame_period_us) +
+         " us, at most " +
          counted(frames.max_pulses, "pulse", "pulses") + " per frame";
   if (frames.count >= 2) {
     out += ", start spacing " + us_text(frames.min_start_spacing) + " to " + us_text(frames.max_start_spacing) + " us";
@@ -80,7 +81,8 @@ nlohmann::json decode_report_json(const DecodeResult& result) {
        {{"count", result.frames.count},
         {"max_pulses_per_frame", result.frames.max_pulses},
         {"max_start_spacing_us", us_value(result.frames.max_start_spacing)},
-        {"min_start_spacing_us", us_value(result.frames.min_start_spacing)}}},
+        {"min_start_spacing_us", us_value(result.frames.min_start_spacing)},
+        {"period_us", result.options.frame_period_us}}},
       {"incomplete", result.incomplete},
       {"mode", mode_name(result.options.mode)},
       {"pulses", signal_counts_json(result.counts)},

@@ -258,6 +258,49 @@ TEST(CaptureDecoder, FramesSplitOnGapsOverEightAndRisesOverThirtyTwoMicroseconds
   EXPECT_EQ(result.frames.max_start_spacing, 980 * kMicrosecond - 1);
 }
 
+// Every set of signals, once, forward, encoded back to back in frames of `period_us` with the
+// port's whole-frame layout (carried signals first), from 100 µs.
+EncodedCapture encode_every_set(uint32_t period_us) {
+  const protocol::FrameLayout layout = protocol::layout_for_period(period_us);
+  EncodedCapture capture;
+  uint8_t pending = 0;
+  uint8_t next_set = 1;
+  for (int slot = 0; pending != 0 || next_set <= kAllSignalsMask; ++slot) {
+    if (pending == 0) pending = next_set++;
+    protocol::FrameRequest request;
+    request.active_mask = pending;
+    request.forward_mask = pending;
+    request.priority_mask = pending;
+    const protocol::EncodedFrame frame = protocol::encode_frame(request, layout);
+    const SimTime start = 100 * kMicrosecond + slot * SimTime{period_us} * kMicrosecond;
+    append_word(capture.wave.step, frame.words.step_bits, start);
+    append_word(capture.wave.dir, frame.words.dir_bits, start);
+    capture.pulses_per_frame.push_back(__builtin_popcount(frame.sent_mask));
+    pending = frame.carried_mask;
+  }
+  return capture;
+}
+
+TEST(CaptureDecoder, FramesGroupByTheSendersPeriod) {
+  for (const uint32_t period_us : {10u, 20u, 25u, 40u}) {
+    const EncodedCapture capture = encode_every_set(period_us);
+    DecodeOptions options;
+    options.frame_period_us = period_us;
+    const DecodeResult result = decode_step_dir(capture.wave.step, capture.wave.dir, options);
+    EXPECT_EQ(result.accepted, 6u * 32u) << period_us;  // each signal is in 32 of the 63 sets
+    EXPECT_EQ(result.frames.count, capture.pulses_per_frame.size()) << period_us;
+    EXPECT_EQ(result.frames.max_pulses,
+              static_cast<uint32_t>(*std::max_element(capture.pulses_per_frame.begin(), capture.pulses_per_frame.end())))
+        << period_us;
+    EXPECT_EQ(result.frames.min_start_spacing, SimTime{period_us} * kMicrosecond) << period_us;
+    EXPECT_EQ(result.frames.max_start_spacing, SimTime{period_us} * kMicrosecond) << period_us;
+  }
+  // Grouped as 40 µs frames, a 10 µs stream's frames run together (why decode asks the period).
+  const EncodedCapture fast = encode_every_set(10);
+  const DecodeResult as_if_40 = decode_step_dir(fast.wave.step, fast.wave.dir, DecodeOptions{});
+  EXPECT_LT(as_if_40.frames.count, fast.pulses_per_frame.size());
+}
+
 TEST(CaptureDecoder, EmptyCapture) {
   const DecodeResult result = decode_step_dir(EdgeList{}, EdgeList{}, DecodeOptions{});
   EXPECT_EQ(result.accepted, 0u);

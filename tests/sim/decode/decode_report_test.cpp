@@ -36,13 +36,13 @@ TEST(DecodeReport, TextIsExact) {
             "  rejected 310.000 us: 0.500 us wide (0 us) too short\n"
             "  rejected 500.000 us: 8.000 us wide (8 us) too long\n"
             "  rejected and 1 more\n"
-            "  frames   3, at most 5 pulses per frame, start spacing 40.000 to 80.001 us\n");
+            "  frames   3 of 40 us, at most 5 pulses per frame, start spacing 40.000 to 80.001 us\n");
 }
 
 TEST(DecodeReport, JsonIsExact) {
   EXPECT_EQ(decode_report_json(sample_result()).dump(),
             R"({"accepted":12345682,"clock_ticks_per_us":150,)"
-            R"("frames":{"count":3,"max_pulses_per_frame":5,"max_start_spacing_us":80.001,"min_start_spacing_us":40.0},)"
+            R"("frames":{"count":3,"max_pulses_per_frame":5,"max_start_spacing_us":80.001,"min_start_spacing_us":40.0,"period_us":40},)"
             R"("incomplete":1,"mode":"STEPDANCE",)"
             R"("pulses":{"E":{"forward":0,"reverse":12345678},"R":{"forward":0,"reverse":0},)"
             R"("T":{"forward":0,"reverse":0},"X":{"forward":1,"reverse":1},"Y":{"forward":2,"reverse":0},)"
@@ -70,7 +70,7 @@ TEST(DecodeReport, StepDirModeNamesItsSignalAndFewFramesOmitSpacing) {
             "  T              0         0\n"
             "  Z              4         0\n"
             "  E              0         0\n"
-            "  frames   1, at most 4 pulses per frame\n");
+            "  frames   1 of 40 us, at most 4 pulses per frame\n");
   const nlohmann::json json = decode_report_json(result);
   EXPECT_EQ(json["mode"], "STEP_DIR");
   EXPECT_EQ(json["step_dir_signal"], "Z");

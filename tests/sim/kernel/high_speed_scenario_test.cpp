@@ -23,12 +23,18 @@ TEST(HighSpeedScenario, A100kHzStreamCrossesABadCableExactly) {
     const WireLookup step = find_wire(read.capture, std::string(prefix) + "_STEP");
     const WireLookup dir = find_wire(read.capture, std::string(prefix) + "_DIR");
     ASSERT_TRUE(step.ok && dir.ok) << prefix;
+    DecodeOptions options;
+    options.frame_period_us = 10;
     const DecodeResult decoded =
-        decode_step_dir(read.capture.wires[step.index].edges, read.capture.wires[dir.index].edges, DecodeOptions{});
+        decode_step_dir(read.capture.wires[step.index].edges, read.capture.wires[dir.index].edges, options);
     EXPECT_EQ(decoded.counts[SIGNAL_X].forward, 300000u) << prefix;
     EXPECT_EQ(decoded.counts[SIGNAL_X].reverse, 100000u) << prefix;
     EXPECT_EQ(decoded.accepted, 400000u) << prefix;
     EXPECT_EQ(decoded.too_long, 0u) << prefix;
+    // One X pulse in every 10 µs frame, frames 10 µs apart (the cable delays them all alike).
+    EXPECT_EQ(decoded.frames.count, 400000u) << prefix;
+    EXPECT_EQ(decoded.frames.max_pulses, 1u) << prefix;
+    EXPECT_EQ(decoded.frames.min_start_spacing, 10 * kMicrosecond) << prefix;
   }
 }
 

@@ -154,6 +154,19 @@ TEST(MalformedCaptureTest, LongPulsesAreTooLongForStepdanceAndStepsForStepDir) {
   EXPECT_EQ(step_dir["rejected"]["too_long"], 0);
 }
 
+TEST(MalformedCaptureTest, AFramePeriodTheBoardsCannotRunIsRefused) {
+  const std::string path = kFixtures + "/long-pulses.vcd";
+  for (const char* value : {"15", "0", "80"}) {
+    const CommandResult result = run("decode --frame-us " + std::string(value) + " " + path, "frame_us");
+    EXPECT_EQ(result.exit_code, 2) << value;
+    EXPECT_EQ(result.err, "--frame-us must be 10, 20, 25 or 40 (the sending board's frame period), got " +
+                              std::string(value) + "\n")
+        << value;
+  }
+  const nlohmann::json fast = decode_json("--frame-us 10 " + path, 0, "frame_us_10")["ports"]["upstream.OUT_A"];
+  EXPECT_EQ(fast["frames"]["period_us"], 10);
+}
+
 TEST(MalformedCaptureTest, AnOversizedCaptureDecodesInTimeLinearInItsWires) {
   // 50,000 STEP/DIR pairs (100,000 wires): pairing them two by two took minutes.
   const std::string scratch = test_output_dir("malformed_oversized");
