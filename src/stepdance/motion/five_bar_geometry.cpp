@@ -40,9 +40,9 @@ bool FiveBarGeometry::forward(double a1, double a2, double& x, double& y) const 
   const double cosine = (l8 * l8 + l3 * l3 - l4 * l4) / (2 * l8 * l3);
   if (!(l8 > 0.0) || cosine < -1.0 || cosine > 1.0) return false;  // the links cannot meet
   const double a4 = acos(cosine);
-  const SineCosine w5 = sine_cosine(kHalfPi + a3 - a4);    // A5
+  const SineCosine w5 = sine_cosine(kHalfPi + a3 - a4);  // A5
   const Point e{c.x - l3 * w5.sine, c.y - l3 * w5.cosine};
-  const SineCosine w7 = sine_cosine(a6 - a4 + a3);         // A7 = A6 − π/2 + A5
+  const SineCosine w7 = sine_cosine(a6 - a4 + a3);  // A7 = A6 − π/2 + A5
   x = e.x + l5 * w7.cosine;
   y = -(e.y - l5 * w7.sine);
   return true;
