@@ -17,19 +17,25 @@ constexpr const char* kNamelessHeader =
 constexpr const char* kBraceAfterOpening = "'}' cannot follow '[' or ','";
 
 bool is_ascii(char c) { return static_cast<unsigned char>(c) < 0x80; }
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+/// TOML's whitespace (a lone CR is not: it belongs to a line break).
+bool is_space_or_tab(char c) { return c == ' ' || c == '\t'; }
+bool is_blank(char c) { return is_space_or_tab(c) || c == '\r'; }
 
 bool starts_a_key(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
          c == '"' || c == '\'';
 }
 
-/// The first control character other than tab, LF and CR, anywhere (strings and comments too).
+/// The first control character other than tab, LF and CR, or CR without LF, anywhere (strings
+/// and comments too): TOML allows none of them.
 UnsafeToml find_control_character(std::string_view text) {
   int line = 1;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    const auto byte = static_cast<unsigned char>(text[at]);
     if (byte == '\n') ++line;
+    if (byte == '\r' && (at + 1 >= text.size() || text[at + 1] != '\n')) {
+      return {line, "a carriage return without a line feed (U+000D) is not allowed in a scenario file"};
+    }
     if ((byte < 0x20 && byte != '\t' && byte != '\n' && byte != '\r') || byte == 0x7F) {
       static const char kHex[] = "0123456789ABCDEF";
       return {line, std::string("control character U+00") + kHex[byte >> 4] + kHex[byte & 15] +
@@ -121,7 +127,7 @@ class Scanner {
   UnsafeToml table_header() {
     std::size_t name = at_ + 1;
     if (name < text_.size() && text_[name] == '[') ++name;
-    while (name < text_.size() && is_blank(text_[name])) ++name;
+    while (name < text_.size() && is_space_or_tab(text_[name])) ++name;
     if (name >= text_.size() || (!starts_a_key(text_[name]) && text_[name] != ']')) return unsafe(kNamelessHeader);
     significant('[');
     at_ = name;

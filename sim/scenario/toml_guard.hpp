@@ -8,8 +8,8 @@ namespace stepdance::sim::scenario {
 
 /// Where toml++ 3.3 would assert or reach an unreachable point (undefined behaviour in its
 /// release build) on text that TOML only calls an error, as fuzz/scenario_fuzz.cpp found:
-///  - a control character other than tab, LF and CR (TOML allows none, toml++ asserts in a
-///    table header);
+///  - a control character other than tab, LF and CR, or a CR without LF (TOML allows none of
+///    them; toml++ asserts on one in a table header);
 ///  - a non-ASCII character outside strings and comments, or after a backslash in a string
 ///    (toml++'s whitespace test reaches an unreachable point for most of U+00A1–U+0499,
 ///    U+2F2E–U+3327 and U+FBA6–U+FEFE; TOML allows non-ASCII text only in strings and comments);

@@ -117,6 +117,14 @@ TEST(BadScenarioText, AControlCharacterIsRefusedWithItsLine) {
   ASSERT_EQ(result.errors.size(), 1u);
   EXPECT_EQ(result.errors[0].to_string(), "x.toml:2: control character U+0001 is not allowed in a scenario file");
   EXPECT_TRUE(parse_scenario("duration_s = 1\t# a tab is fine\r\n", "x.toml").ok());
+  // Found by the same fuzzer: a CR opening a table header's name ("[[\rexpect]]"). A CR is
+  // only allowed before LF, so a lone one is refused wherever it is.
+  for (const char* text : {"[[\rexpect]]\n", "x = 1\r", "x = \"\r\"\n"}) {
+    const LoadResult lone_cr = parse_scenario(std::string("duration_s = 1\n") + text, "x.toml");
+    ASSERT_EQ(lone_cr.errors.size(), 1u) << text;
+    EXPECT_EQ(lone_cr.errors[0].to_string(),
+              "x.toml:2: a carriage return without a line feed (U+000D) is not allowed in a scenario file");
+  }
 }
 
 // Found by the same fuzzer: toml++ 3.3 reaches an unreachable point classifying 'µ' outside a
