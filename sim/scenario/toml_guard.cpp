@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <utility>
+#include <string>
 
 namespace stepdance::sim::scenario {
 namespace {
@@ -20,6 +20,48 @@ bool is_ascii(char c) { return static_cast<unsigned char>(c) < 0x80; }
 /// TOML's whitespace (a lone CR is not: it belongs to a line break).
 bool is_space_or_tab(char c) { return c == ' ' || c == '\t'; }
 bool is_blank(char c) { return is_space_or_tab(c) || c == '\r'; }
+bool is_space_or_tab_or_break(char c) { return is_blank(c) || c == '\n'; }
+
+bool is_decimal(char c) { return c >= '0' && c <= '9'; }
+bool is_hex(char c) { return is_decimal(c) || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'); }
+bool is_octal(char c) { return c >= '0' && c <= '7'; }
+bool is_binary(char c) { return c == '0' || c == '1'; }
+
+/// Digits from `at` (one or more; an underscore only between two digits); `at` moves past them.
+bool digits(std::string_view text, std::size_t& at, bool (*is_digit)(char)) {
+  if (at >= text.size() || !is_digit(text[at])) return false;
+  for (++at; at < text.size(); ++at) {
+    if (text[at] == '_' && at + 1 < text.size() && is_digit(text[at + 1])) ++at;
+    else if (!is_digit(text[at])) break;
+  }
+  return true;
+}
+
+/// A TOML integer or float, as TOML 1.0 writes them (no dates: no scenario value is one).
+bool is_number(std::string_view text) {
+  std::size_t at = 2;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'o' || text[1] == 'b')) {
+    const auto kind = text[1] == 'x' ? is_hex : text[1] == 'o' ? is_octal : is_binary;
+    return digits(text, at, kind) && at == text.size();
+  }
+  at = text[0] == '+' || text[0] == '-' ? 1 : 0;
+  if (text.substr(at) == "inf" || text.substr(at) == "nan") return true;
+  if (at < text.size() && text[at] == '0') {
+    ++at;  // no leading zeros
+  } else if (!digits(text, at, is_decimal)) {
+    return false;
+  }
+  if (at < text.size() && text[at] == '.' && !digits(text, ++at, is_decimal)) return false;
+  if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+    ++at;
+    if (at < text.size() && (text[at] == '+' || text[at] == '-')) ++at;
+    if (!digits(text, at, is_decimal)) return false;
+  }
+  return at == text.size();
+}
+
+/// Where an unquoted value ends.
+bool ends_a_bare_value(char c) { return is_space_or_tab_or_break(c) || c == ',' || c == ']' || c == '}' || c == '#'; }
 
 bool starts_a_key(char c) {
   return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '-' ||
@@ -65,6 +107,8 @@ class Scanner {
         found = table_header();
       } else if ((c == '"' || c == '\'') && string_may_start()) {
         found = string();
+      } else if (c != '[' && c != '{' && c != ']' && c != '}' && c != ',' && value_may_start()) {
+        found = bare_value();
       } else if (c == '}' && (previous_ == '[' || previous_ == ',')) {
         found = unsafe(kBraceAfterOpening);
       } else {
@@ -89,6 +133,28 @@ class Scanner {
   void significant(char c) {
     previous_ = c;
     line_start_ = false;
+  }
+
+  /// Where a value may start: after '=', or after '[' or ',' in an array.
+  bool value_may_start() const {
+    return in_value_ && (previous_ == '=' || previous_ == '[' || previous_ == ',');
+  }
+
+  /// An unquoted value at at_: true, false or a number. toml++ 3.3 scans such a value ahead to
+  /// tell its type and asserts on some text it cannot type (`9904------ 0`, found by the fuzz
+  /// target), so anything else is refused here with a message of our own.
+  UnsafeToml bare_value() {
+    std::size_t end = at_;
+    while (end < text_.size() && !ends_a_bare_value(text_[end]) && is_ascii(text_[end])) ++end;
+    const std::string_view value = text_.substr(at_, end - at_);
+    if (end < text_.size() && !is_ascii(text_[end])) return unsafe(kNonAscii);
+    if (value != "true" && value != "false" && !is_number(value)) {
+      const std::string shown = value.size() <= 40 ? std::string(value) : std::string(value.substr(0, 40)) + "...";
+      return {line_, "'" + shown + "' is not a number, true or false (a text value needs quotes)"};
+    }
+    significant(text_[end - 1]);
+    at_ = end;
+    return {};
   }
 
   /// Where TOML lets a string start: a value after '=', '[' or ','; a key at a line's start,

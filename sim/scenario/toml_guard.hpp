@@ -14,7 +14,9 @@ namespace stepdance::sim::scenario {
 ///    (toml++'s whitespace test reaches an unreachable point for most of U+00A1–U+0499,
 ///    U+2F2E–U+3327 and U+FBA6–U+FEFE; TOML allows non-ASCII text only in strings and comments);
 ///  - a table header whose name does not start like a key (`[^a]`, `[[.x`);
-///  - '}' right after '[' or ',' in an array.
+///  - '}' right after '[' or ',' in an array;
+///  - an unquoted value other than true, false or a TOML number (toml++ scans such a value
+///    ahead to tell its type and asserts on some it cannot type; no scenario value is a date).
 /// A string starts only where TOML lets one start (a key at a line's start, after '{', ',' or
 /// '.', or in a table header; a value after '=', '[' or ','), so a quote toml++ reads as a
 /// stray character is one here too.

@@ -176,6 +176,36 @@ TEST(BadScenarioText, ABraceWhereAnArrayValueBelongsIsRefusedWithItsLine) {
   }
 }
 
+// Found by the same fuzzer: toml++ 3.3 scans an unquoted value ahead to tell its type, and
+// asserts on some it cannot type ("9904------ 0" followed by a table). An unquoted value must be
+// true, false or a TOML number; scenario files have no dates.
+TEST(BadScenarioText, AnUnquotedValueMustBeANumberOrABoolean) {
+  const std::pair<const char*, const char*> refused[] = {
+      {"x = 9904------ 0\n\n[[x", "'9904------' is not a number, true or false (a text value needs quotes)"},
+      {"x = 5s\n", "'5s' is not a number, true or false (a text value needs quotes)"},
+      {"x = yes\n", "'yes' is not a number, true or false (a text value needs quotes)"},
+      {"x = [1, two]\n", "'two' is not a number, true or false (a text value needs quotes)"},
+      {"x = 1979-05-27\n", "'1979-05-27' is not a number, true or false (a text value needs quotes)"},
+      {"x = 01\n", "'01' is not a number, true or false (a text value needs quotes)"},
+      {"x = 1__0\n", "'1__0' is not a number, true or false (a text value needs quotes)"},
+      {"x = 0x\n", "'0x' is not a number, true or false (a text value needs quotes)"},
+      {"x = 1.e5\n", "'1.e5' is not a number, true or false (a text value needs quotes)"},
+      {"x = 12345678901234567890123456789012345678901234567890z\n",
+       "'1234567890123456789012345678901234567890...' is not a number, true or false (a text value needs quotes)"}};
+  for (const auto& [text, message] : refused) {
+    const LoadResult result = parse_scenario(std::string("duration_s = 1\n") + text, "x.toml");
+    ASSERT_EQ(result.errors.size(), 1u) << text;
+    EXPECT_EQ(result.errors[0].to_string(), std::string("x.toml:2: ") + message) << text;
+  }
+  const LoadResult numbers = parse_scenario(
+      "duration_s = 1\nx = [1_000, -0.5e-3, +inf, -nan, 0xDEAD_beef, 0o17, 0b101, 1E+5, 0, -0.0]\n"
+      "y = { a = true, b = false,c=3 }\n",
+      "x.toml");
+  for (const Diagnostic& error : numbers.errors) {
+    EXPECT_EQ(error.to_string().find("is not a number"), std::string::npos) << error.to_string();
+  }
+}
+
 // Found by the same fuzzer: toml++ 3.3's whitespace test reaches an unreachable point for most
 // non-ASCII characters (here U+048C), which it asks about outside strings (also after a quote
 // it reads as a stray character, as in `1"…`) and after a backslash in a string. Strings and
