@@ -4,6 +4,8 @@
 #   scripts/fuzz.sh gcode 10000000  one target for a number of executions (the documented long run)
 # STEPDANCE_FUZZ_TIMEOUT_S (default 10) is libFuzzer's per-input wall-clock limit: raise it for a
 # long run on a loaded machine, which stretches wall time, not the work.
+# STEPDANCE_FUZZ_WORKERS (default 1) splits a run's executions between that many processes sharing
+# one corpus, each with its own log (<target>-worker<N>.log) and random seed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${STEPDANCE_FUZZ_DIR:-build-fuzz}
@@ -84,26 +86,49 @@ build_targets() {
   done
 }
 
+# One libFuzzer process: a target, a number of executions, its log and its seed option.
+run_worker() {
+  local name=$1 runs=$2 log=$3 seed=$4
+  local work="$build/${name}_corpus"
+  "$build/${name}_fuzz" -runs="$runs" ${seed:+"$seed"} -max_len="${target_max_len[$name]:-4096}" -timeout="${STEPDANCE_FUZZ_TIMEOUT_S:-10}" -print_final_stats=1 \
+    -artifact_prefix="$build/${name}-" "$work" "fuzz/corpus/$name" >"$log" 2>&1
+}
+
 run_target() {
-  local name=$1 runs=$2 work="$build/${name}_corpus"
-  mkdir -p "$work"
+  local name=$1 runs=$2 workers=${STEPDANCE_FUZZ_WORKERS:-1}
+  mkdir -p "$build/${name}_corpus"
   # Inputs that once failed (fuzz/regressions/<target>/) must keep passing.
   if compgen -G "fuzz/regressions/$name/*" >/dev/null; then
     "$build/${name}_fuzz" fuzz/regressions/"$name"/* >"$build/${name}-regressions.log" 2>&1 ||
       { cat "$build/${name}-regressions.log"; echo "fuzz: $name regression inputs FAILED"; return 1; }
   fi
-  # The checked-in seeds stay untouched; new inputs go to the build folder.
-  local log="$build/${name}.log"
-  if ! "$build/${name}_fuzz" -runs="$runs" ${seed_flag} -max_len="${target_max_len[$name]:-4096}" -timeout="${STEPDANCE_FUZZ_TIMEOUT_S:-10}" -print_final_stats=1 \
-      -artifact_prefix="$build/${name}-" "$work" "fuzz/corpus/$name" >"$log" 2>&1; then
-    grep -A 30 -E "ERROR|runtime error|deadly signal|timeout" "$log" | head -n 60
-    echo "fuzz: $name FAILED (full log: $log; reproducer: $build/${name}-*)"
-    return 1
-  fi
-  grep -E "^Done|stat::number_of_executed_units|stat::new_units_added|stat::peak_rss_mb" "$log"
+  # The checked-in seeds stay untouched; new inputs go to the build folder, shared by the workers
+  # (libFuzzer reloads it), which split the executions between them.
+  local logs=() pids=() worker
+  for ((worker = 1; worker <= workers; ++worker)); do
+    local log="$build/${name}.log"
+    [ "$workers" -gt 1 ] && log="$build/${name}-worker${worker}.log"
+    logs+=("$log")
+    local seed=""  # a fixed walk for the smoke run, one per worker
+    [ -n "$fixed_seed" ] && seed="-seed=$((${STEPDANCE_FUZZ_SEED:-1} + worker - 1))"
+    run_worker "$name" $(((runs + workers - 1) / workers)) "$log" "$seed" &
+    pids+=($!)
+  done
+  local failed=0
+  for ((worker = 0; worker < workers; ++worker)); do
+    local log=${logs[$worker]}
+    if ! wait "${pids[$worker]}"; then
+      grep -A 30 -E "ERROR|runtime error|deadly signal|timeout" "$log" | head -n 60
+      echo "fuzz: $name FAILED (full log: $log; reproducer: $build/${name}-*)"
+      failed=1
+    else
+      grep -E "^Done|stat::number_of_executed_units|stat::new_units_added|stat::peak_rss_mb" "$log"
+    fi
+  done
+  return "$failed"
 }
 
-seed_flag=""
+fixed_seed=""
 if [ $# -ge 1 ]; then
   targets=("$1")
   runs=${2:-1000000}
@@ -112,7 +137,7 @@ else
   runs=${STEPDANCE_FUZZ_SMOKE_RUNS:-20000}
   # The smoke run is a fixed walk (same seed, and a fresh clone starts from the checked-in seeds
   # alone), so CI's verdict repeats; long runs take a new random seed each time.
-  seed_flag="-seed=${STEPDANCE_FUZZ_SEED:-1}"
+  fixed_seed=yes
 fi
 export build
 build_targets "${targets[@]}"
