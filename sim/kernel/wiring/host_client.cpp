@@ -11,6 +11,11 @@ namespace {
 /// How often the client looks at the link: a USB full-speed frame.
 constexpr SimTime kTickNs = kMillisecond;
 
+/// The longest line kept whole. std::regex (libstdc++) matches by recursion about as deep as the
+/// text is long: a pattern run over a line of ten or twenty thousand characters overflowed the
+/// stack. Longer lines are kept as pieces of this many bytes, each but the last marked `cut`.
+constexpr size_t kLongestLineBytes = 1000;
+
 std::string escaped(const std::string& bytes) {
   std::string out;
   for (const char c : bytes) {
@@ -68,14 +73,25 @@ void HostClient::receive(const uint8_t* data, size_t length) {
     const char c = static_cast<char>(data[i]);
     if (c == '\r' && partial_line_.empty()) continue;  // the EBB ends some lines "\n\r"
     if (c != '\n') {
+      // A CR may still end a full line ("\r\n"), so it waits one byte longer for the cut.
+      if (partial_line_.size() >= kLongestLineBytes + (c == '\r' ? 1 : 0)) take_received_line(true);
       partial_line_ += c;
       continue;
     }
     if (!partial_line_.empty() && partial_line_.back() == '\r') partial_line_.pop_back();
-    transcript_.push_back({scheduler_.now(), false, escaped(partial_line_)});
-    unread_.push_back(std::move(partial_line_));
-    partial_line_.clear();
+    take_received_line(false);
   }
+}
+
+void HostClient::take_received_line(bool cut) {
+  std::string rest;
+  if (partial_line_.size() > kLongestLineBytes) {  // a CR that did not end the line goes on
+    rest = partial_line_.substr(kLongestLineBytes);
+    partial_line_.resize(kLongestLineBytes);
+  }
+  transcript_.push_back({scheduler_.now(), false, escaped(partial_line_), cut});
+  unread_.push_back(std::move(partial_line_));
+  partial_line_ = std::move(rest);
 }
 
 void HostClient::tick(SimTime now) {
@@ -172,9 +188,16 @@ bool HostClient::run_stream(const scenario::HostStep& step, SimTime now) {
 
 void HostClient::send(const std::string& bytes, SimTime now) {
   board_.send_console(bytes);
-  std::string shown = bytes;
-  if (!shown.empty() && shown.back() == '\n') shown.pop_back();
-  transcript_.push_back({now, true, escaped(shown)});
+  // One transcript entry per line sent (a long one in pieces), as for received lines.
+  size_t begin = 0;
+  do {
+    size_t end = bytes.find('\n', begin);
+    if (end == std::string::npos) end = bytes.size();
+    const bool cut = end - begin > kLongestLineBytes;
+    if (cut) end = begin + kLongestLineBytes;
+    transcript_.push_back({now, true, escaped(bytes.substr(begin, end - begin)), cut});
+    begin = cut ? end : end + 1;
+  } while (begin < bytes.size());
 }
 
 void HostClient::fail(const std::string& why) {
@@ -187,6 +210,7 @@ void HostClient::write_transcript(const std::string& path) const {
   out << "# simulated ms, > sent by the host / < received from the board, the line\n";
   for (const Entry& entry : transcript_) {
     out << format_ms(entry.time) << (entry.from_host ? " > " : " < ") << entry.text << '\n';
+    if (entry.cut) out << "# the line above goes on in the next one (lines over " << kLongestLineBytes << " bytes are split)\n";
   }
   if (!failure_.empty()) out << "# stopped: " << failure_ << '\n';
   out.close();

@@ -15,7 +15,8 @@ namespace stepdance::sim {
 /// Runs a [[host]] client's steps against one board, deterministically in simulated time.
 ///
 /// The client looks at the link once per simulated millisecond (a USB full-speed frame): it takes
-/// the lines the board printed since (split at '\n', a '\r' at either end dropped), then advances its
+/// the lines the board printed since (split at '\n', a '\r' at either end dropped; a line over
+/// 1,000 bytes is taken as pieces of 1,000, so no pattern runs over more), then advances its
 /// steps as far as they can go. A line matches a pattern when the regex finds a match anywhere in
 /// it (anchor with ^…$ for whole lines). Steps:
 ///   send   — writes bytes at once;
@@ -35,6 +36,7 @@ class HostClient {
     SimTime time = 0;
     bool from_host = true;  ///< true: the host sent it; false: the board printed it
     std::string text;       ///< without its line ending; control bytes escaped as \xNN
+    bool cut = false;       ///< the line went on past 1,000 bytes: the next entry continues it
   };
 
   HostClient(const scenario::HostClientConfig& config, SimBoard& board, Scheduler& scheduler);
@@ -61,6 +63,8 @@ class HostClient {
   static void on_tick(void* context, SimTime time);
   void tick(SimTime now);
   void receive(const uint8_t* data, size_t length);
+  /// Moves the received text so far into the transcript and the unread lines.
+  void take_received_line(bool cut);
   /// Advances the current step; true when it finished (the next may start at once).
   bool run_step(SimTime now);
   bool run_stream(const scenario::HostStep& step, SimTime now);
