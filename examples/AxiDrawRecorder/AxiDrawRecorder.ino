@@ -86,13 +86,14 @@ void setup() {
   output_c.begin(OUTPUT_C);
   enable_drivers();
 
-  // Motor directions as the simulated plotter has them: the sketch's x and y are the paper's.
-  // (A real AxiDraw may need channel_a/b.invert_output() and encoder_1/2.invert(), as in
-  // StepASketch.)
+  // Channels and knobs inverted as in the original's AxiDraw sketches: on the real AxiDraw the
+  // sketch's x and y are then the paper's.
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(25.4, 2032);
+  channel_a.invert_output();  // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
+  channel_b.invert_output();  // +y away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   axidraw_kinematics.begin();
@@ -101,9 +102,11 @@ void setup() {
 
   encoder_1.begin(ENCODER_1);
   encoder_1.set_ratio(24, 2400);  // one 2400-count turn of the knob = 24 mm
+  encoder_1.invert();
   encoder_1.output.map(&axidraw_kinematics.input_x);
   encoder_2.begin(ENCODER_2);
   encoder_2.set_ratio(24, 2400);
+  encoder_2.invert();
   encoder_2.output.map(&axidraw_kinematics.input_y);
 
   pen_position.output.map(&channel_z.input_target_position);

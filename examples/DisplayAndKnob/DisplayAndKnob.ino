@@ -38,10 +38,10 @@ void pen_down() { pen_position.go(kPenDownSteps, ABSOLUTE, kPenSpeedStepsPerS); 
 void pen_up() { pen_position.go(kPenUpSteps, ABSOLUTE, kPenSpeedStepsPerS); }
 
 // The pen's position is what the kinematics received, so a new knob ratio does not change it.
-// Both channels are inverted for the AxiDraw's belts, so the page's axes point against the
-// kinematics' inputs: the pen is at minus them.
-float pen_x_mm() { return static_cast<float>(-axidraw_kinematics.input_x.read(ABSOLUTE)); }
-float pen_y_mm() { return static_cast<float>(-axidraw_kinematics.input_y.read(ABSOLUTE)); }
+// Both channels are inverted, as on the real AxiDraw, so the kinematics' inputs are the page's
+// coordinates.
+float pen_x_mm() { return static_cast<float>(axidraw_kinematics.input_x.read(ABSOLUTE)); }
+float pen_y_mm() { return static_cast<float>(axidraw_kinematics.input_y.read(ABSOLUTE)); }
 
 void set_knob_ratio(float mm_per_count) {
   encoder_1.set_ratio(mm_per_count);

@@ -30,21 +30,26 @@ void setup() {
   output_c.begin(OUTPUT_C);
   enable_drivers();
 
-  // AxiDraw belts: 80 microsteps per mm on each motor. Not inverted, so G-code +X and +Y (and
-  // the knobs turned clockwise) move the pen right and down the page, from the home corner.
+  // AxiDraw belts: 80 microsteps per mm on each motor. Inverted, as in the original's AxiDraw
+  // sketches, so G-code +X and +Y move the real pen right and down the page, from the home corner.
+  // The knobs are inverted as the original's are.
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(25.4, 2032);
+  channel_a.invert_output();  // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
+  channel_b.invert_output();  // +y away from the long axis
   // Pen servo: Z in mm, 50 servo steps per mm (Z4 is up, Z-4 is down).
   channel_z.begin(&output_c, SIGNAL_E);
   channel_z.set_ratio(1, 50);
 
   encoder_1.begin(ENCODER_1);
   encoder_1.set_ratio(24, 2400);  // one 2400-count turn of the knob = 24 mm
+  encoder_1.invert();
   encoder_1.output.map(&axidraw_kinematics.input_x);
   encoder_2.begin(ENCODER_2);
   encoder_2.set_ratio(24, 2400);
+  encoder_2.invert();
   encoder_2.output.map(&axidraw_kinematics.input_y);
 
   gcode.begin(&Serial);

@@ -28,10 +28,13 @@ PositionGenerator start_x;
 PositionGenerator start_y;
 ScalingFilter2D scaling_filter;
 
-// The AxiDraw's channels are inverted, as on the real machine: the kinematics' +x and +y are
-// the page's −x and −y, so the page's (200, 160) mm is (−200, −160) here.
-constexpr double kStartXMm = -200;
-constexpr double kStartYMm = -160;
+// The AxiDraw's channels are inverted, as on the real machine (and in every AxiDraw sketch of the
+// original library): the kinematics' +x and +y are then the page's, +x from motor A towards
+// motor B and +y away from the long axis. The start is on the page, in mm from the home corner.
+// The pendulums are held at the far side of their swing, so from here each one moves the pen
+// towards +x or +y only: the figure fills [100, 204.8] × [60, 164.8] mm (see the scenario).
+constexpr double kStartXMm = 100;
+constexpr double kStartYMm = 60;
 constexpr double kStartSpeedMmPerS = 50;
 constexpr double kPenUpSteps = 200;
 constexpr double kPenDownSteps = -200;
@@ -48,10 +51,10 @@ void setup() {
 
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(25.4, 2032);  // 80 steps/mm
-  channel_a.invert_output();
+  channel_a.invert_output();        // +x runs from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
-  channel_b.invert_output();
+  channel_b.invert_output();        // +y runs away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   scaling_filter.begin();  // incremental: each output change = its input's change × ratio

@@ -45,12 +45,14 @@ void setup() {
   output_c.begin(OUTPUT_C);
   enable_drivers();
 
-  // Motor directions as the simulated plotter has them: the sketch's x and y are the paper's.
-  // (A real AxiDraw may need channel_a/b.invert_output(), as in StepASketch.)
+  // Both channels inverted, as on the real AxiDraw (and in the original's AxiDraw sketches): the
+  // sketch's x and y are then the paper's.
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(25.4, 2032);
+  channel_a.invert_output();  // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
+  channel_b.invert_output();  // +y away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   axidraw_kinematics.begin();

@@ -9,9 +9,10 @@
 //
 // At power-on the arms rest against their stops, −60° (right) and 240° (left): the encoders
 // start there. The arm's geometry is the original's pantograph (60, 145.75, 134, 169, 178.3,
-// 28.82 mm, 2.9019 rad). Unlike the original example, the encoders count up with the angle and
-// the channels are not inverted, so the copy on the page has the stylus's orientation; two
-// PositionGenerators shift it 100 mm right and 40 mm up the page at start.
+// 28.82 mm, 2.9019 rad). As in the original example, both encoders are inverted (they count down
+// as the kinematics' angles grow) and so are both channels (the AxiDraw's +x and +y are then the
+// page's), so the copy on the page has the stylus's orientation; two PositionGenerators shift it
+// 100 mm right and 40 mm up the page at start.
 
 #define module_driver
 #include "stepdance.hpp"
@@ -48,16 +49,20 @@ void setup() {
 
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(1, 80);  // 80 steps/mm
+  channel_a.invert_output();   // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(1, 80);
+  channel_b.invert_output();   // +y away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   encoder_r.begin(ENCODER_1);
   encoder_r.set_ratio(TWO_PI, 40000);  // one turn = 40,000 counts (10,000 lines)
+  encoder_r.invert();
   encoder_r.set(kRightHomeRad);
   encoder_r.output.map(&pantograph_kinematics.input_r, ABSOLUTE);
   encoder_l.begin(ENCODER_2);
   encoder_l.set_ratio(TWO_PI, 40000);
+  encoder_l.invert();
   encoder_l.set(kLeftHomeRad);
   encoder_l.output.map(&pantograph_kinematics.input_l, ABSOLUTE);
 

@@ -84,19 +84,24 @@ void setup() {
   output_c.begin(OUTPUT_C);
   enable_drivers();
 
-  // AxiDraw belts: 80 microsteps per mm on each motor; +x right and +y down the page.
+  // AxiDraw belts: 80 microsteps per mm on each motor; inverted as on the real machine, so +x is
+  // right and +y down the page. The knobs are inverted as in the original's sketches.
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(25.4, 2032);
+  channel_a.invert_output();  // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
+  channel_b.invert_output();  // +y away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
   channel_z.set_ratio(1, 50);
 
   encoder_1.begin(ENCODER_1);
   encoder_1.set_ratio(24, 2400);  // one 2400-count turn = 24 mm
+  encoder_1.invert();
   encoder_1.output.map(&axidraw_kinematics.input_x);
   encoder_2.begin(ENCODER_2);
   encoder_2.set_ratio(24, 2400);
+  encoder_2.invert();
   encoder_2.output.map(&axidraw_kinematics.input_y);
 
   planner.begin();

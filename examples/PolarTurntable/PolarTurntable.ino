@@ -26,9 +26,9 @@ PositionGenerator centre_y;
 PositionGenerator pen_position;
 Button button_d1;
 
-// The AxiDraw's channels are inverted, as on the real machine, so the kinematics' +x and +y
-// point to the page's −x and −y: the page's (100, 100) mm is (−100, −100) here.
-constexpr double kCentreMm = -100;
+// The AxiDraw's channels are inverted, as on the real machine (and in every AxiDraw sketch of the
+// original library), so the kinematics' +x and +y are the page's: the centre is (100, 100) mm.
+constexpr double kCentreMm = 100;
 constexpr double kCentreSpeedMmPerS = 50;
 constexpr float kOneTurnPerSecondRadPerS = TWO_PI;  // the pedal fully down
 constexpr double kPenUpSteps = 200;                 // servo steps from neutral

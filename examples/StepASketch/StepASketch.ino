@@ -41,6 +41,8 @@ void setup() {
 
   // AxiDraw belts: 200-step motors at 1/16 microstepping, 40 mm per turn = 80 steps/mm.
   channel_a.begin(&output_a, SIGNAL_E);
+  // Inverted, as on the original's AxiDraw sketches: +x then runs from motor A towards motor B
+  // (left to right) and +y away from the long axis (down the page).
   channel_a.set_ratio(25.4, 2032);
   channel_a.invert_output();
   channel_b.begin(&output_b, SIGNAL_E);

@@ -8,9 +8,10 @@
 //   CircleGenerator.output_y ────┴─► CoreXY.y ┘  b = x − y └─► channel B ─► OUTPUT B
 //   A1 pedal ─► circle speed          D1 button ─► PositionGenerator ─► channel C ─► servo
 //
-// The circle adds r·(sin θ, 1 − cos θ) to the knobs' point in the kinematics' x and y; the
-// AxiDraw's page y is the kinematics' −y, so on the page the centre sits r above the point. Unlike the original's example, the circle
-// feeds the kinematics' x and y, not the motors' a and b, so it is round on the page.
+// The circle adds r·(sin θ, 1 − cos θ) to the knobs' point in the kinematics' x and y, which
+// are the page's (both channels inverted, as on the real AxiDraw): the centre sits r below the
+// point, down the page. Unlike the original's example, the circle feeds the kinematics' x and y,
+// not the motors' a and b, so it is round on the page.
 
 #define module_driver
 #include "stepdance.hpp"

@@ -17,7 +17,7 @@ Machine::Sample CorexyPlotter::sample(SimTime time) {
   a_mm_ = static_cast<double>(motor_a_.position_steps()) / settings_.steps_per_mm;
   b_mm_ = static_cast<double>(motor_b_.position_steps()) / settings_.steps_per_mm;
   Sample now;
-  now.pen = PenPoint{settings_.start_x_mm + (a_mm_ + b_mm_) / 2, settings_.start_y_mm + (a_mm_ - b_mm_) / 2};
+  now.pen = PenPoint{settings_.start_x_mm - (a_mm_ + b_mm_) / 2, settings_.start_y_mm - (a_mm_ - b_mm_) / 2};
   now.down = pen_servo_ == nullptr || pen_servo_->pulse_width_us_at(time) < settings_.pen_down_below_us;
   return now;
 }

@@ -22,9 +22,16 @@ struct CorexySettings {
   double start_y_mm = 0;
 };
 
-/// Pen position from the motors: with a and b the motor positions in mm (steps / steps_per_mm),
-/// x = start_x + (a + b) / 2 and y = start_y + (a − b) / 2. The pen is down while the servo board's current pulse is
-/// narrower than pen_down_below_us; without a servo board the pen is always down.
+/// Pen position from the motors: with a and b the motor positions in mm (steps / steps_per_mm,
+/// a step counting +1 with DIR high), x = start_x − (a + b) / 2 and y = start_y − (a − b) / 2.
+/// The minus signs are the real AxiDraw's, as the original library drives it: its sketches invert
+/// both channels (`invert_output()`, "so that the X axis points from motor A to motor B" and "the
+/// Y axis points down") and its EBB emulation feeds an EiBotBoard's positive motor steps through
+/// those inverted channels, so DIR low is the EiBotBoard's positive direction. With both channels
+/// inverted, the kinematics' +x and +y are the page's (+x from motor A towards motor B, +y away
+/// from the long axis). docs/scenario-format.md has the table of every machine's convention.
+/// The pen is down while the servo board's current pulse is narrower than pen_down_below_us;
+/// without a servo board the pen is always down.
 class CorexyPlotter : public Machine {
  public:
   CorexyPlotter(const StepperDriver& motor_a, const StepperDriver& motor_b, ServoBoard* pen_servo,

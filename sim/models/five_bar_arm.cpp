@@ -128,11 +128,11 @@ int64_t FiveBarArm::edges(double angle_rad) const {
 }
 
 int64_t FiveBarArm::right_count_at(SimTime time) const {
-  return edges(angles_at(time).right) - edges(settings_.home_right_rad);
+  return edges(settings_.home_right_rad) - edges(angles_at(time).right);
 }
 
 int64_t FiveBarArm::left_count_at(SimTime time) const {
-  return edges(angles_at(time).left) - edges(settings_.home_left_rad);
+  return edges(settings_.home_left_rad) - edges(angles_at(time).left);
 }
 
 }  // namespace stepdance::sim

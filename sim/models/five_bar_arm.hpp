@@ -38,8 +38,10 @@ struct FiveBarArmSettings {
 /// method on that forward map, starting from the previous answer (the hand moves smoothly), so
 /// nothing here comes from the library's inverse kinematics.
 ///
-/// Each joint's counter holds the edges crossed since power-on: floor(A·cpr/2π) − floor(A₀·cpr/2π),
-/// counting up as the angle grows.
+/// Each joint's counter holds the edges crossed since power-on, counting down as the angle grows:
+/// floor(A₀·cpr/2π) − floor(A·cpr/2π). That is how the original's pantograph is built: both of
+/// its sketches (`pantograph`, `pantograph_basic_module`) invert both encoders to get the
+/// kinematics' angles.
 class FiveBarArm {
  public:
   explicit FiveBarArm(const FiveBarArmSettings& settings);

@@ -6,7 +6,8 @@ namespace stepdance::sim {
 StepperDriver::StepperDriver(const StepperDriverSettings& settings)
     : microsteps_(valid_microsteps(settings.microsteps) ? settings.microsteps : 16),
       full_steps_per_rev_(settings.full_steps_per_rev > 0 ? settings.full_steps_per_rev : 200),
-      enabled_(settings.enabled) {}
+      enabled_(settings.enabled),
+      reversed_(settings.reversed) {}
 
 bool StepperDriver::valid_microsteps(int microsteps) {
   return microsteps >= 1 && microsteps <= kFinestMicrosteps && (microsteps & (microsteps - 1)) == 0;
@@ -17,7 +18,7 @@ void StepperDriver::on_step_rising(SimTime time, bool dir_high) {
     ++ignored_steps_;
     return;
   }
-  const int64_t sign = dir_high ? 1 : -1;
+  const int64_t sign = (dir_high != reversed_) ? 1 : -1;
   position_steps_ += sign;
   rotation_64ths_ += sign * (kFinestMicrosteps / microsteps_);
   if (dir_high) {

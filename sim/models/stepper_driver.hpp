@@ -15,10 +15,13 @@ struct StepperDriverSettings {
   int full_steps_per_rev = 200;
   /// Whether the driver is enabled before the board first drives ENABLE.
   bool enabled = false;
+  /// The motor is plugged in the other way round (one coil's pair swapped): it turns backwards
+  /// for the same DIR level, so its position counts −1 per step with DIR high.
+  bool reversed = false;
 };
 
 /// The driver and its motor. Position is counted in microsteps: +1 per STEP rising edge with DIR
-/// high, −1 with DIR low. While disabled, steps do not move the motor and are counted as ignored.
+/// high, −1 with DIR low (the other way round for a reversed motor). While disabled, steps do not move the motor and are counted as ignored.
 /// ENABLE's active-low polarity is the board's concern; this model takes "enabled" directly.
 class StepperDriver {
  public:
@@ -41,11 +44,14 @@ class StepperDriver {
   /// Microsteps per revolution at the current setting.
   int64_t steps_per_rev() const { return int64_t{microsteps_} * full_steps_per_rev_; }
 
-  /// Net position in microsteps (forward minus reverse steps taken while enabled).
+  /// Net position of the motor in microsteps: forward minus reverse steps taken while enabled,
+  /// negated for a reversed motor.
   int64_t position_steps() const { return position_steps_; }
+  bool reversed() const { return reversed_; }
   /// Motor rotation in revolutions since the start (each step counted at the setting it was taken at).
   double revolutions() const;
-  /// Steps taken with DIR high / low while enabled.
+  /// Steps taken with DIR high / low while enabled (the driver's count, whichever way the motor
+  /// is plugged in).
   uint64_t forward_steps() const { return forward_steps_; }
   uint64_t reverse_steps() const { return reverse_steps_; }
   /// Steps received while disabled (they did not move the motor).
@@ -60,6 +66,7 @@ class StepperDriver {
   int microsteps_;
   int full_steps_per_rev_;
   bool enabled_;
+  bool reversed_;
   int64_t position_steps_ = 0;
   int64_t rotation_64ths_ = 0;
   uint64_t forward_steps_ = 0;

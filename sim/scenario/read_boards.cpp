@@ -45,6 +45,7 @@ std::optional<SocketConfig> read_socket(char port, const toml::node& value, Repo
       if (full_steps) socket.full_steps_per_rev = static_cast<int>(*full_steps);
       ok = ok && full_steps.has_value();
     }
+    if (const auto reversed = reader.boolean("reversed")) socket.reversed = *reversed;
     if (reader.has("build")) {
       reader.accept("build");
       reader.error("build", "'build' does not apply to a stepper");
@@ -62,7 +63,7 @@ std::optional<SocketConfig> read_socket(char port, const toml::node& value, Repo
         ok = false;
       }
     }
-    for (const char* key : {"microsteps", "full_steps_per_rev"}) {
+    for (const char* key : {"microsteps", "full_steps_per_rev", "reversed"}) {
       if (reader.has(key)) {
         reader.accept(key);
         reader.error(key, "'" + std::string(key) + "' does not apply to a servo");

@@ -29,6 +29,8 @@ struct SocketConfig {
   /// Stepper only: microsteps per full step (1..64, powers of two) and full steps per revolution.
   int microsteps = 16;
   int full_steps_per_rev = 200;
+  /// Stepper only: the motor is plugged in the other way round (it turns backwards).
+  bool reversed = false;
   /// Servo only.
   ServoBuild build = ServoBuild::k90deg;
   int line = 0;

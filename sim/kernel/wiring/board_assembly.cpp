@@ -141,6 +141,7 @@ void Simulation::build_sockets(BoardSlot& slot) {
       StepperDriverSettings settings;
       settings.microsteps = config.microsteps;
       settings.full_steps_per_rev = config.full_steps_per_rev;
+      settings.reversed = config.reversed;
       const uint8_t enable_pin = definition.output_ports[port].enable;
       settings.enabled = enable_pin == kNoPin;  // a socket without an ENABLE line is always on
       socket.stepper = std::make_unique<StepperDriver>(settings);

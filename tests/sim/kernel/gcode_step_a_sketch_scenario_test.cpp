@@ -46,9 +46,10 @@ TEST_F(GCodeStepASketchScenarioTest, EveryLineOfTheFileIsAcknowledgedInOrder) {
 }
 
 TEST_F(GCodeStepASketchScenarioTest, MotorsEndAtHomePlusTheKnobsNudge) {
-  // Pen at (5, 0) mm on CoreXY with 80 microsteps/mm: a = 80 (x + y), b = 80 (x − y).
-  EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), 400);
-  EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), 400);
+  // Pen at (5, 0) mm on CoreXY with 80 microsteps/mm through inverted channels (as the
+  // original's gcode_stepasketch): a = −80 (x + y), b = −80 (x − y), counted per DIR-high step.
+  EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), -400);
+  EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), -400);
   // Z4 (pen up) at 50 servo steps per mm.
   EXPECT_EQ(simulation_->board("driver")->sent(2).forward[SIGNAL_E] -
                 static_cast<int64_t>(simulation_->board("driver")->sent(2).reverse[SIGNAL_E]),

@@ -27,15 +27,17 @@ TEST_F(StepASketchScenarioTest, EveryExpectationOfTheExampleHolds) {
 }
 
 TEST_F(StepASketchScenarioTest, MotorsEndAtTheHouseWindowCorner) {
-  // Pen (110, 85) mm: a = 80 × (110 + 85), b = 80 × (110 − 85) microsteps.
-  EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), 15600);
-  EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), 2000);
-  // Every step the board sent reached an enabled driver.
-  EXPECT_EQ(simulation_->stepper("driver", 'A')->forward_steps(), 52000u);
-  EXPECT_EQ(simulation_->stepper("driver", 'A')->reverse_steps(), 36400u);
+  // Pen (110, 85) mm through inverted channels: a = −80 × (110 + 85), b = −80 × (110 − 85)
+  // microsteps, counted +1 per step with DIR high.
+  EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), -15600);
+  EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), -2000);
+  // Every step the board sent reached an enabled driver. The knobs' path has 52,000 steps of a
+  // towards the page's +x/+y (DIR low) and 36,400 back.
+  EXPECT_EQ(simulation_->stepper("driver", 'A')->forward_steps(), 36400u);
+  EXPECT_EQ(simulation_->stepper("driver", 'A')->reverse_steps(), 52000u);
   EXPECT_EQ(simulation_->stepper("driver", 'A')->ignored_steps(), 0u);
-  EXPECT_EQ(simulation_->board("driver")->sent(0).forward[SIGNAL_E], 52000u);
-  EXPECT_EQ(simulation_->board("driver")->sent(0).reverse[SIGNAL_E], 36400u);
+  EXPECT_EQ(simulation_->board("driver")->sent(0).forward[SIGNAL_E], 36400u);
+  EXPECT_EQ(simulation_->board("driver")->sent(0).reverse[SIGNAL_E], 52000u);
 }
 
 TEST_F(StepASketchScenarioTest, PenDrawsFourStrokesAndEndsUp) {

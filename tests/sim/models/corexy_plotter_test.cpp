@@ -25,14 +25,17 @@ struct Plotter {
   CorexyPlotter plotter;
 };
 
+/// `count` steps in the AxiDraw's positive direction, which is DIR low (what a channel with
+/// invert_output() sends for a positive target, and an EiBotBoard's positive motor step).
 void steps(StepperDriver& driver, int count, SimTime time) {
-  for (int i = 0; i < (count < 0 ? -count : count); ++i) driver.on_step_rising(time, count > 0);
+  for (int i = 0; i < (count < 0 ? -count : count); ++i) driver.on_step_rising(time, count < 0);
 }
 
 void servo_steps(ServoBoard& servo, int count, SimTime time) {
   for (int i = 0; i < (count < 0 ? -count : count); ++i) servo.on_step_rising(time, count > 0);
 }
 
+// In the AxiDraw's positive motor steps (DIR low), the pen is at half their sum and difference.
 TEST(CorexyPlotter, PenPositionIsHalfTheSumAndHalfTheDifference) {
   Plotter rig;
   steps(rig.a, 800, 0);
@@ -47,12 +50,48 @@ TEST(CorexyPlotter, PenPositionIsHalfTheSumAndHalfTheDifference) {
   steps(rig.a, 200, 4);  // a = 12.5 mm
   steps(rig.b, 1200, 4);  // b = 5 mm
   rig.plotter.update(5);
-  EXPECT_DOUBLE_EQ(rig.plotter.a_mm(), 12.5);
-  EXPECT_DOUBLE_EQ(rig.plotter.b_mm(), 5.0);
+  EXPECT_DOUBLE_EQ(rig.plotter.a_mm(), -12.5);  // motor positions count DIR-high steps
+  EXPECT_DOUBLE_EQ(rig.plotter.b_mm(), -5.0);
   EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, 8.75);
   EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 3.75);
   EXPECT_EQ(rig.plotter.axis_mm(MachineAxis::kX), 8.75);
   EXPECT_EQ(rig.plotter.axis_mm(MachineAxis::kZ), std::nullopt);
+}
+
+// The real machine's convention (the original's sketches invert both channels so that +x runs
+// from motor A to motor B and +y away from the long axis): a step with DIR high moves the pen the
+// other way, so a non-inverted channel's positive target runs towards −x.
+TEST(CorexyPlotter, DirHighOnBothMotorsMovesThePenTowardsMinusX) {
+  Plotter rig;
+  for (int i = 0; i < 800; ++i) {
+    rig.a.on_step_rising(0, true);
+    rig.b.on_step_rising(0, true);
+  }
+  rig.plotter.update(1);
+  EXPECT_DOUBLE_EQ(rig.plotter.a_mm(), 10.0);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, -10.0);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 0.0);
+  for (int i = 0; i < 1600; ++i) rig.a.on_step_rising(2, false);  // a = −10 mm, b = 10 mm
+  rig.plotter.update(3);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, 0.0);
+  EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 10.0);
+}
+
+// A motor plugged in the other way round turns backwards for the same DIR, so only its half of
+// the pen's motion flips: the same steps that moved the pen along +x now move it along +y.
+TEST(CorexyPlotter, AReversedMotorFlipsItsContributionOnly) {
+  StepperDriverSettings normal = Plotter::enabled();
+  StepperDriverSettings reversed = Plotter::enabled();
+  reversed.reversed = true;
+  StepperDriver a(normal);
+  StepperDriver b(reversed);
+  CorexyPlotter plotter(a, b, nullptr);
+  steps(a, 800, 0);
+  steps(b, 800, 0);
+  plotter.update(1);
+  EXPECT_DOUBLE_EQ(b.position_steps(), 800.0);  // DIR high on a reversed motor
+  EXPECT_DOUBLE_EQ(plotter.pen_position().x_mm, 0.0);
+  EXPECT_DOUBLE_EQ(plotter.pen_position().y_mm, 10.0);
 }
 
 TEST(CorexyPlotter, PenIsDownWhileTheServoPulseIsBelowTheThreshold) {

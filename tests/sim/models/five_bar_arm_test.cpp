@@ -66,11 +66,13 @@ TEST(FiveBarArm, CountsFollowTheStylusAlongItsPath) {
   EXPECT_NEAR(corner.y_mm, home.y_mm + 60, 1e-9);
   const PenPoint end = arm.stylus_at(from_seconds(10));
   EXPECT_NEAR(end.x_mm, home.x_mm + 30, 1e-9);
-  // Turning the counts back into angles and running them forward lands within a count's reach.
+  // Turning the counts back into angles (they count down as an angle grows, as the original's
+  // pantograph sketches assume by inverting both encoders) and running them forward lands within
+  // a count's reach.
   for (const SimTime time : {from_seconds(2), from_seconds(4), from_seconds(7), from_seconds(8.5), from_seconds(10)}) {
     const double per_count = 2 * kPi / 40000;
-    const double a1 = settings.home_right_rad + (arm.right_count_at(time) + 0.5) * per_count;
-    const double a2 = settings.home_left_rad + (arm.left_count_at(time) + 0.5) * per_count;
+    const double a1 = settings.home_right_rad - (arm.right_count_at(time) - 0.5) * per_count;
+    const double a2 = settings.home_left_rad - (arm.left_count_at(time) - 0.5) * per_count;
     PenPoint seen;
     ASSERT_TRUE(arm.stylus_for(a1, a2, seen));
     const PenPoint truth = arm.stylus_at(time);

@@ -24,6 +24,20 @@ TEST(StepperDriver, CountsOneMicrostepPerRisingEdgeSignedByDir) {
   EXPECT_EQ(driver.last_step_time(), 240 * kMicrosecond);
 }
 
+TEST(StepperDriver, AReversedMotorTurnsAgainstDirButTheDriverCountsAsWired) {
+  StepperDriverSettings settings;
+  settings.enabled = true;
+  settings.reversed = true;
+  StepperDriver driver(settings);
+  for (int i = 0; i < 5; ++i) driver.on_step_rising(i * 40 * kMicrosecond, true);
+  for (int i = 5; i < 7; ++i) driver.on_step_rising(i * 40 * kMicrosecond, false);
+  EXPECT_TRUE(driver.reversed());
+  EXPECT_EQ(driver.position_steps(), -3);
+  EXPECT_DOUBLE_EQ(driver.revolutions(), -3.0 / 3200);
+  EXPECT_EQ(driver.forward_steps(), 5u);  // DIR high, as the driver saw it
+  EXPECT_EQ(driver.reverse_steps(), 2u);
+}
+
 TEST(StepperDriver, StartsDisabledByDefaultAndIgnoresSteps) {
   StepperDriver driver;
   EXPECT_FALSE(driver.enabled());

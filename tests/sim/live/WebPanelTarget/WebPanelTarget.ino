@@ -37,8 +37,10 @@ void setup() {
   enable_drivers();
   channel_a.begin(&output_a, SIGNAL_E);
   channel_a.set_ratio(25.4, 2032);
+  channel_a.invert_output();  // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
+  channel_b.invert_output();  // +y away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   planner.begin();
