@@ -13,5 +13,13 @@ constexpr int kExitBadInput = 2;
 constexpr int kExitExpectationFailed = 3;
 /// `stepdance decode`: the capture ends mid-stream; what it holds was decoded and reported.
 constexpr int kExitTruncatedCapture = 4;
+/// A sketch crashed (a signal in its code) or ended the program (exit(), abort()): the run
+/// stopped there, its outputs were written and its expectations were not checked.
+constexpr int kExitSketchFailed = 5;
+/// A sketch ran past the watchdog's wall-clock budget without simulated time moving.
+constexpr int kExitSketchHung = 6;
+/// A batch run cut short by SIGINT or SIGTERM exits with 128 + the signal's number (130, 143),
+/// after writing its outputs.
+constexpr int kExitSignalBase = 128;
 
 }  // namespace stepdance::cli

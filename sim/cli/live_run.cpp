@@ -1,14 +1,14 @@
 // run_live: terminals, signal handling and wall-clock pacing around Simulation::run_until.
 #include "live_run.hpp"
 
-#include <signal.h>
-
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
 #include <thread>
 
+#include "board/entry_monitor.hpp"
 #include "pty_port.hpp"
 
 namespace stepdance::cli {
@@ -17,30 +17,23 @@ namespace {
 /// Simulated time between exchanges with the terminals: 1 ms, about a USB full-speed frame.
 constexpr sim::SimTime kExchangeNs = sim::kMillisecond;
 
-volatile sig_atomic_t stop_requested = 0;
+/// The longest the pacing sleeps at once, so a stop request is seen within this (at any speed).
+constexpr auto kLongestSleep = std::chrono::milliseconds(20);
 
-void request_stop(int) { stop_requested = 1; }
+// Ctrl-C and SIGTERM reach the run through Containment (containment.hpp).
+bool stop_requested() { return sim::EntryMonitor::requested() != sim::EscapeCause::kNone; }
 
-/// Installs the stop handler for SIGINT and SIGTERM while in scope, restoring the old ones after.
-class StopSignals {
- public:
-  StopSignals() {
-    stop_requested = 0;
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
+// Sleeps until `due`, in short naps, while nobody asked the run to stop; returns the seconds
+// it slept.
+double sleep_until(std::chrono::steady_clock::time_point due) {
+  const auto started = std::chrono::steady_clock::now();
+  while (!stop_requested()) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= due) break;
+    std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(due - now, kLongestSleep));
   }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
 
 struct BoardLink {
   sim::SimBoard* board;
@@ -76,25 +69,30 @@ void exchange(std::vector<BoardLink>& links) {
 
 }  // namespace
 
-void run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options) {
+LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options) {
   std::vector<BoardLink> links = open_terminals(simulation, boards, options);
   for (size_t i = 0; i < links.size(); ++i) std::printf("serial %s: %s\n", boards[i].c_str(), links[i].port->path().c_str());
   std::fflush(stdout);
-  StopSignals signals;
   const auto wall_start = std::chrono::steady_clock::now();
   const sim::SimTime sim_start = simulation.now();
-  while (!stop_requested && simulation.now() < simulation.duration()) {
+  double slept_s = 0;
+  // Every simulated millisecond, wherever the run is (a sketch waiting in delay() included).
+  simulation.pace_every(kExchangeNs, [&](sim::SimTime now) {
     exchange(links);
-    simulation.run_until(simulation.now() + kExchangeNs);
-    if (options.speed <= 0.0) continue;
-    const double due_s = sim::to_seconds(simulation.now() - sim_start) / options.speed;
-    const auto due = wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                      std::chrono::duration<double>(due_s));
-    std::this_thread::sleep_until(due);
+    if (options.speed <= 0.0) return;
+    const double due_s = sim::to_seconds(now - sim_start) / options.speed;
+    slept_s += sleep_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                            std::chrono::duration<double>(due_s)));
+  });
+  exchange(links);
+  while (!stop_requested() && simulation.now() < simulation.duration() && !simulation.stopped()) {
+    simulation.run_until(simulation.duration());
   }
   exchange(links);
   for (BoardLink& link : links) link.board->on_console_bytes(nullptr);
   simulation.end_now();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return {wall_s, std::max(0.0, wall_s - slept_s)};
 }
 
 }  // namespace stepdance::cli

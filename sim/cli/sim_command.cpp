@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "console_echo.hpp"
+#include "containment.hpp"
 #include "exit_codes.hpp"
 #include "live_run.hpp"
 #include "progress_bar.hpp"
@@ -26,7 +27,12 @@ namespace ranges = sim::scenario::ranges;
 struct CheckedNumbers {
   std::optional<double> duration_s;
   std::optional<double> csv_interval_ms;
+  std::optional<double> watchdog_s;
 };
+
+/// --watchdog-s: from a tenth of a second (tests) to a day; 10 s unless given.
+constexpr sim::scenario::NumberRange kWatchdogS{0.1, 86400, false, "s"};
+constexpr double kDefaultWatchdogS = 10;
 
 /// Checks an optional number option; false (message on stderr) when it is given and bad.
 bool check_number(const char* option, const std::string& text, const sim::scenario::NumberRange& range,
@@ -40,7 +46,8 @@ bool check_number(const char* option, const std::string& text, const sim::scenar
 
 bool check_numbers(const SimCommandOptions& options, CheckedNumbers& numbers) {
   return check_number("--duration", options.duration_s, ranges::kDurationS, numbers.duration_s) &&
-         check_number("--csv-interval-ms", options.csv_interval_ms, ranges::kCsvIntervalMs, numbers.csv_interval_ms);
+         check_number("--csv-interval-ms", options.csv_interval_ms, ranges::kCsvIntervalMs, numbers.csv_interval_ms) &&
+         check_number("--watchdog-s", options.watchdog_s, kWatchdogS, numbers.watchdog_s);
 }
 
 /// Reads --speed and --serial-link; false (with a message on stderr) when one is malformed.
@@ -81,6 +88,7 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, cons
   if (!options.vcd_file.empty()) sim_options.vcd_file = absolute_path(options.vcd_file);
   if (!options.csv_file.empty()) sim_options.csv_file = absolute_path(options.csv_file);
   sim_options.csv_interval_ms = numbers.csv_interval_ms;
+  sim_options.live = options.live;
   if (options.live) {
     // Runs until interrupted (or --duration); the terminals carry the console: nothing echoed.
     if (!numbers.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
@@ -97,17 +105,59 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, cons
   return sim_options;
 }
 
-void print_report(const sim::SimulationReport& report, bool quiet) {
+// A stopped sketch is reported whatever --quiet says: the run failed, or was cut short.
+void print_stop(const sim::SimulationReport& report) {
+  if (!report.sketch_stop) return;
+  std::cerr << report.sketch_stop->message() << "\n";
+  for (size_t i = 0; i < report.sketch_stop->backtrace.size(); ++i) {
+    std::cerr << "  #" << i << " " << report.sketch_stop->backtrace[i] << "\n";
+  }
+}
+
+const char* result_label(const sim::ExpectationResult& result) {
+  if (!result.checked) return "NOT RUN ";
+  return result.met ? "ok      " : "FAILED  ";
+}
+
+// `live`: a live run's wall-clock time and computing time (zeros for a batch run, which computes
+// all the time).
+void print_report(const sim::SimulationReport& report, bool quiet, const LiveTiming& live) {
   for (const sim::ExpectationResult& result : report.expectations) {
-    if (!result.met || !quiet) std::cout << (result.met ? "ok      " : "FAILED  ") << result.message << "\n";
+    if (!result.met || !quiet) std::cout << result_label(result) << result.message << "\n";
   }
   if (quiet) return;
   const double simulated_s = sim::to_seconds(report.simulated_ns);
-  char line[160];
-  std::snprintf(line, sizeof line, "simulated %.3f s in %.3f s of wall time (%.0fx real time)\n", simulated_s,
-                report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
+  char line[200];
+  if (live.wall_s > 0) {
+    std::snprintf(line, sizeof line,
+                  "simulated %.3f s in %.3f s of wall time (live; %.3f s of it computing, %.1f %%)\n", simulated_s,
+                  live.wall_s, live.computing_s, 100.0 * live.computing_s / live.wall_s);
+  } else {
+    std::snprintf(line, sizeof line, "simulated %.3f s in %.3f s of wall time (%.0fx real time)\n", simulated_s,
+                  report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
+  }
   std::cout << line;
   for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
+}
+
+int exit_status(const sim::SimulationReport& report) {
+  if (report.sketch_stop) {
+    switch (report.sketch_stop->cause) {
+      case sim::EscapeCause::kHung:
+        return kExitSketchHung;
+      case sim::EscapeCause::kCrashed:
+      case sim::EscapeCause::kEnded:
+        return kExitSketchFailed;
+      default:
+        break;
+    }
+  }
+  if (report.interrupted_by != 0) return kExitSignalBase + report.interrupted_by;
+  if (report.sketch_stop && report.sketch_stop->cause == sim::EscapeCause::kInterrupted &&
+      !report.all_expectations_met()) {
+    return kExitExpectationFailed;
+  }
+  return report.all_expectations_met() ? kExitOk : kExitExpectationFailed;
 }
 
 }  // namespace
@@ -117,7 +167,8 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
       "sim",
       "Run a simulation: the boards' sketches (compiled for the host, cached), devices, cables and machine "
       "described by a scenario file, then write the drawing, VCD, CSV and summary it asks for and check its "
-      "[[expect]] entries. Exit status: 0 ok, 1 failure, 2 bad scenario or sketch, 3 an expectation failed.");
+      "[[expect]] entries. Exit status: 0 ok, 1 failure, 2 bad scenario or sketch, 3 an expectation failed, 5 a "
+      "sketch crashed or ended the program, 6 a sketch hung, 130/143 interrupted by SIGINT/SIGTERM.");
   sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
       ->required();
   sim.add_option("--out", options.output_directory, "write the output files into this folder instead");
@@ -135,6 +186,9 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
                "as `serial <board>: <path>`; outputs are written when the run ends");
   sim.add_option("--speed", options.speed, "live: simulated seconds per wall-clock second, or 'max' (default 1)");
   sim.add_option("--serial-link", options.serial_links, "live: also make a symlink to a board's terminal (board=path)");
+  sim.add_option("--watchdog-s", options.watchdog_s,
+                 "stop a sketch that runs this many seconds of wall time without simulated time moving (default 10, "
+                 "in " + describe(kWatchdogS) + ")");
   sim.add_option("--cache", options.cache_directory,
                  "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)");
   return sim;
@@ -163,11 +217,13 @@ int run_sim_command(const SimCommandOptions& options) {
     return error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;
   }
   sim::SimulationReport report;
+  Containment containment(numbers.watchdog_s.value_or(kDefaultWatchdogS));
+  LiveTiming live_timing;
   try {
     if (options.live) {
       std::vector<std::string> boards;
       for (const auto& board : loaded.scenario.boards) boards.push_back(board.name);
-      run_live(*simulation, boards, live);
+      live_timing = run_live(*simulation, boards, live);
     }
     report = simulation->finish();
   } catch (const std::exception& failure) {
@@ -178,8 +234,9 @@ int run_sim_command(const SimCommandOptions& options) {
   echo.flush();
   progress.clear();
   std::cout.flush();
-  print_report(report, options.quiet);
-  return report.all_expectations_met() ? kExitOk : kExitExpectationFailed;
+  print_stop(report);
+  print_report(report, options.quiet, live_timing);
+  return exit_status(report);
 }
 
 }  // namespace stepdance::cli

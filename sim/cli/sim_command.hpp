@@ -23,6 +23,7 @@ struct SimCommandOptions {
   bool live = false;                ///< pace to the wall clock, serial ports on terminals
   std::string speed = "1";          ///< live: simulated seconds per wall second, or "max"
   std::vector<std::string> serial_links;  ///< live: `board=path` symlinks to the terminals
+  std::string watchdog_s = "10";    ///< wall seconds a sketch may run with simulated time stuck
 };
 
 /// Adds the `sim` subcommand to `app`, filling `options` when it is parsed.
@@ -30,7 +31,8 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options);
 
 /// Loads the scenario, builds the sketches, runs and writes the outputs. Returns kExitOk,
 /// kExitBadInput (scenario or sketch errors, printed as `file:line: message`), kExitFailure
-/// (an output could not be written) or kExitExpectationFailed.
+/// (an output could not be written), kExitExpectationFailed, kExitSketchFailed, kExitSketchHung
+/// or kExitSignalBase + the signal that interrupted a batch run.
 int run_sim_command(const SimCommandOptions& options);
 
 }  // namespace stepdance::cli

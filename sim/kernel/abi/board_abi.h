@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 6u
+#define STEPDANCE_BOARD_ABI_VERSION 7u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -111,24 +111,43 @@ typedef struct StepdanceHostV1 {
    * …) and the transfer's time on the wire in *wire_ns; simulated time does not move. */
   int (*i2c_transfer)(void* context, uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length,
                       uint8_t* read, size_t read_length, int64_t* wire_ns);
+
+  /* ---- the sketch ended the program: exit(), abort() and their kin, called by sketch code ----
+   * `how` is a StepdanceSketchEnd, `status` the exit status (0 for abort). The board then escapes
+   * from the entry point it is in (see StepdanceBoardV1.escape); outside any entry point the
+   * host must end the process itself, so this call does not return there. */
+  void (*sketch_ended)(void* context, int how, int status);
 } StepdanceHostV1;
+
+/* How a sketch ended the program. */
+enum StepdanceSketchEnd { STEPDANCE_END_EXIT = 0, STEPDANCE_END_QUICK_EXIT = 1, STEPDANCE_END_ABORT = 2 };
 
 /* Entry points of one board, called by the simulator's scheduler. Each takes the current
  * simulated time (ns), which the board keeps for hal::micros_now() and cycles_now() until the
- * next entry: within one entry time only moves through delay_ns(). */
+ * next entry: within one entry time only moves through delay_ns().
+ *
+ * The five run_ and deliver_ entries return 0 when the sketch's code returned, or the non-zero
+ * code passed to escape() when the simulator stopped it there (the run ended inside a delay, the
+ * sketch crashed, hung, exited or was interrupted). Entries nest (a delay() inside loop() runs
+ * the frame ticks), and escape() leaves the innermost one only. */
 typedef struct StepdanceBoardV1 {
   uint32_t abi_version;
   /* The module the sketch selected (`#define module_driver` / `module_basic`): 0 driver, 1 basic. */
   int module;
-  void (*run_setup)(int64_t now_ns);
-  void (*run_frame_tick)(int64_t now_ns);
-  void (*run_khz_tick)(int64_t now_ns);
-  void (*run_loop)(int64_t now_ns);
+  int (*run_setup)(int64_t now_ns);
+  int (*run_frame_tick)(int64_t now_ns);
+  int (*run_khz_tick)(int64_t now_ns);
+  int (*run_loop)(int64_t now_ns);
   /* The port's capture ISR: hands one pulse to the sink registered by port_in_begin(). */
-  void (*deliver_pulse)(int64_t now_ns, uint8_t port, const StepdanceCapturedPulseV1* pulse);
+  int (*deliver_pulse)(int64_t now_ns, uint8_t port, const StepdanceCapturedPulseV1* pulse);
   void (*read_stats)(StepdanceBoardStatsV1* stats);
   /* Calls emit once per counter of every registered block. */
   void (*read_counters)(StepdanceCounterFnV1 emit, void* context);
+  /* Leaves the innermost entry point now, which then returns `code` (non-zero). Called by the
+   * host from inside the board's code: a host callback the sketch called, or a signal handler
+   * that interrupted the sketch's own code (never one that interrupted a C library call). Does
+   * nothing outside every entry point. */
+  void (*escape)(int code);
 } StepdanceBoardV1;
 
 /* The one exported symbol. Returns NULL if host->abi_version differs from the board's. */

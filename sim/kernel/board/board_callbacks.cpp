@@ -1,14 +1,25 @@
 // C trampolines from the board ABI into SimBoard.
 #include "board/board_callbacks.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+
 #include "board/sim_board.hpp"
 
 namespace stepdance::sim {
 namespace {
 
-SimBoard& of(void* context) { return *static_cast<SimBoard*>(context); }
+// Every callback starts here, so a stop requested while the sketch runs (a hang, Ctrl-C) takes
+// effect at the sketch's next call into the simulator, before the simulator's state is touched.
+SimBoard& of(void* context) {
+  EntryMonitor::escape_if_requested();
+  return *static_cast<SimBoard*>(context);
+}
 int ok() { return static_cast<int>(Status::kOk); }
 int no_such_pin() { return static_cast<int>(Status::kNoSuchPin); }
+/// The process's status when a sketch ends the program where it cannot be stopped: the
+/// command line's "a sketch failed" (sim/cli/exit_codes.hpp).
+constexpr int kExitSketchOutsideEntry = 5;
 
 }  // namespace
 
@@ -20,6 +31,7 @@ StepdanceHostV1 BoardCallbacks::table() {
   add_input_callbacks(host);
   add_console_callbacks(host);
   add_i2c_callbacks(host);
+  add_end_callback(host);
   return host;
 }
 
@@ -27,8 +39,10 @@ void BoardCallbacks::add_timer_callbacks(StepdanceHostV1& host) {
   host.timer_start = [](void* c, int timer, uint32_t period_us) { return of(c).start_timer(timer, period_us); };
   host.timers_stop = [](void* c) { of(c).stop_timers(); };
   host.delay_ns = [](void* c, int64_t duration_ns) {
-    of(c).delay(duration_ns);
-    return of(c).scheduler_.now();
+    SimBoard& board = of(c);
+    board.delay(duration_ns);
+    if (board.run_is_over()) EntryMonitor::escape(EscapeCause::kRunOver);
+    return board.scheduler_.now();
   };
 }
 
@@ -101,6 +115,17 @@ void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
   host.file_close = [](void* c, int handle) {
     if (of(c).storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
     return static_cast<int>(of(c).storage_.close(handle));
+  };
+}
+
+void BoardCallbacks::add_end_callback(StepdanceHostV1& host) {
+  host.sketch_ended = [](void* c, int how, int status) {
+    EntryMonitor::record_sketch_end(how, status);
+    EntryMonitor::escape(EscapeCause::kEnded);
+    // Outside every entry point (a global destructor, say) nothing can be left: end here.
+    std::fprintf(stderr, "board '%s': the sketch ended the program outside setup() and loop()\n",
+                 of(c).name().c_str());
+    std::_Exit(kExitSketchOutsideEntry);
   };
 }
 

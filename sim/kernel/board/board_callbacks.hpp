@@ -16,6 +16,7 @@ struct BoardCallbacks {
   static void add_input_callbacks(StepdanceHostV1& host);    ///< quadrature, ADC, GPIO
   static void add_console_callbacks(StepdanceHostV1& host);  ///< faults, console, storage
   static void add_i2c_callbacks(StepdanceHostV1& host);      ///< the QWIIC buses
+  static void add_end_callback(StepdanceHostV1& host);       ///< exit() and abort() in a sketch
 };
 
 }  // namespace stepdance::sim

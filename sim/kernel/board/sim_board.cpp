@@ -59,10 +59,34 @@ const BoardDefinition& SimBoard::definition() const {
 
 void SimBoard::power_on(SimTime time_ns) { scheduler_.schedule(setup_event_, time_ns); }
 
+// ---- entering the sketch ----------------------------------------------------------------------
+
+template <typename Call>
+void SimBoard::enter(SketchEntry entry, Call call) {
+  if (frozen_) return;
+  int code = 0;
+  {
+    EntryMonitor::Scope running(*this, entry, board_->escape, &library_->code());
+    code = call();
+  }
+  if (code != 0) escaped(entry);
+}
+
+void SimBoard::escaped(SketchEntry entry) {
+  frozen_ = true;
+  frame_timer_.stop();
+  khz_timer_.stop();
+  scheduler_.cancel(loop_event_);
+  const EscapeRecord record = EntryMonitor::take_record();
+  if (record.cause == EscapeCause::kRunOver) return;  // the run ended while the sketch waited
+  scheduler_.stop();
+  if (stop_listener_) stop_listener_(describe_stop(record, name(), entry, scheduler_.now(), library_.get()));
+}
+
 void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
   SimBoard& board = static_cast<SetupEvent&>(event).owner;
-  board.board_->run_setup(scheduler.now());
-  scheduler.schedule(board.loop_event_, scheduler.now());
+  board.enter(SketchEntry::kSetup, [&] { return board.board_->run_setup(scheduler.now()); });
+  if (!board.frozen_) scheduler.schedule(board.loop_event_, scheduler.now());
 }
 
 void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
@@ -70,8 +94,9 @@ void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
   const SimTime started = event.time();
   board.in_loop_pass_ = true;
   board.i2c_ns_this_pass_ = 0;
-  board.board_->run_loop(scheduler.now());
+  board.enter(SketchEntry::kLoop, [&] { return board.board_->run_loop(scheduler.now()); });
   board.in_loop_pass_ = false;
+  if (board.frozen_) return;
   if (board.i2c_ns_this_pass_ > 0) {
     ++board.i2c_timing_.loop_passes_with_i2c;
     board.i2c_timing_.max_loop_pass_ns = std::max(board.i2c_timing_.max_loop_pass_ns, board.i2c_ns_this_pass_);
@@ -111,14 +136,14 @@ void SimBoard::frame_tick(void* context, SimTime time) {
   board.play_pending_frames(time);
   if (board.tick_listener_) board.tick_listener_(time);
   board.in_isr_ = true;
-  board.board_->run_frame_tick(time);
+  board.enter(SketchEntry::kFrameTick, [&] { return board.board_->run_frame_tick(time); });
   board.in_isr_ = false;
 }
 
 void SimBoard::khz_tick(void* context, SimTime time) {
   auto& board = *static_cast<SimBoard*>(context);
   board.in_isr_ = true;
-  board.board_->run_khz_tick(time);
+  board.enter(SketchEntry::kKhzTick, [&] { return board.board_->run_khz_tick(time); });
   board.in_isr_ = false;
 }
 
@@ -142,13 +167,19 @@ void SimBoard::play_pending_frames(SimTime start_ns) {
   pending_ports_ = 0;
 }
 
+// The rest of the world runs for the delay, but never past the run's end: a sketch waiting
+// there (`while (1) delay(1000);`) is left in its delay when the run ends (see BoardCallbacks).
 void SimBoard::delay(SimTime duration_ns) {
   if (in_isr_) {
     ++delays_in_isr_;
     return;
   }
-  scheduler_.run_until(scheduler_.now() + (duration_ns > 0 ? duration_ns : 0));
+  const SimTime wanted = scheduler_.now() + (duration_ns > 0 ? duration_ns : 0);
+  scheduler_.run_until(std::min(wanted, end_ns_));
+  EntryMonitor::note_progress();
 }
+
+bool SimBoard::run_is_over() const { return scheduler_.stopped() || scheduler_.now() >= end_ns_; }
 
 // ---- storage: loop only; a slow card holds the loop while frames run on -----------------------
 
@@ -198,7 +229,7 @@ void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
   const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks,
                                            captured.dir_high ? uint8_t{1} : uint8_t{0}, captured.extra_periods};
   in_isr_ = true;
-  board_->deliver_pulse(scheduler_.now(), port, &delivered);
+  enter(SketchEntry::kCapture, [&] { return board_->deliver_pulse(scheduler_.now(), port, &delivered); });
   in_isr_ = false;
 }
 
@@ -296,6 +327,12 @@ size_t SimBoard::write_console(const uint8_t* data, size_t length) {
     console_line_.clear();
   }
   return length;
+}
+
+void SimBoard::flush_console_line() {
+  if (console_line_.empty()) return;
+  if (console_listener_) console_listener_(console_line_);
+  console_line_.clear();
 }
 
 int SimBoard::read_console() {

@@ -17,6 +17,7 @@
 #include "models/i2c_bus.hpp"
 #include "models/sd_card.hpp"
 #include "scheduler/periodic_timer.hpp"
+#include "board/sketch_stop.hpp"
 #include "scheduler/scheduler.hpp"
 #include "stepdance/boards/board.hpp"
 #include "stepdance/protocol/pulse_decoder.hpp"
@@ -76,6 +77,11 @@ class SimBoard {
 
   /// Runs setup() at `time_ns`, then loop() every loop period.
   void power_on(SimTime time_ns);
+  /// Called when the simulator had to stop this board's sketch (a crash, exit(), a hang, an
+  /// interrupt). The board runs no more sketch code after that, and the scheduler stops.
+  void on_sketch_stop(std::function<void(const SketchStop&)> listener) { stop_listener_ = std::move(listener); }
+  /// Whether the sketch runs no more: it was stopped, or the run ended inside one of its delays.
+  bool frozen() const { return frozen_; }
 
   // ---- wiring: the world feeding the board ----
   /// The quadrature decoder `index` (0 = ENC1) counts what `counts` says at each read.
@@ -104,6 +110,9 @@ class SimBoard {
   void send_console(const std::string& bytes);
   /// Calls `listener` with every complete line the sketch prints (without the line ending).
   void on_console_line(std::function<void(const std::string&)> listener);
+  /// Hands the line the sketch has begun but not ended to the line listener (at the run's end,
+  /// or after a quiet while), as if it had ended.
+  void flush_console_line();
   /// Calls `listener` with the sketch's console bytes as they are written, unchanged (the live
   /// simulator forwards them to a pseudo-terminal).
   void on_console_bytes(std::function<void(const uint8_t*, size_t)> listener);
@@ -200,6 +209,12 @@ class SimBoard {
     SimBoard& owner;
   };
 
+  /// Runs one entry point of the sketch (`call` returns its code) unless the board is frozen;
+  /// an escape freezes it and, for anything but the end of the run, reports the stop.
+  template <typename Call>
+  void enter(SketchEntry entry, Call call);
+  void escaped(SketchEntry entry);
+
   static void frame_tick(void* context, SimTime time);
   static void khz_tick(void* context, SimTime time);
   void play_pending_frames(SimTime start_ns);
@@ -209,6 +224,9 @@ class SimBoard {
   int start_timer(int timer_id, uint32_t period_us);
   void stop_timers();
   void delay(SimTime duration_ns);
+  /// True once the run has reached its end or was stopped: a delay() must not return to the
+  /// sketch then.
+  bool run_is_over() const;
   int32_t read_quadrature(uint8_t index);
   void write_quadrature(uint8_t index, int32_t count);
   uint32_t adc_samples(uint8_t pin) const;
@@ -259,6 +277,8 @@ class SimBoard {
   uint64_t storage_calls_in_isr_ = 0;
   std::function<void(SimTime)> tick_listener_;
   SimTime end_ns_ = INT64_MAX;
+  bool frozen_ = false;
+  std::function<void(const SketchStop&)> stop_listener_;
 };
 
 }  // namespace stepdance::sim

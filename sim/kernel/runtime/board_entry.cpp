@@ -3,6 +3,7 @@
 
 #include "IntervalTimer.h"
 #include "abi/board_abi.h"
+#include "runtime/entry_guard.hpp"
 #include "runtime/host_link.hpp"
 #include "runtime/sim_hal.hpp"
 #include "stepdance/boards/board.hpp"
@@ -62,33 +63,40 @@ void read_counters(StepdanceCounterFnV1 emit, void* context) {
                           &forwarder);
 }
 
-void run_setup(int64_t now) {
+// Each entry runs guarded, so the simulator can leave it early (see EntryGuard).
+int run_setup(int64_t now) {
   set_now_ns(now);
-  ::setup();
+  return EntryGuard::run([] { ::setup(); });
 }
-void run_frame_tick(int64_t now) {
+int run_frame_tick(int64_t now) {
   set_now_ns(now);
-  run_frame_isr();
-  arduino::run_interval_timers();
+  return EntryGuard::run([] {
+    run_frame_isr();
+    arduino::run_interval_timers();
+  });
 }
-void run_khz_tick(int64_t now) {
+int run_khz_tick(int64_t now) {
   set_now_ns(now);
-  run_khz_isr();
-  arduino::run_interval_timers();
+  return EntryGuard::run([] {
+    run_khz_isr();
+    arduino::run_interval_timers();
+  });
 }
-void run_loop(int64_t now) {
+int run_loop(int64_t now) {
   set_now_ns(now);
-  arduino::run_interval_timers();  // also before dance_start(), when no frame ticks run
-  ::loop();
+  return EntryGuard::run([] {
+    arduino::run_interval_timers();  // also before dance_start(), when no frame ticks run
+    ::loop();
+  });
 }
-void deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pulse) {
+int deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pulse) {
   set_now_ns(now);
-  deliver_captured_pulse(port, *pulse);
+  return EntryGuard::run([port, pulse] { deliver_captured_pulse(port, *pulse); });
 }
 
 StepdanceBoardV1 board_table = {
     STEPDANCE_BOARD_ABI_VERSION, 0, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
-    &read_counters,
+    &read_counters, &EntryGuard::escape,
 };
 
 }  // namespace

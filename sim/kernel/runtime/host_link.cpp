@@ -1,6 +1,8 @@
 // The board-side link to the simulator: the current callback table and the detached stand-ins.
 #include "runtime/host_link.hpp"
 
+#include <unistd.h>
+
 namespace stepdance::sim_runtime {
 namespace {
 
@@ -35,6 +37,11 @@ int no_i2c_device(void*, uint8_t, uint8_t, const uint8_t*, size_t, uint8_t*, siz
   *wire_ns = 0;
   return 3;  // stepdance::hal::I2cResult::kAddressNack
 }
+// exit() or abort() from a global constructor: no simulator to tell yet, so say it here.
+void ended_while_loading(void*, int, int) {
+  static const char kMessage[] = "stepdance: a sketch ended the program (exit() or abort()) while loading\n";
+  (void)!write(2, kMessage, sizeof kMessage - 1);
+}
 
 const StepdanceHostV1 kDetached = {
     STEPDANCE_BOARD_ABI_VERSION,
@@ -42,7 +49,7 @@ const StepdanceHostV1 kDetached = {
     &refuse_input, &refuse_port,      &zero_count,   &ignore_count, &refuse_port,  &zero_adc,
     &zero_samples, &refuse_mode,      &low_pin,      &ignore_write, &ignore,       &ignore_fault,
     &swallow,      &nothing_available, &no_byte,     &refuse_open,  &refuse_read,  &refuse_write,
-    &refuse_close, &refuse_i2c_begin, &no_i2c_device,
+    &refuse_close, &refuse_i2c_begin, &no_i2c_device, &ended_while_loading,
 };
 
 const StepdanceHostV1* current = &kDetached;

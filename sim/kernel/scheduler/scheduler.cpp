@@ -93,9 +93,9 @@ bool Scheduler::step(SimTime end) {
 }
 
 void Scheduler::run_until(SimTime end) {
-  while (step(end)) {
+  while (!stopped_ && step(end)) {
   }
-  if (end > now_) now_ = end;
+  if (!stopped_ && end > now_) now_ = end;
 }
 
 }  // namespace stepdance::sim

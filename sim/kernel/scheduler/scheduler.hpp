@@ -36,6 +36,11 @@ class Scheduler {
   /// a handler (an Arduino delay() runs the rest of the world this way); the nested call never
   /// moves the clock backwards.
   void run_until(SimTime end);
+  /// Ends the run at the current event: every run_until(), nested ones included, returns after
+  /// the event being handled, leaving now() at its time. For good: a stopped scheduler runs no
+  /// more events through run_until().
+  void stop() { stopped_ = true; }
+  bool stopped() const { return stopped_; }
   /// Handles the single earliest event if its time is ≤ `end`; returns false if there is none.
   bool step(SimTime end);
 
@@ -56,6 +61,7 @@ class Scheduler {
   SimTime now_ = 0;
   uint64_t next_sequence_ = 0;
   uint64_t handled_ = 0;
+  bool stopped_ = false;
 };
 
 }  // namespace stepdance::sim

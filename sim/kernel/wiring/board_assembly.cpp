@@ -113,6 +113,7 @@ bool Simulation::build_boards(SimulationError& error) {
     slot.board->on_console_line([this, &config](const std::string& line) {
       if (options_.console) options_.console(config.name, line);
     });
+    slot.board->on_sketch_stop([this](const SketchStop& stop) { on_sketch_stop(stop); });
     build_sockets(slot);
   }
   return true;

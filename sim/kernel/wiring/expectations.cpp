@@ -343,4 +343,12 @@ std::vector<ExpectationResult> evaluate_expectations(const scenario::Scenario& s
   return results;
 }
 
+std::vector<ExpectationResult> unchecked_expectations(const scenario::Scenario& scenario, const std::string& reason) {
+  std::vector<ExpectationResult> results;
+  for (const Expectation& expectation : scenario.expectations) {
+    results.push_back({false, place(scenario, expectation) + "not checked: " + reason, false});
+  }
+  return results;
+}
+
 }  // namespace stepdance::sim

@@ -186,6 +186,16 @@ nlohmann::json Simulation::summary_extra() const {
   add_board_extras(extra);
   extra["cables"] = cable_extras();
   if (machine_) extra["machine"] = machine_extra();
+  // A stopped run says so: its figures are those of the moment it stopped.
+  if (sketch_stop_) {
+    extra["stopped"] = {{"board", sketch_stop_->board},
+                        {"entry", describe(sketch_stop_->entry)},
+                        {"what", sketch_stop_->what},
+                        {"time_s", to_seconds(sketch_stop_->time_ns)},
+                        {"backtrace", sketch_stop_->backtrace}};
+  } else if (interrupted_by_ != 0 && !options_.live) {
+    extra["stopped"] = {{"what", interrupted_by_ == 15 ? "SIGTERM" : "SIGINT"}, {"time_s", to_seconds(scheduler_.now())}};
+  }
   return extra;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 #include "stepdance/protocol/signals.hpp"
@@ -73,14 +74,63 @@ std::unique_ptr<Simulation> Simulation::create(const scenario::Scenario& scenari
 void Simulation::run_until(SimTime end_ns) {
   const SimTime end = std::min(end_ns, duration_);
   const auto started = std::chrono::steady_clock::now();
-  for (;;) {
+  while (!stopped_early()) {
     const SimTime slice_end = std::min(end, scheduler_.now() + kSliceNs);
     scheduler_.run_until(slice_end);
-    if (vcd_) vcd_->flush(slice_end);
-    if (options_.progress) options_.progress(slice_end, duration_);
+    if (vcd_) vcd_->flush(std::min(slice_end, scheduler_.now()));
+    if (options_.progress) options_.progress(std::min(slice_end, scheduler_.now()), duration_);
     if (slice_end >= end) break;
   }
   wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+// ---- stopping early -------------------------------------------------------------------------------
+
+namespace {
+std::string seconds_text(SimTime time_ns) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6f s", to_seconds(time_ns));
+  return text;
+}
+}  // namespace
+
+void Simulation::on_sketch_stop(const SketchStop& stop) {
+  if (!sketch_stop_) sketch_stop_ = stop;
+}
+
+bool Simulation::stopped_early() {
+  if (EntryMonitor::requested() == EscapeCause::kInterrupted && interrupted_by_ == 0) {
+    interrupted_by_ = EntryMonitor::requested_detail();
+    scheduler_.stop();
+  }
+  if (!scheduler_.stopped()) return false;
+  if (duration_ > scheduler_.now()) end_now();
+  return true;
+}
+
+std::string Simulation::unchecked_reason() const {
+  if (sketch_stop_ && !(options_.live && sketch_stop_->cause == EscapeCause::kInterrupted)) {
+    return "the run was stopped (" + sketch_stop_->message() + ")";
+  }
+  if (interrupted_by_ != 0 && !options_.live) return "the run was interrupted at t = " + seconds_text(scheduler_.now());
+  return "";
+}
+
+void Simulation::pace_every(SimTime period_ns, std::function<void(SimTime)> tick) {
+  pacer_ = std::move(tick);
+  pacer_timer_ = std::make_unique<PeriodicTimer>(
+      scheduler_,
+      [](void* context, SimTime time) {
+        auto& simulation = *static_cast<Simulation*>(context);
+        simulation.pacer_(time);
+        simulation.stopped_early();
+      },
+      this);
+  pacer_timer_->start(scheduler_.now() + period_ns, period_ns);
+}
+
+void Simulation::flush_console_lines() {
+  for (BoardSlot& slot : boards_) slot.board->flush_console_line();
 }
 
 void Simulation::after_frames(SimTime frame_start_ns) {
@@ -124,10 +174,13 @@ void Simulation::end_now() {
 
 SimulationReport Simulation::finish() {
   run_until(duration_);
+  flush_console_lines();
   if (machine_) update_machine(duration_);
   SimulationReport report;
   report.simulated_ns = scheduler_.now();
   report.wall_s = wall_s_;
+  report.sketch_stop = sketch_stop_;
+  report.interrupted_by = options_.live ? 0 : interrupted_by_;
   if (vcd_) {
     vcd_->close(duration_);
     report.files.push_back(vcd_path_);
@@ -152,7 +205,9 @@ SimulationReport Simulation::finish() {
     write_summary_file(report);
     report.files.push_back(output_path(scenario_.output.summary));
   }
-  report.expectations = evaluate_expectations(scenario_, *this);
+  const std::string unchecked = unchecked_reason();
+  report.expectations =
+      unchecked.empty() ? evaluate_expectations(scenario_, *this) : unchecked_expectations(scenario_, unchecked);
   add_storage_violations(report);
   return report;
 }

@@ -39,6 +39,9 @@ struct SimulationOptions {
   std::optional<std::string> output_directory;
   /// False skips the VCD even if the scenario asks for one.
   bool write_vcd = true;
+  /// A live run: Ctrl-C or SIGTERM end it normally (expectations are checked) instead of cutting
+  /// it short.
+  bool live = false;
   /// Write the VCD (or CSV) here, whatever the scenario says (exact paths, not moved by
   /// output_directory). A VCD asked for this way records every output port and every cabled
   /// input port when the scenario names no vcd_ports.
@@ -66,6 +69,12 @@ struct SimulationError {
 struct SimulationReport {
   SimTime simulated_ns = 0;
   double wall_s = 0;
+  /// The sketch the simulator had to stop (a crash, exit(), a hang, an interrupt inside its
+  /// code), if any: the run ended there.
+  std::optional<SketchStop> sketch_stop;
+  /// SIGINT or SIGTERM when the run was cut short by one (0 if not, or in a live run, where
+  /// that is how a run ends).
+  int interrupted_by = 0;
   /// Files written, in the order written.
   std::vector<std::string> files;
   std::vector<ExpectationResult> expectations;
@@ -100,10 +109,17 @@ class Simulation {
   /// Makes the current time the end of the run (a live run interrupted by the user), so
   /// finish() writes everything up to now. Context: between run_until() calls.
   void end_now();
+  /// Calls `tick` with the time every `period_ns` of simulated time from now on, wherever the
+  /// run is, a sketch's delay() included: the live front end exchanges bytes with its terminals
+  /// and paces to the wall clock there. A stop request seen after a tick (Ctrl-C) stops the run.
+  /// One pacer per simulation; a second call replaces the first.
+  void pace_every(SimTime period_ns, std::function<void(SimTime)> tick);
 
   // ---- what tests and tools look at ----
   SimTime now() const { return scheduler_.now(); }
   SimTime duration() const { return duration_; }
+  /// Whether the run was stopped before its end (a stopped sketch, an interrupt).
+  bool stopped() const { return scheduler_.stopped(); }
   /// A board by name (null if none).
   SimBoard* board(const std::string& name) const;
   /// The stepper / servo in `board`'s socket `port` (null if none).
@@ -162,6 +178,14 @@ class Simulation {
 
   // Running.
   static void on_serial_action(void* context, SimTime time, const size_t& action_index);
+  /// A board's sketch was stopped: the run ends now (the first stop is the one reported).
+  void on_sketch_stop(const SketchStop& stop);
+  /// Whether the run was stopped before its end (a sketch stop, an interrupt); ends it now if so.
+  bool stopped_early();
+  /// Why the expectations cannot be checked, or "" when they can.
+  std::string unchecked_reason() const;
+  /// Shows every board's unfinished console line (printed without a newline).
+  void flush_console_lines();
   void after_frames(SimTime frame_start_ns);
   void update_machine(SimTime time_ns);
 
@@ -177,6 +201,8 @@ class Simulation {
   scenario::Scenario scenario_;
   SimulationOptions options_;
   SimTime duration_ = 0;
+  std::optional<SketchStop> sketch_stop_;
+  int interrupted_by_ = 0;
   std::string output_directory_;
   std::string vcd_path_;  ///< "" = no VCD
   std::string csv_path_;  ///< "" = no CSV
@@ -198,6 +224,8 @@ class Simulation {
   std::unique_ptr<CsvSampler> csv_;
   OneShotPool<size_t> serial_actions_;
   std::vector<std::unique_ptr<HostClient>> hosts_;
+  std::function<void(SimTime)> pacer_;
+  std::unique_ptr<PeriodicTimer> pacer_timer_;
   double wall_s_ = 0;
 };
 
