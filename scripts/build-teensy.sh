@@ -25,10 +25,20 @@
 #
 # Third-party headers (the stand-in or the real core and its libraries) are system headers
 # (-isystem): their warnings cannot fail our -Werror build.
+#
+# STEPDANCE_TEENSY_LTO=1 builds everything as the "Faster with LTO" entry of Teensyduino's boards.txt
+# would (it is commented out for the Teensy 4.x): -O2 -flto -fno-fat-lto-objects, linked with
+# -fuse-linker-plugin; output in build-teensy-lto/ or build-teensyduino-lto/. Not in CI; what LTO
+# is worth is in docs/benchmarks-target.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensy}
+case ${STEPDANCE_TEENSY_LTO:-0} in
+  0) lto_suffix="" lto_compile=() lto_link=() ;;
+  1) lto_suffix=-lto lto_compile=(-flto -fno-fat-lto-objects) lto_link=(-flto -fno-fat-lto-objects -fuse-linker-plugin) ;;
+  *) echo "build-teensy: FAILED: STEPDANCE_TEENSY_LTO must be 0 or 1" >&2; exit 1 ;;
+esac
+out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensy$lto_suffix}
 stand_in=targets/teensy/stand-in
 ld_dir=targets/teensy/ld
 teensyduino=${STEPDANCE_TEENSYDUINO:-}
@@ -38,7 +48,7 @@ third_party_includes=(-isystem "$stand_in")
 if [ -n "$teensyduino" ]; then
   core_dir=$teensyduino/cores/teensy4
   [ -f "$core_dir/imxrt.h" ] || { echo "build-teensy: FAILED: $core_dir/imxrt.h not found" >&2; exit 1; }
-  out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensyduino}
+  out=${STEPDANCE_TEENSY_BUILD_DIR:-build-teensyduino$lto_suffix}
   third_party_includes=(-isystem "$core_dir")
   for lib in SD SdFat SPI Wire; do
     lib_dir=$teensyduino/libraries/$lib
@@ -55,13 +65,13 @@ fail() {
 }
 
 for tool in c++ arm-none-eabi-g++ arm-none-eabi-gcc arm-none-eabi-size arm-none-eabi-objcopy arm-none-eabi-objdump \
-  arm-none-eabi-nm c++filt cmake; do
+  arm-none-eabi-nm arm-none-eabi-gcc-nm arm-none-eabi-gcc-ar c++filt cmake; do
   command -v "$tool" >/dev/null || fail "$tool is missing (run scripts/setup.sh)"
 done
 
 mcu=(-mcpu=cortex-m7 -mfpu=fpv5-d16 -mfloat-abi=hard -mthumb)
 # What Teensyduino passes for a Teensy 4.x at 600 MHz, "Faster" optimisation, plus our warnings.
-common=("${mcu[@]}" -O2 -g -ffunction-sections -fdata-sections -Wall -Wextra -Werror -Wundef -Wshadow
+common=("${mcu[@]}" -O2 "${lto_compile[@]}" -g -ffunction-sections -fdata-sections -Wall -Wextra -Werror -Wundef -Wshadow
   -D__IMXRT1062__ -DF_CPU=600000000 -DARDUINO=10819 -DTEENSYDUINO=159 -DLAYOUT_US_ENGLISH -Isrc
   "${third_party_includes[@]}")
 cxx_flags=(-std=gnu++17 -fno-exceptions -fno-rtti)
@@ -106,7 +116,7 @@ third_party_compile() {
   shift 2
   up_to_date "$object" && return 0
   mkdir -p "$(dirname "$object")"
-  local flags=("${mcu[@]}" -O2 -g -ffunction-sections -fdata-sections -w -D__IMXRT1062__ -DF_CPU=600000000
+  local flags=("${mcu[@]}" -O2 "${lto_compile[@]}" -g -ffunction-sections -fdata-sections -w -D__IMXRT1062__ -DF_CPU=600000000
     -DARDUINO=10819 -DTEENSYDUINO=159 -DLAYOUT_US_ENGLISH "${third_party_includes[@]}" "$@" "${dep_flags[@]}")
   case $source in
     *.c) arm-none-eabi-gcc "${flags[@]}" "${c_flags[@]}" -c "$source" -o "$object" ;;
@@ -293,7 +303,7 @@ image_inputs() {
 backend_present() {
   # The Teensy backend defines the stepdance::hal functions; until it lands they stay undefined.
   local objects=("$@")
-  arm-none-eabi-nm --defined-only "${objects[@]}" | grep ' T _ZN9stepdance3hal' >/dev/null
+  arm-none-eabi-gcc-nm --defined-only "${objects[@]}" | grep ' T _ZN9stepdance3hal' >/dev/null
 }
 
 # link_elf ELF BOARD FLAGS_AND_OBJECTS...: links an image as Teensyduino does (unused sections
@@ -302,10 +312,10 @@ link_elf() {
   local elf=$1 board=$2
   shift 2
   if [ -n "$teensyduino" ]; then  # Teensyduino's own link line (platform.txt)
-    arm-none-eabi-gcc "${mcu[@]}" -O2 -Wl,--gc-sections,--relax -Wl,--no-warn-rwx-segments \
+    arm-none-eabi-gcc "${mcu[@]}" -O2 "${lto_link[@]}" -Wl,--gc-sections,--relax -Wl,--no-warn-rwx-segments \
       "-T$core_dir/${core_script[$board]}" "-Wl,-Map=${elf%.elf}.map" -o "$elf" "$@" -lm -lstdc++
   else
-    arm-none-eabi-g++ "${mcu[@]}" -O2 -nostartfiles --specs=nano.specs -Wl,--gc-sections \
+    arm-none-eabi-g++ "${mcu[@]}" -O2 "${lto_link[@]}" -nostartfiles --specs=nano.specs -Wl,--gc-sections \
       -Wl,--no-warn-rwx-segments "-L$ld_dir" "-T${board_script[$board]}" "-Wl,-Map=${elf%.elf}.map" \
       -o "$elf" "$@" -lm
   fi
@@ -418,7 +428,7 @@ heap_symbols() {
 
 status=0
 for object in "${all_objects[@]}"; do
-  hits=$(arm-none-eabi-nm -u "$object" | awk '{print $2}' | grep -E "$forbidden" || true)
+  hits=$(arm-none-eabi-gcc-nm -u "$object" | awk '{print $2}' | grep -E "$forbidden" || true)  # reads LTO objects too
   if [ -n "$hits" ]; then
     echo "build-teensy: FORBIDDEN: $object references" $hits >&2
     status=1
@@ -440,7 +450,14 @@ echo "build-teensy: no malloc/free, operator new/delete or exception symbols in 
 # objects' deleting destructors name the core's operator delete).
 probe_dir="$out/teensy41-serial/heap-probe"
 read -r -a probe_library <<<"${config_objects[teensy41-serial]}"
-for probe in sd_library_probe sdfs_probe; do
+probes=(sd_library_probe sdfs_probe)
+if [ ${#lto_compile[@]} -gt 0 ]; then
+  # With LTO the stand-in's _sbrk is optimised away before newlib's _sbrk_r, linked after it, asks
+  # for it, so a probe that allocates does not link at all. The images are checked all the same.
+  echo "build-teensy: heap probes not linked with LTO (an allocating sketch does not link against the stand-in)"
+  probes=()
+fi
+for probe in "${probes[@]}"; do
   compile "targets/teensy/heap-probe/$probe.cpp" "$probe_dir/$probe.o" -DARDUINO_TEENSY41 -DUSB_SERIAL
   mapfile -t probe_inputs < <(image_inputs teensy41-serial "$probe_dir/$probe.o" "${probe_library[@]}")
   link_elf "$probe_dir/$probe.elf" teensy41 "${probe_inputs[@]}" || fail "linking the heap probe $probe"
@@ -449,8 +466,9 @@ for probe in sd_library_probe sdfs_probe; do
   echo "build-teensy: the no-heap check catches the heap probe $probe:" $hits
 done
 
-# Storage links only into sketches that record or play back (SdFat's volume symbols mark it).
-sd_linked() { arm-none-eabi-nm "$1" | grep 'FsVolume5begin' >/dev/null; }
+# Storage links only into sketches that record or play back (the backend's card type marks it; its
+# vtable and destructors keep their names with link-time optimisation too).
+sd_linked() { arm-none-eabi-nm "$1" | grep '13SdCardBuiltin' >/dev/null; }
 ! sd_linked "$out/teensy41-serial/StepASketch.elf" || fail "StepASketch links SD card storage it never uses"
 sd_linked "$out/teensy41-serial/AxiDrawRecorder.elf" || fail "AxiDrawRecorder does not link SD card storage"
 echo "build-teensy: SD card storage links only into sketches that use it (AxiDrawRecorder yes, StepASketch no)"

@@ -105,7 +105,8 @@ extern "C" __attribute__((naked, section(".startup"))) void stand_in_reset_handl
       "b stand_in_start");
 }
 
-extern "C" __attribute__((section(".startup"))) void stand_in_start() {
+// `used`: only the reset handler's assembly names it, which link-time optimisation cannot see.
+extern "C" __attribute__((section(".startup"), used)) void stand_in_start() {
   reg(kCpacr) |= kCp10Cp11Full;
   __asm__ volatile("dsb\n\tisb" ::: "memory");
 
