@@ -2,8 +2,9 @@
 # Counts Cortex-M7 instructions per frame of a benchmark graph under QEMU (mps2-an500) and turns
 # them into an estimated share of the frame at 600 MHz (40 us, or STEPDANCE_BENCH_FRAME_PERIOD_US:
 # 10, 20, 25 or 40). Method: docs/benchmarks-target.md; periods: docs/high-speed.md.
-# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|harmonograph|clay_texturizer|axidraw_wave|pantograph]
-#        (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|Release|...)
+# Usage: bench/measure_target_frame.sh [frames] [step_a_sketch|step_a_sketch_tbi|gcode_step_a_sketch|harmonograph|clay_texturizer|axidraw_wave|pantograph]
+#        (STEPDANCE_QEMU_BUILD_TYPE=MinSizeRel|RelWithDebInfo|...; STEPDANCE_QEMU_LTO=1 compiles the core
+#        and the manual backend with -flto -fno-fat-lto-objects, as Teensyduino's LTO settings do)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames=${1:-20000}
@@ -11,13 +12,16 @@ workload=${2:-step_a_sketch}
 build_type=${STEPDANCE_QEMU_BUILD_TYPE:-MinSizeRel}
 period_us=${STEPDANCE_BENCH_FRAME_PERIOD_US:-40}
 period_suffix=$([ "$period_us" = 40 ] && echo "" || echo "-${period_us}us")
-build_dir=${STEPDANCE_QEMU_BENCH_DIR:-build-qemu-m7-bench-$build_type-$workload$period_suffix}
+lto=${STEPDANCE_QEMU_LTO:-0}
+case $lto in 0) lto_option=OFF lto_suffix="" ;; 1) lto_option=ON lto_suffix=-lto ;;
+  *) echo "bench: STEPDANCE_QEMU_LTO must be 0 or 1, got '$lto'" >&2; exit 2 ;; esac
+build_dir=${STEPDANCE_QEMU_BENCH_DIR:-build-qemu-m7-bench-$build_type$lto_suffix-$workload$period_suffix}
 budget_cycles=$((period_us * 600))         # the frame period at 600 MHz (24 000 at 40 us)
 run_frame_symbol=_ZN9stepdance6Engine9run_frameEv
 
 cmake -S targets/qemu-m7 -B "$build_dir" -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/cortex-m7.cmake" \
   -DCMAKE_BUILD_TYPE="$build_type" -DSTEPDANCE_BENCH_FRAMES="$frames" -DSTEPDANCE_BENCH_WORKLOAD="$workload" \
-  -DSTEPDANCE_BENCH_FRAME_PERIOD_US="$period_us" >/dev/null
+  -DSTEPDANCE_BENCH_FRAME_PERIOD_US="$period_us" -DSTEPDANCE_QEMU_LTO=$lto_option >/dev/null
 cmake --build "$build_dir" -j"$(nproc)" --target bench_frame >/dev/null
 image="$build_dir/bench_frame.elf"
 qemu=(qemu-system-arm -M mps2-an500 -cpu cortex-m7 -nographic -monitor none
@@ -95,7 +99,7 @@ if [ "$known" -ne $expected_known ] || [ $((known_ticks * 40 - expected_known)) 
 fi
 
 per_frame=$(awk -v t="$total" -v f="$frames" 'BEGIN { printf "%.1f", t / f }')
-echo "image: $image ($build_type, Cortex-M7 hard-float double)"
+echo "image: $image ($build_type$([ "$lto_option" = ON ] && echo ", LTO"), Cortex-M7 hard-float double)"
 echo "known loop (2 000 001 instructions): single-step trace $known, icount timer $((known_ticks * 40)) (+-40)"
 echo "frames measured: $frames"
 echo "instructions in the measured region: single-step trace $region, icount timer $icount_region (+-40)"

@@ -14,9 +14,13 @@
 //                micros()
 //                F_CPU_ACTUAL, F_BUS_ACTUAL       running core and peripheral bus clocks, in Hz
 //                IRQ_NUMBER_t, attachInterruptVector(irq, handler)   RAM vector table entry
-//     SdFat.h    SdFs: begin(SdioConfig(FIFO_SDIO)), remove; FsFile: open(volume, path, flags),
-//                read, write, close; O_RDONLY, O_WRONLY, O_CREAT, O_TRUNC, O_AT_END
+//     SdFat.h    SdioCard: begin(SdioConfig(FIFO_SDIO)), errorCode; FsVolume: begin(device),
+//                remove; FsFile: open(volume, path, flags), read, write, close; O_RDONLY,
+//                O_WRONLY, O_CREAT, O_TRUNC, O_AT_END
 //   Modelled, not used by the backend
+//     SdFat.h    SdFs: begin(SdioConfig) — SdFat's card and volume in one object, whose card
+//                objects' vtables name the global operator delete as the real ones do, so the
+//                no-heap check sees a sketch (or a backend change) that uses it
 //     SD.h       BUILTIN_SDCARD, FILE_READ, FILE_WRITE; File, SDClass SD: begin, open, remove —
 //                allocating its file objects on the heap like the real library, so the build's
 //                no-heap check sees a sketch (or a backend change) that uses it

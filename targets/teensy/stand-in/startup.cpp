@@ -5,6 +5,11 @@
 // 0x60001000 naming the entry point, then the program. Our configuration block is all zeros,
 // where a real image carries the parameters of the board's flash chip, so the boot ROM would
 // refuse this image: it exists to make the flash and RAM figures of the link realistic.
+//
+// The heap's system calls are here too, as the real core's startup.c holds _sbrk: the start-up
+// object always links (the entry point is in it), so newlib, which comes after the core archive on
+// the link line, finds them when an image allocates.
+#include <stddef.h>
 #include <stdint.h>
 
 extern void (*volatile stand_in_vectors_ram[176])();
@@ -100,7 +105,8 @@ extern "C" __attribute__((naked, section(".startup"))) void stand_in_reset_handl
       "b stand_in_start");
 }
 
-extern "C" __attribute__((section(".startup"))) void stand_in_start() {
+// `used`: only the reset handler's assembly names it, which link-time optimisation cannot see.
+extern "C" __attribute__((section(".startup"), used)) void stand_in_start() {
   reg(kCpacr) |= kCp10Cp11Full;
   __asm__ volatile("dsb\n\tisb" ::: "memory");
 
@@ -118,3 +124,35 @@ extern "C" __attribute__((section(".startup"))) void stand_in_start() {
   for (;;) {
   }
 }
+
+// ---- The real core's heap and the newlib system calls behind it --------------------------------
+// For an image that allocates (the SD library does). Teensyduino gives malloc the free part of RAM2
+// (OCRAM); the model is a fixed arena there. Only an image that calls malloc or operator new links
+// any of this, and the build's no-heap check then rejects that image: these exist so the link
+// completes and the check can see it.
+
+namespace {
+constexpr size_t kHeapBytes = 16 * 1024;
+alignas(8) __attribute__((section(".bss.dma"))) char heap_arena[kHeapBytes];
+size_t heap_used = 0;
+}  // namespace
+
+extern "C" {
+
+void* _sbrk(ptrdiff_t increment) {
+  const ptrdiff_t next = static_cast<ptrdiff_t>(heap_used) + increment;
+  if (next < 0 || static_cast<size_t>(next) > kHeapBytes) return reinterpret_cast<void*>(-1);
+  char* previous = heap_arena + heap_used;
+  heap_used = static_cast<size_t>(next);
+  return previous;
+}
+
+[[noreturn]] void _exit(int) {
+  for (;;) {
+  }
+}
+
+int _kill(int, int) { return -1; }
+int _getpid() { return 1; }
+
+}  // extern "C"
