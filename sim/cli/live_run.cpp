@@ -61,7 +61,7 @@ void exchange(std::vector<BoardLink>& links) {
   std::string received;
   for (BoardLink& link : links) {
     received.clear();
-    link.port->read_from_client(received);
+    link.port->read_from_client(received, link.board->console_input_room());
     if (!received.empty()) link.board->send_console(received);
     link.port->flush();
   }
@@ -89,7 +89,15 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
     simulation.run_until(simulation.duration());
   }
   exchange(links);
-  for (BoardLink& link : links) link.board->on_console_bytes(nullptr);
+  for (size_t i = 0; i < links.size(); ++i) {
+    links[i].board->on_console_bytes(nullptr);
+    const uint64_t dropped = links[i].port->dropped_bytes();
+    links[i].board->count_console_dropped(dropped);
+    if (dropped > 0) {
+      std::printf("serial %s: %llu bytes the board printed were dropped, oldest first (nobody read them)\n",
+                  boards[i].c_str(), static_cast<unsigned long long>(dropped));
+    }
+  }
   simulation.end_now();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return {wall_s, std::max(0.0, wall_s - slept_s)};

@@ -8,6 +8,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace stepdance::cli {
@@ -48,12 +49,14 @@ void PtyPort::link_as(const std::string& link) {
   link_ = link;
 }
 
-void PtyPort::read_from_client(std::string& out) {
+void PtyPort::read_from_client(std::string& out, size_t max_bytes) {
   char buffer[4096];
-  for (;;) {
-    const ssize_t count = read(master_, buffer, sizeof buffer);
+  size_t room = max_bytes;
+  while (room > 0) {
+    const ssize_t count = read(master_, buffer, room < sizeof buffer ? room : sizeof buffer);
     if (count > 0) {
       out.append(buffer, static_cast<size_t>(count));
+      room -= static_cast<size_t>(count);
       continue;
     }
     if (count < 0 && errno == EINTR) continue;
@@ -61,26 +64,31 @@ void PtyPort::read_from_client(std::string& out) {
   }
 }
 
+// Appends to the ring, dropping its oldest bytes (counted) when it is full.
 void PtyPort::write_to_client(const uint8_t* data, size_t length) {
-  const size_t room = kMaxPendingBytes - pending_.size();
-  const size_t kept = length < room ? length : room;
-  pending_.insert(pending_.end(), data, data + kept);
-  dropped_ += length - kept;
+  flush();
+  for (size_t i = 0; i < length; ++i) {
+    if (size_ == kMaxPendingBytes) {
+      head_ = (head_ + 1) % kMaxPendingBytes;
+      --size_;
+      ++dropped_;
+    }
+    pending_[(head_ + size_) % kMaxPendingBytes] = data[i];
+    ++size_;
+  }
   flush();
 }
 
+// Writes the ring's contiguous runs while the terminal takes them.
 void PtyPort::flush() {
-  size_t sent = 0;
-  while (sent < pending_.size()) {
-    const ssize_t count = write(master_, pending_.data() + sent, pending_.size() - sent);
-    if (count > 0) {
-      sent += static_cast<size_t>(count);
-      continue;
-    }
+  while (size_ > 0) {
+    const size_t run = std::min(size_, kMaxPendingBytes - head_);
+    const ssize_t count = write(master_, pending_.data() + head_, run);
     if (count < 0 && errno == EINTR) continue;
-    break;  // EAGAIN: the terminal's buffer is full until the client reads
+    if (count <= 0) return;  // EAGAIN: the terminal's buffer is full until the client reads
+    head_ = (head_ + static_cast<size_t>(count)) % kMaxPendingBytes;
+    size_ -= static_cast<size_t>(count);
   }
-  pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(sent));
 }
 
 }  // namespace stepdance::cli

@@ -14,12 +14,15 @@ namespace stepdance::cli {
 ///
 /// The port keeps a descriptor of its own on the terminal side, so a client may close and reopen
 /// it at any time without the master seeing a hang-up. Bytes the board writes while nobody reads
-/// wait in a buffer of kMaxPendingBytes; beyond that they are dropped and counted. Baud-rate and
-/// other settings a client makes are accepted (a pty moves bytes, not bits).
+/// fill the terminal's own buffer, then wait in ours of kMaxPendingBytes; beyond that the oldest
+/// are dropped and counted (a reader that comes back gets the newest). Bytes the client writes
+/// are read only as far as the caller has room, so a client that writes faster than the board
+/// reads is held back by the terminal (its writes block or return EAGAIN). Baud-rate and other
+/// settings a client makes are accepted (a pty moves bytes, not bits).
 /// Context: the live run's thread only.
 class PtyPort {
  public:
-  static constexpr size_t kMaxPendingBytes = 1 << 20;
+  static constexpr size_t kMaxPendingBytes = 64 * 1024;
 
   /// Opens the pair; throws std::runtime_error with the reason on failure.
   PtyPort();
@@ -33,8 +36,8 @@ class PtyPort {
   /// Throws std::runtime_error when it cannot be made.
   void link_as(const std::string& link);
 
-  /// Appends every byte the client has written since the last call to `out`.
-  void read_from_client(std::string& out);
+  /// Appends to `out` what the client has written since the last call, at most `max_bytes`.
+  void read_from_client(std::string& out, size_t max_bytes);
   /// Queues bytes for the client and sends what the terminal accepts now.
   void write_to_client(const uint8_t* data, size_t length);
   /// Sends queued bytes the terminal can take now.
@@ -47,7 +50,10 @@ class PtyPort {
   int keeper_ = -1;  // our own descriptor on the terminal side (see the class comment)
   std::string path_;
   std::string link_;
-  std::vector<uint8_t> pending_;
+  /// Bytes waiting for the client: a ring of kMaxPendingBytes, oldest at head_.
+  std::vector<uint8_t> pending_ = std::vector<uint8_t>(kMaxPendingBytes);
+  size_t head_ = 0;
+  size_t size_ = 0;
   uint64_t dropped_ = 0;
 };
 

@@ -94,7 +94,12 @@ void BoardCallbacks::add_input_callbacks(StepdanceHostV1& host) {
 void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
   host.enter_safe_state = [](void* c) { of(c).enter_safe_state(); };
   host.log_fault = [](void* c, const char* reason, const char* detail) {
-    of(c).faults_.push_back({of(c).scheduler_.now(), std::string(reason) + ": " + detail});
+    SimBoard& board = of(c);
+    if (board.faults_.size() < SimBoard::kFaultLogEntries) {
+      board.faults_.push_back({board.scheduler_.now(), std::string(reason) + ": " + detail});
+    } else {
+      ++board.faults_not_logged_;
+    }
   };
   host.console_write = [](void* c, const uint8_t* data, size_t length) { return of(c).write_console(data, length); };
   host.console_available = [](void* c) -> size_t {

@@ -33,12 +33,14 @@ SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<B
       khz_timer_(scheduler, &khz_tick, this),
       loop_event_(*this),
       setup_event_(*this),
+      console_quiet_event_(*this),
       storage_(options_.storage_dir),
       sd_timing_(options_.sd_card) {}
 
 SimBoard::~SimBoard() {
   scheduler_.cancel(loop_event_);
   scheduler_.cancel(setup_event_);
+  scheduler_.cancel(console_quiet_event_);
   frame_timer_.stop();
   khz_timer_.stop();
   library_.reset();  // the sketch's destructors may still call back: everything else is alive
@@ -307,26 +309,46 @@ void SimBoard::enter_safe_state() {
 
 void SimBoard::send_console(const std::string& bytes) { console_input_.insert(console_input_.end(), bytes.begin(), bytes.end()); }
 
+size_t SimBoard::console_input_room() const {
+  const size_t unread = console_input_.size() - console_read_position_;
+  return unread < kConsoleInputBytes ? kConsoleInputBytes - unread : 0;
+}
+
 void SimBoard::on_console_line(std::function<void(const std::string&)> listener) { console_listener_ = std::move(listener); }
 
 void SimBoard::on_console_bytes(std::function<void(const uint8_t*, size_t)> listener) {
   console_bytes_listener_ = std::move(listener);
 }
 
+// Keeps the newest kConsoleTextBytes, trimming in halves so the copying stays amortised.
+void SimBoard::keep_console_text(const uint8_t* data, size_t length) {
+  console_text_.append(reinterpret_cast<const char*>(data), length);
+  if (console_text_.size() <= 2 * kConsoleTextBytes) return;
+  const size_t excess = console_text_.size() - kConsoleTextBytes;
+  console_text_.erase(0, excess);
+  console_text_dropped_ += excess;
+}
+
 size_t SimBoard::write_console(const uint8_t* data, size_t length) {
   if (console_bytes_listener_) console_bytes_listener_(data, length);
-  console_text_.append(reinterpret_cast<const char*>(data), length);
+  keep_console_text(data, length);
   for (size_t i = 0; i < length; ++i) {
     const char c = static_cast<char>(data[i]);
     if (c == '\r') continue;
     if (c != '\n') {
       console_line_ += c;
+      if (console_line_.size() >= kConsoleLineBytes) flush_console_line();
       continue;
     }
     if (console_listener_) console_listener_(console_line_);
     console_line_.clear();
   }
+  if (!console_line_.empty()) scheduler_.schedule(console_quiet_event_, scheduler_.now() + kConsoleQuietNs);
   return length;
+}
+
+void SimBoard::ConsoleQuietEvent::fire(Event& event, Scheduler&) {
+  static_cast<ConsoleQuietEvent&>(event).owner.flush_console_line();
 }
 
 void SimBoard::flush_console_line() {

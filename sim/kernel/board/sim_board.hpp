@@ -106,8 +106,27 @@ class SimBoard {
   /// The run ends at `end_ns`: pulses falling after it are not counted as sent (they are cut
   /// off, like the VCD). Default: never.
   void set_end_time(SimTime end_ns) { end_ns_ = end_ns; }
-  /// Queues bytes for the sketch's Serial input.
+  /// The board's USB serial receive buffer: a Teensy 4 holds 8 packets of 512 bytes
+  /// (teensy4/usb_serial.c in PJRC's cores); a host cannot get further ahead of the sketch.
+  static constexpr size_t kConsoleInputBytes = 8 * 512;
+  /// What the sketch printed is kept for inspection up to this much (the newest; older is dropped
+  /// and counted), and a line longer than kConsoleLineBytes is handed on in pieces.
+  static constexpr size_t kConsoleTextBytes = 1 << 20;
+  static constexpr size_t kConsoleLineBytes = 4096;
+  /// A line left unfinished this long (simulated) is handed on as it is.
+  static constexpr SimTime kConsoleQuietNs = 100 * kMillisecond;
+
+  /// Queues bytes for the sketch's Serial input (scripted senders: the scenario bounds them).
   void send_console(const std::string& bytes);
+  /// Room left in the receive buffer: a live terminal is read no further than this, so a host
+  /// writing faster than the sketch reads is held back, as by a real board's USB.
+  size_t console_input_room() const;
+  /// Counts console bytes a live terminal dropped because nobody read them (the summary's
+  /// console entry reports them).
+  void count_console_dropped(uint64_t bytes) { console_dropped_bytes_ += bytes; }
+  uint64_t console_dropped_bytes() const { return console_dropped_bytes_; }
+  /// Bytes of console_text() dropped to keep it within kConsoleTextBytes.
+  uint64_t console_text_dropped_bytes() const { return console_text_dropped_; }
   /// Calls `listener` with every complete line the sketch prints (without the line ending).
   void on_console_line(std::function<void(const std::string&)> listener);
   /// Hands the line the sketch has begun but not ended to the line listener (at the run's end,
@@ -142,9 +161,12 @@ class SimBoard {
   /// Counter `name` of the block of class `block_class` whose "port" counter is `port` (an
   /// OutputPort or InputPort), or 0 if there is none.
   uint64_t port_counter(const std::string& block_class, uint8_t port, const std::string& name) const;
+  /// Faults reported, in order: the first kFaultLogEntries of them, and how many more came.
+  static constexpr size_t kFaultLogEntries = 1000;
   const std::vector<BoardFault>& faults() const { return faults_; }
+  uint64_t faults_not_logged() const { return faults_not_logged_; }
   bool in_safe_state() const { return safe_state_; }
-  /// Everything the sketch printed so far.
+  /// What the sketch printed so far: everything, or its newest kConsoleTextBytes.
   const std::string& console_text() const { return console_text_; }
   /// Time the sketch's loop spent in I2C transfers (their wire time at the bus clock): the most
   /// in any one loop pass, and in all. Transfers in setup() are counted apart.
@@ -208,6 +230,13 @@ class SimBoard {
     static void fire(Event& event, Scheduler& scheduler);
     SimBoard& owner;
   };
+  /// Hands on a console line left unfinished for kConsoleQuietNs.
+  struct ConsoleQuietEvent : Event {
+    explicit ConsoleQuietEvent(SimBoard& board) : Event(&fire), owner(board) {}
+    static void fire(Event& event, Scheduler& scheduler);
+    SimBoard& owner;
+  };
+  void keep_console_text(const uint8_t* data, size_t length);
 
   /// Runs one entry point of the sketch (`call` returns its code) unless the board is frozen;
   /// an escape freezes it and, for anything but the end of the run, reports the stop.
@@ -251,6 +280,7 @@ class SimBoard {
   PeriodicTimer khz_timer_;
   LoopEvent loop_event_;
   SetupEvent setup_event_;
+  ConsoleQuietEvent console_quiet_event_;
   bool in_isr_ = false;
   bool safe_state_ = false;
   std::array<PortState, kPorts> ports_{};
@@ -267,11 +297,14 @@ class SimBoard {
   std::vector<uint8_t> console_input_;
   size_t console_read_position_ = 0;
   std::string console_text_;
+  uint64_t console_text_dropped_ = 0;
+  uint64_t console_dropped_bytes_ = 0;
   std::string console_line_;
   std::function<void(const std::string&)> console_listener_;
   std::function<void(const uint8_t*, size_t)> console_bytes_listener_;
   BoardStorage storage_;
   std::vector<BoardFault> faults_;
+  uint64_t faults_not_logged_ = 0;
   uint64_t delays_in_isr_ = 0;
   SdCardTiming sd_timing_;
   uint64_t storage_calls_in_isr_ = 0;

@@ -89,9 +89,23 @@ void HostClient::take_received_line(bool cut) {
     rest = partial_line_.substr(kLongestLineBytes);
     partial_line_.resize(kLongestLineBytes);
   }
-  transcript_.push_back({scheduler_.now(), false, escaped(partial_line_), cut});
-  unread_.push_back(std::move(partial_line_));
+  keep({scheduler_.now(), false, escaped(partial_line_), cut});
+  if (!completed() && failure_.empty()) {  // a stopped client reads nothing more
+    if (unread_.size() == kUnreadLines) {
+      unread_.pop_front();
+      ++unread_dropped_;
+    }
+    unread_.push_back(std::move(partial_line_));
+  }
   partial_line_ = std::move(rest);
+}
+
+void HostClient::keep(Entry entry) {
+  if (transcript_.size() < kTranscriptEntries) {
+    transcript_.push_back(std::move(entry));
+  } else {
+    ++transcript_not_kept_;
+  }
 }
 
 void HostClient::tick(SimTime now) {
@@ -195,7 +209,7 @@ void HostClient::send(const std::string& bytes, SimTime now) {
     if (end == std::string::npos) end = bytes.size();
     const bool cut = end - begin > kLongestLineBytes;
     if (cut) end = begin + kLongestLineBytes;
-    transcript_.push_back({now, true, escaped(bytes.substr(begin, end - begin)), cut});
+    keep({now, true, escaped(bytes.substr(begin, end - begin)), cut});
     begin = cut ? end : end + 1;
   } while (begin < bytes.size());
 }
@@ -211,6 +225,10 @@ void HostClient::write_transcript(const std::string& path) const {
   for (const Entry& entry : transcript_) {
     out << format_ms(entry.time) << (entry.from_host ? " > " : " < ") << entry.text << '\n';
     if (entry.cut) out << "# the line above goes on in the next one (lines over " << kLongestLineBytes << " bytes are split)\n";
+  }
+  if (transcript_not_kept_ > 0) {
+    out << "# " << transcript_not_kept_ << " more lines not kept (a transcript keeps the first " << kTranscriptEntries
+        << ")\n";
   }
   if (!failure_.empty()) out << "# stopped: " << failure_ << '\n';
   out.close();

@@ -39,6 +39,12 @@ class HostClient {
     bool cut = false;       ///< the line went on past 1,000 bytes: the next entry continues it
   };
 
+  /// The transcript keeps the first kTranscriptEntries lines (later ones are counted, and the
+  /// file says how many); at most kUnreadLines received lines wait for a step (the oldest go
+  /// first, counted), and none once every step ran.
+  static constexpr size_t kTranscriptEntries = 100000;
+  static constexpr size_t kUnreadLines = 10000;
+
   HostClient(const scenario::HostClientConfig& config, SimBoard& board, Scheduler& scheduler);
   HostClient(const HostClient&) = delete;
   HostClient& operator=(const HostClient&) = delete;
@@ -54,6 +60,9 @@ class HostClient {
   const std::string& failure() const { return failure_; }
   /// Lines sent by stream steps that were acknowledged.
   size_t acknowledged_lines() const { return acknowledged_; }
+  /// Transcript lines not kept, and received lines dropped unread (see kTranscriptEntries).
+  uint64_t transcript_lines_not_kept() const { return transcript_not_kept_; }
+  uint64_t unread_lines_dropped() const { return unread_dropped_; }
 
   /// Writes the transcript: one entry per line, `<ms> > text` (sent) or `<ms> < text` (received).
   /// Throws std::runtime_error("path: …") when the file cannot be written.
@@ -73,6 +82,7 @@ class HostClient {
   void poll_if_due(const scenario::HostStep& step, SimTime now);
   void send(const std::string& bytes, SimTime now);
   void fail(const std::string& why);
+  void keep(Entry entry);
 
   const scenario::HostClientConfig& config_;
   SimBoard& board_;
@@ -81,6 +91,8 @@ class HostClient {
   std::vector<Entry> transcript_;
   std::string partial_line_;
   std::deque<std::string> unread_;  // received lines no step has consumed yet
+  uint64_t transcript_not_kept_ = 0;
+  uint64_t unread_dropped_ = 0;
   size_t step_ = 0;
   bool step_entered_ = false;
   SimTime step_started_ = 0;

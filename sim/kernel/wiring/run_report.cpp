@@ -111,7 +111,12 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
   nlohmann::json counters = nlohmann::json::object(), load = nlohmann::json::object();
   nlohmann::json motors = nlohmann::json::object(), i2c = nlohmann::json::object();
+  nlohmann::json console = nlohmann::json::object();
   for (const BoardSlot& slot : boards_) {
+    // Console output that was dropped (nobody read a live terminal), when there was any.
+    if (const uint64_t dropped = slot.board->console_dropped_bytes(); dropped > 0) {
+      console[slot.config->name] = {{"dropped_unread_bytes", dropped}};
+    }
     const StepdanceBoardStatsV1 stats = slot.board->stats();
     if (const SimBoard::I2cTiming& timing = slot.board->i2c_timing(); timing.transfers > 0) {
       i2c[slot.config->name] = {{"transfers", timing.transfers},
@@ -148,6 +153,7 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   }
   extra["faults"] = faults;
   extra["frames"] = frames;
+  if (!console.empty()) extra["console"] = console;
   extra["motors"] = motors;
   extra["counters"] = counters;
   extra["cpu_load"] = load;
