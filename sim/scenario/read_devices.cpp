@@ -21,7 +21,8 @@ constexpr std::pair<const char*, DeviceType> kTypeKeys[] = {
     {"release_s", DeviceType::kPendulum},
     {"pulses_per_revolution", DeviceType::kFiveBarArm}, {"left_connector", DeviceType::kFiveBarArm},
     {"path_mm", DeviceType::kFiveBarArm},              {"speed_mm_per_s", DeviceType::kFiveBarArm},
-    {"start_s", DeviceType::kFiveBarArm},
+    {"start_s", DeviceType::kFiveBarArm},              {"right_min_deg", DeviceType::kFiveBarArm},
+    {"left_max_deg", DeviceType::kFiveBarArm},
     {"position", DeviceType::kPotentiometer},        {"bounce_ms", DeviceType::kButton},
     {"pressed_level", DeviceType::kButton},          {"axis", DeviceType::kLimitSwitch},
     {"at_mm", DeviceType::kLimitSwitch},             {"side", DeviceType::kLimitSwitch},
@@ -134,6 +135,9 @@ void read_five_bar_arm(TableReader& reader, DeviceConfig& device, const ParseCon
   read_path(reader, device);
   read_bounded(reader, "speed_mm_per_s", NumberRange{0, 10000, true, "mm/s"}, device.speed_mm_per_s);
   read_bounded(reader, "start_s", run_time_range(context), device.start_s);
+  // The joints' home (−60°, 240°) must lie within the turn each stop allows.
+  read_bounded(reader, "right_min_deg", NumberRange{-420, -60, false, "°"}, device.right_min_deg);
+  read_bounded(reader, "left_max_deg", NumberRange{240, 600, false, "°"}, device.left_max_deg);
 }
 
 /// address: a 7-bit I2C address (0x08..0x77, the range not reserved by the I2C standard).

@@ -167,6 +167,10 @@ struct DeviceConfig {
   std::vector<double> dwell_s;  ///< per path point: [x, y, dwell_s] rests there (0 if omitted)
   double speed_mm_per_s = 20;
   double start_s = 0;
+  /// Five-bar arm: the joints' stops (degrees): the right joint stays at or above right_min_deg,
+  /// the left at or below left_max_deg (the original pantograph's, where its arms rest at power-on).
+  double right_min_deg = -60;
+  double left_max_deg = 240;
   /// OLED and Twist (on QWIIC0 or QWIIC1): the 7-bit I2C address (default 0x3C / 0x3F); the
   /// OLED also writes a picture of its screen at each of snapshots_s (and one at the end).
   int i2c_address = -1;

@@ -174,6 +174,9 @@ std::unique_ptr<SimDevice> build_five_bar_arm(const DeviceConfig& device, Device
   settings.dwell_s = device.dwell_s;
   settings.speed_mm_per_s = device.speed_mm_per_s;
   settings.start = from_seconds(device.start_s);
+  constexpr double kDegreeRad = 3.14159265358979323846 / 180;
+  settings.right_min_rad = device.right_min_deg * kDegreeRad;
+  settings.left_max_rad = device.left_max_deg * kDegreeRad;
   auto built = std::make_unique<ArmDevice>(std::make_unique<FiveBarArm>(settings));
   const FiveBarArm* model = &built->model();
   socket.board.connect_encoder(connector_index(device.connector), [model](SimTime time) { return model->right_count_at(time); });
