@@ -31,11 +31,13 @@ const char* describe(SketchEntry entry) {
 EntryMonitor::Scope::Scope(SimBoard& board, SketchEntry entry, void (*escape)(int), const CodeRanges* code) {
   // Deeper nesting than kMaxDepth cannot happen (a board allows 16 itself); it is not tracked.
   if (depth_ < kMaxDepth) running_[depth_] = Running{&board, entry, escape, code};
+  std::atomic_signal_fence(std::memory_order_release);  // a handler that sees the depth sees the entry
   depth_ = depth_ + 1;
 }
 
 EntryMonitor::Scope::~Scope() {
   depth_ = depth_ - 1;
+  std::atomic_signal_fence(std::memory_order_release);
   note_progress();
 }
 
