@@ -7,10 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.hpp"
+#include "usage.hpp"
 #include "decode/capture_decoder.hpp"
 #include "decode/decode_report.hpp"
 #include "decode/step_dir_pairs.hpp"
 #include "decode/vcd_reader.hpp"
+#include "scenario/decimal_text.hpp"
 #include "stepdance/core/frame_period.hpp"
 
 namespace stepdance::cli {
@@ -48,12 +50,13 @@ bool choose_pairs(const DecodeCommandOptions& options, const VcdCapture& capture
 
 bool decode_options(const DecodeCommandOptions& options, sim::DecodeOptions& decode, std::string& error) {
   decode.mode = options.mode == "step_dir" ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
-  if (!frame_period_supported(options.frame_period_us)) {
-    error = "--frame-us must be 10, 20, 25 or 40 (the sending board's frame period), got " +
-            std::to_string(options.frame_period_us);
+  const std::optional<int64_t> period_us = sim::scenario::parse_decimal_integer(options.frame_period_us);
+  if (!period_us || *period_us < 0 || *period_us > UINT32_MAX ||
+      !frame_period_supported(static_cast<uint32_t>(*period_us))) {
+    error = "--frame-us must be 10, 20, 25 or 40 (the sending board's frame period), got " + options.frame_period_us;
     return false;
   }
-  decode.frame_period_us = options.frame_period_us;
+  decode.frame_period_us = static_cast<uint32_t>(*period_us);
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
     if (options.axis == sim::signal_name(signal)) {
       decode.step_dir_signal = signal;
@@ -73,7 +76,7 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
       "from a logic analyzer): step counts per axis and direction, rejected pulses with reasons, "
       "frame statistics. Exit status: 0 ok, 2 bad capture or options, 4 the capture is truncated (it ends "
       "mid-stream: what it holds is decoded and reported, with a warning).");
-  decode.add_option("capture", options.capture_path, "the .vcd file")->required();
+  decode.add_option("capture", options.capture_path, "the .vcd file")->required()->check(non_empty_path());
   decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
   decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");
   decode.add_option("--mode", options.mode, "stepdance: axis by pulse width, DIR at the falling edge; "
@@ -84,6 +87,7 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
   decode.add_option("--frame-us", options.frame_period_us,
                     "the sending board's frame period in us (10, 20, 25 or 40): how pulses group into "
                     "frames for the frame statistics; the counts do not depend on it")
+      ->check(non_empty_number())
       ->capture_default_str();
   decode.add_flag("--json", options.json, "print JSON instead of text");
   return decode;

@@ -205,7 +205,7 @@ TEST(InlineErrors, DurationMustBePositive) {
   const LoadResult result = parse_scenario("seed = -3\nduration_s = 0\n", kFile);
   ASSERT_EQ(result.errors.size(), 2u);
   EXPECT_EQ(result.errors[0].to_string(), kFile + ":1: 'seed' must be in [0, 9,223,372,036,854,775,807], got -3");
-  EXPECT_EQ(result.errors[1].to_string(), kFile + ":2: 'duration_s' must be in (0, 86,400] s, got 0");
+  EXPECT_EQ(result.errors[1].to_string(), kFile + ":2: 'duration_s' must be in [1e-09, 86,400] s, got 0");
 }
 
 TEST(InlineErrors, TheBaseTextIsValid) {
