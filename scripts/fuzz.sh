@@ -27,6 +27,10 @@ declare -A target_flags=(
   [scenario]="-Isim -DTOML_HEADER_ONLY=1"
   [vcd]="-Isim"
 )
+# Libraries a target links besides its objects: reply patterns are RE2 (Debian's libre2-dev).
+declare -A target_libs=(
+  [scenario]="$(pkg-config --libs re2)"
+)
 # Longest input per target (default 4096 bytes): the example scenarios are up to 6 KB.
 declare -A target_max_len=([scenario]=8192)
 
@@ -82,7 +86,8 @@ build_targets() {
     local objects=()
     flags=${target_flags[$name]:-}
     while read -r source; do objects+=("$(object_of "$flags" "$source")"); done < <(sources_of "$name")
-    clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$build/${name}_fuzz"
+    # shellcheck disable=SC2086 # the libraries are words
+    clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" ${target_libs[$name]:-} -o "$build/${name}_fuzz"
   done
 }
 

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "scenario/parse_context.hpp"
-#include "scenario/regex_check.hpp"
+#include "scenario/line_pattern.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -35,7 +35,7 @@ std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool a
 bool read_pattern(TableReader& reader, const char* key, std::string& out) {
   const auto text = reader.string(key);
   if (!text) return false;
-  const std::string problem = regex_problem(*text);
+  const std::string problem = pattern_problem(*text);
   if (!problem.empty()) {
     reader.error(key, "'" + std::string(key) + "' " + problem);
     return false;

@@ -226,7 +226,7 @@ struct HostStep {
   /// recommended streaming).
   enum class Flow { kAck, kCharacterCounting } flow = Flow::kAck;
   int64_t buffer_bytes = 128;
-  /// Stream: the ECMAScript regex a received line must match (anywhere in it; anchor with ^…$)
+  /// Stream: the RE2 pattern (scenario/line_pattern.hpp) a received line must match (anywhere in it; anchor with ^…$)
   /// to acknowledge a line. Wait: the regex a received line must match to end the step.
   std::string pattern;
   /// Wait: the step fails (and the client stops) if no line matches for this long (ns).
