@@ -8,6 +8,7 @@
 #include <set>
 
 #include "loader/sketch_sources.hpp"
+#include "output/png_writer.hpp"
 #include "scenario/names.hpp"
 #include "wiring/device_kinds.hpp"
 #include "wiring/simulation.hpp"
@@ -56,6 +57,24 @@ std::vector<RunInput> scenario_inputs(const scenario::Scenario& scenario) {
   return inputs;
 }
 
+/// A plotter's page is its travel area: its PNG's size is known before the run. "" if it fits
+/// (or the page is the drawing's bounding box, known only at the end), else the error.
+std::string plotter_png_problem(const scenario::Scenario& scenario, const std::string& png) {
+  if (png.empty() || !scenario.machine) return {};
+  const auto* plotter = std::get_if<scenario::CorexyConfig>(&scenario.machine->kind);
+  if (plotter == nullptr) return {};
+  DrawingStyle page;
+  page.travel_width_mm = plotter->travel_x_mm;
+  page.travel_height_mm = plotter->travel_y_mm;
+  const std::string problem = png_size_problem(page, scenario.output.png_px_per_mm);
+  if (problem.empty()) return {};
+  char resolution[48];
+  std::snprintf(resolution, sizeof resolution, "%g", scenario.output.png_px_per_mm);
+  return at_line(scenario, scenario.machine->line) + ": at png_px_per_mm = " + resolution +
+         ", the plotter's page (travel_mm and a " + std::to_string(static_cast<int>(page.margin_mm)) +
+         " mm margin) is too large for a PNG: " + problem + " (lower png_px_per_mm or travel_mm, or set png = \"\")";
+}
+
 }  // namespace
 
 std::vector<PlannedOutput> Simulation::output_files() const {
@@ -96,6 +115,10 @@ std::vector<PlannedOutput> Simulation::output_files() const {
 }
 
 bool Simulation::prepare_outputs(SimulationError& error) const {
+  if (const std::string problem = plotter_png_problem(scenario_, output_path(scenario_.output.png)); !problem.empty()) {
+    error = {SimulationError::kBadInput, problem};
+    return false;
+  }
   const std::vector<PlannedOutput> files = output_files();
   if (const std::vector<std::string> conflicts = output_conflicts(files, scenario_inputs(scenario_)); !conflicts.empty()) {
     std::string message;

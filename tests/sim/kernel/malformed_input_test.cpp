@@ -72,6 +72,21 @@ TEST(MalformedScenarioTest, TimelineTimesBeyondAnyRun) {
                                         {33, "'hold_ms' must be a finite number"}});
 }
 
+// Found by hand (issue 27): travel_mm = [1e30, 1e30] ran the whole run and then failed drawing
+// the PNG, without a summary. Travel is bounded when the file is read, and a plotter's PNG,
+// whose page is its travel area, is sized before anything runs.
+TEST(MalformedScenarioTest, WholeRunLimitsAreCheckedBeforeTheRun) {
+  expect_refused("travel-huge.toml", {{16, "'travel_mm' must be two numbers in (0, 1,000,000] mm, e.g. [300, 218]"},
+                                      {17, "'start_mm' must be two numbers in [-1,000,000, 1,000,000] mm, e.g. [120.5, 80]"}});
+  const std::string path = kFixtures + "/canvas-huge.toml";
+  const CommandResult result = run("sim --quiet --cache " + kSketchCache + " " + path, "canvas");
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.err, path + ":15: at png_px_per_mm = 4, the plotter's page (travel_mm and a 10 mm margin) is too "
+                               "large for a PNG: the PNG would be 4,000,080 x 8,080 px; at most 32,767 px a side and "
+                               "64,000,000 px (lower png_px_per_mm or travel_mm, or set png = \"\")\n");
+  EXPECT_FALSE(std::filesystem::exists(kFixtures + "/never-written"));
+}
+
 // ---- the same numbers on the command line ------------------------------------------------------
 
 TEST(MalformedCommandLineTest, DurationFollowsTheFilesRule) {

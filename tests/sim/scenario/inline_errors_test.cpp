@@ -46,7 +46,7 @@ std::vector<InlineCase> cases() {
       {"machine_socket_reused_and_short_travel",
        "[machine]\ntype = \"corexy_plotter\"\nboard = \"driver\"\nmotor_b = \"A\"\ntravel_mm = [300]\n",
        {{9, "'motor_b' uses socket A, already used by 'motor_a'"},
-        {10, "'travel_mm' must be two numbers > 0, e.g. [300, 218]"}}},
+        {10, "'travel_mm' must be two numbers in (0, 1,000,000] mm, e.g. [300, 218]"}}},
       {"machine_two_roles_one_socket",
        "[machine]\ntype = \"polar\"\nboard = \"driver\"\nangle = \"B\"\nradius = \"B\"\n",
        {{10, "'radius' uses socket B, already used by 'angle'"}}},
