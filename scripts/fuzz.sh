@@ -19,7 +19,7 @@ declare -A target_sources=(
   [ebb]="core"
   [rpc]="core"
   [scenario]="sim/scenario"
-  [vcd]="sim/decode/vcd_reader.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
+  [vcd]="sim/decode/vcd_reader.cpp sim/decode/vcd_tokenizer.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
 )
 # Extra compiler flags: the simulator's readers see sim/; toml++ is compiled in from its header
 # (Debian's libtomlplusplus-dev) so the fuzzer also instruments the TOML parser.
