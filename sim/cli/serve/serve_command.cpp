@@ -97,7 +97,8 @@ nlohmann::json status_message(const serve::RequestRouter& router, const serve::W
            {{"clients", router.clients()}, {"forwarded", c.forwarded}, {"replied", c.replied},
             {"dropped", c.dropped}, {"refused", c.refused}, {"timed_out", c.timed_out},
             {"board_lines", c.board_lines}, {"messages_dropped", server.dropped_messages()},
-            {"connections_refused", server.refused_connections()}}}};
+            {"connections_refused", server.refused_connections()}, {"connections_open", server.open_connections()},
+            {"accept_failures", server.accept_failures()}}}};
 }
 
 /// Runs the loop: the link, router and server wired together, until a signal stops it.
