@@ -74,14 +74,7 @@ class VcdStreamReader::Parser {
  public:
   Parser(std::istream& in, std::string name) : in_(in), tokens_(in), name_(std::move(name)) {}
 
-  bool declarations_done() {
-    // Room for the most wires allowed, so the tables never grow by copying (which would hold
-    // the old and the new table at once); untouched, the reservation costs no memory.
-    capture_.wires.reserve(kMaxWires);
-    next_with_id_.reserve(kMaxWires);
-    levels_.reserve(kMaxWires);
-    return ok_ = read_declarations();
-  }
+  bool declarations_done() { return ok_ = read_declarations(); }
   const VcdCapture& capture() const { return capture_; }
   bool values_done(VcdValueListener& listener) {
     listener_ = &listener;
@@ -227,6 +220,13 @@ class VcdStreamReader::Parser {
     wire.name = args[3].text;
     if (args.size() == 5) wire.name += args[4].text;
     if (!spend(line, wire.scope.size() + wire.id.size() + wire.name.size())) return false;
+    if (capture_.wires.size() == kWiresBeforeReserving) {
+      // A wide capture: room for the most wires allowed, so the tables never grow by copying
+      // (which holds the old and the new table at once); untouched, the room costs no memory.
+      capture_.wires.reserve(kMaxWires);
+      next_with_id_.reserve(kMaxWires);
+      levels_.reserve(kMaxWires);
+    }
     const uint32_t index = static_cast<uint32_t>(capture_.wires.size());
     const auto [first, inserted] = first_of_id_.try_emplace(wire.id, index);
     next_with_id_.push_back(kNoWire);
@@ -354,6 +354,8 @@ class VcdStreamReader::Parser {
   /// The most words a declaration command holds before its $end ($var has at most five; a
   /// $timescale three), so the words of one command are never an unbounded list.
   static constexpr size_t kMaxCommandWords = 16;
+  /// Captures up to this many wires grow their tables as usual (a few KiB).
+  static constexpr size_t kWiresBeforeReserving = 4096;
   /// What an open scope costs beyond its name (its string in scopes_).
   static constexpr size_t kScopeOverheadBytes = sizeof(std::string);
 
