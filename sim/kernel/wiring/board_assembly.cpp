@@ -105,9 +105,8 @@ bool Simulation::build_boards(SimulationError& error) {
     }
     if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
   }
-  if (const auto conflicts = output_conflicts(output_files(), compiled_inputs(scenario_, builds)); !conflicts.empty()) {
-    error = {SimulationError::kBadInput, ""};
-    for (const std::string& conflict : conflicts) error.message += (error.message.empty() ? "" : "\n") + conflict;
+  if (std::string conflicts = output_conflicts_text(output_files(), compiled_inputs(scenario_, builds)); !conflicts.empty()) {
+    error = {SimulationError::kBadInput, std::move(conflicts)};
     return false;
   }
   boards_.reserve(scenario_.boards.size());

@@ -120,10 +120,8 @@ bool Simulation::prepare_outputs(SimulationError& error) const {
     return false;
   }
   const std::vector<PlannedOutput> files = output_files();
-  if (const std::vector<std::string> conflicts = output_conflicts(files, scenario_inputs(scenario_)); !conflicts.empty()) {
-    std::string message;
-    for (const std::string& conflict : conflicts) message += (message.empty() ? "" : "\n") + conflict;
-    error = {SimulationError::kBadInput, message};
+  if (std::string conflicts = output_conflicts_text(files, scenario_inputs(scenario_)); !conflicts.empty()) {
+    error = {SimulationError::kBadInput, std::move(conflicts)};
     return false;
   }
   std::set<std::filesystem::path> folders;

@@ -114,4 +114,10 @@ std::vector<std::string> output_conflicts(const std::vector<PlannedOutput>& outp
   return conflicts;
 }
 
+std::string output_conflicts_text(const std::vector<PlannedOutput>& outputs, const std::vector<RunInput>& inputs) {
+  std::string text;
+  for (const std::string& conflict : output_conflicts(outputs, inputs)) text += (text.empty() ? "" : "\n") + conflict;
+  return text;
+}
+
 }  // namespace stepdance::sim

@@ -41,4 +41,7 @@ struct RunInput {
 std::vector<std::string> output_conflicts(const std::vector<PlannedOutput>& outputs,
                                           const std::vector<RunInput>& inputs);
 
+/// The conflicts, one a line, as a refusal prints them; empty when there are none.
+std::string output_conflicts_text(const std::vector<PlannedOutput>& outputs, const std::vector<RunInput>& inputs);
+
 }  // namespace stepdance::sim
