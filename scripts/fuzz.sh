@@ -19,13 +19,17 @@ declare -A target_sources=(
   [ebb]="core"
   [rpc]="core"
   [scenario]="sim/scenario"
-  [vcd]="sim/decode/vcd_reader.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
+  [vcd]="sim/decode/vcd_reader.cpp sim/decode/vcd_tokenizer.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
 )
 # Extra compiler flags: the simulator's readers see sim/; toml++ is compiled in from its header
 # (Debian's libtomlplusplus-dev) so the fuzzer also instruments the TOML parser.
 declare -A target_flags=(
   [scenario]="-Isim -DTOML_HEADER_ONLY=1"
   [vcd]="-Isim"
+)
+# Libraries a target links besides its objects: reply patterns are RE2 (Debian's libre2-dev).
+declare -A target_libs=(
+  [scenario]="$(pkg-config --libs re2)"
 )
 # Longest input per target (default 4096 bytes): the example scenarios are up to 6 KB.
 declare -A target_max_len=([scenario]=8192)
@@ -82,7 +86,8 @@ build_targets() {
     local objects=()
     flags=${target_flags[$name]:-}
     while read -r source; do objects+=("$(object_of "$flags" "$source")"); done < <(sources_of "$name")
-    clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" -o "$build/${name}_fuzz"
+    # shellcheck disable=SC2086 # the libraries are words
+    clang++ -fsanitize=fuzzer,address,undefined "${objects[@]}" ${target_libs[$name]:-} -o "$build/${name}_fuzz"
   done
 }
 

@@ -8,6 +8,7 @@ packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm
   gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
+  libre2-dev  # RE2: scenario reply patterns matched in time linear in the line
   clang  # libFuzzer targets (scripts/fuzz.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
   prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)

@@ -1,16 +1,22 @@
 // `stepdance decode`: reads a VCD, pairs or picks STEP/DIR wires, decodes like an input port.
 #include "decode_command.hpp"
 
+#include <fstream>
 #include <iostream>
+#include <algorithm>
+#include <memory>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.hpp"
+#include "usage.hpp"
 #include "decode/capture_decoder.hpp"
 #include "decode/decode_report.hpp"
+#include "decode/pair_decoders.hpp"
 #include "decode/step_dir_pairs.hpp"
 #include "decode/vcd_reader.hpp"
+#include "scenario/decimal_text.hpp"
 #include "stepdance/core/frame_period.hpp"
 
 namespace stepdance::cli {
@@ -48,12 +54,13 @@ bool choose_pairs(const DecodeCommandOptions& options, const VcdCapture& capture
 
 bool decode_options(const DecodeCommandOptions& options, sim::DecodeOptions& decode, std::string& error) {
   decode.mode = options.mode == "step_dir" ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
-  if (!frame_period_supported(options.frame_period_us)) {
-    error = "--frame-us must be 10, 20, 25 or 40 (the sending board's frame period), got " +
-            std::to_string(options.frame_period_us);
+  const std::optional<int64_t> period_us = sim::scenario::parse_decimal_integer(options.frame_period_us);
+  if (!period_us || *period_us < 0 || *period_us > UINT32_MAX ||
+      !frame_period_supported(static_cast<uint32_t>(*period_us))) {
+    error = "--frame-us must be 10, 20, 25 or 40 (the sending board's frame period), got " + options.frame_period_us;
     return false;
   }
-  decode.frame_period_us = options.frame_period_us;
+  decode.frame_period_us = static_cast<uint32_t>(*period_us);
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
     if (options.axis == sim::signal_name(signal)) {
       decode.step_dir_signal = signal;
@@ -62,6 +69,59 @@ bool decode_options(const DecodeCommandOptions& options, sim::DecodeOptions& dec
   }
   error = "--axis must be one of X, Y, R, T, Z, E";
   return false;
+}
+
+/// `text` indented by `spaces` more after every line break (a nested JSON value).
+std::string indented(const std::string& text, const std::string& spaces) {
+  std::string out;
+  for (const char c : text) {
+    out += c;
+    if (c == '\n') out += spaces;
+  }
+  return out;
+}
+
+/// The JSON report, written a port at a time (one JSON document of every port would be held
+/// whole): {"capture", "ports": {label: report, …} in key order, a label's last pair winning,
+/// "truncated" when cut}, as nlohmann's dump(2) of the whole document would print it.
+void print_json(const std::string& capture, sim::PairDecoders& decoders, const std::string& truncated) {
+  const std::vector<StepDirPair>& pairs = decoders.pairs();
+  std::vector<size_t> order(pairs.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&pairs](size_t a, size_t b) { return pairs[a].label < pairs[b].label; });
+  std::cout << "{\n  \"capture\": " << nlohmann::json(capture).dump() << ",\n  \"ports\": {";
+  bool first = true;
+  for (size_t at = 0; at < order.size(); ++at) {
+    const size_t index = order[at];
+    if (at + 1 < order.size() && pairs[order[at + 1]].label == pairs[index].label) continue;  // the last one wins
+    std::cout << (first ? "\n    " : ",\n    ") << nlohmann::json(pairs[index].label).dump() << ": "
+              << indented(sim::decode_report_json(decoders.finish(index)).dump(2), "    ");
+    first = false;
+  }
+  std::cout << (first ? "}" : "\n  }");
+  if (!truncated.empty()) std::cout << ",\n  \"truncated\": " << nlohmann::json(truncated).dump();
+  std::cout << "\n}\n";
+}
+
+/// Reads the capture into `decoders` (made once the pairs are known): declarations first, then
+/// the value changes straight into them, so the capture itself is never held (a chunk and one
+/// token at a time) and memory does not grow with its length. The reader and its declarations
+/// are gone when this returns. Returns kExitOk (with `truncated` set to the warning if the
+/// capture is cut) or kExitBadInput after printing why.
+int read_capture(const DecodeCommandOptions& options, const sim::DecodeOptions& decode,
+                 std::unique_ptr<sim::PairDecoders>& decoders, std::string& truncated) {
+  std::ifstream in(options.capture_path, std::ios::binary);
+  if (!in) return bad_input(options.capture_path + ":0: cannot open");
+  sim::VcdStreamReader reader(in, options.capture_path);
+  if (!reader.read_declarations()) return bad_input(reader.take_result().error);
+  std::vector<StepDirPair> pairs;
+  std::string error;
+  if (!choose_pairs(options, reader.declarations(), pairs, error)) return bad_input(options.capture_path + ": " + error);
+  decoders = std::make_unique<sim::PairDecoders>(reader.declarations().wires.size(), std::move(pairs), decode);
+  if (!reader.read_values(*decoders)) return bad_input(reader.take_result().error);
+  const sim::VcdReadResult read = reader.take_result();
+  if (read.truncated) truncated = read.warning;
+  return kExitOk;
 }
 
 }  // namespace
@@ -73,7 +133,7 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
       "from a logic analyzer): step counts per axis and direction, rejected pulses with reasons, "
       "frame statistics. Exit status: 0 ok, 2 bad capture or options, 4 the capture is truncated (it ends "
       "mid-stream: what it holds is decoded and reported, with a warning).");
-  decode.add_option("capture", options.capture_path, "the .vcd file")->required();
+  decode.add_option("capture", options.capture_path, "the .vcd file")->required()->check(non_empty_path());
   decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
   decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");
   decode.add_option("--mode", options.mode, "stepdance: axis by pulse width, DIR at the falling edge; "
@@ -84,6 +144,7 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
   decode.add_option("--frame-us", options.frame_period_us,
                     "the sending board's frame period in us (10, 20, 25 or 40): how pulses group into "
                     "frames for the frame statistics; the counts do not depend on it")
+      ->check(non_empty_number())
       ->capture_default_str();
   decode.add_flag("--json", options.json, "print JSON instead of text");
   return decode;
@@ -93,29 +154,18 @@ int run_decode_command(const DecodeCommandOptions& options) {
   sim::DecodeOptions decode;
   std::string error;
   if (!decode_options(options, decode, error)) return bad_input(error);
-  const sim::VcdReadResult read = sim::read_vcd_file(options.capture_path);
-  if (!read.ok) return bad_input(read.error);
-  if (read.truncated) std::cerr << "warning: " << read.warning << "\n";
-  std::vector<StepDirPair> pairs;
-  if (!choose_pairs(options, read.capture, pairs, error)) return bad_input(options.capture_path + ": " + error);
-
-  nlohmann::json ports = nlohmann::json::object();
-  for (const StepDirPair& pair : pairs) {
-    const sim::VcdWire& step = read.capture.wires[pair.step];
-    const sim::VcdWire& dir = read.capture.wires[pair.dir];
-    const sim::DecodeResult result = sim::decode_step_dir(step.edges, dir.edges, decode, {step.initial, dir.initial});
-    if (options.json) {
-      ports[pair.label] = sim::decode_report_json(result);
-    } else {
-      std::cout << sim::format_decode_report(result, pair.label) << "\n";
+  std::unique_ptr<sim::PairDecoders> decoders;
+  std::string truncated;
+  if (const int status = read_capture(options, decode, decoders, truncated); status != kExitOk) return status;
+  if (!truncated.empty()) std::cerr << "warning: " << truncated << "\n";
+  if (options.json) {
+    print_json(options.capture_path, *decoders, truncated);
+  } else {
+    for (size_t i = 0; i < decoders->pairs().size(); ++i) {
+      std::cout << sim::format_decode_report(decoders->finish(i), decoders->pairs()[i].label) << "\n";
     }
   }
-  if (options.json) {
-    nlohmann::json report{{"capture", options.capture_path}, {"ports", ports}};
-    if (read.truncated) report["truncated"] = read.warning;
-    std::cout << report.dump(2) << "\n";
-  }
-  return read.truncated ? kExitTruncatedCapture : kExitOk;
+  return truncated.empty() ? kExitOk : kExitTruncatedCapture;
 }
 
 }  // namespace stepdance::cli

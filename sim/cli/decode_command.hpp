@@ -15,7 +15,7 @@ struct DecodeCommandOptions {
   std::string dir_wire;
   std::string mode = "stepdance";  ///< "stepdance" or "step_dir"
   std::string axis = "X";          ///< the signal STEP_DIR pulses count as
-  uint32_t frame_period_us = 40;   ///< the sender's frame period: how pulses group into frames
+  std::string frame_period_us = "40";  ///< the sender's frame period: how pulses group into frames
   bool json = false;
 };
 

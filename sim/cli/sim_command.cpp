@@ -1,6 +1,8 @@
 // `stepdance sim`: scenario → Simulation → files, with a progress bar and a short report.
 #include "sim_command.hpp"
 
+#include <sys/stat.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include "exit_codes.hpp"
 #include "live_run.hpp"
 #include "progress_bar.hpp"
+#include "usage.hpp"
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "wiring/simulation.hpp"
@@ -50,11 +53,28 @@ bool check_numbers(const SimCommandOptions& options, CheckedNumbers& numbers) {
          check_number("--watchdog-s", options.watchdog_s, kWatchdogS, numbers.watchdog_s);
 }
 
+/// Options that only mean something in a live run: refused without --live (they used to be
+/// ignored silently). False, with a message on stderr, when one is given.
+bool check_live_only(const SimCommandOptions& options) {
+  if (options.live) return true;
+  if (!options.speed.empty()) std::cerr << "--speed: needs --live (it paces a live run)\n";
+  if (!options.serial_links.empty()) std::cerr << "--serial-link: needs --live (it names a live run's terminal)\n";
+  return options.speed.empty() && options.serial_links.empty();
+}
+
+/// A --serial-link path is replaced by a symlink and removed at the end: only a path that does
+/// not exist, or a symlink (one an earlier run left), may be used. "" if `path` is fine.
+std::string serial_link_problem(const std::string& path) {
+  struct stat status {};
+  if (lstat(path.c_str(), &status) != 0 || S_ISLNK(status.st_mode)) return {};
+  return "'" + path + "' exists and is not a symlink; it would be deleted (name a new path)";
+}
+
 /// Reads --speed and --serial-link; false (with a message on stderr) when one is malformed.
 bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
   if (options.speed == "max") {
     live.speed = 0.0;
-  } else {
+  } else if (!options.speed.empty()) {
     std::string error;
     const std::optional<double> speed = sim::scenario::parse_number_option("--speed", options.speed, ranges::kSpeed, error);
     if (!speed) {
@@ -69,7 +89,12 @@ bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
       std::cerr << "--serial-link: '" << link << "' is not board=path\n";
       return false;
     }
-    live.serial_links[link.substr(0, equals)] = link.substr(equals + 1);
+    const std::string path = link.substr(equals + 1);
+    if (const std::string problem = serial_link_problem(path); !problem.empty()) {
+      std::cerr << "--serial-link: " << problem << "\n";
+      return false;
+    }
+    live.serial_links[link.substr(0, equals)] = path;
   }
   return true;
 }
@@ -171,33 +196,46 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
       "sketch crashed or ended the program, 6 a sketch hung, 130/143 interrupted by SIGINT/SIGTERM.");
   sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
       ->required();
-  sim.add_option("--out", options.output_directory, "write the output files into this folder instead");
+  sim.add_option("--out", options.output_directory, "write the output files into this folder instead")
+      ->check(non_empty_path());
   sim.add_option("--duration", options.duration_s,
-                 "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS));
+                 "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS))
+      ->check(non_empty_number());
   sim.add_option("--vcd", options.vcd_file,
-                 "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)");
-  sim.add_option("--csv", options.csv_file, "write the CSV of positions over time here");
+                 "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)")
+      ->check(non_empty_path());
+  sim.add_option("--csv", options.csv_file, "write the CSV of positions over time here")->check(non_empty_path());
   sim.add_option("--csv-interval-ms", options.csv_interval_ms,
-                 "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs));
+                 "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs))
+      ->check(non_empty_number());
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
   sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
   sim.add_flag("--live", options.live,
                "run in real time until interrupted (Ctrl-C), each board's USB serial on a pseudo-terminal announced "
                "as `serial <board>: <path>`; outputs are written when the run ends");
-  sim.add_option("--speed", options.speed, "live: simulated seconds per wall-clock second, or 'max' (default 1)");
-  sim.add_option("--serial-link", options.serial_links, "live: also make a symlink to a board's terminal (board=path)");
+  sim.add_option("--speed", options.speed,
+                 "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) +
+                     ", or 'max' (default 1)")
+      ->check(non_empty_number());
+  sim.add_option("--serial-link", options.serial_links,
+                 "live only: also make a symlink to a board's terminal (board=path; path must not exist, or be a "
+                 "symlink)");
   sim.add_option("--watchdog-s", options.watchdog_s,
                  "stop a sketch that runs this many seconds of wall time without simulated time moving (default 10, "
-                 "in " + describe(kWatchdogS) + ")");
+                 "in " + describe(kWatchdogS) + ")")
+      ->check(non_empty_number());
   sim.add_option("--cache", options.cache_directory,
-                 "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)");
+                 "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)")
+      ->check(non_empty_path());
   return sim;
 }
 
 int run_sim_command(const SimCommandOptions& options) {
   CheckedNumbers numbers;
   LiveOptions live;
-  if (!check_numbers(options, numbers) || !parse_live_options(options, live)) return kExitBadInput;
+  if (!check_numbers(options, numbers) || !check_live_only(options) || !parse_live_options(options, live)) {
+    return kExitBadInput;
+  }
   const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
   if (!loaded.ok()) {
     std::cerr << loaded.error_text();

@@ -21,7 +21,7 @@ struct SimCommandOptions {
   bool quiet = false;
   std::string cache_directory;      ///< empty: the default sketch cache
   bool live = false;                ///< pace to the wall clock, serial ports on terminals
-  std::string speed = "1";          ///< live: simulated seconds per wall second, or "max"
+  std::string speed;                ///< live: simulated seconds per wall second, or "max" ("" = 1)
   std::vector<std::string> serial_links;  ///< live: `board=path` symlinks to the terminals
   std::string watchdog_s = "10";    ///< wall seconds a sketch may run with simulated time stuck
 };

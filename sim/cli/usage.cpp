@@ -31,6 +31,22 @@ bool is_command(CLI::App& app, const std::string& word) {
 
 }  // namespace
 
+const CLI::Validator& non_empty_path() {
+  static const CLI::Validator check(
+      [](std::string& value) {
+        return value.empty() ? std::string("must not be empty (it names a file or folder)") : std::string();
+      },
+      "PATH");
+  return check;
+}
+
+const CLI::Validator& non_empty_number() {
+  static const CLI::Validator check(
+      [](std::string& value) { return value.empty() ? std::string("must not be empty (it takes a number)") : std::string(); },
+      "NUMBER");
+  return check;
+}
+
 void add_version_flag(CLI::App& app) {
   app.set_version_flag("--version", std::string("stepdance ") + STEPDANCE_VERSION, "print the version and exit");
 }

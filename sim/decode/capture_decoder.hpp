@@ -7,6 +7,7 @@
 
 #include "common/edges.hpp"
 #include "common/sim_time.hpp"
+#include "decode/frame_grouper.hpp"
 #include "output/pulse_counts.hpp"
 #include "stepdance/protocol/pulse_decoder.hpp"
 
@@ -41,25 +42,6 @@ struct RejectedPulse {
   protocol::PulseVerdict reason = protocol::PulseVerdict::kTooShort;
 };
 
-/// A new frame starts when the gap from the previous accepted pulse's falling edge to the next
-/// rising edge exceeds this (ns): within a frame the gaps are 2 µs.
-constexpr SimTime kFrameGapNs = 8 * kMicrosecond;
-/// A new frame also starts when a pulse rises more than this (ns) after the frame's first rise:
-/// 4/5 of the period (32 µs at 40 µs, 8 µs at 10 µs). Every frame's first pulse rises at the same
-/// offset, one period after the last frame's, and a frame's pulses rise within the period less
-/// 4 µs of its first. At 10 µs the gap alone would not tell frames apart (it can be 3 µs).
-constexpr SimTime frame_window_ns(uint32_t frame_period_us) {
-  return static_cast<SimTime>(frame_period_us) * kMicrosecond * 4 / 5;
-}
-
-/// Accepted pulses grouped into frames by kFrameGapNs and frame_window_ns().
-struct FrameStats {
-  uint64_t count = 0;            ///< frames holding at least one accepted pulse
-  uint32_t max_pulses = 0;       ///< most accepted pulses in one frame
-  SimTime min_start_spacing = 0; ///< ns between consecutive frames' first rises (0 with < 2 frames)
-  SimTime max_start_spacing = 0; ///< ns, as above
-};
-
 /// Everything decoded from one STEP/DIR pair.
 struct DecodeResult {
   DecodeOptions options;          ///< the options used
@@ -71,6 +53,43 @@ struct DecodeResult {
   uint64_t incomplete = 0;
   std::vector<RejectedPulse> first_rejected;  ///< the first max_rejected_examples rejections
   FrameStats frames;
+};
+
+/// Decodes one STEP/DIR pair edge by edge, as a capture is read: memory stays the same however
+/// long the capture (the first max_rejected_examples rejections are the only list kept). Gives
+/// exactly what decode_step_dir gives for the same edges. Context: host, one thread.
+class StepDirDecoder {
+ public:
+  StepDirDecoder(const DecodeOptions& options, InitialLevels initial);
+
+  /// The next edge of STEP or DIR. Edges come in time order across both lines; at equal times
+  /// in any order, for DIR's last edge at a time counts for every STEP edge at that time (its
+  /// level is the level of its last edge at or before the STEP edge). An edge that does not
+  /// change its line's level is ignored.
+  void step_edge(SimTime time_ns, bool level);
+  void dir_edge(SimTime time_ns, bool level);
+  /// The result: a pulse still high counts as incomplete. Call once, after the last edge.
+  DecodeResult finish();
+
+ private:
+  /// Decodes the STEP edges held at pending_time_, now that DIR's level there is final.
+  void flush();
+  void apply_step(SimTime time_ns, bool level);
+
+  DecodeResult result_;
+  protocol::DirSampleEdge sample_edge_;
+  bool dir_level_;
+  bool level_;            ///< STEP's level after the edges decoded so far
+  bool have_rise_ = false;
+  SimTime rise_ = 0;
+  bool dir_at_rise_ = false;
+  // STEP edges at one time wait for DIR's last edge at that time: they alternate, so the first
+  // level and a count describe them all.
+  SimTime pending_time_ = 0;
+  bool pending_first_ = false;
+  uint64_t pending_count_ = 0;
+  bool pending_level_;    ///< STEP's level after the pending edges
+  FrameGrouper frames_;
 };
 
 /// Decodes every complete STEP pulse exactly as an input port does: rise and fall times are

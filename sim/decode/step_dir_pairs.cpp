@@ -2,6 +2,8 @@
 #include "decode/step_dir_pairs.hpp"
 
 #include <cctype>
+#include <functional>
+#include <string_view>
 #include <unordered_map>
 
 namespace stepdance::sim {
@@ -27,15 +29,33 @@ std::string make_label(const VcdWire& step, std::string prefix) {
 
 }  // namespace
 
-// "scope\0prefix": the key a *DIR wire is found by (its name without the DIR, any case).
-std::string pair_key(const VcdWire& wire, size_t suffix_length) {
-  return wire.scope + '\0' + wire.name.substr(0, wire.name.size() - suffix_length);
+namespace {
+
+/// The key a *DIR wire is found by: its scope and its name without the suffix (DIR or STEP).
+/// Views into the wires: a string per wire would take as much memory again as the names.
+struct PairKey {
+  std::string_view scope;
+  std::string_view prefix;
+  bool operator==(const PairKey& other) const { return scope == other.scope && prefix == other.prefix; }
+};
+
+PairKey pair_key(const VcdWire& wire, size_t suffix_length) {
+  return {wire.scope, std::string_view(wire.name).substr(0, wire.name.size() - suffix_length)};
 }
+
+struct PairKeyHash {
+  size_t operator()(const PairKey& key) const {
+    const std::hash<std::string_view> hash;
+    return hash(key.scope) * 31 + hash(key.prefix);
+  }
+};
+
+}  // namespace
 
 std::vector<StepDirPair> find_step_dir_pairs(const VcdCapture& capture) {
   const std::vector<VcdWire>& wires = capture.wires;
   // One pass indexes the DIR wires (the first of a name wins), one pass pairs: linear in wires.
-  std::unordered_map<std::string, size_t> dirs;
+  std::unordered_map<PairKey, size_t, PairKeyHash> dirs;
   for (size_t dir = 0; dir < wires.size(); ++dir) {
     const VcdWire& wire = wires[dir];
     if (wire.width != 1 || wire.name.size() < 3 || !iequals(wire.name.substr(wire.name.size() - 3), "DIR")) continue;

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <map>
 
+#include "scenario/file_names.hpp"
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
 
@@ -106,6 +107,9 @@ void read_board(const toml::table& table, ParseContext& context, std::map<std::s
   if (name) {
     if (name->empty() || name->find(':') != std::string::npos) {
       reader.error("name", "board name \"" + *name + "\" must be non-empty and contain no ':'");
+    } else if (const std::string problem = file_name_problem(*name); !problem.empty()) {
+      reader.error("name", "board name \"" + *name + "\" names its SD card folder (<name>.sd in the output folder), so it " +
+                               problem);
     } else if (const auto first = first_lines.find(*name); first != first_lines.end()) {
       reader.error("name", "duplicate board name '" + *name + "' (first defined on line " +
                                std::to_string(first->second) + ")");

@@ -6,6 +6,7 @@
 #include <string_view>
 #include <utility>
 
+#include "scenario/file_names.hpp"
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
 
@@ -274,6 +275,8 @@ void read_device(const toml::table& table, ParseContext& context, DeviceNames& n
   if (const auto name = reader.string("name", Need::kRequired)) {
     if (name->empty()) {
       reader.error("name", "device name must not be empty");
+    } else if (const std::string problem = file_name_problem(*name); !problem.empty()) {
+      reader.error("name", "device name \"" + *name + "\" names the device's files in the output folder, so it " + problem);
     } else if (const auto first = names.first_lines.find(*name); first != names.first_lines.end()) {
       reader.error("name", "duplicate device name '" + *name + "' (first defined on line " +
                                std::to_string(first->second) + ")");

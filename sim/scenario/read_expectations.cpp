@@ -5,7 +5,7 @@
 
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
-#include "scenario/regex_check.hpp"
+#include "scenario/line_pattern.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -315,7 +315,7 @@ bool read_port_check(TableReader& reader, Expectation& check, ParseContext& cont
 }
 
 bool valid_pattern(TableReader& reader, const char* key, const std::string& pattern) {
-  const std::string problem = regex_problem(pattern);
+  const std::string problem = pattern_problem(pattern);
   if (!problem.empty()) reader.error(key, "'" + std::string(key) + "' " + problem);
   return problem.empty();
 }

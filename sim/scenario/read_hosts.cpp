@@ -3,8 +3,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "scenario/file_names.hpp"
 #include "scenario/parse_context.hpp"
-#include "scenario/regex_check.hpp"
+#include "scenario/line_pattern.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -35,7 +36,7 @@ std::optional<SimTime> read_seconds(TableReader& reader, const char* key, bool a
 bool read_pattern(TableReader& reader, const char* key, std::string& out) {
   const auto text = reader.string(key);
   if (!text) return false;
-  const std::string problem = regex_problem(*text);
+  const std::string problem = pattern_problem(*text);
   if (!problem.empty()) {
     reader.error(key, "'" + std::string(key) + "' " + problem);
     return false;
@@ -129,7 +130,9 @@ std::optional<HostStep> read_step(const toml::table& table, const ParseContext& 
       ok = text.has_value() && ok;
       if (text) step.bytes = *text;
     } else {
-      ok = read_file_text(reader, "stream_file", context, step.bytes) && ok;
+      const bool read = read_file_text(reader, "stream_file", context, step.bytes);
+      if (read) step.file = context.resolve(*reader.string("stream_file"));
+      ok = read && ok;
     }
     ok = read_stream_options(reader, step) && ok;
   } else if (chosen == "wait") {
@@ -193,11 +196,12 @@ void read_host(const toml::table& table, ParseContext& context) {
     if (transcript->empty()) {
       reader.error("transcript", "'transcript' must name a file");
       ok = false;
+    } else if (const std::string problem = inside_path_problem(*transcript); !problem.empty()) {
+      reader.error("transcript", "'transcript' (\"" + *transcript + "\") " + problem);
+      ok = false;
     } else {
-      const std::filesystem::path name(*transcript);
-      host.transcript = (name.is_absolute() ? name : std::filesystem::path(context.scenario.output.directory) / name)
-                            .lexically_normal()
-                            .string();
+      host.transcript = (std::filesystem::path(context.scenario.output.directory) / *transcript).lexically_normal().string();
+      host.transcript_line = reader.line_of("transcript");
     }
   }
   for_each_table(reader, "step", [&](const toml::table& step_table) {

@@ -56,21 +56,24 @@ CorexyConfig read_corexy(TableReader& reader, SocketChecker& sockets) {
   positive(reader, "pen_down_below_us", "µs", config.pen_down_below_us);
   if (const toml::array* travel = reader.array("travel_mm")) {
     double values[2] = {0, 0};
-    const bool ok = read_number_pair(*travel, values) && values[0] > 0 && values[1] > 0;
+    const bool ok = read_number_pair(*travel, values) && in_range(values[0], ranges::kPositiveLengthMm) &&
+                    in_range(values[1], ranges::kPositiveLengthMm);
     if (ok) {
       config.travel_x_mm = values[0];
       config.travel_y_mm = values[1];
     } else {
-      reader.error("travel_mm", "'travel_mm' must be two numbers > 0, e.g. [300, 218]");
+      reader.error("travel_mm", "'travel_mm' must be two numbers in " + describe(ranges::kPositiveLengthMm) +
+                                    ", e.g. [300, 218]");
     }
   }
   if (const toml::array* start = reader.array("start_mm")) {
     double values[2] = {0, 0};
-    if (read_number_pair(*start, values)) {
+    if (read_number_pair(*start, values) && in_range(values[0], ranges::kLengthMm) &&
+        in_range(values[1], ranges::kLengthMm)) {
       config.start_x_mm = values[0];
       config.start_y_mm = values[1];
     } else {
-      reader.error("start_mm", "'start_mm' must be two numbers, e.g. [120.5, 80]");
+      reader.error("start_mm", "'start_mm' must be two numbers in " + describe(ranges::kLengthMm) + ", e.g. [120.5, 80]");
     }
   }
   return config;

@@ -1,6 +1,7 @@
 // [output]: where the run's files go and which of them to write.
 #include <filesystem>
 
+#include "scenario/file_names.hpp"
 #include "scenario/parse_context.hpp"
 
 namespace stepdance::sim::scenario {
@@ -38,7 +39,14 @@ void read_output(TableReader& top, ParseContext& context) {
                                 {"vcd", &vcd},
                                 {"csv", &csv},
                                 {"summary", &summary}}) {
-      if (const auto value = reader.string(key)) *target = *value;
+      const auto value = reader.string(key);
+      if (!value) continue;
+      if (const std::string problem = inside_path_problem(*value); !value->empty() && !problem.empty()) {
+        reader.error(key, "'" + std::string(key) + "' (\"" + *value + "\") " + problem);
+        continue;
+      }
+      *target = *value;
+      output.lines[key] = reader.line_of(key);
     }
     if (const auto px = reader.number("png_px_per_mm", NumberRange{0, 100, true, "px/mm"})) output.png_px_per_mm = *px;
     if (const auto travel = reader.boolean("pen_up_travel")) output.pen_up_travel = *travel;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -230,7 +231,7 @@ struct HostStep {
   /// recommended streaming).
   enum class Flow { kAck, kCharacterCounting } flow = Flow::kAck;
   int64_t buffer_bytes = 128;
-  /// Stream: the ECMAScript regex a received line must match (anywhere in it; anchor with ^…$)
+  /// Stream: the RE2 pattern (scenario/line_pattern.hpp) a received line must match (anywhere in it; anchor with ^…$)
   /// to acknowledge a line. Wait: the regex a received line must match to end the step.
   std::string pattern;
   /// Wait: the step fails (and the client stops) if no line matches for this long (ns).
@@ -238,6 +239,8 @@ struct HostStep {
   SimTime timeout = 60 * kSecond;
   /// Pause: how long (ns).
   SimTime pause = 0;
+  /// Stream from a file: its absolute path (an input of the run, never an output).
+  std::string file;
   /// Wait and stream: bytes to send when the step starts and again every poll_interval while
   /// it runs (a sender polling `?`); empty: none.
   std::string poll;
@@ -251,8 +254,9 @@ struct HostClientConfig {
   std::string board;
   SimTime start = 0;
   std::vector<HostStep> steps;
-  /// Absolute path of the transcript file to write (empty: none).
+  /// Absolute path of the transcript file to write (empty: none) and the line naming it.
   std::string transcript;
+  int transcript_line = 0;
   int line = 0;
 };
 
@@ -275,6 +279,9 @@ struct OutputConfig {
   std::string csv;
   double csv_interval_ms = 10;
   std::string summary;
+  /// Line of each file key ("svg", "png", "vcd", "csv", "summary") given in [output]; a name left
+  /// at its default has none.
+  std::map<std::string, int> lines;
 };
 
 /// Kinds of end-of-run checks.

@@ -15,6 +15,10 @@ constexpr const char* kNonAsciiAfterBackslash =
 constexpr const char* kNamelessHeader =
     "a table header must start with a name (letters, digits, '_', '-' or a quoted key)";
 constexpr const char* kBraceAfterOpening = "'}' cannot follow '[' or ','";
+const std::string kTooManyKeyParts =
+    "a key of more than " + std::to_string(kMaxKeyParts) + " dotted parts is not allowed in a scenario file";
+const std::string kKeyTooLong =
+    "a key longer than " + std::to_string(kMaxKeyChars) + " characters is not allowed in a scenario file";
 
 bool is_ascii(char c) { return static_cast<unsigned char>(c) < 0x80; }
 /// TOML's whitespace (a lone CR is not: it belongs to a line break).
@@ -106,12 +110,15 @@ class Scanner {
       } else if (c == '[' && line_start_ && open_.empty() && !in_value_) {
         found = table_header();
       } else if ((c == '"' || c == '\'') && string_may_start()) {
+        const std::size_t start = at_;
         found = string();
+        if (found.line == 0 && !in_value_) found = count_key(at_ - start, false);
       } else if (c != '[' && c != '{' && c != ']' && c != '}' && c != ',' && value_may_start()) {
         found = bare_value();
       } else if (c == '}' && (previous_ == '[' || previous_ == ',')) {
         found = unsafe(kBraceAfterOpening);
       } else {
+        if (!in_value_ && is_key_character(c)) found = count_key(1, c == '.');
         follow_structure(c);
         significant(c);
         ++at_;
@@ -123,7 +130,26 @@ class Scanner {
  private:
   UnsafeToml unsafe(const char* message) const { return {line_, message}; }
 
+  /// Outside values, what is not structure belongs to a key: its bare parts and dots.
+  static bool is_key_character(char c) { return c != '=' && c != '{' && c != '}' && c != '[' && c != ']' && c != ','; }
+
+  /// Adds `chars` characters (and a part when `dot`) to the key being read; unsafe beyond the
+  /// limits. A key starts anew at a line's start, after '{' or ',' and at '='.
+  UnsafeToml count_key(std::size_t chars, bool dot) {
+    key_chars_ += chars;
+    if (dot) ++key_parts_;
+    if (key_parts_ > kMaxKeyParts) return {line_, kTooManyKeyParts};
+    if (key_chars_ > kMaxKeyChars) return {line_, kKeyTooLong};
+    return {};
+  }
+
+  void start_key() {
+    key_parts_ = 1;
+    key_chars_ = 0;
+  }
+
   void new_line() {
+    start_key();
     ++line_;
     ++at_;
     line_start_ = true;
@@ -165,6 +191,7 @@ class Scanner {
   }
 
   void follow_structure(char c) {
+    if (c == '=' || c == '{' || c == ',') start_key();
     switch (c) {
       case '=':
         in_value_ = true;
@@ -239,6 +266,8 @@ class Scanner {
   bool in_value_ = false;  // a value comes next or is being read, not a key
   char previous_ = '\n';   // the last character outside blanks, line breaks, comments and strings
   std::string open_;       // the values' open '[' and '{', innermost last
+  std::size_t key_parts_ = 1;  // dotted parts of the key being read
+  std::size_t key_chars_ = 0;  // its characters so far
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Text that toml++ 3.3 (Debian 12's) cannot be trusted with, found before it parses.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -16,10 +17,18 @@ namespace stepdance::sim::scenario {
 ///  - a table header whose name does not start like a key (`[^a]`, `[[.x`);
 ///  - '}' right after '[' or ',' in an array;
 ///  - an unquoted value other than true, false or a TOML number (toml++ scans such a value
-///    ahead to tell its type and asserts on some it cannot type; no scenario value is a date).
+///    ahead to tell its type and asserts on some it cannot type; no scenario value is a date);
+///  - a key (of a key/value pair, an inline table or a table header) of more than kMaxKeyParts
+///    dotted parts or kMaxKeyChars characters: toml++ recurses once per dotted part, and a key
+///    of 40,000 parts overflowed the stack. No scenario key has more than three.
 /// A string starts only where TOML lets one start (a key at a line's start, after '{', ',' or
 /// '.', or in a table header; a value after '=', '[' or ','), so a quote toml++ reads as a
 /// stray character is one here too.
+/// The most dotted parts a key may have (`a.b.c` has three).
+inline constexpr std::size_t kMaxKeyParts = 16;
+/// The longest key, in characters, quotes and dots included.
+inline constexpr std::size_t kMaxKeyChars = 256;
+
 struct UnsafeToml {
   int line = 0;         ///< 1-based; 0 when the text is safe to parse
   std::string message;  ///< the error to report at that line

@@ -2,8 +2,9 @@
 #include "scenario/value_range.hpp"
 
 #include <cmath>
-#include <cstdlib>
 #include <sstream>
+
+#include "scenario/decimal_text.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -71,13 +72,26 @@ std::string out_of_range(std::string_view name, const IntegerRange& range, int64
 
 std::optional<double> parse_number_option(std::string_view option, const std::string& text, const NumberRange& range,
                                           std::string& error) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end == text.c_str() || *end != '\0') {
-    error = std::string(option) + ": '" + text + "' is not a number (allowed: " + describe(range) + ")";
+  const std::optional<double> value = parse_decimal(text);
+  if (!value) {
+    error = std::string(option) + ": '" + text + "' is not a decimal number (allowed: " + describe(range) + ")";
     return std::nullopt;
   }
-  if (!in_range(value, range)) {
+  if (!in_range(*value, range)) {
+    error = std::string(option) + ": must be in " + describe(range) + ", got " + text;
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::optional<int64_t> parse_integer_option(std::string_view option, const std::string& text,
+                                            const IntegerRange& range, std::string& error) {
+  const std::optional<int64_t> value = parse_decimal_integer(text);
+  if (!value) {
+    error = std::string(option) + ": '" + text + "' is not a whole decimal number (allowed: " + describe(range) + ")";
+    return std::nullopt;
+  }
+  if (!in_range(*value, range)) {
     error = std::string(option) + ": must be in " + describe(range) + ", got " + text;
     return std::nullopt;
   }

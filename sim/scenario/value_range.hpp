@@ -28,8 +28,9 @@ struct IntegerRange {
 /// The ranges, one per quantity. Upper limits keep every derived time in int64 nanoseconds and
 /// every count far from overflow; the values are documented in docs/scenario-format.md.
 namespace ranges {
-/// A run: up to a day (SimTime holds ~292 years; every product below stays far inside it).
-inline constexpr NumberRange kDurationS{0, 86400, true, "s"};
+/// A run: from one nanosecond (the clock's tick: a shorter run would be no run at all) up to a
+/// day (SimTime holds ~292 years; every product below stays far inside it).
+inline constexpr NumberRange kDurationS{1e-9, 86400, false, "s"};
 /// A moment or span inside a run.
 inline constexpr NumberRange kTimeS{0, 86400, false, "s"};
 inline constexpr NumberRange kTimeMs{0, 86400000, false, "ms"};
@@ -47,6 +48,12 @@ inline constexpr IntegerRange kGlitchWidthNs{1, 1000000, "ns"};
 inline constexpr IntegerRange kEncoderCounts{-1000000000000, 1000000000000, "counts"};
 /// Live pacing: simulated seconds per wall-clock second.
 inline constexpr NumberRange kSpeed{0, 1000000, true, "x real time"};
+/// `stepdance serve`'s pacing of a simulated board: a thousandth to a thousand times real time.
+inline constexpr NumberRange kServeSpeed{0.001, 1000, false, "x real time"};
+/// A TCP port to listen on (0: any free one).
+inline constexpr IntegerRange kTcpPort{0, 65535, ""};
+/// A serial device's baud rate.
+inline constexpr IntegerRange kBaudRate{1, 10000000, "baud"};
 /// A machine dimension, position or length in mm.
 inline constexpr NumberRange kLengthMm{-1000000, 1000000, false, "mm"};
 inline constexpr NumberRange kPositiveLengthMm{0, 1000000, true, "mm"};
@@ -56,7 +63,7 @@ inline constexpr NumberRange kPositiveLengthMm{0, 1000000, true, "mm"};
 bool in_range(double value, const NumberRange& range);
 bool in_range(int64_t value, const IntegerRange& range);
 
-/// The range as people write it: "(0, 86,400] s", "[1, 1,000,000] µs".
+/// The range as people write it: "[1e-09, 86,400] s", "[1, 1,000,000] µs".
 std::string describe(const NumberRange& range);
 std::string describe(const IntegerRange& range);
 
@@ -66,14 +73,19 @@ std::string describe(const IntegerRange& range);
 std::string readable_number(double value);
 std::string readable_integer(int64_t value);
 
-/// "'name' must be in (0, 86,400] s, got 1e+300" (`name` as the user wrote it).
+/// "'name' must be in [1e-09, 86,400] s, got 1e+300" (`name` as the user wrote it).
 std::string out_of_range(std::string_view name, const NumberRange& range, double got);
 std::string out_of_range(std::string_view name, const IntegerRange& range, int64_t got);
 
-/// Parses a whole command-line number (strtod, nothing after it) and checks it against
-/// `range`. Returns the value, or nothing with `error` = "--option: 'text' is not a number" /
-/// the out_of_range message.
+/// Parses a command-line number (scenario/decimal_text.hpp: decimal only, nothing around it)
+/// and checks it against `range` (so nan and inf never pass). Returns the value, or nothing with
+/// `error` = "--option: 'text' is not a decimal number (allowed: range)" or
+/// "--option: must be in range, got text". Every number option of `stepdance` goes through
+/// this or parse_integer_option. Context: host, command-line checking.
 std::optional<double> parse_number_option(std::string_view option, const std::string& text, const NumberRange& range,
                                           std::string& error);
+/// The same for a whole number: digits with an optional sign, checked against `range`.
+std::optional<int64_t> parse_integer_option(std::string_view option, const std::string& text,
+                                            const IntegerRange& range, std::string& error);
 
 }  // namespace stepdance::sim::scenario

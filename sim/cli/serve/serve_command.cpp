@@ -11,10 +11,12 @@
 
 #include "exit_codes.hpp"
 #include "scenario/load_scenario.hpp"
+#include "scenario/value_range.hpp"
 #include "serve/request_router.hpp"
 #include "serve/serial_device_link.hpp"
 #include "serve/simulated_board_link.hpp"
 #include "serve/web_server.hpp"
+#include "usage.hpp"
 
 namespace stepdance::cli {
 namespace {
@@ -26,6 +28,36 @@ using serve::Clock;
 constexpr double kServeDurationS = 365.0 * 86400.0;
 constexpr std::chrono::milliseconds kHousekeepingPeriod{100};
 constexpr int kStatusEveryTicks = 10;  // the counters go to the pages once a second
+
+namespace ranges = sim::scenario::ranges;
+
+/// The numbers of the command line, read by the one number parser (value_range.hpp).
+struct ServeNumbers {
+  uint16_t port = 8001;
+  unsigned baud = 115200;
+  double speed = 1.0;
+};
+
+/// Reads --port, --baud and --speed; false (messages on stderr) when one is not in its range.
+/// --speed, --board and --out only steer a simulation: given with a serial device, they are
+/// refused rather than ignored.
+bool read_numbers(const ServeCommandOptions& options, bool serial_device, ServeNumbers& numbers) {
+  std::string error;
+  const auto port = sim::scenario::parse_integer_option("--port", options.port, ranges::kTcpPort, error);
+  if (!port) std::cerr << error << "\n";
+  const auto baud = sim::scenario::parse_integer_option("--baud", options.baud, ranges::kBaudRate, error);
+  if (!baud) std::cerr << error << "\n";
+  std::optional<double> speed = 1.0;
+  if (!options.speed.empty()) speed = sim::scenario::parse_number_option("--speed", options.speed, ranges::kServeSpeed, error);
+  if (!speed) std::cerr << error << "\n";
+  if (!port || !baud || !speed) return false;
+  if (serial_device && (!options.speed.empty() || !options.board.empty() || !options.output_directory.empty())) {
+    std::cerr << "serve: --speed, --board and --out steer a simulation; " << options.target << " is a serial device\n";
+    return false;
+  }
+  numbers = {static_cast<uint16_t>(*port), static_cast<unsigned>(*baud), *speed};
+  return true;
+}
 
 /// The simulation for a scenario, or null after printing why not.
 std::unique_ptr<sim::Simulation> make_simulation(const ServeCommandOptions& options, std::string& board,
@@ -65,12 +97,13 @@ nlohmann::json status_message(const serve::RequestRouter& router, const serve::W
            {{"clients", router.clients()}, {"forwarded", c.forwarded}, {"replied", c.replied},
             {"dropped", c.dropped}, {"refused", c.refused}, {"timed_out", c.timed_out},
             {"board_lines", c.board_lines}, {"messages_dropped", server.dropped_messages()},
-            {"connections_refused", server.refused_connections()}}}};
+            {"connections_refused", server.refused_connections()}, {"connections_open", server.open_connections()},
+            {"accept_failures", server.accept_failures()}}}};
 }
 
 /// Runs the loop: the link, router and server wired together, until a signal stops it.
 int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::SimulatedBoardLink* simulated,
-                        const ServeCommandOptions& options) {
+                        const ServeCommandOptions& options, uint16_t port) {
   std::unique_ptr<serve::WebServer> server;
   serve::RequestRouter router(
       serve::RouterLimits{}, [&link](const std::string& line) { link.send(line); },
@@ -86,7 +119,7 @@ int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::Simu
     router.from_client(client, text, Clock::now());
   };
   hooks.disconnected = [&router](serve::ClientId client) { router.remove_client(client); };
-  server = std::make_unique<serve::WebServer>(io, options.host, options.port, options.allowed_origins, hooks);
+  server = std::make_unique<serve::WebServer>(io, options.host, port, options.allowed_origins, hooks);
   link.on_line([&router](std::string_view line) { router.from_board(line, Clock::now()); });
   if (simulated != nullptr) simulated->on_drawing([&server](const nlohmann::json& update) { server->broadcast(update.dump()); });
 
@@ -137,36 +170,46 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
       "simulation then writes its output files.");
   serve.add_option("target", options.target, "a serial device, or a scenario .toml / example folder")->required();
   serve.add_option("--host", options.host, "address to listen on (default 127.0.0.1)");
-  serve.add_option("--port", options.port, "TCP port (default 8001; 0 picks a free one)");
+  serve.add_option("--port", options.port, "TCP port, in [0, 65,535] (default 8001; 0 picks a free one)")
+      ->check(non_empty_number());
   serve.add_option("--allow-origin", options.allowed_origins,
                    "also accept WebSockets from this origin, e.g. http://192.168.1.5:8001 (repeatable)");
-  serve.add_option("--baud", options.baud, "serial device: baud rate (default 115200; USB ignores it)");
+  serve.add_option("--baud", options.baud,
+                   "serial device: baud rate, in " + describe(ranges::kBaudRate) + " (default 115200; USB ignores it)")
+      ->check(non_empty_number());
   serve.add_option("--board", options.board, "simulation: the board to bridge (default the first)");
-  serve.add_option("--speed", options.speed, "simulation: simulated seconds per wall-clock second (default 1)")
-      ->check(CLI::Range(1e-3, 1e3));
-  serve.add_option("--out", options.output_directory, "simulation: write the output files into this folder");
-  serve.add_option("--cache", options.cache_directory, "simulation: folder for compiled sketches");
+  serve.add_option("--speed", options.speed,
+                   "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) +
+                       " (default 1)")
+      ->check(non_empty_number());
+  serve.add_option("--out", options.output_directory, "simulation: write the output files into this folder")
+      ->check(non_empty_path());
+  serve.add_option("--cache", options.cache_directory, "simulation: folder for compiled sketches")
+      ->check(non_empty_path());
   return serve;
 }
 
 int run_serve_command(const ServeCommandOptions& options) {
+  const bool serial_device = std::filesystem::is_character_file(options.target);
+  ServeNumbers numbers;
+  if (!read_numbers(options, serial_device, numbers)) return kExitBadInput;
   net::io_context io;
   std::unique_ptr<sim::Simulation> simulation;
   std::unique_ptr<serve::BoardLink> link;
   serve::SimulatedBoardLink* simulated = nullptr;
   try {
-    if (std::filesystem::is_character_file(options.target)) {
-      link = std::make_unique<serve::SerialDeviceLink>(io, options.target, options.baud);
+    if (serial_device) {
+      link = std::make_unique<serve::SerialDeviceLink>(io, options.target, numbers.baud);
     } else {
       std::string board;
       int exit_code = kExitOk;
       simulation = make_simulation(options, board, exit_code);
       if (!simulation) return exit_code;
-      auto board_link = std::make_unique<serve::SimulatedBoardLink>(io, *simulation, board, options.speed);
+      auto board_link = std::make_unique<serve::SimulatedBoardLink>(io, *simulation, board, numbers.speed);
       simulated = board_link.get();
       link = std::move(board_link);
     }
-    serve_until_stopped(io, *link, simulated, options);
+    serve_until_stopped(io, *link, simulated, options, numbers.port);
     if (!simulation) return kExitOk;
     simulation->end_now();
     const sim::SimulationReport report = simulation->finish();

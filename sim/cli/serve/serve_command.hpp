@@ -14,11 +14,11 @@ namespace stepdance::cli {
 struct ServeCommandOptions {
   std::string target;                        ///< a serial device, or a scenario / example folder
   std::string host = "127.0.0.1";            ///< address to listen on
-  uint16_t port = 8001;                      ///< 0: any free port (announced)
+  std::string port = "8001";                 ///< 0: any free port (announced); checked as ranges::kTcpPort
   std::vector<std::string> allowed_origins;  ///< other web origins that may connect
-  unsigned baud = 115200;                    ///< serial device only
+  std::string baud = "115200";               ///< serial device only; checked as ranges::kBaudRate
   std::string board;                         ///< simulation: the board to bridge (default the first)
-  double speed = 1.0;                        ///< simulation: simulated seconds per wall second
+  std::string speed;                         ///< simulation: simulated seconds per wall second ("" = 1)
   std::string output_directory;              ///< simulation: write the outputs here instead
   std::string cache_directory;               ///< simulation: compiled sketch cache
 };

@@ -12,7 +12,7 @@ using tcp = net::ip::tcp;
 
 WebServer::WebServer(net::io_context& io, const std::string& address, uint16_t port,
                      std::vector<std::string> allowed_origins, WebServerHooks hooks)
-    : acceptor_(io), policy_(address, port, std::move(allowed_origins)), hooks_(std::move(hooks)) {
+    : acceptor_(io), retry_timer_(io), policy_(address, port, std::move(allowed_origins)), hooks_(std::move(hooks)) {
   boost::system::error_code error;
   const net::ip::address ip = net::ip::make_address(address, error);
   if (error) throw std::runtime_error("--host: '" + address + "' is not an IP address");
@@ -30,11 +30,35 @@ WebServer::WebServer(net::io_context& io, const std::string& address, uint16_t p
 WebServer::~WebServer() = default;
 
 void WebServer::accept() {
-  acceptor_.async_accept([this](boost::system::error_code error, tcp::socket socket) {
-    if (stopped_) return;
-    if (!error) std::make_shared<HttpSession>(std::move(socket), *this)->run();
-    accept();
-  });
+  acceptor_.async_accept(
+      [this](boost::system::error_code error, tcp::socket socket) { on_accept(error, std::move(socket)); });
+}
+
+void WebServer::on_accept(const boost::system::error_code& error, tcp::socket socket) {
+  if (stopped_) return;
+  if (error) {
+    // Out of descriptors (EMFILE) and the like: the connection stays queued in the kernel and
+    // the listening socket stays readable, so accepting again at once would spin. Wait instead.
+    ++accept_failures_;
+    retry_timer_.expires_after(kAcceptRetryDelay);
+    retry_timer_.async_wait([this](const boost::system::error_code& cancelled) {
+      if (!cancelled && !stopped_) accept();
+    });
+    return;
+  }
+  if (auto ticket = take_ticket()) {
+    std::make_shared<HttpSession>(std::move(socket), *this, std::move(ticket))->run();
+  } else {
+    ++refused_connections_;
+    boost::system::error_code ignored;
+    socket.close(ignored);  // full: its descriptor is given back at once
+  }
+  accept();
+}
+
+std::unique_ptr<ConnectionTicket> WebServer::take_ticket() {
+  if (*open_connections_ >= kMaxConnections) return nullptr;
+  return std::make_unique<ConnectionTicket>(open_connections_);
 }
 
 ClientId WebServer::add_client(const std::shared_ptr<WebSocketSession>& session) {
@@ -63,6 +87,7 @@ void WebServer::broadcast(const std::string& message) {
 void WebServer::stop() {
   stopped_ = true;
   boost::system::error_code ignored;
+  retry_timer_.cancel();
   acceptor_.close(ignored);
   for (const auto& [client, weak] : clients_) {
     if (auto session = weak.lock()) session->close();

@@ -3,6 +3,7 @@
 
 #include <stdint.h>
 
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -12,6 +13,7 @@
 
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 
 #include "origin_policy.hpp"
 #include "request_router.hpp"
@@ -19,6 +21,20 @@
 namespace stepdance::cli::serve {
 
 class WebSocketSession;
+
+/// Held by every open connection (HTTP or WebSocket): counts it while it lives. The count is
+/// shared, so a connection that outlives the server (its handler still queued on the event
+/// loop) releases its place safely.
+class ConnectionTicket {
+ public:
+  explicit ConnectionTicket(std::shared_ptr<size_t> open) : open_(std::move(open)) { ++*open_; }
+  ~ConnectionTicket() { --*open_; }
+  ConnectionTicket(const ConnectionTicket&) = delete;
+  ConnectionTicket& operator=(const ConnectionTicket&) = delete;
+
+ private:
+  std::shared_ptr<size_t> open_;
+};
 
 /// What the server does with its clients' traffic.
 struct WebServerHooks {
@@ -33,12 +49,22 @@ struct WebServerHooks {
 /// (503 after). Each client's outgoing messages wait in a queue of kMaxQueuedMessages; beyond it
 /// they are dropped and counted (dropped_messages()), so a client that does not read cannot grow
 /// the server. Incoming messages over kMaxMessageBytes close that connection.
+///
+/// Connections: at most kMaxConnections open at once, HTTP and WebSocket together; one beyond
+/// is closed as soon as it is accepted (counted in refused_connections()). A request must arrive
+/// whole within kRequestTimeout of the connection opening or of the previous response (keep-alive),
+/// so half-open connections free their place quickly. When accepting fails (the process is out
+/// of file descriptors, say) the server waits kAcceptRetryDelay before trying again instead of
+/// spinning, and counts the failure (accept_failures()).
 /// Context: the event loop's thread only.
 class WebServer {
  public:
   static constexpr size_t kMaxClients = 32;
   static constexpr size_t kMaxQueuedMessages = 1024;
   static constexpr size_t kMaxMessageBytes = 64 * 1024;
+  static constexpr size_t kMaxConnections = 64;
+  static constexpr std::chrono::seconds kRequestTimeout{5};
+  static constexpr std::chrono::milliseconds kAcceptRetryDelay{100};
 
   /// Listens on address:port (port 0: any free port, see port()). Throws std::runtime_error.
   WebServer(boost::asio::io_context& io, const std::string& address, uint16_t port,
@@ -54,11 +80,16 @@ class WebServer {
   void stop();
   uint64_t dropped_messages() const { return dropped_messages_; }
   uint64_t refused_connections() const { return refused_connections_; }
+  uint64_t accept_failures() const { return accept_failures_; }
+  /// Connections open now (HTTP and WebSocket).
+  size_t open_connections() const { return *open_connections_; }
 
   // ---- for the sessions ----
   const OriginPolicy& policy() const { return policy_; }
   bool has_room() const { return clients_.size() < kMaxClients; }
   ClientId add_client(const std::shared_ptr<WebSocketSession>& session);
+  /// A place for one more connection, or null when kMaxConnections are open.
+  std::unique_ptr<ConnectionTicket> take_ticket();
   void remove_client(ClientId client);
   void deliver(ClientId client, std::string_view message) { hooks_.message(client, message); }
   void count_refused() { ++refused_connections_; }
@@ -66,8 +97,12 @@ class WebServer {
 
  private:
   void accept();
+  void on_accept(const boost::system::error_code& error, boost::asio::ip::tcp::socket socket);
 
   boost::asio::ip::tcp::acceptor acceptor_;
+  boost::asio::steady_timer retry_timer_;
+  std::shared_ptr<size_t> open_connections_ = std::make_shared<size_t>(0);
+  uint64_t accept_failures_ = 0;
   uint16_t port_ = 0;
   OriginPolicy policy_;
   WebServerHooks hooks_;

@@ -13,7 +13,6 @@ namespace websocket = beast::websocket;
 
 namespace {
 
-constexpr std::chrono::seconds kHttpTimeout{30};
 constexpr size_t kMaxRequestBodyBytes = 4096;
 
 /// Boost 1.74's Beast has its own string_view.
@@ -23,13 +22,13 @@ std::string_view text_of(beast::string_view text) { return {text.data(), text.si
 
 // ---- HTTP ---------------------------------------------------------------------------------------
 
-HttpSession::HttpSession(boost::asio::ip::tcp::socket socket, WebServer& server)
-    : stream_(std::move(socket)), server_(server) {}
+HttpSession::HttpSession(boost::asio::ip::tcp::socket socket, WebServer& server, std::unique_ptr<ConnectionTicket> ticket)
+    : stream_(std::move(socket)), server_(server), ticket_(std::move(ticket)) {}
 
 void HttpSession::read() {
   parser_.emplace();
   parser_->body_limit(kMaxRequestBodyBytes);
-  stream_.expires_after(kHttpTimeout);
+  stream_.expires_after(WebServer::kRequestTimeout);
   http::async_read(stream_, buffer_, *parser_, [self = shared_from_this()](beast::error_code error, size_t) {
     if (error) {
       self->stream_.socket().shutdown(boost::asio::ip::tcp::socket::shutdown_both, error);
@@ -51,7 +50,7 @@ void HttpSession::on_request(Request request) {
       server_.count_refused();
       return respond(request, http::status::service_unavailable, "text/plain", "too many connections\n");
     }
-    std::make_shared<WebSocketSession>(std::move(stream_), server_)->accept(std::move(request));
+    std::make_shared<WebSocketSession>(std::move(stream_), server_, std::move(ticket_))->accept(std::move(request));
     return;
   }
   if (!server_.policy().host_allowed(host)) {
@@ -81,6 +80,7 @@ void HttpSession::respond(const Request& request, http::status status, std::stri
   response->body() = request.method() == http::verb::head ? std::string() : std::move(body);
   response->prepare_payload();
   if (request.method() == http::verb::head) response->content_length(body.size());
+  stream_.expires_after(WebServer::kRequestTimeout);  // a client that never reads the response
   http::async_write(stream_, *response, [self = shared_from_this(), response](beast::error_code error, size_t) {
     if (!error && response->keep_alive()) return self->read();
     self->stream_.socket().shutdown(boost::asio::ip::tcp::socket::shutdown_send, error);
@@ -89,8 +89,8 @@ void HttpSession::respond(const Request& request, http::status status, std::stri
 
 // ---- WebSocket ----------------------------------------------------------------------------------
 
-WebSocketSession::WebSocketSession(beast::tcp_stream stream, WebServer& server)
-    : socket_(std::move(stream)), server_(server) {}
+WebSocketSession::WebSocketSession(beast::tcp_stream stream, WebServer& server, std::unique_ptr<ConnectionTicket> ticket)
+    : socket_(std::move(stream)), server_(server), ticket_(std::move(ticket)) {}
 
 void WebSocketSession::accept(http::request<http::string_body> request) {
   beast::get_lowest_layer(socket_).expires_never();

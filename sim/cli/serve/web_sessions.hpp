@@ -18,7 +18,7 @@ namespace stepdance::cli::serve {
 /// forbids, and hands an allowed upgrade on /ws to a WebSocketSession.
 class HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
-  HttpSession(boost::asio::ip::tcp::socket socket, WebServer& server);
+  HttpSession(boost::asio::ip::tcp::socket socket, WebServer& server, std::unique_ptr<ConnectionTicket> ticket);
   void run() { read(); }
 
  private:
@@ -32,12 +32,13 @@ class HttpSession : public std::enable_shared_from_this<HttpSession> {
   boost::beast::flat_buffer buffer_;
   std::optional<boost::beast::http::request_parser<boost::beast::http::string_body>> parser_;
   WebServer& server_;
+  std::unique_ptr<ConnectionTicket> ticket_;  ///< handed on to the WebSocket after an upgrade
 };
 
 /// A connected page: its messages go to the server's hooks; messages for it wait in a bounded queue.
 class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
  public:
-  WebSocketSession(boost::beast::tcp_stream stream, WebServer& server);
+  WebSocketSession(boost::beast::tcp_stream stream, WebServer& server, std::unique_ptr<ConnectionTicket> ticket);
   /// Completes the upgrade `request` asked for, then reads messages until the page goes.
   void accept(boost::beast::http::request<boost::beast::http::string_body> request);
   void send(const std::string& message);
@@ -52,6 +53,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   boost::beast::flat_buffer buffer_;
   std::deque<std::string> outgoing_;
   WebServer& server_;
+  std::unique_ptr<ConnectionTicket> ticket_;
   ClientId id_ = 0;
   bool writing_ = false;
   bool finished_ = false;

@@ -79,18 +79,40 @@ SdCardSettings sd_card_settings(const scenario::SdCardConfig& config) {
   return settings;
 }
 
+/// Every file the boards' compilers read, as inputs no output may replace (output_plan.hpp).
+std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const std::vector<SketchBuild>& builds) {
+  std::vector<RunInput> inputs;
+  for (size_t i = 0; i < builds.size(); ++i) {
+    const std::string what = "a file the sketch of board '" + scenario.boards[i].name + "' includes";
+    for (const std::string& file : builds[i].inputs) inputs.push_back({file, what});
+  }
+  return inputs;
+}
+
 }  // namespace
 
+// Every sketch is built first, and the outputs checked against every file the compilers read,
+// before any board library is loaded (loading runs the sketch's global constructors).
 bool Simulation::build_boards(SimulationError& error) {
   const SketchBuilder builder(options_.sketch_cache_dir);
-  boards_.reserve(scenario_.boards.size());
+  std::vector<SketchBuild> builds;
   for (const scenario::BoardConfig& config : scenario_.boards) {
-    const SketchBuild build = builder.build(config.sketch);
+    builds.push_back(builder.build(config.sketch));
+    const SketchBuild& build = builds.back();
     if (!build.ok) {
       error = {SimulationError::kBadInput, place(scenario_, config.line) + "board '" + config.name + "': " + build.error};
       return false;
     }
     if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
+  }
+  if (std::string conflicts = output_conflicts_text(output_files(), compiled_inputs(scenario_, builds)); !conflicts.empty()) {
+    error = {SimulationError::kBadInput, std::move(conflicts)};
+    return false;
+  }
+  boards_.reserve(scenario_.boards.size());
+  for (size_t index = 0; index < scenario_.boards.size(); ++index) {
+    const scenario::BoardConfig& config = scenario_.boards[index];
+    const SketchBuild& build = builds[index];
     std::string load_error;
     auto library = BoardLibrary::load(build.library_path, load_error);
     if (!library) {

@@ -185,6 +185,21 @@ std::unique_ptr<SimDevice> build_five_bar_arm(const DeviceConfig& device, Device
   return built;
 }
 
+/// An OLED picture's file name: "<name>-<t>s.png" at a snapshot time (ms precision).
+std::string oled_snapshot_name(const std::string& name, SimTime time) {
+  char stamp[32];
+  std::snprintf(stamp, sizeof stamp, "-%.3fs", to_seconds(time));
+  return name + stamp + ".png";
+}
+
+/// "<name>-<t>s.png" at each snapshot time, then "<name>.png" for the end of the run.
+std::vector<std::string> oled_output_names(const DeviceConfig& device) {
+  std::vector<std::string> names;
+  for (double seconds : device.snapshots_s) names.push_back(oled_snapshot_name(device.name, from_seconds(seconds)));
+  names.push_back(device.name + ".png");
+  return names;
+}
+
 /// The OLED: its screen as PNGs, 4 px per pixel: "<name>.png" at the end and
 /// "<name>-<t>s.png" at each snapshot time.
 class OledDevice : public ModelDevice<Ssd1306Display> {
@@ -193,11 +208,7 @@ class OledDevice : public ModelDevice<Ssd1306Display> {
   void write_outputs(const std::string& name, const std::function<std::string(const std::string&)>& path_for,
                      std::vector<std::string>& files) override {
     model().finish();
-    for (const auto& [time, picture] : model().snapshots()) {
-      char stamp[32];
-      std::snprintf(stamp, sizeof stamp, "-%.3fs", to_seconds(time));
-      write(picture, path_for(name + stamp + ".png"), files);
-    }
+    for (const auto& [time, picture] : model().snapshots()) write(picture, path_for(oled_snapshot_name(name, time)), files);
     write(model().image(), path_for(name + ".png"), files);
   }
 
@@ -259,7 +270,21 @@ constexpr std::pair<scenario::DeviceType, Builder> kBuilders[] = {
     {scenario::DeviceType::kTwist, build_twist},
 };
 
+using Namer = std::vector<std::string> (*)(const DeviceConfig&);
+
+/// The kinds that write files of their own, one row each.
+constexpr std::pair<scenario::DeviceType, Namer> kNamers[] = {
+    {scenario::DeviceType::kOled, oled_output_names},
+};
+
 }  // namespace
+
+std::vector<std::string> device_output_names(const DeviceConfig& device) {
+  for (const auto& [type, names] : kNamers) {
+    if (type == device.type) return names(device);
+  }
+  return {};
+}
 
 std::unique_ptr<SimDevice> build_device_model(const DeviceConfig& device, DeviceSocket& socket) {
   for (const auto& [type, build] : kBuilders) {

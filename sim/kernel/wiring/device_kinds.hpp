@@ -68,4 +68,9 @@ struct DeviceSocket {
 /// Builds the model of one [[device]] and connects it to the board.
 std::unique_ptr<SimDevice> build_device_model(const scenario::DeviceConfig& device, DeviceSocket& socket);
 
+/// The names of the files (in the output folder) the device will write at the end of the run,
+/// known before it is built, so they can be checked against the run's other files; empty for
+/// a kind that writes none. SimDevice::write_outputs writes exactly these. Context: host.
+std::vector<std::string> device_output_names(const scenario::DeviceConfig& device);
+
 }  // namespace stepdance::sim

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <regex>
 
 #include "models/ssd1306_display.hpp"
 #include "output/pulse_counts.hpp"
@@ -273,24 +272,26 @@ ExpectationResult host_replies(const Expectation& expectation, const Simulation&
   const std::vector<const HostClient::Entry*> lines = received(*client);
   const std::string what = "host " + expectation.host + " received " + quoted_list(expectation.replies);
   if (expectation.replies.size() > 1) {
+    std::vector<scenario::LinePattern> patterns;
+    for (const std::string& reply : expectation.replies) patterns.emplace_back(reply);
     size_t next = 0;
     for (const HostClient::Entry* line : lines) {
-      if (next < expectation.replies.size() && line_matches(std::regex(expectation.replies[next]), line->text)) ++next;
+      if (next < patterns.size() && patterns[next].found_in(line->text)) ++next;
     }
     return {next == expectation.replies.size(), what + " in order: matched " + std::to_string(next) + " of " +
                                                     std::to_string(expectation.replies.size())};
   }
-  const std::regex reply(expectation.replies[0]);
+  const scenario::LinePattern reply(expectation.replies[0]);
   int64_t matches = 0;
-  for (const HostClient::Entry* line : lines) matches += line_matches(reply, line->text) ? 1 : 0;
+  for (const HostClient::Entry* line : lines) matches += reply.found_in(line->text) ? 1 : 0;
   if (expectation.count) return compare(what + " (lines)", *expectation.count, matches);
   if (!expectation.within) return {matches > 0, what + ": " + std::to_string(matches) + " matching lines"};
   // Timed: from the first sent line matching `after` (or the client's first line) to the reply.
-  const std::regex after(expectation.after.empty() ? std::string(".*") : expectation.after);
+  const scenario::LinePattern after(expectation.after.empty() ? std::string(".*") : expectation.after);
   std::optional<SimTime> from;
   for (const HostClient::Entry& entry : client->transcript()) {
-    if (!from && entry.from_host && line_matches(after, entry.text)) from = entry.time;
-    if (from && !entry.from_host && line_matches(reply, entry.text)) {
+    if (!from && entry.from_host && after.found_in(entry.text)) from = entry.time;
+    if (from && !entry.from_host && reply.found_in(entry.text)) {
       const SimTime took = entry.time - *from;
       char text[64];
       std::snprintf(text, sizeof text, " within %.3f ms: took %.3f ms", to_seconds(*expectation.within) * 1e3,

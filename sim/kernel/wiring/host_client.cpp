@@ -11,9 +11,8 @@ namespace {
 /// How often the client looks at the link: a USB full-speed frame.
 constexpr SimTime kTickNs = kMillisecond;
 
-/// The longest line kept whole. std::regex (libstdc++) matches by recursion about as deep as the
-/// text is long: a pattern run over a line of ten or twenty thousand characters overflowed the
-/// stack. Longer lines are kept as pieces of this many bytes, each but the last marked `cut`.
+/// The longest line kept whole: longer lines are kept as pieces of this many bytes, each but the
+/// last marked `cut`, so a board printing without line ends cannot grow a line without bound.
 constexpr size_t kLongestLineBytes = 1000;
 
 std::string escaped(const std::string& bytes) {
@@ -56,8 +55,6 @@ std::string seconds_text(SimTime time) {
 }
 
 }  // namespace
-
-bool line_matches(const std::regex& regex, const std::string& line) { return std::regex_search(line, regex); }
 
 HostClient::HostClient(const scenario::HostClientConfig& config, SimBoard& board, Scheduler& scheduler)
     : config_(config), board_(board), scheduler_(scheduler), timer_(scheduler, &on_tick, this) {
@@ -124,7 +121,7 @@ void HostClient::enter_step(SimTime now) {
   step_started_ = now;
   last_progress_ = now;
   if (step.kind == scenario::HostStep::Kind::kWait || step.kind == scenario::HostStep::Kind::kStream) {
-    pattern_ = std::regex(step.pattern, std::regex::ECMAScript);  // validated by the scenario reader
+    pattern_ = scenario::LinePattern(step.pattern);  // checked by the scenario reader
   }
   if (step.kind == scenario::HostStep::Kind::kStream) {
     lines_ = split_lines(step.bytes);
@@ -160,7 +157,7 @@ void HostClient::poll_if_due(const scenario::HostStep& step, SimTime now) {
 bool HostClient::run_wait(const scenario::HostStep& step, SimTime now) {
   poll_if_due(step, now);
   while (!unread_.empty()) {
-    const bool matched = line_matches(pattern_, unread_.front());
+    const bool matched = pattern_.found_in(unread_.front());
     unread_.pop_front();
     if (matched) return true;
   }
@@ -173,7 +170,7 @@ bool HostClient::run_wait(const scenario::HostStep& step, SimTime now) {
 bool HostClient::run_stream(const scenario::HostStep& step, SimTime now) {
   poll_if_due(step, now);
   while (!unread_.empty()) {
-    const bool ack = line_matches(pattern_, unread_.front());
+    const bool ack = pattern_.found_in(unread_.front());
     unread_.pop_front();
     if (!ack || in_flight_.empty()) continue;  // a report or message, not an acknowledgement
     in_flight_bytes_ -= in_flight_.front();

@@ -2,11 +2,11 @@
 #pragma once
 
 #include <deque>
-#include <regex>
 #include <string>
 #include <vector>
 
 #include "board/sim_board.hpp"
+#include "scenario/line_pattern.hpp"
 #include "scenario/scenario.hpp"
 #include "scheduler/periodic_timer.hpp"
 
@@ -16,9 +16,10 @@ namespace stepdance::sim {
 ///
 /// The client looks at the link once per simulated millisecond (a USB full-speed frame): it takes
 /// the lines the board printed since (split at '\n', a '\r' at either end dropped; a line over
-/// 1,000 bytes is taken as pieces of 1,000, so no pattern runs over more), then advances its
-/// steps as far as they can go. A line matches a pattern when the regex finds a match anywhere in
-/// it (anchor with ^…$ for whole lines). Steps:
+/// 1,000 bytes is taken as pieces of 1,000, so no line held grows without bound), then advances
+/// its steps as far as they can go. A line matches a pattern when the pattern (RE2,
+/// scenario/line_pattern.hpp) finds a match anywhere in it (anchor with ^…$ for whole lines).
+/// Steps:
 ///   send   — writes bytes at once;
 ///   stream — writes text line by line: with "ack" flow, the next line goes when the previous one
 ///            was acknowledged; with "character_counting", lines go while the unacknowledged
@@ -98,7 +99,7 @@ class HostClient {
   SimTime step_started_ = 0;
   SimTime last_progress_ = 0;  // stream: the last acknowledgement
   SimTime last_poll_ = 0;      // stream and wait: when the poll bytes last went out
-  std::regex pattern_;
+  scenario::LinePattern pattern_;
   // The current stream step: its lines, the next to send, the sizes of those in flight.
   std::vector<std::string> lines_;
   size_t next_line_ = 0;
@@ -108,7 +109,5 @@ class HostClient {
   std::string failure_;
 };
 
-/// True when `regex` matches somewhere in `line`.
-bool line_matches(const std::regex& regex, const std::string& line);
 
 }  // namespace stepdance::sim

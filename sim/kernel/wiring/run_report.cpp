@@ -100,7 +100,9 @@ void Simulation::write_drawings(SimulationReport& report) const {
     report.files.push_back(svg);
   }
   if (!png.empty()) {
-    write_png(png, strokes, style, scenario_.output.png_px_per_mm);
+    // A plotter's page was checked when the run was prepared; a page that is the drawing's
+    // bounding box is only known now, so it is drawn at the resolution that fits, never refused.
+    write_png(png, strokes, style, fitting_px_per_mm(style, scenario_.output.png_px_per_mm));
     report.files.push_back(png);
   }
 }

@@ -24,6 +24,7 @@
 #include "wiring/device_kinds.hpp"
 #include "wiring/expectations.hpp"
 #include "wiring/host_client.hpp"
+#include "wiring/output_plan.hpp"
 #include "wiring/pulse_delivery.hpp"
 #include "wiring/vcd_recorder.hpp"
 
@@ -168,10 +169,11 @@ class Simulation {
   const BoardSlot* find_slot(const std::string& name) const;
   /// A configured output file's path, moved into --out's directory when that was given.
   std::string output_path(const std::string& configured) const;
-  /// Every file the run will write (empty paths left out).
-  std::vector<std::string> output_files() const;
-  /// Creates the folders of every output file and checks that each can be written, before any
-  /// sketch is built; false with a kBadInput error naming the folder otherwise.
+  /// Every file and folder the run will write, and who asked for it (output_plan.hpp).
+  std::vector<PlannedOutput> output_files() const;
+  /// Checks the outputs against each other and the scenario's inputs (output_plan.hpp), then
+  /// creates the folders of every output file and checks that each can be written, before any
+  /// sketch is built; false with a kBadInput error naming the line, option or folder otherwise.
   bool prepare_outputs(SimulationError& error) const;
   /// The lines the VCD records: the scenario's vcd_ports, or everything (see vcd_file).
   std::vector<scenario::PortLineRef> vcd_ports() const;

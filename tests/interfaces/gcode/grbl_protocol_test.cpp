@@ -108,6 +108,31 @@ TEST_F(GrblLink, CrLfCrAndLfEachEndOneLine) {
   EXPECT_EQ(machine.motions.size(), 3u);
 }
 
+// Grbl 1.1's protocol loop throws away every byte up to a space while it assembles a line
+// (protocol.c: "Throw away whitespace and control characters"), so a NUL in the middle of a line
+// takes nothing after it with it. It keeps DEL, which its parser then refuses as not a letter.
+TEST_F(GrblLink, ControlBytesInsideALineAreDroppedAndTheRestIsKept) {
+  EXPECT_EQ(exchange(std::string("G0 X3\0 Y4\n", 11)), "ok\r\n");
+  ASSERT_EQ(machine.motions.size(), 1u);
+  EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 3.0);
+  EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisY], 4.0);
+  EXPECT_EQ(exchange("G0\tX5\x01 Y\x1b" "6\x02\n"), "ok\r\n");
+  ASSERT_EQ(machine.motions.size(), 2u);
+  EXPECT_DOUBLE_EQ(machine.motions[1].end_mm[kAxisX], 5.0);
+  EXPECT_DOUBLE_EQ(machine.motions[1].end_mm[kAxisY], 6.0);
+  EXPECT_EQ(exchange("G0 X7\x7f\n"), "error:1\r\n");
+  EXPECT_EQ(machine.motions.size(), 2u);
+}
+
+// Dropped control bytes still take their place in the 128-byte receive buffer (a
+// character-counting sender counts them), but not in the line: 150 NULs around a short command
+// are no over-long line.
+TEST_F(GrblLink, ControlBytesDoNotMakeALineOverlong) {
+  EXPECT_EQ(exchange(std::string(150, '\0') + "G0 X8\n"), "ok\r\n");
+  ASSERT_EQ(machine.motions.size(), 1u);
+  EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 8.0);
+}
+
 TEST_F(GrblLink, OverlongLineIsErrorElevenAndTheNextLineWorks) {
   std::string line = "G0 X1 ";
   while (line.size() < 300) line += "(padding)";

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <vector>
 
 #include "decode/capture_decoder.hpp"
@@ -306,6 +307,75 @@ TEST(CaptureDecoder, EmptyCapture) {
   EXPECT_EQ(result.accepted, 0u);
   EXPECT_EQ(result.frames.count, 0u);
   EXPECT_EQ(result.frames.min_start_spacing, 0);
+}
+
+// StepDirDecoder, the streaming decoder behind `stepdance decode`: a reader hands it each line's
+// edges as the file has them, so a DIR edge may come after a STEP edge of the same time. DIR's
+// level at a time counts its edges at that time (decode_step_dir's rule), whatever the order.
+TEST(StepDirDecoder, ADirEdgeAfterAStepEdgeOfTheSameTimeStillCounts) {
+  for (const InputMode mode : {INPUT_MODE_STEPDANCE, INPUT_MODE_STEP_DIR}) {
+    DecodeOptions options;
+    options.mode = mode;
+    StepDirDecoder decoder(options, InitialLevels{false, false});
+    // STEPDANCE samples DIR at the fall (3 µs), STEP_DIR at the rise (1 µs): DIR rises at both.
+    decoder.step_edge(1000, true);
+    decoder.dir_edge(1000, true);
+    decoder.step_edge(3000, false);
+    decoder.dir_edge(3000, true);
+    const DecodeResult result = decoder.finish();
+    EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{1, 0})) << int(mode);
+  }
+}
+
+TEST(StepDirDecoder, PulsesWithinOneTimestampAreZeroWideAndEachCounted) {
+  StepDirDecoder decoder(DecodeOptions{}, InitialLevels{false, false});
+  for (int i = 0; i < 1000; ++i) {
+    decoder.step_edge(5000, true);
+    decoder.step_edge(5000, false);
+  }
+  decoder.step_edge(5000, false);  // no change: ignored
+  const DecodeResult result = decoder.finish();
+  EXPECT_EQ(result.too_short, 1000u);
+  EXPECT_EQ(result.first_rejected.size(), 10u);
+  EXPECT_EQ(result.incomplete, 0u);
+}
+
+// Random waveforms with many edges at equal times: fed DIR-first (decode_step_dir's merge) or
+// STEP-first, the streaming decoder gives the same result field by field.
+TEST(StepDirDecoder, TheOrderOfEdgesAtOneTimeDoesNotMatter) {
+  std::mt19937_64 random(27);
+  for (int round = 0; round < 200; ++round) {
+    EdgeList step, dir;
+    bool step_level = false, dir_level = false;
+    SimTime time = 0;
+    for (int i = 0; i < 60; ++i) {
+      time += static_cast<SimTime>(random() % 4) * 1000 + static_cast<SimTime>(random() % 2) * 333;
+      if (random() % 3 != 0) step.push_back(Edge{time, step_level = !step_level});
+      if (random() % 3 == 0) dir.push_back(Edge{time, dir_level = !dir_level});
+    }
+    for (const InputMode mode : {INPUT_MODE_STEPDANCE, INPUT_MODE_STEP_DIR}) {
+      DecodeOptions options;
+      options.mode = mode;
+      const DecodeResult merged = decode_step_dir(step, dir, options);
+      StepDirDecoder decoder(options, InitialLevels{});
+      size_t next_dir = 0;
+      for (const Edge& edge : step) {
+        while (next_dir < dir.size() && dir[next_dir].time < edge.time) {  // equal times: STEP first
+          decoder.dir_edge(dir[next_dir].time, dir[next_dir].level);
+          ++next_dir;
+        }
+        decoder.step_edge(edge.time, edge.level);
+      }
+      for (; next_dir < dir.size(); ++next_dir) decoder.dir_edge(dir[next_dir].time, dir[next_dir].level);
+      const DecodeResult streamed = decoder.finish();
+      EXPECT_EQ(streamed.counts, merged.counts) << round;
+      EXPECT_EQ(streamed.too_short, merged.too_short) << round;
+      EXPECT_EQ(streamed.too_long, merged.too_long) << round;
+      EXPECT_EQ(streamed.incomplete, merged.incomplete) << round;
+      EXPECT_EQ(streamed.frames.count, merged.frames.count) << round;
+      ASSERT_EQ(streamed.first_rejected.size(), merged.first_rejected.size()) << round;
+    }
+  }
 }
 
 }  // namespace

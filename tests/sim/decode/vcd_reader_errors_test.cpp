@@ -137,6 +137,21 @@ TEST(VcdReaderErrors, LongTokensAreShortenedInMessages) {
   EXPECT_EQ(error_of(std::string(60, 'q') + "\n"), "bad.vcd:1: expected a declaration command, found '" + std::string(40, 'q') + "...'");
 }
 
+// The reader holds one chunk and one token at a time: a token (a run of bytes without blanks)
+// over 1 MiB is no VCD, and neither is a declaration of endless words.
+TEST(VcdReaderErrors, EndlessTokensAndCommandsAreRefused) {
+  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n" + std::string(2 << 20, 'x')),
+            "bad.vcd:5: a token longer than 1048576 bytes (this is not a VCD file)");
+  EXPECT_EQ(error_of("$timescale 1 ns $end\n" + std::string(3 << 20, '\0')),
+            "bad.vcd:2: a token longer than 1048576 bytes (this is not a VCD file)");
+  std::string words = "$attrbegin";
+  for (int i = 0; i < 17; ++i) words += " w";
+  EXPECT_EQ(error_of(words + " $end\n"), "bad.vcd:1: $attrbegin (from line 1) has more than 16 words before its $end");
+  // A vector value of the widest wire (1,000,000 bits) is still one token.
+  std::istringstream wide("$var wire 1000000 ! bus $end\n$enddefinitions $end\n#0\nb" + std::string(1000000, '1') + " !\n");
+  EXPECT_TRUE(read_vcd(wide, "wide.vcd").ok);
+}
+
 TEST(VcdReaderErrors, MissingFile) {
   const VcdReadResult result = read_vcd_file("/nonexistent-dir/capture.vcd");
   EXPECT_FALSE(result.ok);

@@ -61,15 +61,30 @@ TEST(MalformedScenarioTest, EncoderCountsAtTheSixtyFourBitLimits) {
 TEST(MalformedScenarioTest, DurationsThatAreNotARun) {
   expect_refused("duration-nan.toml", {{1, "'duration_s' must be a finite number"}});
   expect_refused("duration-inf.toml", {{1, "'duration_s' must be a finite number"}});
-  expect_refused("duration-1e300.toml", {{1, "'duration_s' must be in (0, 86,400] s, got 1e+300"}});
-  expect_refused("duration--1.toml", {{1, "'duration_s' must be in (0, 86,400] s, got -1"}});
-  expect_refused("duration-0.toml", {{1, "'duration_s' must be in (0, 86,400] s, got 0"}});
+  expect_refused("duration-1e300.toml", {{1, "'duration_s' must be in [1e-09, 86,400] s, got 1e+300"}});
+  expect_refused("duration--1.toml", {{1, "'duration_s' must be in [1e-09, 86,400] s, got -1"}});
+  expect_refused("duration-0.toml", {{1, "'duration_s' must be in [1e-09, 86,400] s, got 0"}});
 }
 
 TEST(MalformedScenarioTest, TimelineTimesBeyondAnyRun) {
   expect_refused("timeline-huge.toml", {{21, "'time_s' must be in [0, 86,400] s, got 1e+300"},
                                         {28, "'over_s' must be in [0, 86,400] s, got 1e+300"},
                                         {33, "'hold_ms' must be a finite number"}});
+}
+
+// Found by hand (issue 27): travel_mm = [1e30, 1e30] ran the whole run and then failed drawing
+// the PNG, without a summary. Travel is bounded when the file is read, and a plotter's PNG,
+// whose page is its travel area, is sized before anything runs.
+TEST(MalformedScenarioTest, WholeRunLimitsAreCheckedBeforeTheRun) {
+  expect_refused("travel-huge.toml", {{16, "'travel_mm' must be two numbers in (0, 1,000,000] mm, e.g. [300, 218]"},
+                                      {17, "'start_mm' must be two numbers in [-1,000,000, 1,000,000] mm, e.g. [120.5, 80]"}});
+  const std::string path = kFixtures + "/canvas-huge.toml";
+  const CommandResult result = run("sim --quiet --cache " + kSketchCache + " " + path, "canvas");
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.err, path + ":15: at png_px_per_mm = 4, the plotter's page (travel_mm and a 10 mm margin) is too "
+                               "large for a PNG: the PNG would be 4,000,080 x 8,080 px; at most 32,767 px a side and "
+                               "64,000,000 px (lower png_px_per_mm or travel_mm, or set png = \"\")\n");
+  EXPECT_FALSE(std::filesystem::exists(kFixtures + "/never-written"));
 }
 
 // ---- the same numbers on the command line ------------------------------------------------------
@@ -79,11 +94,11 @@ TEST(MalformedCommandLineTest, DurationFollowsTheFilesRule) {
   for (const char* value : {"nan", "inf", "1e300", "-1", "0", "86401"}) {
     const CommandResult result = run("sim --duration " + std::string(value) + " " + scenario, "duration");
     EXPECT_EQ(result.exit_code, 2) << value;
-    EXPECT_EQ(result.err, "--duration: must be in (0, 86,400] s, got " + std::string(value) + "\n") << value;
+    EXPECT_EQ(result.err, "--duration: must be in [1e-09, 86,400] s, got " + std::string(value) + "\n") << value;
   }
   const CommandResult words = run("sim --duration soon " + scenario, "duration_words");
   EXPECT_EQ(words.exit_code, 2);
-  EXPECT_EQ(words.err, "--duration: 'soon' is not a number (allowed: (0, 86,400] s)\n");
+  EXPECT_EQ(words.err, "--duration: 'soon' is not a decimal number (allowed: [1e-09, 86,400] s)\n");
 }
 
 TEST(MalformedCommandLineTest, CsvIntervalAndSpeedFollowTheirRules) {
@@ -94,6 +109,70 @@ TEST(MalformedCommandLineTest, CsvIntervalAndSpeedFollowTheirRules) {
   const CommandResult speed = run("sim --live --speed nan " + scenario, "speed");
   EXPECT_EQ(speed.exit_code, 2);
   EXPECT_EQ(speed.err, "--speed: must be in (0, 1,000,000] x real time, got nan (or 'max')\n");
+}
+
+// Found by hand (issue 27): strtod read "0x10" as 16 s and " 2" as 2 but refused "1 ", and
+// 1e-300 s passed the (0, 86,400] check and ran for 0 ns. One decimal grammar now reads every
+// number option, and a run lasts at least a nanosecond.
+TEST(MalformedCommandLineTest, NumbersAreDecimalWithNothingAroundThem) {
+  const std::string scenario = source_path("examples/StepASketch");
+  const std::pair<std::string, std::string> cases[] = {
+      {"sim --duration 0x10 ", "--duration: '0x10' is not a decimal number (allowed: [1e-09, 86,400] s)\n"},
+      {"sim --duration ' 2' ", "--duration: ' 2' is not a decimal number (allowed: [1e-09, 86,400] s)\n"},
+      {"sim --duration '1 ' ", "--duration: '1 ' is not a decimal number (allowed: [1e-09, 86,400] s)\n"},
+      {"sim --duration 1e-300 ", "--duration: must be in [1e-09, 86,400] s, got 1e-300\n"},
+      {"sim --csv-interval-ms 0x10 ", "--csv-interval-ms: '0x10' is not a decimal number (allowed: [0.04, 86,400,000] ms)\n"},
+      {"sim --live --speed 0x2 ",
+       "--speed: '0x2' is not a decimal number (allowed: (0, 1,000,000] x real time) (or 'max')\n"},
+      {"serve --speed nan ", "--speed: must be in [0.001, 1,000] x real time, got nan\n"},
+      {"serve --speed 0x2 ", "--speed: '0x2' is not a decimal number (allowed: [0.001, 1,000] x real time)\n"},
+      {"serve --port 0x1f41 ", "--port: '0x1f41' is not a whole decimal number (allowed: [0, 65,535])\n"},
+      {"serve --port 70000 ", "--port: must be in [0, 65,535], got 70000\n"},
+      {"serve --baud ' 9600' ", "--baud: ' 9600' is not a whole decimal number (allowed: [1, 10,000,000] baud)\n"}};
+  for (const auto& [arguments, message] : cases) {
+    const CommandResult result = run(arguments + scenario, "decimal");
+    EXPECT_EQ(result.exit_code, 2) << arguments;
+    EXPECT_EQ(result.err, message) << arguments;
+    EXPECT_EQ(result.out, "") << arguments;
+  }
+  const std::string capture = kFixtures + "/long-pulses.vcd";
+  for (const char* value : {"0x28", "' 40'", "'40 '", "40.0"}) {
+    const CommandResult result = run("decode --frame-us " + std::string(value) + " " + capture, "decimal_frame");
+    EXPECT_EQ(result.exit_code, 2) << value;
+    EXPECT_NE(result.err.find("--frame-us must be 10, 20, 25 or 40"), std::string::npos) << result.err;
+  }
+}
+
+// Found by hand (issue 27): --speed and --serial-link did nothing without --live, silently.
+TEST(MalformedCommandLineTest, LiveOptionsNeedLive) {
+  const std::string scenario = source_path("examples/StepASketch");
+  const CommandResult speed = run("sim --speed 2 " + scenario, "live_only");
+  EXPECT_EQ(speed.exit_code, 2);
+  EXPECT_EQ(speed.err, "--speed: needs --live (it paces a live run)\n");
+  const CommandResult link = run("sim --serial-link driver=/tmp/never-made " + scenario, "live_only");
+  EXPECT_EQ(link.exit_code, 2);
+  EXPECT_EQ(link.err, "--serial-link: needs --live (it names a live run's terminal)\n");
+  EXPECT_EQ(link.out, "");
+}
+
+// Found by hand (issue 27): `--out ""` wrote into the example's own folder (an empty option was
+// taken as no option), and --serial-link deleted the file it was given to make a symlink.
+TEST(MalformedCommandLineTest, EmptyPathsAndFilesInTheWayOfALinkAreRefused) {
+  const std::string scenario = source_path("examples/StepASketch");
+  for (const char* option : {"--out", "--vcd", "--csv", "--cache"}) {
+    const CommandResult result = run("sim " + std::string(option) + " '' " + scenario, "empty_path");
+    EXPECT_EQ(result.exit_code, 2) << option;
+    EXPECT_NE(result.err.find(std::string(option) + ": must not be empty"), std::string::npos) << result.err;
+    EXPECT_EQ(result.out, "") << option;
+  }
+  const std::string scratch = test_output_dir("malformed_serial_link");
+  std::filesystem::create_directories(scratch);
+  const std::string notes = scratch + "/notes.txt";
+  std::ofstream(notes) << "my notes\n";
+  const CommandResult link = run("sim --live --serial-link driver=" + notes + " " + scenario, "serial_link");
+  EXPECT_EQ(link.exit_code, 2);
+  EXPECT_EQ(link.err, "--serial-link: '" + notes + "' exists and is not a symlink; it would be deleted (name a new path)\n");
+  EXPECT_EQ(read_file(notes), "my notes\n");
 }
 
 TEST(MalformedCommandLineTest, AnUnwritableOutputIsRefusedBeforeTheRun) {

@@ -65,6 +65,30 @@ TEST(PngWriter, SizeIsThePageTimesPixelsPerMm) {
   EXPECT_THROW(png_size(small_page(), 1000), std::invalid_argument);
 }
 
+// A page's image is bounded (cairo's 32,767 px a side, and 64 Mpx): beyond that the size is
+// refused with a reason, and fitting_px_per_mm gives the finest resolution that fits.
+TEST(PngWriter, ALargePageIsRefusedOrFittedToTheLimits) {
+  DrawingStyle square;
+  square.travel_width_mm = square.travel_height_mm = 100000;  // 100,020 mm pages with the margins
+  EXPECT_EQ(png_size_problem(square, 4),
+            "the PNG would be 400,080 x 400,080 px; at most 32,767 px a side and 64,000,000 px");
+  EXPECT_THROW(png_size(square, 4), std::invalid_argument);
+  // 64,000,000 px over a 100,020 mm square: sqrt(64e6) = 8,000 px a side, 8,000 / 100,020 px/mm.
+  const double square_fit = fitting_px_per_mm(square, 4);
+  EXPECT_NEAR(square_fit, 8000.0 / 100020.0, 1e-6);
+  const PngSize square_size = png_size(square, square_fit);
+  EXPECT_LE(int64_t{square_size.width} * square_size.height, kMaxPngPixels);
+  EXPECT_GE(square_size.width, 7990);
+  DrawingStyle strip;
+  strip.travel_width_mm = 1000000;  // 1,000,020 mm: the side limit binds first
+  strip.travel_height_mm = 10;
+  const PngSize strip_size = png_size(strip, fitting_px_per_mm(strip, 4));
+  EXPECT_LE(strip_size.width, kMaxPngSidePx);
+  EXPECT_GE(strip_size.width, kMaxPngSidePx - 40);
+  EXPECT_EQ(fitting_px_per_mm(small_page(), 4), 4.0);  // a page that fits keeps its resolution
+  EXPECT_EQ(png_size_problem(small_page(), 4), "");
+}
+
 TEST(PngWriter, PenDownStrokesAreBlackOnWhite) {
   const std::string path = test::temp_path("drawing.png");
   write_png(path, kStrokes, small_page(), 4);

@@ -232,5 +232,41 @@ TEST(BadScenarioText, NonAsciiWhereTomlPlusPlusTestsForWhitespaceIsRefusedWithIt
   }
 }
 
+// Found by hand (issue 27): toml++ 3.3 recurses once per dotted part of a key, so a key of
+// 40,000 parts overflowed the stack. Keys are bounded in parts and length before toml++ sees
+// them, wherever a key stands: a key/value pair, a table header, an inline table.
+TEST(BadScenarioText, KeysOfManyPartsOrGreatLengthAreRefusedWithTheirLine) {
+  std::string parts_40000 = "a";
+  for (int i = 1; i < 40000; ++i) parts_40000 += ".a";
+  std::string parts_17 = "a";
+  for (int i = 1; i < 17; ++i) parts_17 += ".a";
+  const std::string many = "a key of more than 16 dotted parts is not allowed in a scenario file";
+  const std::string long_key = "a key longer than 256 characters is not allowed in a scenario file";
+  const std::pair<std::string, std::string> cases[] = {
+      {parts_40000 + " = 1\n", many},
+      {"[" + parts_40000 + "]\n", many},
+      {"[[" + parts_17 + "]]\n", many},
+      {"x = { " + parts_17 + " = 1 }\n", many},
+      {"x = [{ y = 2, " + parts_17 + " = 1 }]\n", many},
+      {"\"a\" . 'b' . " + parts_17 + " = 1\n", many},
+      {std::string(257, 'k') + " = 1\n", long_key},
+      {"\"" + std::string(255, 'k') + "\" = 1\n", long_key},
+      {"x.\"" + std::string(300, '.') + "\" = 1\n", long_key}};
+  for (const auto& [text, message] : cases) {
+    const LoadResult result = parse_scenario("duration_s = 1\n" + text, "x.toml");
+    ASSERT_EQ(result.errors.size(), 1u) << text.substr(0, 60);
+    EXPECT_EQ(result.errors[0].to_string(), "x.toml:2: " + message) << text.substr(0, 60);
+  }
+  // Keys at the limits pass, and dots inside string values are no key's.
+  std::string parts_16 = "a";
+  for (int i = 1; i < 16; ++i) parts_16 += ".a";
+  const LoadResult fine = parse_scenario("duration_s = 1\n" + parts_16 + " = 1\n" + std::string(256, 'k') +
+                                             " = \"" + std::string(1000, '.') + "\"\n[" + parts_16 + "]\n",
+                                         "x.toml");
+  for (const Diagnostic& error : fine.errors) {
+    EXPECT_EQ(error.to_string().find("a key"), std::string::npos) << error.to_string();
+  }
+}
+
 }  // namespace
 }  // namespace stepdance::sim::scenario

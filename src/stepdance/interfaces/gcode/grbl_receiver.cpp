@@ -32,6 +32,15 @@ uint8_t GrblReceiver::pop() {
   return byte;
 }
 
+void GrblReceiver::append(ReceivedLine& line, uint8_t byte) {
+  if (is_discarded_control_byte(byte)) return;
+  if (line.length < ReceivedLine::kMaxLength) {
+    line.text[line.length++] = static_cast<char>(byte);
+  } else {
+    line.overflowed = true;
+  }
+}
+
 bool GrblReceiver::has_line_end() const {
   for (size_t i = 0; i < count_; ++i) {
     const uint8_t byte = ring_[(head_ + i) % kBufferBytes];
@@ -50,14 +59,7 @@ bool GrblReceiver::next_line(ReceivedLine& line) {
   if (!has_line_end()) {
     if (count_ < kBufferBytes) return false;
     partial_active_ = true;
-    while (count_ > 0) {
-      const uint8_t byte = pop();
-      if (partial_.length < ReceivedLine::kMaxLength) {
-        partial_.text[partial_.length++] = static_cast<char>(byte);
-      } else {
-        partial_.overflowed = true;
-      }
-    }
+    while (count_ > 0) append(partial_, pop());
     return false;
   }
   if (partial_active_) {
@@ -67,13 +69,7 @@ bool GrblReceiver::next_line(ReceivedLine& line) {
   }
   partial_ = ReceivedLine{};
   partial_active_ = false;
-  for (uint8_t byte = pop(); byte != '\n' && byte != '\r'; byte = pop()) {
-    if (line.length < ReceivedLine::kMaxLength) {
-      line.text[line.length++] = static_cast<char>(byte);
-    } else {
-      line.overflowed = true;
-    }
-  }
+  for (uint8_t byte = pop(); byte != '\n' && byte != '\r'; byte = pop()) append(line, byte);
   line.text[line.length] = '\0';
   // The byte just taken was the line end: remember a CR so a following LF is not a new line.
   const uint8_t end = ring_[(head_ + kBufferBytes - 1) % kBufferBytes];

@@ -15,6 +15,12 @@ inline bool is_realtime_byte(uint8_t byte) {
   return byte == '?' || byte == '!' || byte == '~' || byte == 0x18 || byte >= 0x80;
 }
 
+/// True for the control characters Grbl throws away while it assembles a line: every byte below
+/// 0x20 except CR and LF (which end lines). A NUL, a tab or a stray escape inside a line is
+/// dropped and the rest of the line kept, as Grbl 1.1's protocol loop does. DEL (0x7F) is not
+/// among them: Grbl stores it and its parser refuses the line (error:1). Context: any.
+inline bool is_discarded_control_byte(uint8_t byte) { return byte < 0x20 && byte != '\r' && byte != '\n'; }
+
 /// Told of each realtime byte as it is read. Context: loop.
 class RealtimeHandler {
  public:
@@ -37,7 +43,9 @@ struct ReceivedLine {
 /// buffer is full it keeps reading only while realtime bytes come (as Grbl's receive interrupt
 /// takes them out before they reach its buffer): the first other byte is held back in a
 /// one-byte slot and reading stops, so the stream holds the rest (back-pressure, nothing is
-/// dropped). next_line() takes one line out; CR, LF and CR LF each end one line.
+/// dropped). next_line() takes one line out; CR, LF and CR LF each end one line. Control bytes
+/// (is_discarded_control_byte) occupy the buffer like any other byte, as they do Grbl's, and
+/// are left out of the line.
 /// Context: loop only.
 class GrblReceiver {
  public:
@@ -56,6 +64,7 @@ class GrblReceiver {
  private:
   bool has_line_end() const;
   uint8_t pop();
+  static void append(ReceivedLine& line, uint8_t byte);
 
   uint8_t ring_[kBufferBytes] = {};
   size_t head_ = 0;   // next byte to take
