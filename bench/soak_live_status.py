@@ -2,12 +2,13 @@
 """Soak benchmark (not a test): the live simulator polled for status like a G-code sender, for an hour.
 
 Starts `stepdance sim examples/GCodeStepASketch/live.toml --live`, sends one move, then `?` every
-100 ms (10 Hz, as Grbl senders poll) for the given time, reading every reply. Prints the
-simulator's RSS after a warm-up and at the end (and its peak sample), the lines received, the
-last status report's position, and the run's own closing report. docs/simulator.md records the
-one-hour figures.
+100 ms of simulated time (10 Hz, as Grbl senders poll) for the given simulated time, reading every
+reply. At SPEED 1 (the default) that is real time; SPEED 10 runs the same hour of polls in six
+minutes (`--speed 10`, polls every 10 ms). Prints the simulator's RSS after a warm-up and at the
+end (and its peak sample), the lines received, the last status report's position, and the run's
+own closing report. docs/simulator.md records the figures.
 
-Usage: bench/soak_live_status.py [SECONDS] [STEPDANCE_BINARY]     (default 3600, build/stepdance)
+Usage: bench/soak_live_status.py [SECONDS] [SPEED] [STEPDANCE_BINARY]   (default 3600 1 build/stepdance)
 """
 import os
 import re
@@ -17,11 +18,13 @@ import sys
 import time
 import tty
 
-SECONDS = float(sys.argv[1]) if len(sys.argv) > 1 else 3600.0
+SIMULATED_S = float(sys.argv[1]) if len(sys.argv) > 1 else 3600.0
+SPEED = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-STEPDANCE = sys.argv[2] if len(sys.argv) > 2 else os.path.join(ROOT, "build", "stepdance")
+STEPDANCE = sys.argv[3] if len(sys.argv) > 3 else os.path.join(ROOT, "build", "stepdance")
+SECONDS = SIMULATED_S / SPEED  # wall time
 WARM_UP_S = min(30.0, SECONDS / 10)
-POLL_S = 0.1
+POLL_S = 0.1 / SPEED
 
 
 def rss_kb(pid):
@@ -36,7 +39,7 @@ def main():
     out_dir = os.path.join("/tmp", "stepdance-soak-%d" % os.getpid())
     process = subprocess.Popen(
         [STEPDANCE, "sim", os.path.join(ROOT, "examples", "GCodeStepASketch", "live.toml"), "--live",
-         "--out", out_dir], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+         "--speed", repr(SPEED), "--out", out_dir], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     announced = process.stdout.readline()
     terminal = re.fullmatch(r"serial driver: (\S+)\n", announced).group(1)
     port = os.open(terminal, os.O_RDWR | os.O_NOCTTY | os.O_NONBLOCK)
@@ -74,7 +77,8 @@ def main():
     process.send_signal(signal.SIGINT)
     report, _ = process.communicate(timeout=60)
     position = re.search(r"MPos:([-0-9.]+),([-0-9.]+),([-0-9.]+)", last_status)
-    print("soak: %.0f s of polling at %.0f Hz" % (SECONDS, 1 / POLL_S))
+    print("soak: %.0f simulated s of polling at 10 Hz of simulated time (speed %g: %.0f s of wall time)"
+          % (SIMULATED_S, SPEED, SECONDS))
     print("soak: RSS %d KiB after %.0f s, %d KiB at the end (growth %+d KiB), peak sample %d KiB"
           % (rss_start or 0, WARM_UP_S, rss_end, rss_end - (rss_start or 0), max(rss_peak, rss_end)))
     print("soak: %d lines received; last status %s" % (lines, last_status))

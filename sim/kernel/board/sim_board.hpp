@@ -110,8 +110,9 @@ class SimBoard {
   /// (teensy4/usb_serial.c in PJRC's cores); a host cannot get further ahead of the sketch.
   static constexpr size_t kConsoleInputBytes = 8 * 512;
   /// What the sketch printed is kept for inspection up to this much (the newest; older is dropped
-  /// and counted), and a line longer than kConsoleLineBytes is handed on in pieces.
-  static constexpr size_t kConsoleTextBytes = 1 << 20;
+  /// and counted; a one-hour soak's status replies made a megabyte of it), and a line longer than
+  /// kConsoleLineBytes is handed on in pieces.
+  static constexpr size_t kConsoleTextBytes = 64 * 1024;
   static constexpr size_t kConsoleLineBytes = 4096;
   /// A line left unfinished this long (simulated) is handed on as it is.
   static constexpr SimTime kConsoleQuietNs = 100 * kMillisecond;

@@ -37,7 +37,7 @@ TEST(BoundedBuffers, AnUnfinishedConsoleLineIsShownAfterAQuietInterval) {
   EXPECT_EQ(lines[1], (std::pair<SimTime, std::string>{1000 * kMillisecond, " done"}));
 }
 
-TEST(BoundedBuffers, TheConsoleKeptForInspectionIsItsNewestMegabyte) {
+TEST(BoundedBuffers, TheConsoleKeptForInspectionIsItsNewest64KiB) {
   auto simulation = create(load(fixture("Chatter")), "bounded_chatter", false);
   ASSERT_NE(simulation, nullptr);
   simulation->run_until(500 * kMillisecond);
