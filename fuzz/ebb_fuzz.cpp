@@ -10,7 +10,7 @@
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
-#include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/ebb/eibotboard.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
-#include "stepdance/interfaces/rpc.hpp"
+#include "stepdance/interfaces/rpc/rpc.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
 
 namespace {

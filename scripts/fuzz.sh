@@ -14,8 +14,8 @@ mkdir -p "$build"
 # Portable-core folders (every .cpp in them) or files each target links besides its fuzz file.
 # "core" stands for the whole portable core and the manual board (hosts whole blocks).
 declare -A target_sources=(
-  [gcode]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
-  [grbl]="src/stepdance/interfaces/gcode src/stepdance/interfaces/text_writer.cpp"
+  [gcode]="src/stepdance/interfaces/gcode src/stepdance/core/text_writer.cpp"
+  [grbl]="src/stepdance/interfaces/gcode src/stepdance/core/text_writer.cpp"
   [ebb]="core"
   [rpc]="core"
   [scenario]="sim/scenario"

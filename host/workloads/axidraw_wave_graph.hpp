@@ -13,7 +13,7 @@
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
-#include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/ebb/eibotboard.hpp"
 #include "stepdance/io/analog_input.hpp"
 #include "stepdance/io/output_port.hpp"
 #include "stepdance/motion/channel.hpp"

@@ -9,7 +9,7 @@
 #include "gcode_workload.hpp"
 #include "step_a_sketch_graph.hpp"
 #include "stepdance/core/byte_stream.hpp"
-#include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/interfaces/gcode/gcode_interface.hpp"
 
 namespace stepdance::workloads {
 

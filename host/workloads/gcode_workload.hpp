@@ -9,7 +9,7 @@
 
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 #include "stepdance/motion/planner/lookahead_planner.hpp"
 #include "stepdance/motion/planner/motion_limits.hpp"
 

@@ -7,7 +7,7 @@
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
 #include "stepdance/homing/homing.hpp"
-#include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/interfaces/gcode/gcode_interface.hpp"
 #include "stepdance/motion/channel.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"

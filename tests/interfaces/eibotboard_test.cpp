@@ -1,7 +1,7 @@
 // The EBB emulation as plotter software sees it: byte-exact replies in both syntaxes, the LM/LT
 // accumulator algorithm tick for tick against an independent model, exact SM/XM/HM endpoints,
 // flow control, pen and errors that change nothing.
-#include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/ebb/eibotboard.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // GCodeInterface end to end on the manual board: G-code text in, planned motion out.
-#include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/interfaces/gcode/gcode_interface.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"
 

@@ -1,5 +1,5 @@
 // RPC as a host sees it: the original's reply format, ids, every error, parameters, blocks, index.
-#include "stepdance/interfaces/rpc.hpp"
+#include "stepdance/interfaces/rpc/rpc.hpp"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 #include "stepdance/qwiic/oled_display.hpp"
 
 #include "stepdance/hal/hal.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 #include "stepdance/qwiic/font_5x7.hpp"
 #include "stepdance/qwiic/ssd1306.hpp"
 

@@ -2,7 +2,7 @@
 #include "stepdance/qwiic/status_menu.hpp"
 
 #include "stepdance/hal/hal.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 
 namespace stepdance {
 namespace {

@@ -11,7 +11,7 @@
 #include "stepdance/interfaces/gcode/grbl_machine.hpp"
 #include "stepdance/interfaces/gcode/grbl_receiver.hpp"
 #include "stepdance/interfaces/gcode/grbl_settings.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 
 namespace stepdance::gcode {
 

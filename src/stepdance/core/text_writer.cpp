@@ -1,5 +1,5 @@
 // Number formatting for protocol replies.
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 
 #include <math.h>
 

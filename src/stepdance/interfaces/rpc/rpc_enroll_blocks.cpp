@@ -1,5 +1,5 @@
 // The RPC names each block class enrolls, as the original library exposes them.
-#include "stepdance/interfaces/rpc.hpp"
+#include "stepdance/interfaces/rpc/rpc.hpp"
 #include "stepdance/io/encoder.hpp"
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"

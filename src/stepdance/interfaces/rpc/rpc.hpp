@@ -16,7 +16,7 @@
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/interfaces/rpc/json_request.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 
 namespace stepdance {
 

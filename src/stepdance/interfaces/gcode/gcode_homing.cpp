@@ -1,6 +1,6 @@
 // GCodeInterface's `$H`: runs the sketch's Homing and adopts the homed position afterwards.
 #include "stepdance/homing/homing.hpp"
-#include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/interfaces/gcode/gcode_interface.hpp"
 
 namespace stepdance {
 

@@ -1,5 +1,5 @@
 // Eibotboard: line framing and flow control in the loop; FIFO execution and outputs in the frame.
-#include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/ebb/eibotboard.hpp"
 
 #include <math.h>
 

@@ -1,7 +1,7 @@
 // Eibotboard commands: parameters checked as the EBB does, motion queued, queries answered.
 #include <string.h>
 
-#include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/ebb/eibotboard.hpp"
 
 #include "stepdance/core/fault.hpp"
 

@@ -1,6 +1,6 @@
 // RPC subscriptions: change events for subscribed parameters and readers, and fault events.
 #include "stepdance/hal/hal.hpp"
-#include "stepdance/interfaces/rpc.hpp"
+#include "stepdance/interfaces/rpc/rpc.hpp"
 
 namespace stepdance {
 

@@ -1,5 +1,5 @@
 // GCodeInterface: Grbl requests become planned moves; arcs are fed chord by chord as room allows.
-#include "stepdance/interfaces/gcode_interface.hpp"
+#include "stepdance/interfaces/gcode/gcode_interface.hpp"
 
 #include <math.h>
 

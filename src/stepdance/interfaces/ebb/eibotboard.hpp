@@ -13,7 +13,7 @@
 #include "stepdance/core/status.hpp"
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 #include "stepdance/interfaces/ebb/ebb_parameters.hpp"
-#include "stepdance/interfaces/text_writer.hpp"
+#include "stepdance/core/text_writer.hpp"
 
 namespace stepdance {
 

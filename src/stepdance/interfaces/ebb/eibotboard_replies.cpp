@@ -1,5 +1,5 @@
 // Eibotboard replies in the EBB's two syntaxes: legacy (OK lines, mixed endings) and future.
-#include "stepdance/interfaces/eibotboard.hpp"
+#include "stepdance/interfaces/ebb/eibotboard.hpp"
 
 namespace stepdance {
 

@@ -1,5 +1,5 @@
 // RPC: line reading, dispatch, replies (including the chunked __index__), registry, numbers.
-#include "stepdance/interfaces/rpc.hpp"
+#include "stepdance/interfaces/rpc/rpc.hpp"
 
 #include <math.h>
 
