@@ -24,6 +24,7 @@ namespace fs = std::filesystem;
 
 constexpr double kToleranceMm = 0.001;
 constexpr double kArcToleranceMm = 0.002;
+constexpr double kPi = 3.14159265358979323846;
 
 /// One motion as rs274 reported it, converted to machine millimetres.
 struct ReferenceMotion {
@@ -171,6 +172,9 @@ void expect_same_arc(const Motion& ours, const ReferenceMotion& reference, const
   EXPECT_NEAR(ours.center_0_mm, reference.center_0_mm, kToleranceMm) << where;
   EXPECT_NEAR(ours.center_1_mm, reference.center_1_mm, kToleranceMm) << where;
   EXPECT_EQ(ours.sweep_rad < 0.0, reference.rotation < 0) << where;
+  // LinuxCNC's rotation counts the turns begun (±1 up to a full circle, ±P for a P-turn arc).
+  const double turns = fabs(ours.sweep_rad) / (2.0 * kPi);
+  EXPECT_EQ(static_cast<int>(ceil(turns - 1e-9)), abs(reference.rotation)) << where;
   // Every chord end lies on the reference circle within the arc tolerance.
   const double radius = hypot(ours.start_mm[reference.axis_0] - reference.center_0_mm,
                               ours.start_mm[reference.axis_1] - reference.center_1_mm);

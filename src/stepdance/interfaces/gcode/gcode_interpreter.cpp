@@ -9,6 +9,9 @@ namespace stepdance::gcode {
 namespace {
 
 constexpr double kMmPerInch = 25.4;
+constexpr double kPi = 3.14159265358979323846;
+/// Most turns one G2/G3 line may ask for with P (a whole number from 1).
+constexpr double kMaxArcTurns = 100000.0;
 constexpr char kAxisLetters[kAxisCount] = {'X', 'Y', 'Z', 'E'};
 constexpr int kMaxMotionsPerLine = 2;  // G28/G30: intermediate point, then the stored position
 
@@ -51,6 +54,7 @@ class LineExecution {
   GrblError apply_non_modal(LinePlan& plan);
   GrblError apply_motion(LinePlan& plan);
   GrblError plan_arc(Motion& motion);
+  GrblError apply_arc_turns(Motion& motion);
   void apply_program_flow(LinePlan& plan);
 
   double unit_mm() const { return state_.modal.inches ? kMmPerInch : 1.0; }
@@ -217,15 +221,31 @@ GrblError LineExecution::plan_arc(Motion& motion) {
   const char offset_letters[3] = {'I', 'J', 'K'};
   if (!has_axis(motion.plane_axis_0) && !has_axis(motion.plane_axis_1)) return GrblError::kNoInPlaneAxisWords;
   const bool clockwise = state_.modal.motion == 20;
+  GrblError error = GrblError::kOk;
   if (block_.has_word('R')) {
     use(letter_bit('R'));
-    return complete_arc_radius(motion, clockwise, block_.word('R') * unit_mm());
+    error = complete_arc_radius(motion, clockwise, block_.word('R') * unit_mm());
+  } else {
+    const char letter_0 = offset_letters[motion.plane_axis_0];
+    const char letter_1 = offset_letters[motion.plane_axis_1];
+    if (!block_.has_word(letter_0) && !block_.has_word(letter_1)) return GrblError::kNoInPlaneOffsetWords;
+    use(letter_bit(letter_0) | letter_bit(letter_1));
+    error = complete_arc_ijk(motion, clockwise, block_.word(letter_0) * unit_mm(), block_.word(letter_1) * unit_mm());
   }
-  const char letter_0 = offset_letters[motion.plane_axis_0];
-  const char letter_1 = offset_letters[motion.plane_axis_1];
-  if (!block_.has_word(letter_0) && !block_.has_word(letter_1)) return GrblError::kNoInPlaneOffsetWords;
-  use(letter_bit(letter_0) | letter_bit(letter_1));
-  return complete_arc_ijk(motion, clockwise, block_.word(letter_0) * unit_mm(), block_.word(letter_1) * unit_mm());
+  return error == GrblError::kOk ? apply_arc_turns(motion) : error;
+}
+
+// P on a G2/G3 line is LinuxCNC's turn count (P1 is the plain arc, each more adds a full turn).
+// Grbl refuses such a line (error:36), so no line Grbl accepts changes meaning; a P that G4 took
+// stays the dwell's.
+GrblError LineExecution::apply_arc_turns(Motion& motion) {
+  if (!block_.has_word('P') || (used_words_ & letter_bit('P')) != 0) return GrblError::kOk;
+  const double turns = block_.word('P');
+  if (turns != floor(turns) || turns < 1.0 || turns > kMaxArcTurns) return GrblError::kCommandNeedsInteger;
+  use(letter_bit('P'));
+  const double extra_rad = 2.0 * kPi * (turns - 1.0);
+  motion.sweep_rad += motion.sweep_rad < 0.0 ? -extra_rad : extra_rad;
+  return GrblError::kOk;
 }
 
 GrblError LineExecution::apply_motion(LinePlan& plan) {
