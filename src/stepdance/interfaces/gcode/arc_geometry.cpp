@@ -64,6 +64,28 @@ GrblError complete_arc_radius(Motion& arc, bool clockwise, double radius_mm) {
   return GrblError::kOk;
 }
 
+void arc_bounds_mm(const Motion& arc, double (&low_mm)[kAxisCount], double (&high_mm)[kAxisCount]) {
+  for (int axis = 0; axis < kAxisCount; ++axis) {
+    low_mm[axis] = fmin(arc.start_mm[axis], arc.end_mm[axis]);
+    high_mm[axis] = fmax(arc.start_mm[axis], arc.end_mm[axis]);
+  }
+  const double start_rad = atan2(arc.start_mm[arc.plane_axis_1] - arc.center_1_mm,
+                                 arc.start_mm[arc.plane_axis_0] - arc.center_0_mm);
+  const double sweep = fabs(arc.sweep_rad);
+  const double direction = arc.sweep_rad < 0.0 ? -1.0 : 1.0;
+  // The extreme points in turn: +axis 0, +axis 1, -axis 0, -axis 1 (0°, 90°, 180°, 270°).
+  for (int quadrant = 0; quadrant < 4; ++quadrant) {
+    // How far the sweep must go from the start to reach this extreme, in [0, 2π).
+    double to_extreme = fmod(direction * (quadrant * kPi / 2.0 - start_rad), 2.0 * kPi);
+    if (to_extreme < 0.0) to_extreme += 2.0 * kPi;
+    if (to_extreme > sweep) continue;
+    const int axis = quadrant % 2 == 0 ? arc.plane_axis_0 : arc.plane_axis_1;
+    const double center = quadrant % 2 == 0 ? arc.center_0_mm : arc.center_1_mm;
+    if (quadrant < 2) high_mm[axis] = fmax(high_mm[axis], center + arc.radius_mm);
+    if (quadrant >= 2) low_mm[axis] = fmin(low_mm[axis], center - arc.radius_mm);
+  }
+}
+
 ArcSegmenter::ArcSegmenter(const Motion& arc, double tolerance_mm) : arc_(arc) {
   const double tolerance = tolerance_mm < 1e-3 ? 1e-3 : tolerance_mm;
   // A chord spanning angle a deviates r(1 - cos(a/2)) from the arc.

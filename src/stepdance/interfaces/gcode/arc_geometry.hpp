@@ -15,6 +15,13 @@ namespace stepdance::gcode {
 GrblError complete_arc_ijk(Motion& arc, bool clockwise, double offset_0_mm, double offset_1_mm);
 GrblError complete_arc_radius(Motion& arc, bool clockwise, double radius_mm);
 
+/// The box an arc sweeps through, machine mm, every axis: in its plane the two ends and each
+/// point of the circle at 0°, 90°, 180° or 270° round the centre that the sweep passes (all four
+/// for a turn or more); along the plane's normal and E, which move in proportion, the two ends.
+/// It holds every chord end an ArcSegmenter makes of the arc, whatever the tolerance.
+/// Context: any (pure function).
+void arc_bounds_mm(const Motion& arc, double (&low_mm)[kAxisCount], double (&high_mm)[kAxisCount]);
+
 /// Splits an arc into chords that stay within tolerance_mm of the true arc (sagitta), the last
 /// point exactly at the arc's end. The axis along the plane normal and E move in proportion.
 /// Context: any (pure; no state beyond the arc it was given).

@@ -183,20 +183,15 @@ GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
 
 bool GrblProtocol::within_travel(const Motion& motion) const {
   if (!settings_.soft_limits()) return true;
-  // Machine space is [0, $130..$132] from the power-on (or homed) origin.
-  auto inside = [this](const double* point_mm) {
-    for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
-      if (point_mm[axis] < 0.0 || point_mm[axis] > settings_.max_travel_mm(axis)) return false;
-    }
-    return true;
-  };
-  if (!inside(motion.end_mm)) return false;
-  if (motion.kind != MotionKind::kArc) return true;
-  ArcSegmenter chords(motion, settings_.arc_tolerance_mm());
-  for (uint32_t k = 1; k < chords.segment_count(); ++k) {
-    double point[kAxisCount];
-    chords.point_mm(k, point);
-    if (!inside(point)) return false;
+  // Machine space is [0, $130..$132] from the power-on (or homed) origin. A straight move is
+  // checked at its end (it starts where the last one ended); an arc by the box it sweeps,
+  // worked out in closed form, however many chords it makes.
+  double low[kAxisCount];
+  double high[kAxisCount];
+  for (int axis = 0; axis < kAxisCount; ++axis) low[axis] = high[axis] = motion.end_mm[axis];
+  if (motion.kind == MotionKind::kArc) arc_bounds_mm(motion, low, high);
+  for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
+    if (low[axis] < 0.0 || high[axis] > settings_.max_travel_mm(axis)) return false;
   }
   return true;
 }
