@@ -37,6 +37,7 @@ Status GCodeInterface::begin_stream(ByteStream& stream) {
 }
 
 void GCodeInterface::loop() {
+  arc_chords_left_this_pass_ = kArcChordsPerLoopPass;
   drain_pending();
   protocol_.poll();
   drain_pending();
@@ -158,12 +159,15 @@ bool GCodeInterface::feed_arc(const Motion& arc) {
   const gcode::ArcSegmenter chords(arc, settings().arc_tolerance_mm());
   const uint32_t count = chords.segment_count();
   while (arc_next_chord_ < count) {
+    if (arc_chords_left_this_pass_ == 0) return false;  // the rest in the next loop passes
     Motion chord = arc;
     chord.kind = MotionKind::kLinear;
     chords.point_mm(arc_next_chord_ + 1, chord.end_mm);
     const double time_s = arc.duration_min > 0.0 ? arc.duration_min * kSecondsPerMinute / count : 0.0;
     if (!queue_line_motion(chord, arc.feed_mm_per_min / kSecondsPerMinute, time_s)) return false;
     ++arc_next_chord_;
+    --arc_chords_left_this_pass_;
+    ++arc_chords_queued_;
   }
   arc_next_chord_ = 0;
   return true;
@@ -214,6 +218,14 @@ uint16_t GCodeInterface::queue_slots_total() { return planner::LookaheadPlanner:
 
 bool GCodeInterface::ready_for_line() {
   return pending_count_ == 0 && !interpolator_.stop_in_progress() && interpolator_.slots_remaining >= 3;
+}
+
+bool GCodeInterface::line_in_progress() {
+  for (int i = 0; i < pending_count_; ++i) {
+    const Pending& request = pending_[(pending_head_ + i) % kPendingCapacity];
+    if (request.kind == Pending::Kind::kMotion && request.motion.kind == MotionKind::kArc) return true;
+  }
+  return false;
 }
 
 void GCodeInterface::feed_hold() {

@@ -80,6 +80,14 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
   void loop() override;
 
+  /// Most arc chords one loop pass hands to the planner. A longer arc is fed over several
+  /// passes (its `ok` waits until all of it is planned, as Grbl's does) while realtime commands
+  /// are still served between them; planning one chord costs about 11,000 M7 instructions with
+  /// a full look-ahead queue, so this bounds the pass (docs/benchmarks-target.md).
+  static constexpr uint32_t kArcChordsPerLoopPass = 16;
+  /// Arc chords handed to the planner since begin(). Context: loop.
+  uint32_t arc_chords_queued() const { return arc_chords_queued_; }
+
  private:
   struct Pending {
     /// kSpindle and kPause wait for the planner to be idle (program order), then act.
@@ -109,6 +117,7 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   uint16_t queue_slots_free() override;
   uint16_t queue_slots_total() override;
   bool ready_for_line() override;
+  bool line_in_progress() override;
   void feed_hold() override;
   void cycle_start() override;
   bool soft_reset() override;
@@ -136,6 +145,8 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   int pending_head_ = 0;
   int pending_count_ = 0;
   uint32_t arc_next_chord_ = 0;  // chords of the pending arc already queued
+  uint32_t arc_chords_left_this_pass_ = kArcChordsPerLoopPass;
+  uint32_t arc_chords_queued_ = 0;
   bool holding_ = false;
   bool jogging_ = false;
   uint8_t feed_percent_ = 100;

@@ -34,6 +34,10 @@ class GrblMachine : public GcodeSink {
   virtual uint16_t queue_slots_total() = 0;
   /// Room for one more line's requests.
   virtual bool ready_for_line() = 0;
+  /// True while the machine is still taking the requests of the line executed last (an arc's
+  /// chords, fed to the planner across loop passes). Its `ok` waits until then, as Grbl answers
+  /// an arc only once all of it is planned. Context: loop.
+  virtual bool line_in_progress() { return false; }
 
   /// `!`: decelerate to a stop within the acceleration limits, keep the queue.
   virtual void feed_hold() = 0;

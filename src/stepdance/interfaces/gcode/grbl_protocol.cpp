@@ -83,7 +83,7 @@ void GrblProtocol::poll() {
     status_requested_ = false;
     report_status();
   }
-  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done(); ++i) {
+  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done() && answer_line_when_taken(); ++i) {
     if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) break;
     ReceivedLine line;
     if (!receiver_.next_line(line)) break;
@@ -152,7 +152,8 @@ void GrblProtocol::execute_line(const ReceivedLine& line) {
     error = execute_gcode(text, length);
   }
   if (error == GrblError::kOk) {
-    if (!homing_reply_pending_) send_text("ok");
+    ok_owed_ = !homing_reply_pending_;
+    answer_line_when_taken();
   } else {
     char storage[16];
     TextWriter reply(storage, sizeof(storage));
@@ -214,6 +215,14 @@ bool GrblProtocol::answer_homing_when_done() {
   return true;
 }
 
+bool GrblProtocol::answer_line_when_taken() {
+  if (!ok_owed_) return true;
+  if (machine_->line_in_progress() || reply_space() < 4) return false;
+  ok_owed_ = false;
+  send_text("ok");
+  return true;
+}
+
 void GrblProtocol::raise_alarm(uint8_t code) {
   alarm_ = code;
   char storage[16];
@@ -225,6 +234,7 @@ void GrblProtocol::raise_alarm(uint8_t code) {
 void GrblProtocol::soft_reset() {
   reset_requested_ = false;
   homing_reply_pending_ = false;  // the reset answers for the `$H` line, as on Grbl
+  ok_owed_ = false;               // and for a line whose arc it abandons
   const bool was_moving = machine_->soft_reset();
   receiver_.clear();
   const CoordinateData coordinates = interpreter_.coordinate_data();

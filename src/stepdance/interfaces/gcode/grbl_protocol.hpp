@@ -37,6 +37,9 @@ class GrblProtocol final : private RealtimeHandler {
   /// Raises a Grbl alarm (ALARM:N is sent); e.g. a limit or fault from the machine.
   void raise_alarm(uint8_t code);
   bool answer_homing_when_done();
+  /// Sends the `ok` of a line the machine was still taking (line_in_progress()) once it has.
+  /// Returns true once no such `ok` is owed.
+  bool answer_line_when_taken();
 
   /// Replies that found no room (should stay 0: lines are taken only when their reply fits).
   uint32_t replies_dropped() const { return replies_dropped_; }
@@ -80,6 +83,7 @@ class GrblProtocol final : private RealtimeHandler {
   ParserOptions parser_options_;
   uint8_t alarm_ = 0;
   bool homing_reply_pending_ = false;  // `$H` is answered when its routine ends, as Grbl does
+  bool ok_owed_ = false;               // a line's `ok`, sent once the machine has taken all of it
   bool check_mode_ = false;
   bool status_requested_ = false;
   bool reset_requested_ = false;
