@@ -71,12 +71,11 @@ class ArcWorkload {
     gcode.interpolator().set_acceleration(100000);  // the path's own limit (2,000 mm/s² by default)
     dance_start();
   }
-  /// The measured part: one loop pass of the link.
-  void loop_pass() { gcode.loop(); }
-  /// Unmeasured: one millisecond of frames.
-  void between_passes() {
-    for (int frame = 0; frame < 25; ++frame) engine().run_frame();
-  }
+  /// The measured part: one loop pass, dance_loop()'s: the link, then the interpolator's own loop
+  /// work (handing planned blocks to the frame).
+  void loop_pass() { engine().run_loop(); }
+  /// Unmeasured: one millisecond of frames (the board's clock moves, the kilohertz tick runs).
+  void between_passes() { hal_manual::run_frames(25); }
   /// Done once all three lines are answered and the machine has stopped.
   bool done() { return program.oks() + program.errors() >= 3 && gcode.interpolator().is_idle(); }
   bool failed() const { return program.errors() != 0 || program.oks() != 3; }
