@@ -152,8 +152,9 @@ void GrblProtocol::execute_line(const ReceivedLine& line) {
     error = execute_gcode(text, length);
   }
   if (error == GrblError::kOk) {
-    ok_owed_ = !homing_reply_pending_;
-    answer_line_when_taken();
+    // `$H` is answered when its routine ends, a line still being taken once it has been.
+    if (!homing_reply_pending_ && machine_->line_in_progress()) ok_owed_ = true;
+    if (!homing_reply_pending_ && !ok_owed_) send_text("ok");
   } else {
     char storage[16];
     TextWriter reply(storage, sizeof(storage));
@@ -215,8 +216,7 @@ bool GrblProtocol::answer_homing_when_done() {
   return true;
 }
 
-bool GrblProtocol::answer_line_when_taken() {
-  if (!ok_owed_) return true;
+bool GrblProtocol::send_owed_ok() {
   if (machine_->line_in_progress() || reply_space() < 4) return false;
   ok_owed_ = false;
   send_text("ok");

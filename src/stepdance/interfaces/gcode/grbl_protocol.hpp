@@ -39,7 +39,7 @@ class GrblProtocol final : private RealtimeHandler {
   bool answer_homing_when_done();
   /// Sends the `ok` of a line the machine was still taking (line_in_progress()) once it has.
   /// Returns true once no such `ok` is owed.
-  bool answer_line_when_taken();
+  bool answer_line_when_taken() { return !ok_owed_ || send_owed_ok(); }
 
   /// Replies that found no room (should stay 0: lines are taken only when their reply fits).
   uint32_t replies_dropped() const { return replies_dropped_; }
@@ -59,6 +59,7 @@ class GrblProtocol final : private RealtimeHandler {
   void save_stored_settings();
   bool within_travel(const Motion& motion) const;
   void soft_reset();
+  bool send_owed_ok();
   void sync_position_when_idle();
 
   void send_line(const TextWriter& line);
