@@ -49,6 +49,7 @@ class LineExecution {
   GrblError apply_feed();
   GrblError apply_spindle_and_dwell(LinePlan& plan);
   GrblError apply_non_modal(LinePlan& plan);
+  GrblError apply_tool_length();
   GrblError apply_motion(LinePlan& plan);
   GrblError plan_arc(Motion& motion);
   void apply_program_flow(LinePlan& plan);
@@ -59,6 +60,8 @@ class LineExecution {
   double system_offset_mm(int axis) const {
     return axis < kOffsetAxisCount ? state_.coordinates.system_offset_mm[state_.modal.coordinate_system][axis] : 0.0;
   }
+  /// G43.1's offset on Z, as Grbl adds it to absolute targets and work offsets (G10 L20, G92).
+  double tool_length_mm(int axis) const { return axis == kAxisZ ? state_.modal.tool_length_offset_mm : 0.0; }
   void use(uint32_t letters) { used_words_ |= (block_.words_present & letters); }
   void target_mm(bool machine_coordinates, double (&out)[kAxisCount]) const;
   Motion& add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]);
@@ -129,7 +132,7 @@ void LineExecution::target_mm(bool machine_coordinates, double (&out)[kAxisCount
     } else if (relative) {
       out[axis] = state_.position_mm[axis] + axis_mm(axis);
     } else {
-      out[axis] = axis_mm(axis) + system_offset_mm(axis) + state_.g92_mm[axis];
+      out[axis] = axis_mm(axis) + system_offset_mm(axis) + state_.g92_mm[axis] + tool_length_mm(axis);
     }
   }
 }
@@ -169,7 +172,8 @@ GrblError LineExecution::apply_non_modal(LinePlan& plan) {
       for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
         if (!has_axis(axis)) continue;
         double& offset = state_.coordinates.system_offset_mm[system][axis];
-        offset = (l == 2.0) ? axis_mm(axis) : state_.position_mm[axis] - state_.g92_mm[axis] - axis_mm(axis);
+        offset = (l == 2.0) ? axis_mm(axis)
+                            : state_.position_mm[axis] - state_.g92_mm[axis] - axis_mm(axis) - tool_length_mm(axis);
       }
       plan.coordinates_changed = true;
       break;
@@ -197,7 +201,8 @@ GrblError LineExecution::apply_non_modal(LinePlan& plan) {
     case 920:  // G92: the current position becomes the given work coordinates
       if (!has_axes) return GrblError::kNoAxisWords;
       for (int axis = 0; axis < kAxisCount; ++axis) {
-        if (has_axis(axis)) state_.g92_mm[axis] = state_.position_mm[axis] - system_offset_mm(axis) - axis_mm(axis);
+        if (!has_axis(axis)) continue;
+        state_.g92_mm[axis] = state_.position_mm[axis] - system_offset_mm(axis) - axis_mm(axis) - tool_length_mm(axis);
       }
       break;
     case 921:  // G92.1
@@ -206,6 +211,26 @@ GrblError LineExecution::apply_non_modal(LinePlan& plan) {
     default:  // G4 (handled with the dwell), G53 (with the motion)
       break;
   }
+  return GrblError::kOk;
+}
+
+// G43.1 Z<offset> / G49, as Grbl 1.1: an axis command of its own (no motion or G10/G28/G30/G92
+// beside it: error:24), G43.1 with exactly the Z word (error:37 otherwise).
+GrblError LineExecution::apply_tool_length() {
+  if (!block_.has_g(GGroup::kToolLength)) return GrblError::kOk;
+  const bool motion = block_.has_g(GGroup::kMotion) && block_.g_code(GGroup::kMotion) != 800;
+  const CommandCode non_modal = block_.has_g(GGroup::kNonModal) ? block_.g_code(GGroup::kNonModal) : 0;
+  const bool axis_command = non_modal == 100 || non_modal == 280 || non_modal == 300 || non_modal == 920;
+  if (motion || axis_command) return GrblError::kAxisCommandConflict;
+  axis_words_taken_ = true;
+  state_.modal.tool_length_dynamic = block_.g_code(GGroup::kToolLength) == 431;
+  if (!state_.modal.tool_length_dynamic) {
+    state_.modal.tool_length_offset_mm = 0.0;
+    return GrblError::kOk;
+  }
+  if ((block_.words_present & kAxisWords) != letter_bit('Z')) return GrblError::kG43DynamicAxisError;
+  use(letter_bit('Z'));
+  state_.modal.tool_length_offset_mm = axis_mm(kAxisZ);
   return GrblError::kOk;
 }
 
@@ -243,6 +268,7 @@ GrblError LineExecution::apply_motion(LinePlan& plan) {
                                                         : state_.modal.feed_mm_per_min <= 0.0;
     if (feed_missing) return GrblError::kUndefinedFeedRate;
   }
+  if ((mode == 20 || mode == 30) && !has_axes) return GrblError::kNoAxisWords;  // Grbl: before error:32
   if (mode == 20 || mode == 30) {
     double end[kAxisCount];
     target_mm(false, end);
@@ -283,6 +309,7 @@ GrblError LineExecution::run(LinePlan& plan) {
   apply_modes();
   GrblError error = apply_feed();
   if (error == GrblError::kOk) error = apply_spindle_and_dwell(plan);
+  if (error == GrblError::kOk) error = apply_tool_length();
   if (error == GrblError::kOk) error = apply_non_modal(plan);
   if (error == GrblError::kOk) error = apply_motion(plan);
   if (error != GrblError::kOk) return error;
@@ -328,7 +355,8 @@ GrblError GcodeInterpreter::execute(const GcodeBlock& block, GcodeSink& sink) {
 
 double GcodeInterpreter::work_offset_mm(int axis) const {
   const double system = axis < kOffsetAxisCount ? coordinates_.system_offset_mm[modal_.coordinate_system][axis] : 0.0;
-  return system + g92_offset_mm_[axis];
+  const double tool_length = axis == kAxisZ ? modal_.tool_length_offset_mm : 0.0;
+  return system + g92_offset_mm_[axis] + tool_length;
 }
 
 void GcodeInterpreter::set_position_mm(const double (&machine_mm)[kAxisCount]) {

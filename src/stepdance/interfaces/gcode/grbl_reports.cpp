@@ -127,7 +127,10 @@ void GrblProtocol::report_parameters() {
   line.text("[G92:");
   append_axes(line, interpreter_.g92_offset_mm(), kOffsetAxisCount);
   send_line(line.character(']'));
-  send_text("[TLO:0.000]");
+  line.clear();
+  line.text("[TLO:");
+  append_axes(line, &interpreter_.modal().tool_length_offset_mm, 1);
+  send_line(line.character(']'));
   send_text("[PRB:0.000,0.000,0.000:0]");
 }
 
