@@ -91,6 +91,9 @@ class TimeBasedInterpolator : public Block {
   bool is_idle();
   /// True when add_move would refuse for lack of room. Context: loop.
   bool queue_is_full();
+  /// Moves (and dwells) not yet finished: waiting in the planner, handed to the frame, and the
+  /// one executing. Context: loop.
+  size_t moves_held() const { return planner_.size() + committed_.size() + (executor_.idle() ? 0u : 1u); }
   /// Decelerates to rest within the acceleration limit, then drops every queued move. Positions
   /// stay where the deceleration ends. Context: loop.
   void reset_block_queue();

@@ -75,7 +75,11 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
 
   /// `$H` runs `homing` (its status reads Run until it ends; the interface then adopts the
   /// homed machine position). Without one `$H` answers error:5. Context: loop.
-  void set_homing(Homing* homing) { homing_ = homing; }
+  /// Setting it turns `$22` (homing enabled) on by default, as `$H` and `$20` need.
+  void set_homing(Homing* homing) {
+    homing_ = homing;
+    settings().set_from_sketch(22, homing != nullptr ? 1.0 : 0.0);
+  }
 
   /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
   void loop() override;

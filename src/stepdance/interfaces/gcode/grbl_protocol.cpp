@@ -9,6 +9,7 @@ namespace {
 constexpr size_t kLargestReplyBytes = 640;  // `$$` and `$#` with their `ok`
 constexpr size_t kStatusReportBytes = 164;  // the longest report and its line end
 constexpr int kLinesPerPoll = 4;            // bounds the time one loop pass spends here
+constexpr uint8_t kAlarmSoftLimit = 2;      // Grbl's "soft limit": a target outside the travel
 constexpr uint8_t kAlarmHomingFailed = 9;   // Grbl's "homing fail: could not find limit switch"
 
 /// Holds a line's requests until its travel check passes, then hands them on in order.
@@ -55,14 +56,6 @@ class DeferredRequests final : public GcodeSink {
   bool coordinates_changed_ = false;
 };
 
-const char* skip_blanks(const char* text, size_t& length) {
-  while (length > 0 && (*text == ' ' || *text == '\t')) {
-    ++text;
-    --length;
-  }
-  return text;
-}
-
 }  // namespace
 
 void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileStore* store) {
@@ -77,25 +70,43 @@ void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileSt
 void GrblProtocol::poll() {
   if (stream_ == nullptr) return;
   flush_replies();
-  receiver_.pump(*stream_, *this);
+  if (soft_limit_ == SoftLimit::kLocked) {
+    receiver_.discard(*stream_, *this);  // as Grbl's critical-event loop: only a reset is heard
+  } else {
+    receiver_.pump(*stream_, *this);
+  }
   if (reset_requested_) soft_reset();
   if (status_requested_ && reply_space() >= kStatusReportBytes) {
     status_requested_ = false;
     report_status();
   }
-  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done(); ++i) {
-    if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) break;
-    ReceivedLine line;
-    if (!receiver_.next_line(line)) break;
-    execute_line(line);
-  }
+  if (soft_limit_ == SoftLimit::kStopping) finish_soft_limit_stop();
+  serve_lines();
   flush_replies();
 }
 
+void GrblProtocol::serve_lines() {
+  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done(); ++i) {
+    if (soft_limit_ != SoftLimit::kNone) return;
+    if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) return;
+    ReceivedLine line;
+    if (!receiver_.next_line(line)) return;
+    execute_line(line);
+  }
+}
+
 void GrblProtocol::on_realtime(uint8_t byte) {
+  if (byte == 0x18) {
+    reset_requested_ = true;
+    return;
+  }
+  if (soft_limit_ != SoftLimit::kNone) {
+    // Stopping for a soft limit: status is still answered; locked: nothing but the reset is.
+    if (byte == '?' && soft_limit_ == SoftLimit::kStopping) status_requested_ = true;
+    return;
+  }
   switch (byte) {
     case '?': status_requested_ = true; break;
-    case 0x18: reset_requested_ = true; break;
     case '!':
     case 0x84:  // safety door: we have no door input, so it acts as a feed hold
       if (machine_->motion_state() == MotionState::kJog) {
@@ -140,17 +151,21 @@ void GrblProtocol::handle_override(uint8_t byte) {
   reports_until_overrides_ = 0;
 }
 
+// Grbl 1.1's order: an over-long line, an empty one, a `$` command, a lock, then G-code.
 void GrblProtocol::execute_line(const ReceivedLine& line) {
   GrblError error = GrblError::kOk;
-  size_t length = line.length;
-  const char* text = skip_blanks(line.text, length);
   if (line.overflowed) {
     error = GrblError::kLineOverflow;
-  } else if (length > 0 && text[0] == '$') {
-    error = execute_system(text + 1, length - 1);
+  } else if (line.length == 0) {
+    error = GrblError::kOk;  // empty or comment only: answered, for the sender's count
+  } else if (line.text[0] == '$') {
+    error = execute_system(line.text + 1, line.length - 1);
+  } else if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) {
+    error = GrblError::kLocked;
   } else {
-    error = execute_gcode(text, length);
+    error = execute_gcode(line.text, line.length);
   }
+  if (soft_limit_ != SoftLimit::kNone) return;  // the alarm answers for the line, as on Grbl
   if (error == GrblError::kOk) {
     if (!homing_reply_pending_) send_text("ok");
   } else {
@@ -167,18 +182,38 @@ GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
   if (syntax != GrblError::kOk) return syntax;
   const bool empty = block.words_present == 0 && block.g_groups_present == 0 && block.m_groups_present == 0;
   if (empty) return GrblError::kOk;
-  if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) return GrblError::kLocked;
   sync_position_when_idle();
   GcodeInterpreter trial = interpreter_;
   DeferredRequests requests;
   const GrblError error = trial.execute(block, requests);
   if (error != GrblError::kOk) return error;
   for (int i = 0; i < requests.motion_count(); ++i) {
-    if (!within_travel(requests.motion(i))) return GrblError::kTravelExceeded;
+    if (within_travel(requests.motion(i))) continue;
+    begin_soft_limit_alarm();  // nothing of the line runs, and nothing after it until a reset
+    return GrblError::kOk;
   }
   interpreter_ = trial;
   if (!check_mode_) requests.replay(*machine_);
   return GrblError::kOk;
+}
+
+// A target outside the travel with soft limits on: as Grbl's limits_soft_check, a moving
+// machine first comes to a controlled stop (feed hold), then everything queued is dropped and
+// ALARM:2 raised; the link then hears nothing but a reset, after which `$X` or `$H` unlocks.
+void GrblProtocol::begin_soft_limit_alarm() {
+  soft_limit_ = SoftLimit::kStopping;
+  if (machine_->motion_state() == MotionState::kRun) machine_->feed_hold();
+  finish_soft_limit_stop();
+}
+
+void GrblProtocol::finish_soft_limit_stop() {
+  const MotionState state = machine_->motion_state();
+  const bool stopped = state == MotionState::kIdle || (state == MotionState::kHolding && machine_->hold_complete());
+  if (!stopped) return;
+  machine_->soft_reset();  // at rest: drops the queue, position kept
+  soft_limit_ = SoftLimit::kLocked;
+  raise_alarm(kAlarmSoftLimit);
+  send_text("[MSG:Reset to continue]");
 }
 
 bool GrblProtocol::within_travel(const Motion& motion) const {
@@ -229,6 +264,7 @@ void GrblProtocol::raise_alarm(uint8_t code) {
 
 void GrblProtocol::soft_reset() {
   reset_requested_ = false;
+  soft_limit_ = SoftLimit::kNone;
   homing_reply_pending_ = false;  // the reset answers for the `$H` line, as on Grbl
   const bool was_moving = machine_->soft_reset();
   receiver_.clear();

@@ -46,9 +46,22 @@ class GrblProtocol final : private RealtimeHandler {
  private:
   void on_realtime(uint8_t byte) override;
   void handle_override(uint8_t byte);
+  /// Grbl's states as its `$` commands tell them apart (one at a time, alarm first).
+  enum class LinkState : uint8_t { kIdle, kAlarm, kCheck, kRun, kHold, kJog };
+  /// A soft-limit violation's course: the machine stops, ALARM:2, then only a reset is heard.
+  enum class SoftLimit : uint8_t { kNone, kStopping, kLocked };
+
+  LinkState link_state();
+  void serve_lines();
   void execute_line(const ReceivedLine& line);
   GrblError execute_gcode(const char* text, size_t length);
+  void begin_soft_limit_alarm();
+  void finish_soft_limit_stop();
   GrblError execute_system(const char* text, size_t length);
+  GrblError execute_any_state_command(char command);
+  GrblError execute_idle_command(const char* text, size_t length);
+  GrblError toggle_check_mode();
+  GrblError execute_homing(size_t length);
   GrblError execute_jog(const char* text, size_t length);
   GrblError execute_setting_write(const char* text, size_t length);
   GrblError execute_restore(const char* text, size_t length);
@@ -79,6 +92,7 @@ class GrblProtocol final : private RealtimeHandler {
   GcodeInterpreter interpreter_;
   ParserOptions parser_options_;
   uint8_t alarm_ = 0;
+  SoftLimit soft_limit_ = SoftLimit::kNone;
   bool homing_reply_pending_ = false;  // `$H` is answered when its routine ends, as Grbl does
   bool check_mode_ = false;
   bool status_requested_ = false;

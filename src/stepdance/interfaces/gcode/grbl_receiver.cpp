@@ -1,4 +1,4 @@
-// Receive buffer and line assembly of the Grbl link.
+// Receive buffer and line assembly of the Grbl link, by the rules of Grbl 1.1's protocol loop.
 #include "stepdance/interfaces/gcode/grbl_receiver.hpp"
 
 namespace stepdance::gcode {
@@ -25,69 +25,68 @@ void GrblReceiver::pump(ByteStream& stream, RealtimeHandler& handler) {
   }
 }
 
-uint8_t GrblReceiver::pop() {
-  const uint8_t byte = ring_[head_];
-  head_ = (head_ + 1) % kBufferBytes;
-  --count_;
-  return byte;
-}
-
-void GrblReceiver::append(ReceivedLine& line, uint8_t byte) {
-  if (is_discarded_control_byte(byte)) return;
-  if (line.length < ReceivedLine::kMaxLength) {
-    line.text[line.length++] = static_cast<char>(byte);
-  } else {
-    line.overflowed = true;
+void GrblReceiver::discard(ByteStream& stream, RealtimeHandler& handler) {
+  for (int value = stream.read_byte(); value >= 0; value = stream.read_byte()) {
+    if (is_realtime_byte(static_cast<uint8_t>(value))) handler.on_realtime(static_cast<uint8_t>(value));
   }
 }
 
-bool GrblReceiver::has_line_end() const {
-  for (size_t i = 0; i < count_; ++i) {
-    const uint8_t byte = ring_[(head_ + i) % kBufferBytes];
-    if (byte == '\n' || byte == '\r') return true;
+bool GrblReceiver::next_line(ReceivedLine& line) {
+  while (count_ > 0) {
+    const uint8_t byte = ring_[head_];
+    head_ = (head_ + 1) % kBufferBytes;
+    --count_;
+    if (byte == '\r' || byte == '\n') {
+      line_.text[line_.length] = '\0';
+      line = line_;
+      clear_line();
+      return true;
+    }
+    assemble(byte);
   }
   return false;
 }
 
-bool GrblReceiver::next_line(ReceivedLine& line) {
-  if (skip_lf_ && count_ > 0) {
-    if (ring_[head_] == '\n') pop();
-    skip_lf_ = false;
+void GrblReceiver::assemble(uint8_t byte) {
+  if (in_parentheses_ || in_semicolon_ || line_.overflowed) {
+    if (byte == ')') in_parentheses_ = false;  // only a `( )` comment ends before the line does
+    return;
   }
-  // Without a line end, a full buffer can only be the start of an over-long line: move it out
-  // so the buffer keeps draining.
-  if (!has_line_end()) {
-    if (count_ < kBufferBytes) return false;
-    partial_active_ = true;
-    while (count_ > 0) append(partial_, pop());
-    return false;
+  if (is_discarded_control_byte(byte)) {
+    blank_pending_ = true;
+  } else if (byte == '(') {
+    in_parentheses_ = true;
+    blank_pending_ = true;
+  } else if (byte == ';') {
+    in_semicolon_ = true;
+  } else if (byte != '/') {  // block delete is not supported: the character is ignored
+    store(byte);
   }
-  if (partial_active_) {
-    line = partial_;
-  } else {
-    line = ReceivedLine{};
+}
+
+void GrblReceiver::store(uint8_t byte) {
+  if (line_.significant == ReceivedLine::kMaxLength) {
+    line_.overflowed = true;  // the rest of the line is thrown away; its reply is error:11
+    return;
   }
-  partial_ = ReceivedLine{};
-  partial_active_ = false;
-  for (uint8_t byte = pop(); byte != '\n' && byte != '\r'; byte = pop()) append(line, byte);
-  line.text[line.length] = '\0';
-  // The byte just taken was the line end: remember a CR so a following LF is not a new line.
-  const uint8_t end = ring_[(head_ + kBufferBytes - 1) % kBufferBytes];
-  skip_lf_ = (end == '\r');
-  if (skip_lf_ && count_ > 0 && ring_[head_] == '\n') {
-    pop();
-    skip_lf_ = false;
-  }
-  return true;
+  if (blank_pending_ && line_.length > 0 && line_.text[0] != '$') line_.text[line_.length++] = ' ';
+  blank_pending_ = false;
+  line_.text[line_.length++] = (byte >= 'a' && byte <= 'z') ? static_cast<char>(byte - 'a' + 'A') : static_cast<char>(byte);
+  ++line_.significant;
+}
+
+void GrblReceiver::clear_line() {
+  line_ = ReceivedLine{};
+  in_parentheses_ = false;
+  in_semicolon_ = false;
+  blank_pending_ = false;
 }
 
 void GrblReceiver::clear() {
   head_ = 0;
   count_ = 0;
   held_byte_ = -1;
-  skip_lf_ = false;
-  partial_ = ReceivedLine{};
-  partial_active_ = false;
+  clear_line();
 }
 
 }  // namespace stepdance::gcode

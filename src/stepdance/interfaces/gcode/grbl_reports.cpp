@@ -154,7 +154,7 @@ void GrblProtocol::report_parser_state() {
 }
 
 void GrblProtocol::report_build_info() {
-  send_text("[VER:1.1h.20190825:Stepdance]");
+  send_text("[VER:1.1h.20190830:Stepdance]");
   char storage[32];
   TextWriter line(storage, sizeof(storage));
   // No Grbl build options apply; then planner blocks and receive-buffer bytes, honestly.

@@ -4,68 +4,110 @@
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
 
 namespace stepdance::gcode {
-namespace {
 
-bool equals(const char* text, size_t length, const char* expected) {
-  return strlen(expected) == length && strncmp(text, expected, length) == 0;
+GrblProtocol::LinkState GrblProtocol::link_state() {
+  if (alarm_ != 0) return LinkState::kAlarm;
+  if (check_mode_) return LinkState::kCheck;
+  switch (machine_->motion_state()) {
+    case MotionState::kRun: return LinkState::kRun;
+    case MotionState::kHolding: return LinkState::kHold;
+    case MotionState::kJog: return LinkState::kJog;
+    case MotionState::kIdle: break;
+  }
+  return LinkState::kIdle;
 }
 
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
-
-}  // namespace
-
+// `text` follows the `$`, upper-cased and without blanks (the receiver's work). The state rules
+// and error numbers are Grbl 1.1h's system_execute_line: `$J=` in Idle or Jog; `$$ $G $C $X`
+// (one letter) in any state but `$$` not while running or holding; everything else in Idle or
+// Alarm only.
 GrblError GrblProtocol::execute_system(const char* text, size_t length) {
-  char command[8] = {};
-  for (size_t i = 0; i < length && i < sizeof(command) - 1; ++i) command[i] = upper(text[i]);
-  const bool idle = machine_->motion_state() == MotionState::kIdle;
   if (length == 0) {
     send_text("[HLP:$$ $# $G $I $N $x=val $Nx=line $J=line $SLP $C $X $H ~ ! ? ctrl-x]");
-  } else if (equals(command, length, "$")) {
-    report_settings();
-  } else if (equals(command, length, "#")) {
-    report_parameters();
-  } else if (equals(command, length, "G")) {
-    report_parser_state();
-  } else if (equals(command, length, "I")) {
-    report_build_info();
-  } else if (equals(command, length, "N")) {
-    send_text("$N0=");  // startup lines are not stored: nothing runs at reset
-    send_text("$N1=");
-  } else if (equals(command, length, "X")) {
-    if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
-    alarm_ = 0;
-  } else if (equals(command, length, "H")) {
-    if (!idle) return GrblError::kNotIdle;
-    const GrblError error = machine_->home();
-    if (error == GrblError::kOk) {
-      alarm_ = 0;
-      homing_reply_pending_ = machine_->homing_in_progress();
-    }
-    if (error == GrblError::kHomingDisabled) send_text("[MSG:Homing is not set up on this machine]");
-    return error;
-  } else if (equals(command, length, "C")) {
-    if (!idle) return GrblError::kNotIdle;
-    check_mode_ = !check_mode_;
-    send_text(check_mode_ ? "[MSG:Enabled]" : "[MSG:Disabled]");
-    if (!check_mode_) reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
-  } else if (length > 4 && strncmp(command, "RST=", 4) == 0) {
-    if (!idle) return GrblError::kNotIdle;
-    return execute_restore(text + 4, length - 4);
-  } else if (length > 2 && upper(text[0]) == 'J' && text[1] == '=') {
+    return GrblError::kOk;
+  }
+  const char command = text[0];
+  if (command == 'J') {
+    const LinkState state = link_state();
+    if (state != LinkState::kIdle && state != LinkState::kJog) return GrblError::kNotIdle;
+    if (length < 2 || text[1] != '=') return GrblError::kInvalidDollarStatement;
     return execute_jog(text + 2, length - 2);
-  } else if (length > 1 && text[0] >= '0' && text[0] <= '9') {
-    if (!idle) return GrblError::kNotIdle;
-    return execute_setting_write(text, length);
-  } else {
-    return GrblError::kInvalidDollarStatement;
+  }
+  if (command == '$' || command == 'G' || command == 'C' || command == 'X') {
+    return length == 1 ? execute_any_state_command(command) : GrblError::kInvalidDollarStatement;
+  }
+  const LinkState state = link_state();
+  if (state != LinkState::kIdle && state != LinkState::kAlarm) return GrblError::kNotIdle;
+  return execute_idle_command(text, length);
+}
+
+GrblError GrblProtocol::execute_any_state_command(char command) {
+  const LinkState state = link_state();
+  switch (command) {
+    case '$':
+      if (state == LinkState::kRun || state == LinkState::kHold) return GrblError::kNotIdle;
+      report_settings();
+      break;
+    case 'G': report_parser_state(); break;
+    case 'C': return toggle_check_mode();
+    default:  // 'X'
+      if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
+      alarm_ = 0;
+      break;
   }
   return GrblError::kOk;
 }
 
+GrblError GrblProtocol::toggle_check_mode() {
+  if (check_mode_) {
+    send_text("[MSG:Disabled]");
+    reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
+    return GrblError::kOk;
+  }
+  if (link_state() != LinkState::kIdle) return GrblError::kNotIdle;  // not in alarm either
+  check_mode_ = true;
+  send_text("[MSG:Enabled]");
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::execute_idle_command(const char* text, size_t length) {
+  const bool alone = length == 1;
+  switch (text[0]) {
+    case '#':
+      if (!alone) return GrblError::kInvalidDollarStatement;
+      report_parameters();
+      return GrblError::kOk;
+    case 'H': return execute_homing(length);
+    case 'I':
+      if (!alone) return GrblError::kInvalidDollarStatement;
+      report_build_info();
+      return GrblError::kOk;
+    case 'N':
+      if (!alone) return GrblError::kInvalidDollarStatement;  // startup lines are not stored
+      send_text("$N0=");
+      send_text("$N1=");
+      return GrblError::kOk;
+    case 'S': return GrblError::kInvalidDollarStatement;  // `$SLP`: no sleep mode here
+    case 'R':
+      if (length < 4 || strncmp(text, "RST=", 4) != 0) return GrblError::kInvalidDollarStatement;
+      return execute_restore(text + 4, length - 4);
+    default: return execute_setting_write(text, length);
+  }
+}
+
+GrblError GrblProtocol::execute_homing(size_t length) {
+  if (!settings_.homing_enabled()) return GrblError::kHomingDisabled;
+  if (length != 1) return GrblError::kInvalidDollarStatement;
+  const GrblError error = machine_->home();
+  if (error == GrblError::kOk) {
+    alarm_ = 0;
+    homing_reply_pending_ = machine_->homing_in_progress();
+  }
+  if (error == GrblError::kHomingDisabled) send_text("[MSG:Homing is not set up on this machine]");
+  return error;
+}
+
 GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
-  if (alarm_ != 0) return GrblError::kLocked;
-  const MotionState state = machine_->motion_state();
-  if (state != MotionState::kIdle && state != MotionState::kJog) return GrblError::kNotIdle;
   GcodeBlock block;
   const GrblError syntax = parse_line(text, length, block, parser_options_);
   if (syntax != GrblError::kOk) return syntax;
