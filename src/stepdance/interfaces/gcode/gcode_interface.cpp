@@ -24,8 +24,6 @@ constexpr gcode::CommandCode kM5 = 50;
 
 }  // namespace
 
-Status GCodeInterface::begin() { return begin_stream(hal::console()); }
-
 Status GCodeInterface::begin_stream(ByteStream& stream) {
   const Status planner = interpolator_.begin();
   if (planner != Status::kOk) return planner;

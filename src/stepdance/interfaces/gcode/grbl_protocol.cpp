@@ -12,50 +12,6 @@ constexpr int kLinesPerPoll = 4;            // bounds the time one loop pass spe
 constexpr uint8_t kAlarmSoftLimit = 2;      // Grbl's "soft limit": a target outside the travel
 constexpr uint8_t kAlarmHomingFailed = 9;   // Grbl's "homing fail: could not find limit switch"
 
-/// Holds a line's requests until its travel check passes, then hands them on in order.
-class DeferredRequests final : public GcodeSink {
- public:
-  void on_motion(const Motion& motion) override {
-    if (motion_count_ < kMaxMotions) motions_[motion_count_++] = motion;
-  }
-  void on_dwell(double seconds) override {
-    dwell_ = true;
-    dwell_s_ = seconds;
-  }
-  void on_spindle(CommandCode code, double speed) override {
-    spindle_ = code;
-    spindle_speed_ = speed;
-  }
-  void on_coolant(CommandCode code) override { coolant_ = code; }
-  void on_program_flow(CommandCode code) override { flow_ = code; }
-  void on_coordinate_data_changed() override { coordinates_changed_ = true; }
-
-  int motion_count() const { return motion_count_; }
-  const Motion& motion(int i) const { return motions_[i]; }
-
-  /// Replays in the interpreter's order: spindle, coolant, dwell, motions, data, flow.
-  void replay(GcodeSink& sink) const {
-    if (spindle_ != 0xFFFF) sink.on_spindle(spindle_, spindle_speed_);
-    if (coolant_ != 0xFFFF) sink.on_coolant(coolant_);
-    if (dwell_) sink.on_dwell(dwell_s_);
-    for (int i = 0; i < motion_count_; ++i) sink.on_motion(motions_[i]);
-    if (coordinates_changed_) sink.on_coordinate_data_changed();
-    if (flow_ != 0xFFFF) sink.on_program_flow(flow_);
-  }
-
- private:
-  static constexpr int kMaxMotions = 2;
-  Motion motions_[kMaxMotions];
-  int motion_count_ = 0;
-  bool dwell_ = false;
-  double dwell_s_ = 0.0;
-  CommandCode spindle_ = 0xFFFF;
-  double spindle_speed_ = 0.0;
-  CommandCode coolant_ = 0xFFFF;
-  CommandCode flow_ = 0xFFFF;
-  bool coordinates_changed_ = false;
-};
-
 }  // namespace
 
 void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileStore* store) {
@@ -92,6 +48,7 @@ void GrblProtocol::serve_lines() {
     ReceivedLine line;
     if (!receiver_.next_line(line)) return;
     execute_line(line);
+    receiver_.take_line();
   }
 }
 
@@ -183,17 +140,15 @@ GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
   const bool empty = block.words_present == 0 && block.g_groups_present == 0 && block.m_groups_present == 0;
   if (empty) return GrblError::kOk;
   sync_position_when_idle();
-  GcodeInterpreter trial = interpreter_;
-  DeferredRequests requests;
-  const GrblError error = trial.execute(block, requests);
+  LinePlan plan;
+  const GrblError error = interpreter_.plan(block, plan);
   if (error != GrblError::kOk) return error;
-  for (int i = 0; i < requests.motion_count(); ++i) {
-    if (within_travel(requests.motion(i))) continue;
+  for (int i = 0; i < plan.motion_count; ++i) {
+    if (within_travel(plan.motions[i])) continue;
     begin_soft_limit_alarm();  // nothing of the line runs, and nothing after it until a reset
     return GrblError::kOk;
   }
-  interpreter_ = trial;
-  if (!check_mode_) requests.replay(*machine_);
+  interpreter_.commit(plan, check_mode_ ? nullptr : machine_);
   return GrblError::kOk;
 }
 
@@ -286,31 +241,8 @@ void GrblProtocol::send_text(const char* text) {
   send_line(line);
 }
 
-void GrblProtocol::send_line(const TextWriter& line) {
-  const size_t length = line.size();
-  if (length + 2 > reply_space()) {  // callers reserve room first; never a torn line
-    ++replies_dropped_;
-    return;
-  }
-  for (size_t i = 0; i < length + 2; ++i) {
-    const char c = i < length ? line.c_str()[i] : (i == length ? '\r' : '\n');
-    replies_[(reply_head_ + reply_count_) % kReplyBufferBytes] = c;
-    ++reply_count_;
-  }
-}
+void GrblProtocol::send_line(const TextWriter& line) { replies_.send_line(line); }
 
-void GrblProtocol::flush_replies() {
-  while (reply_count_ > 0) {
-    const size_t space = stream_->write_space();
-    if (space == 0) return;
-    size_t chunk = kReplyBufferBytes - reply_head_;
-    if (chunk > reply_count_) chunk = reply_count_;
-    if (chunk > space) chunk = space;
-    const size_t written = stream_->write_bytes(reinterpret_cast<const uint8_t*>(replies_ + reply_head_), chunk);
-    if (written == 0) return;
-    reply_head_ = (reply_head_ + written) % kReplyBufferBytes;
-    reply_count_ -= written;
-  }
-}
+void GrblProtocol::flush_replies() { replies_.flush(*stream_); }
 
 }  // namespace stepdance::gcode

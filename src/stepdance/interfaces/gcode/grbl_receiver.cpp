@@ -32,23 +32,38 @@ void GrblReceiver::discard(ByteStream& stream, RealtimeHandler& handler) {
 }
 
 bool GrblReceiver::next_line(ReceivedLine& line) {
-  while (count_ > 0) {
+  while (!line_.ready() && count_ > 0) {
     const uint8_t byte = ring_[head_];
     head_ = (head_ + 1) % kBufferBytes;
     --count_;
     if (byte == '\r' || byte == '\n') {
-      line_.text[line_.length] = '\0';
-      line = line_;
-      clear_line();
-      return true;
+      end_line(byte);
+    } else {
+      assemble(byte);
     }
-    assemble(byte);
   }
-  return false;
+  if (!line_.ready()) return false;
+  line.text = line_.text();
+  line.length = line_.length();
+  line.overflowed = overflowed_ || line_.overflowed();
+  return true;
+}
+
+void GrblReceiver::end_line(uint8_t byte) {
+  line_.feed(byte);
+  in_parentheses_ = false;
+  in_semicolon_ = false;
+  blank_pending_ = false;
+}
+
+void GrblReceiver::take_line() {
+  line_.take();
+  characters_ = 0;
+  overflowed_ = false;
 }
 
 void GrblReceiver::assemble(uint8_t byte) {
-  if (in_parentheses_ || in_semicolon_ || line_.overflowed) {
+  if (in_parentheses_ || in_semicolon_ || overflowed_) {
     if (byte == ')') in_parentheses_ = false;  // only a `( )` comment ends before the line does
     return;
   }
@@ -65,28 +80,25 @@ void GrblReceiver::assemble(uint8_t byte) {
 }
 
 void GrblReceiver::store(uint8_t byte) {
-  if (line_.significant == ReceivedLine::kMaxLength) {
-    line_.overflowed = true;  // the rest of the line is thrown away; its reply is error:11
+  if (characters_ == ReceivedLine::kMaxLength) {
+    overflowed_ = true;  // the rest of the line is thrown away; its reply is error:11
     return;
   }
-  if (blank_pending_ && line_.length > 0 && line_.text[0] != '$') line_.text[line_.length++] = ' ';
+  if (blank_pending_ && characters_ > 0 && line_.text()[0] != '$') line_.feed(' ');
   blank_pending_ = false;
-  line_.text[line_.length++] = (byte >= 'a' && byte <= 'z') ? static_cast<char>(byte - 'a' + 'A') : static_cast<char>(byte);
-  ++line_.significant;
-}
-
-void GrblReceiver::clear_line() {
-  line_ = ReceivedLine{};
-  in_parentheses_ = false;
-  in_semicolon_ = false;
-  blank_pending_ = false;
+  line_.feed((byte >= 'a' && byte <= 'z') ? static_cast<uint8_t>(byte - 'a' + 'A') : byte);
+  ++characters_;
 }
 
 void GrblReceiver::clear() {
   head_ = 0;
   count_ = 0;
   held_byte_ = -1;
-  clear_line();
+  line_.clear();
+  take_line();
+  in_parentheses_ = false;
+  in_semicolon_ = false;
+  blank_pending_ = false;
 }
 
 }  // namespace stepdance::gcode

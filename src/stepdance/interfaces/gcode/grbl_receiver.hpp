@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "stepdance/core/byte_stream.hpp"
+#include "stepdance/interfaces/link/line_reader.hpp"
 
 namespace stepdance::gcode {
 
@@ -34,12 +35,12 @@ class RealtimeHandler {
 /// comments, `/`, spaces and control bytes removed. Where blanks or a comment separated two
 /// characters of a G-code line one space is kept, so the parser can tell `X1 E1` (an E word)
 /// from `X1E1` (an exponent, refused as Grbl refuses it); `$` lines keep none, as on Grbl.
+/// Points into the receiver, valid until GrblReceiver::take_line().
 struct ReceivedLine {
   /// Characters a line may hold, spaces not counted: Grbl's LINE_BUFFER_SIZE (80) less its NUL.
   static constexpr size_t kMaxLength = 79;
-  char text[2 * kMaxLength + 1] = {};
+  const char* text = "";
   size_t length = 0;         ///< bytes in text (the kept spaces included)
-  size_t significant = 0;    ///< characters counted against kMaxLength
   bool overflowed = false;   ///< a character beyond kMaxLength was dropped: reply error:11
 };
 
@@ -48,9 +49,9 @@ struct ReceivedLine {
 /// buffer is full it keeps reading only while realtime bytes come (as Grbl's receive interrupt
 /// takes them out before they reach its buffer): the first other byte is held back in a
 /// one-byte slot and reading stops, so the stream holds the rest (back-pressure, nothing is
-/// dropped). next_line() takes bytes out of the buffer into the line being assembled, as Grbl's
-/// main loop does: every CR and every LF ends a line (so CR LF is two lines, the second empty).
-/// Context: loop only.
+/// dropped). next_line() takes bytes out of the buffer through Grbl's line rules into the link's
+/// LineReader, as Grbl's main loop does: every CR and every LF ends a line (so CR LF is two
+/// lines, the second empty). Context: loop only.
 class GrblReceiver {
  public:
   static constexpr size_t kBufferBytes = 128;
@@ -60,24 +61,33 @@ class GrblReceiver {
   /// Reads and throws away every non-realtime byte the stream has (a link locked until reset);
   /// realtime bytes still go to handler.
   void discard(ByteStream& stream, RealtimeHandler& handler);
-  /// Assembles from the buffer until a line ends; true with the line in `line`, false when the
-  /// buffer ran out first (the part read so far is kept for the next call).
+  /// Assembles from the buffer until a line ends; true with the line in `line` (it stays until
+  /// take_line(), and nothing more is assembled meanwhile), false when the buffer ran out first
+  /// (the part read so far is kept for the next call).
   bool next_line(ReceivedLine& line);
+  /// The line handed out is done with: assembly goes on.
+  void take_line();
   /// Free bytes in the receive buffer (the second number of `Bf:`).
   size_t bytes_free() const { return kBufferBytes - count_; }
   /// Drops everything buffered and the line being assembled (soft reset).
   void clear();
 
  private:
+  static constexpr link::LineRules kLineRules{true, false, false, false};  // CR or LF ends one; empty lines count
+
   void assemble(uint8_t byte);
-  void clear_line();
   void store(uint8_t byte);
+  void end_line(uint8_t byte);
 
   uint8_t ring_[kBufferBytes] = {};
   size_t head_ = 0;   // next byte to take
   size_t count_ = 0;  // bytes held
   int held_byte_ = -1;  // a line byte read while the buffer was full, or −1
-  ReceivedLine line_;   // the line being assembled
+  // Room for the characters and the one space kept between them; the count of characters
+  // (Grbl's limit) is kept here, so the reader itself never overflows.
+  link::LineReader<2 * ReceivedLine::kMaxLength> line_{kLineRules};
+  size_t characters_ = 0;        // characters of the line so far, spaces not counted
+  bool overflowed_ = false;      // a character beyond ReceivedLine::kMaxLength was dropped
   bool in_parentheses_ = false;  // inside a `( )` comment
   bool in_semicolon_ = false;    // after a `;`: the rest of the line is comment
   bool blank_pending_ = false;   // blanks or a comment since the last stored character

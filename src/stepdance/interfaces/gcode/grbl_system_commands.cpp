@@ -17,48 +17,60 @@ GrblProtocol::LinkState GrblProtocol::link_state() {
   return LinkState::kIdle;
 }
 
-// `text` follows the `$`, upper-cased and without blanks (the receiver's work). The state rules
-// and error numbers are Grbl 1.1h's system_execute_line: `$J=` in Idle or Jog; `$$ $G $C $X`
-// (one letter) in any state but `$$` not while running or holding; everything else in Idle or
-// Alarm only.
+// Grbl 1.1h's system_execute_line dispatches on the letter after the `$`: `$J=` runs in Idle or
+// Jog; `$$ $G $C $X` (the letter alone, error:3 otherwise) in any state, but `$$` not while
+// running or holding; every other command, and `$N=v` settings (no letter in the table), only in
+// Idle or Alarm.
+constexpr GrblProtocol::DollarTable GrblProtocol::kDollarCommands = link::make_command_table<DollarCommand>({
+    {"J", {&GrblProtocol::dollar_jog, kIdleOrJog}},
+    {"$", {&GrblProtocol::dollar_settings, kAnyState}},
+    {"G", {&GrblProtocol::dollar_parser_state, kAnyState}},
+    {"C", {&GrblProtocol::dollar_check_mode, kAnyState}},
+    {"X", {&GrblProtocol::dollar_unlock, kAnyState}},
+    {"#", {&GrblProtocol::dollar_parameters, kIdleOrAlarm}},
+    {"H", {&GrblProtocol::dollar_homing, kIdleOrAlarm}},
+    {"I", {&GrblProtocol::dollar_build_info, kIdleOrAlarm}},
+    {"N", {&GrblProtocol::dollar_startup_lines, kIdleOrAlarm}},
+    {"S", {&GrblProtocol::dollar_sleep, kIdleOrAlarm}},
+    {"R", {&GrblProtocol::dollar_restore, kIdleOrAlarm}},
+});
+
+// `text` follows the `$`, upper-cased and without blanks (the receiver's work).
 GrblError GrblProtocol::execute_system(const char* text, size_t length) {
   if (length == 0) {
     send_text("[HLP:$$ $# $G $I $N $x=val $Nx=line $J=line $SLP $C $X $H ~ ! ? ctrl-x]");
     return GrblError::kOk;
   }
-  const char command = text[0];
-  if (command == 'J') {
-    const LinkState state = link_state();
-    if (state != LinkState::kIdle && state != LinkState::kJog) return GrblError::kNotIdle;
-    if (length < 2 || text[1] != '=') return GrblError::kInvalidDollarStatement;
-    return execute_jog(text + 2, length - 2);
-  }
-  if (command == '$' || command == 'G' || command == 'C' || command == 'X') {
-    return length == 1 ? execute_any_state_command(command) : GrblError::kInvalidDollarStatement;
-  }
-  const LinkState state = link_state();
-  if (state != LinkState::kIdle && state != LinkState::kAlarm) return GrblError::kNotIdle;
-  return execute_idle_command(text, length);
+  static_assert(kDollarCommands.names_unique(), "each `$` letter once");
+  const char letter[2] = {text[0], '\0'};
+  const auto* command = kDollarCommands.find(letter);
+  const uint8_t states = command != nullptr ? command->handler.states : kIdleOrAlarm;  // `$N=v`: a setting
+  if ((states & state_bit(link_state())) == 0) return GrblError::kNotIdle;
+  if (command == nullptr) return execute_setting_write(text, length);
+  return (this->*command->handler.run)(text + 1, length - 1);
 }
 
-GrblError GrblProtocol::execute_any_state_command(char command) {
+GrblError GrblProtocol::dollar_jog(const char* rest, size_t length) {
+  if (length == 0 || rest[0] != '=') return GrblError::kInvalidDollarStatement;
+  return execute_jog(rest + 1, length - 1);
+}
+
+GrblError GrblProtocol::dollar_settings(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
   const LinkState state = link_state();
-  switch (command) {
-    case '$':
-      if (state == LinkState::kRun || state == LinkState::kHold) return GrblError::kNotIdle;
-      report_settings();
-      break;
-    case 'G': report_parser_state(); break;
-    case 'C': return toggle_check_mode();
-    default:  // 'X'
-      if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
-      alarm_ = 0;
-      break;
-  }
+  if (state == LinkState::kRun || state == LinkState::kHold) return GrblError::kNotIdle;
+  report_settings();
   return GrblError::kOk;
 }
 
-GrblError GrblProtocol::toggle_check_mode() {
+GrblError GrblProtocol::dollar_parser_state(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  report_parser_state();
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_check_mode(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
   if (check_mode_) {
     send_text("[MSG:Disabled]");
     reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
@@ -70,34 +82,22 @@ GrblError GrblProtocol::toggle_check_mode() {
   return GrblError::kOk;
 }
 
-GrblError GrblProtocol::execute_idle_command(const char* text, size_t length) {
-  const bool alone = length == 1;
-  switch (text[0]) {
-    case '#':
-      if (!alone) return GrblError::kInvalidDollarStatement;
-      report_parameters();
-      return GrblError::kOk;
-    case 'H': return execute_homing(length);
-    case 'I':
-      if (!alone) return GrblError::kInvalidDollarStatement;
-      report_build_info();
-      return GrblError::kOk;
-    case 'N':
-      if (!alone) return GrblError::kInvalidDollarStatement;  // startup lines are not stored
-      send_text("$N0=");
-      send_text("$N1=");
-      return GrblError::kOk;
-    case 'S': return GrblError::kInvalidDollarStatement;  // `$SLP`: no sleep mode here
-    case 'R':
-      if (length < 4 || strncmp(text, "RST=", 4) != 0) return GrblError::kInvalidDollarStatement;
-      return execute_restore(text + 4, length - 4);
-    default: return execute_setting_write(text, length);
-  }
+GrblError GrblProtocol::dollar_unlock(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
+  alarm_ = 0;
+  return GrblError::kOk;
 }
 
-GrblError GrblProtocol::execute_homing(size_t length) {
+GrblError GrblProtocol::dollar_parameters(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  report_parameters();
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_homing(const char*, size_t length) {
   if (!settings_.homing_enabled()) return GrblError::kHomingDisabled;
-  if (length != 1) return GrblError::kInvalidDollarStatement;
+  if (length != 0) return GrblError::kInvalidDollarStatement;
   const GrblError error = machine_->home();
   if (error == GrblError::kOk) {
     alarm_ = 0;
@@ -107,45 +107,67 @@ GrblError GrblProtocol::execute_homing(size_t length) {
   return error;
 }
 
-GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
-  GcodeBlock block;
-  const GrblError syntax = parse_line(text, length, block, parser_options_);
-  if (syntax != GrblError::kOk) return syntax;
-  constexpr uint32_t kAllowedWords = (1u << word_index('X')) | (1u << word_index('Y')) |
-                                     (1u << word_index('Z')) | (1u << word_index('F')) |
-                                     (1u << word_index('N'));
-  constexpr uint16_t kAllowedGroups = (1u << static_cast<int>(GGroup::kUnits)) |
-                                      (1u << static_cast<int>(GGroup::kDistance)) |
-                                      (1u << static_cast<int>(GGroup::kNonModal));
+GrblError GrblProtocol::dollar_build_info(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  report_build_info();
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_startup_lines(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;  // startup lines are not stored
+  send_text("$N0=");
+  send_text("$N1=");
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_sleep(const char*, size_t) {
+  return GrblError::kInvalidDollarStatement;  // `$SLP`: no sleep mode here
+}
+
+GrblError GrblProtocol::dollar_restore(const char* rest, size_t length) {
+  if (length < 3 || strncmp(rest, "ST=", 3) != 0) return GrblError::kInvalidDollarStatement;
+  return execute_restore(rest + 3, length - 3);
+}
+
+namespace {
+
+constexpr uint32_t word_bit(char letter) { return 1u << word_index(letter); }
+constexpr uint16_t group_bit(GGroup group) { return static_cast<uint16_t>(1u << static_cast<int>(group)); }
+
+/// Grbl's jog rules: X Y Z F N words, G20/G21, G90/G91 and G53 only (error:16), a feed
+/// (error:22) and an axis word (error:16).
+GrblError check_jog_words(const GcodeBlock& block) {
+  constexpr uint32_t kAxes = word_bit('X') | word_bit('Y') | word_bit('Z');
+  constexpr uint32_t kAllowedWords = kAxes | word_bit('F') | word_bit('N');
+  constexpr uint16_t kAllowedGroups = group_bit(GGroup::kUnits) | group_bit(GGroup::kDistance) | group_bit(GGroup::kNonModal);
   const bool only_g53 = !block.has_g(GGroup::kNonModal) || block.g_code(GGroup::kNonModal) == 530;
   if ((block.words_present & ~kAllowedWords) != 0 || (block.g_groups_present & ~kAllowedGroups) != 0 ||
       block.m_groups_present != 0 || !only_g53 || block.ignored) {
     return GrblError::kInvalidJogCommand;
   }
   if (!block.has_word('F')) return GrblError::kUndefinedFeedRate;
-  if ((block.words_present & ~((1u << word_index('F')) | (1u << word_index('N')))) == 0) {
-    return GrblError::kInvalidJogCommand;  // no axis word
-  }
-  // A jog is a G1 at its own feed that leaves the parser's modes as they were.
+  return (block.words_present & kAxes) == 0 ? GrblError::kInvalidJogCommand : GrblError::kOk;
+}
+
+}  // namespace
+
+GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
+  GcodeBlock block;
+  GrblError error = parse_line(text, length, block, parser_options_);
+  if (error == GrblError::kOk) error = check_jog_words(block);
+  if (error != GrblError::kOk) return error;
+  // A jog is a G1 at its own feed that leaves the parser's modes as they were: planned, never
+  // committed.
   block.g[static_cast<int>(GGroup::kMotion)] = 10;
   block.g[static_cast<int>(GGroup::kFeedMode)] = 940;
-  block.g_groups_present |= (1u << static_cast<int>(GGroup::kMotion)) | (1u << static_cast<int>(GGroup::kFeedMode));
+  block.g_groups_present |= group_bit(GGroup::kMotion) | group_bit(GGroup::kFeedMode);
   sync_position_when_idle();
-  GcodeInterpreter trial = interpreter_;
-  struct JogCapture final : GcodeSink {
-    Motion motion;
-    bool has_motion = false;
-    void on_motion(const Motion& m) override {
-      motion = m;
-      has_motion = true;
-    }
-    void on_dwell(double) override {}
-  } capture;
-  const GrblError error = trial.execute(block, capture);
+  LinePlan plan;
+  error = interpreter_.plan(block, plan);
   if (error != GrblError::kOk) return error;
-  if (!capture.has_motion) return GrblError::kInvalidJogCommand;
-  if (!within_travel(capture.motion)) return GrblError::kTravelExceeded;
-  machine_->jog(capture.motion);
+  if (plan.motion_count == 0) return GrblError::kInvalidJogCommand;
+  if (!within_travel(plan.motions[0])) return GrblError::kTravelExceeded;
+  machine_->jog(plan.motions[0]);
   return GrblError::kOk;
 }
 
