@@ -159,5 +159,30 @@ TEST_F(GrblReplyTable, EveryLineGetsGrbl11hsReplyOrADocumentedDifference) {
   EXPECT_GE(cases, 90);
 }
 
+// limits.c limits_soft_check on a moving machine: a feed hold brings it to rest within the
+// acceleration limit (short of the move's end, the position kept), then the queue is dropped,
+// ALARM:2; a reset then finds it at rest, so no ALARM:3 follows.
+TEST_F(GrblReplyTable, ASoftLimitWhileMovingStopsThePathFirst) {
+  fresh_board();
+  EXPECT_EQ(exchange("$22=1\n$20=1\nG1 X50 F600\n"), (std::vector<std::string>{"ok", "ok", "ok"}));
+  run(5000);  // 0.2 s: well under way at 10 mm/s, 5 s from the end
+  ASSERT_GT(gcode->interpolator().current_speed(), 0.0);
+  host->send("G0 X400\n");
+  std::string replies;
+  for (int frames = 0; frames < 100000 && replies.find("[MSG:Reset to continue]") == std::string::npos; ++frames) {
+    run(1);
+    replies += host->take();
+  }
+  EXPECT_EQ(replies, "ALARM:2\r\n[MSG:Reset to continue]\r\n");
+  const double stopped_x = gcode->output_x.read_absolute();
+  EXPECT_GT(stopped_x, 1.0);
+  EXPECT_LT(stopped_x, 10.0);
+  run(5000);
+  EXPECT_TRUE(gcode->interpolator().is_idle());
+  EXPECT_DOUBLE_EQ(gcode->output_x.read_absolute(), stopped_x);  // the rest of the job was dropped
+  EXPECT_EQ(exchange("G0 X1\n"), std::vector<std::string>{});
+  EXPECT_EQ(exchange("\x18"), (std::vector<std::string>{"", "Grbl 1.1h ['$' for help]", "[MSG:'$H'|'$X' to unlock]"}));
+}
+
 }  // namespace
 }  // namespace stepdance
