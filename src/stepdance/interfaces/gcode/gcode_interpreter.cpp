@@ -121,6 +121,7 @@ void LineExecution::target_mm(bool machine_coordinates, double (&out)[kAxisCount
 
 Motion& LineExecution::add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]) {
   Motion& motion = plan.motions[plan.motion_count++];
+  motion = Motion{};
   motion.kind = kind;
   for (int axis = 0; axis < kAxisCount; ++axis) {
     motion.start_mm[axis] = state_.position_mm[axis];
@@ -319,7 +320,7 @@ GrblError LineExecution::run(LinePlan& plan) {
 }  // namespace
 
 GrblError GcodeInterpreter::plan(const GcodeBlock& block, LinePlan& plan) const {
-  plan = LinePlan{};
+  plan.clear_requests();
   plan.next = state_;
   LineExecution line(block, plan.next);
   return line.run(plan);

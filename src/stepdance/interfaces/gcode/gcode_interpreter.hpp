@@ -30,6 +30,14 @@ struct LinePlan {
   bool program_flow = false;
   CommandCode program_flow_code = 0;
   bool coordinates_changed = false;
+
+  /// Forgets the requests of an earlier line (a motion slot is cleared when it is used again).
+  void clear_requests() {
+    spindle = coolant = dwell = program_flow = coordinates_changed = false;
+    dwell_s = 0.0;
+    motion_count = 0;
+    program_flow_code = 0;
+  }
 };
 
 /// The G-code interpreter of a Grbl 1.1-style machine. Each line is validated completely before
