@@ -34,28 +34,9 @@ void EbbMotionExecutor::start(const EbbMove& move) {
     case EbbMove::Kind::kTime:
       begin_accumulated(move);
       break;
-    case EbbMove::Kind::kHome: {
-      EbbMove line = move;
-      line.kind = EbbMove::Kind::kSteps;
-      line.clear = 3;  // a straight line from a clean start
-      int64_t distance[2];
-      int64_t longest = 0;
-      for (int axis = 0; axis < 2; ++axis) {
-        distance[axis] = int64_t{move.target[axis]} - global_steps_[axis];
-        if (abs64(distance[axis]) > longest) longest = abs64(distance[axis]);
-      }
-      if (longest == 0 || move.frequency == 0) return;
-      const int64_t ticks = ceil_div(longest * kTicksPerSecond, move.frequency);
-      for (int axis = 0; axis < 2; ++axis) {
-        line.steps[axis] = static_cast<uint32_t>(abs64(distance[axis]));
-        line.direction[axis] = distance[axis] < 0 ? -1 : 1;
-        line.rate[axis] = ceil_div(abs64(distance[axis]) * kStepThreshold, ticks);
-        line.accel[axis] = 0;
-      }
-      move_ = line;
-      begin_accumulated(line);
+    case EbbMove::Kind::kHome:
+      begin_home(move);
       break;
-    }
     case EbbMove::Kind::kDelay:
       busy_ = ticks_left_ > 0;
       break;
@@ -73,6 +54,29 @@ void EbbMotionExecutor::start(const EbbMove& move) {
       global_steps_[0] = global_steps_[1] = 0;
       break;
   }
+}
+
+// HM: a straight constant-rate line from the global step counters to the target.
+void EbbMotionExecutor::begin_home(const EbbMove& move) {
+  EbbMove line = move;
+  line.kind = EbbMove::Kind::kSteps;
+  line.clear = 3;  // a straight line from a clean start
+  int64_t distance[2];
+  int64_t longest = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    distance[axis] = int64_t{move.target[axis]} - global_steps_[axis];
+    if (abs64(distance[axis]) > longest) longest = abs64(distance[axis]);
+  }
+  if (longest == 0 || move.frequency == 0) return;
+  const int64_t ticks = ceil_div(longest * kTicksPerSecond, move.frequency);
+  for (int axis = 0; axis < 2; ++axis) {
+    line.steps[axis] = static_cast<uint32_t>(abs64(distance[axis]));
+    line.direction[axis] = distance[axis] < 0 ? -1 : 1;
+    line.rate[axis] = ceil_div(abs64(distance[axis]) * kStepThreshold, ticks);
+    line.accel[axis] = 0;
+  }
+  move_ = line;
+  begin_accumulated(line);
 }
 
 void EbbMotionExecutor::begin_accumulated(const EbbMove& move) {

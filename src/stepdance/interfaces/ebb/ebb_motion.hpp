@@ -78,6 +78,7 @@ class EbbMotionExecutor {
  private:
   void step_axis(int axis);
   void begin_accumulated(const EbbMove& move);
+  void begin_home(const EbbMove& move);
   void slew_servo();
 
   EbbMove move_;

@@ -11,8 +11,10 @@
 #include "stepdance/core/counters.hpp"
 #include "stepdance/core/spsc_queue.hpp"
 #include "stepdance/core/status.hpp"
+#include "stepdance/interfaces/ebb/ebb_command_table.hpp"
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 #include "stepdance/interfaces/ebb/ebb_parameters.hpp"
+#include "stepdance/motion/move_output_ports.hpp"
 #include "stepdance/core/text_writer.hpp"
 
 namespace stepdance {
@@ -36,7 +38,7 @@ enum EbbKinematics : uint8_t {
 /// (80 steps/mm at 1/16 microstepping by default, scaled by the EM mode), z the pen servo as
 /// pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs) times the z ratio.
 /// Context: the loop (dance_loop serves the link); run() is the frame.
-class Eibotboard : public Block {
+class Eibotboard : public Block, public MoveOutputPorts {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "Eibotboard"; }
@@ -68,16 +70,7 @@ class Eibotboard : public Block {
   /// The text must outlive the block. Context: loop.
   void set_version_string(const char* version) { version_ = version; }
 
-  BlockPort output_x;
-  BlockPort output_y;
-  BlockPort output_z;
-  BlockPort output_e;
-  BlockPort output_r;
-  BlockPort output_t;
-  /// Fraction of the current move done (0 → 1).
-  BlockPort output_parameter;
-  /// Duration of the current move, seconds.
-  BlockPort output_duration;
+  // output_x … output_t, output_parameter, output_duration: MoveOutputPorts.
 
   /// Commands refused with an error reply since begin. Context: any.
   uint32_t errors_replied() const { return errors_replied_; }
@@ -105,29 +98,58 @@ class Eibotboard : public Block {
   static constexpr size_t kReplyBufferBytes = 512;
   static constexpr size_t kLargestReplyBytes = 160;
 
+  using CommandHandler = bool (Eibotboard::*)(ebb::EbbParameters&);
+  struct CommandTable;  // eibotboard_commands.cpp: every command's name, handler and flags
+
   Status begin_stream(ByteStream& stream);
   // Link (eibotboard.cpp)
   void read_lines();
   bool take_byte(uint8_t byte);
   void execute_line();
+  void take_command_name();
+  void finish_line();
   void flush_replies();
-  // Commands (eibotboard_commands.cpp)
+  // Dispatch and motion commands (eibotboard_commands.cpp); a handler returns false while the
+  // FIFO has no room (the line waits), true once the command is answered.
   bool dispatch(const char* name, ebb::EbbParameters& parameters);
   bool queue(const ebb::EbbMove& move);
-  bool command_sm(ebb::EbbParameters& p, bool mixed);
-  void servo_now(uint16_t target, uint16_t rate);
-  bool command_lm(ebb::EbbParameters& p, bool timed);
+  bool queue_and_reply(const ebb::EbbMove& move);
+  bool command_sm(ebb::EbbParameters& p);
+  bool command_xm(ebb::EbbParameters& p);
+  bool stepper_move(ebb::EbbParameters& p, bool mixed);
+  bool steps_move(const int64_t (&steps)[2], int64_t duration_ms, bool mixed, ebb::EbbMove& move);
+  bool command_lm(ebb::EbbParameters& p);
+  bool command_lt(ebb::EbbParameters& p);
+  bool low_level_move(ebb::EbbParameters& p, bool timed);
   bool command_hm(ebb::EbbParameters& p);
   bool command_em(ebb::EbbParameters& p);
   bool command_sp(ebb::EbbParameters& p);
   bool command_s2(ebb::EbbParameters& p);
   bool command_tp(ebb::EbbParameters& p);
+  ebb::EbbMove servo_move(bool up, uint32_t delay_ms) const;
+  void servo_now(uint16_t target, uint16_t rate);
+  // Settings and queries, answered at once (eibotboard_queries.cpp)
   bool command_sc(ebb::EbbParameters& p);
   bool command_cu(ebb::EbbParameters& p);
+  bool switch_syntax(int64_t value);
   bool command_qu(ebb::EbbParameters& p);
-  void command_es(ebb::EbbParameters& p);
-  void query_motion();
-  ebb::EbbMove servo_move(bool up, uint32_t delay_ms) const;
+  bool command_es(ebb::EbbParameters& p);
+  bool command_v(ebb::EbbParameters& p);
+  bool command_qm(ebb::EbbParameters& p);
+  bool command_qg(ebb::EbbParameters& p);
+  bool command_sr(ebb::EbbParameters& p);
+  bool command_sl(ebb::EbbParameters& p);
+  bool command_ql(ebb::EbbParameters& p);
+  bool command_st(ebb::EbbParameters& p);
+  bool command_qt(ebb::EbbParameters& p);
+  bool command_qs(ebb::EbbParameters& p);
+  bool command_cs(ebb::EbbParameters& p);
+  bool command_qp(ebb::EbbParameters& p);
+  bool command_qb(ebb::EbbParameters& p);
+  bool command_qc(ebb::EbbParameters& p);
+  bool command_qe(ebb::EbbParameters& p);
+  bool command_qr(ebb::EbbParameters& p);
+  bool command_r(ebb::EbbParameters& p);
   // Replies (eibotboard_replies.cpp)
   void reply_ok();
   void reply_data(const char* data, bool ok_after, const char* legacy_ending = "\r\n");
@@ -135,10 +157,13 @@ class Eibotboard : public Block {
   bool reply_parameter_error(const ebb::EbbParameters& parameters);
   void send(const char* text);
   size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
-  // Frame (eibotboard.cpp)
+  // Frame (eibotboard_frame.cpp)
   void apply_controls();
+  void flush_fifo();
   void stop_motion_for_alarm();
   void load_next_move();
+  void tick_ebb_time();
+  void publish_frame_state();
   void update_outputs();
   double move_duration_s(const ebb::EbbMove& move) const;
 
