@@ -4,16 +4,18 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "stepdance/core/arduino_stream_adapter.hpp"
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/counters.hpp"
 #include "stepdance/core/spsc_queue.hpp"
 #include "stepdance/core/status.hpp"
-#include "stepdance/interfaces/ebb/ebb_command_table.hpp"
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 #include "stepdance/interfaces/ebb/ebb_parameters.hpp"
+#include "stepdance/interfaces/link/command_table.hpp"
+#include "stepdance/interfaces/link/line_reader.hpp"
+#include "stepdance/interfaces/link/reply_ring.hpp"
+#include "stepdance/interfaces/link/serial_link.hpp"
 #include "stepdance/motion/move_output_ports.hpp"
 #include "stepdance/core/text_writer.hpp"
 
@@ -38,7 +40,7 @@ enum EbbKinematics : uint8_t {
 /// (80 steps/mm at 1/16 microstepping by default, scaled by the EM mode), z the pen servo as
 /// pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs) times the z ratio.
 /// Context: the loop (dance_loop serves the link); run() is the frame.
-class Eibotboard : public Block, public MoveOutputPorts {
+class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProtocol<Eibotboard> {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "Eibotboard"; }
@@ -51,13 +53,9 @@ class Eibotboard : public Block, public MoveOutputPorts {
 
   Eibotboard();
 
-  /// Starts on the board's console (USB Serial). kFull if a registry is full. Context: loop.
-  Status begin();
-  /// Starts on a port (`&Serial`, `&SerialUSB1`, any Arduino Stream). Context: loop.
-  template <class Port>
-  Status begin(Port* port) {
-    return port == nullptr ? Status::kBadArgument : begin_stream(adapter_.attach(port));
-  }
+  // begin() on the board's console (USB Serial), begin(&Serial) on a port (any Arduino Stream),
+  // begin(&Serial1, baud) on a hardware UART: link::LinkedProtocol. kFull if a registry is full.
+  // Context: loop.
 
   /// mm per motor step at 1/16 microstepping, as output_units_mm per input_units_steps
   /// (default 25.4 mm per 2032 steps = 80 steps/mm; the original library used 2874). Context: loop.
@@ -75,7 +73,7 @@ class Eibotboard : public Block, public MoveOutputPorts {
   /// Commands refused with an error reply since begin. Context: any.
   uint32_t errors_replied() const { return errors_replied_; }
   /// Replies that found no room (should stay 0: a line is taken only when its reply fits).
-  uint32_t replies_dropped() const { return replies_dropped_; }
+  uint32_t replies_dropped() const { return replies_.dropped(); }
 
   /// commands (lines answered), fifo_full_waits (motion commands that found the FIFO full and
   /// waited, unread input behind them), moves_started (FIFO entries the frame took),
@@ -94,21 +92,29 @@ class Eibotboard : public Block, public MoveOutputPorts {
   void run() override;
 
  private:
+  friend class link::LinkedProtocol<Eibotboard>;
   enum class Control : uint8_t { kStop, kStopDisable, kClearSteps, kReset, kPenUpNow };
   static constexpr size_t kReplyBufferBytes = 512;
   static constexpr size_t kLargestReplyBytes = 160;
 
-  using CommandHandler = bool (Eibotboard::*)(ebb::EbbParameters&);
-  struct CommandTable;  // eibotboard_commands.cpp: every command's name, handler and flags
+  /// What the dispatcher checks before a handler runs.
+  enum CommandFlags : uint8_t {
+    kMovesMotors = 1,   // refused with !9 while an alarm is raised (the fault path)
+    kNoParameters = 2,  // any parameter is an error (the parser's reply), the handler is not called
+  };
+  /// A command's handler: false while the FIFO has no room (the line waits), true once answered.
+  struct CommandHandler {
+    bool (Eibotboard::*run)(ebb::EbbParameters&) = nullptr;
+    uint8_t flags = 0;
+  };
+  static const link::Command<CommandHandler>* find_command(const char* name);  // eibotboard_commands.cpp
 
   Status begin_stream(ByteStream& stream);
   // Link (eibotboard.cpp)
-  void read_lines();
-  bool take_byte(uint8_t byte);
+  void read_lines(ByteStream& stream);
   void execute_line();
   void take_command_name();
   void finish_line();
-  void flush_replies();
   // Dispatch and motion commands (eibotboard_commands.cpp); a handler returns false while the
   // FIFO has no room (the line waits), true once the command is answered.
   bool dispatch(const char* name, ebb::EbbParameters& parameters);
@@ -155,8 +161,7 @@ class Eibotboard : public Block, public MoveOutputPorts {
   void reply_data(const char* data, bool ok_after, const char* legacy_ending = "\r\n");
   void reply_error(ebb::EbbError error, const char* name, char offending = ' ');
   bool reply_parameter_error(const ebb::EbbParameters& parameters);
-  void send(const char* text);
-  size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
+  void send(const char* text) { replies_.send(text); }
   // Frame (eibotboard_frame.cpp)
   void apply_controls();
   void flush_fifo();
@@ -167,17 +172,14 @@ class Eibotboard : public Block, public MoveOutputPorts {
   void update_outputs();
   double move_duration_s(const ebb::EbbMove& move) const;
 
-  ByteStream* stream_ = nullptr;
-  ArduinoStreamAdapter adapter_;
   // loop side
-  char line_[kMaxLineBytes + 1] = {};
-  size_t line_length_ = 0;
-  bool line_overrun_ = false;
-  bool line_ready_ = false;      // a complete line waits (its motion command found the FIFO full)
+  // ASCII lines ended by CR or LF (CR LF and LF CR end one; empty lines are skipped), control and
+  // non-ASCII bytes dropped; a line waits in the reader while its motion command finds the FIFO full.
+  link::LineReader<kMaxLineBytes> lines_{link::LineRules{true, false, true, true}};
+  link::ReplyRing<kReplyBufferBytes> replies_;
   bool waiting_for_room_ = false;
   uint32_t commands_done_ = 0;
   uint32_t fifo_full_waits_ = 0;
-  bool last_was_terminator_ = false;
   char command_name_[3] = {};
   bool future_syntax_ = false;
   bool ack_enabled_ = true;
@@ -194,10 +196,6 @@ class Eibotboard : public Block, public MoveOutputPorts {
   bool motors_enabled_[2] = {};  // as the last queued EM or ES,1 left them (EM's default for motor 2)
   const char* version_ = kDefaultVersion;
   EbbKinematics kinematics_ = EBB_KINEMATICS_COREXY;
-  char replies_[kReplyBufferBytes] = {};
-  size_t reply_head_ = 0;
-  size_t reply_count_ = 0;
-  uint32_t replies_dropped_ = 0;
   uint32_t errors_replied_ = 0;
   // loop → frame
   SpscQueue<ebb::EbbMove, kFifoCapacity> fifo_;

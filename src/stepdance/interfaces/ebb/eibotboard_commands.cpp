@@ -50,45 +50,47 @@ void set_axis(EbbMove& move, int axis, int64_t rate, int64_t steps, int64_t acce
 
 }  // namespace
 
-struct Eibotboard::CommandTable {
-  using Entry = ebb::CommandEntry<CommandHandler>;
-  static constexpr uint8_t kMotors = ebb::kCommandMovesMotors;
-  static constexpr uint8_t kBare = ebb::kCommandNoParameters;
-  static constexpr Entry kEntries[] = {
-      // Motion, queued in the FIFO
-      {"SM", &Eibotboard::command_sm, kMotors}, {"XM", &Eibotboard::command_xm, kMotors},
-      {"LM", &Eibotboard::command_lm, kMotors}, {"LT", &Eibotboard::command_lt, kMotors},
-      {"HM", &Eibotboard::command_hm, kMotors}, {"EM", &Eibotboard::command_em, 0},
-      {"SP", &Eibotboard::command_sp, 0},       {"S2", &Eibotboard::command_s2, 0},
-      {"TP", &Eibotboard::command_tp, 0},
-      // Settings and queries, answered at once
-      {"SC", &Eibotboard::command_sc, 0},       {"CU", &Eibotboard::command_cu, 0},
-      {"QU", &Eibotboard::command_qu, 0},       {"ES", &Eibotboard::command_es, 0},
-      {"SR", &Eibotboard::command_sr, 0},       {"SL", &Eibotboard::command_sl, 0},
-      {"QL", &Eibotboard::command_ql, 0},       {"ST", &Eibotboard::command_st, 0},
-      {"V", &Eibotboard::command_v, kBare},     {"QM", &Eibotboard::command_qm, kBare},
-      {"QG", &Eibotboard::command_qg, kBare},   {"QT", &Eibotboard::command_qt, kBare},
-      {"QS", &Eibotboard::command_qs, kBare},   {"CS", &Eibotboard::command_cs, kBare},
-      {"QP", &Eibotboard::command_qp, kBare},   {"QB", &Eibotboard::command_qb, kBare},
-      {"QC", &Eibotboard::command_qc, kBare},   {"QE", &Eibotboard::command_qe, kBare},
-      {"QR", &Eibotboard::command_qr, kBare},   {"R", &Eibotboard::command_r, kBare},
-  };
-  static_assert(ebb::command_names_unique(kEntries), "an EBB command is listed twice");
-};
+const link::Command<Eibotboard::CommandHandler>* Eibotboard::find_command(const char* name) {
+  constexpr uint8_t kMotors = kMovesMotors;
+  constexpr uint8_t kBare = kNoParameters;
+  static constexpr auto kTable = link::make_command_table<CommandHandler>(
+      {
+          // Motion, queued in the FIFO
+          {"SM", {&Eibotboard::command_sm, kMotors}}, {"XM", {&Eibotboard::command_xm, kMotors}},
+          {"LM", {&Eibotboard::command_lm, kMotors}}, {"LT", {&Eibotboard::command_lt, kMotors}},
+          {"HM", {&Eibotboard::command_hm, kMotors}}, {"EM", {&Eibotboard::command_em, 0}},
+          {"SP", {&Eibotboard::command_sp, 0}},       {"S2", {&Eibotboard::command_s2, 0}},
+          {"TP", {&Eibotboard::command_tp, 0}},
+          // Settings and queries, answered at once
+          {"SC", {&Eibotboard::command_sc, 0}},       {"CU", {&Eibotboard::command_cu, 0}},
+          {"QU", {&Eibotboard::command_qu, 0}},       {"ES", {&Eibotboard::command_es, 0}},
+          {"SR", {&Eibotboard::command_sr, 0}},       {"SL", {&Eibotboard::command_sl, 0}},
+          {"QL", {&Eibotboard::command_ql, 0}},       {"ST", {&Eibotboard::command_st, 0}},
+          {"V", {&Eibotboard::command_v, kBare}},     {"QM", {&Eibotboard::command_qm, kBare}},
+          {"QG", {&Eibotboard::command_qg, kBare}},   {"QT", {&Eibotboard::command_qt, kBare}},
+          {"QS", {&Eibotboard::command_qs, kBare}},   {"CS", {&Eibotboard::command_cs, kBare}},
+          {"QP", {&Eibotboard::command_qp, kBare}},   {"QB", {&Eibotboard::command_qb, kBare}},
+          {"QC", {&Eibotboard::command_qc, kBare}},   {"QE", {&Eibotboard::command_qe, kBare}},
+          {"QR", {&Eibotboard::command_qr, kBare}},   {"R", {&Eibotboard::command_r, kBare}},
+      },
+      true);
+  static_assert(kTable.names_unique(), "an EBB command is listed twice");
+  return kTable.find(name);
+}
 
 bool Eibotboard::dispatch(const char* name, EbbParameters& p) {
-  const CommandTable::Entry* command = ebb::find_command(CommandTable::kEntries, name);
+  const link::Command<CommandHandler>* command = find_command(name);
   if (command == nullptr) {
     reply_error(EbbError::kUnknownCommand, name);
     return true;
   }
   // Motor moves are refused while an alarm is raised (the fault path); pen commands still run.
-  if ((command->flags & ebb::kCommandMovesMotors) != 0 && alarm_active()) {
+  if ((command->handler.flags & kMovesMotors) != 0 && alarm_active()) {
     reply_error(EbbError::kAlarm, command_name_);
     return true;
   }
-  if ((command->flags & ebb::kCommandNoParameters) != 0 && !p.finish()) return reply_parameter_error(p), true;
-  return (this->*command->handler)(p);
+  if ((command->handler.flags & kNoParameters) != 0 && !p.finish()) return reply_parameter_error(p), true;
+  return (this->*command->handler.run)(p);
 }
 
 bool Eibotboard::reply_parameter_error(const EbbParameters& parameters) {
