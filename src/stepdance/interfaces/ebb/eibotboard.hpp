@@ -12,6 +12,7 @@
 #include "stepdance/core/status.hpp"
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 #include "stepdance/interfaces/ebb/ebb_parameters.hpp"
+#include "stepdance/interfaces/ebb/ebb_pins.hpp"
 #include "stepdance/interfaces/link/command_table.hpp"
 #include "stepdance/interfaces/link/line_reader.hpp"
 #include "stepdance/interfaces/link/reply_ring.hpp"
@@ -156,6 +157,13 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   bool command_qe(ebb::EbbParameters& p);
   bool command_qr(ebb::EbbParameters& p);
   bool command_r(ebb::EbbParameters& p);
+  // Pins (eibotboard_pins.cpp)
+  bool read_pin(ebb::EbbParameters& p, int& port, int& pin);
+  bool command_pd(ebb::EbbParameters& p);
+  bool command_po(ebb::EbbParameters& p);
+  bool command_pi(ebb::EbbParameters& p);
+  bool command_pc(ebb::EbbParameters& p);
+  bool command_pg(ebb::EbbParameters& p);
   // Replies (eibotboard_replies.cpp)
   void reply_ok();
   void reply_data(const char* data, bool ok_after, const char* legacy_ending = "\r\n");
@@ -192,6 +200,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   bool button_pressed_ = false;
   uint8_t variables_[32] = {};
   char tag_[17] = {};
+  ebb::EbbPins pins_;
   uint32_t servo_timeout_ms_ = 60000;
   bool motors_enabled_[2] = {};  // as the last queued EM or ES,1 left them (EM's default for motor 2)
   const char* version_ = kDefaultVersion;
@@ -216,6 +225,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   volatile bool frame_pen_up_ = true;
   volatile bool frame_servo_settled_ = true;
   volatile uint8_t frame_motor_resolution_[2] = {};  // QE: 16 … 1 (1/16 … full step) when enabled, else 0
+  volatile uint8_t frame_microstep_mode_ = 1;         // PI's MS1 … MS3: EM's mode, 1 … 5
   volatile uint16_t pen_now_target_ = 0;  // SP,2/3: written before kPenUpNow is queued
   volatile uint16_t pen_now_rate_ = 0;
   double last_output_[3] = {};  // x, y, z as last set, world units

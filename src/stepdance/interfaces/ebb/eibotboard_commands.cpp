@@ -72,6 +72,10 @@ const link::Command<Eibotboard::CommandHandler>* Eibotboard::find_command(const 
           {"QP", {&Eibotboard::command_qp, kBare}},   {"QB", {&Eibotboard::command_qb, kBare}},
           {"QC", {&Eibotboard::command_qc, kBare}},   {"QE", {&Eibotboard::command_qe, kBare}},
           {"QR", {&Eibotboard::command_qr, kBare}},   {"R", {&Eibotboard::command_r, kBare}},
+          // Pins
+          {"PD", {&Eibotboard::command_pd, 0}},       {"PO", {&Eibotboard::command_po, 0}},
+          {"PI", {&Eibotboard::command_pi, 0}},       {"PC", {&Eibotboard::command_pc, 0}},
+          {"PG", {&Eibotboard::command_pg, 0}},
       },
       true);
   static_assert(kTable.names_unique(), "an EBB command is listed twice");

@@ -53,6 +53,7 @@ void Eibotboard::publish_frame_state() {
   frame_global_steps_[1] = executor_.global_steps(1);
   frame_pen_up_ = executor_.pen_up();
   frame_servo_settled_ = executor_.servo_settled();
+  frame_microstep_mode_ = executor_.microstep_mode();
   for (int motor = 0; motor < 2; ++motor) {
     frame_motor_resolution_[motor] = static_cast<uint8_t>(executor_.motor_enabled(motor) ? 16 >> (executor_.microstep_mode() - 1) : 0);
   }

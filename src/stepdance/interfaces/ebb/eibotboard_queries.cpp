@@ -253,6 +253,7 @@ bool Eibotboard::command_r(EbbParameters&) {
   fifo_depth_ = 1;
   pen_commanded_up_ = true;
   motors_enabled_[0] = motors_enabled_[1] = false;
+  pins_.reset();
   return true;
 }
 
