@@ -51,7 +51,7 @@ void EbbMotionExecutor::start(const EbbMove& move) {
       if (move.microstep_mode >= 1 && move.microstep_mode <= 5) microstep_mode_ = move.microstep_mode;
       enabled_[0] = move.enable[0];
       enabled_[1] = move.enable[1];
-      global_steps_[0] = global_steps_[1] = 0;
+      clear_global_steps();  // every EM, as the EBB's firmware: the counters and both accumulators
       break;
   }
 }

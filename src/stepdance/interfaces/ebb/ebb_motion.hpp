@@ -21,7 +21,7 @@ struct EbbMove {
     kHome,   ///< HM: to target[] (global step counters) at `frequency` steps/s, computed when it starts
     kDelay,  ///< SM with no steps, or a pen command's delay: `ticks` ticks of nothing
     kServo,  ///< SP/S2/TP: servo to `servo_target` at `servo_rate`, then `ticks` ticks of delay
-    kEnable, ///< EM: microstep mode and enables; clears the global step counters
+    kEnable, ///< EM: microstep mode and enables; clears the global step counters and accumulators
   };
   Kind kind = Kind::kDelay;
   int64_t rate[2] = {};     ///< accumulator increment per tick, ≥ 0 (direction in `direction`)
@@ -52,6 +52,8 @@ class EbbMotionExecutor {
   bool tick();
   /// Abandons the current move (ES). Returns true if one was running.
   bool stop();
+  /// Disables both drivers (ES,1): unlike EM, the step counters and accumulators stay.
+  void disable_motors() { enabled_[0] = enabled_[1] = false; }
   /// Sends the servo toward `target` at `rate` now, whatever the FIFO does (SP,2 and SP,3).
   void servo_now(uint16_t target, uint16_t rate, bool pen_up);
 

@@ -72,15 +72,10 @@ void Eibotboard::apply_controls() {
       case Control::kStop:
         flush_fifo();
         break;
-      case Control::kStopDisable: {
+      case Control::kStopDisable:
         flush_fifo();
-        EbbMove off;
-        off.kind = EbbMove::Kind::kEnable;
-        off.microstep_mode = 0;
-        off.enable[0] = off.enable[1] = false;
-        executor_.start(off);
+        executor_.disable_motors();
         break;
-      }
       case Control::kClearSteps:
         executor_.clear_global_steps();
         break;
