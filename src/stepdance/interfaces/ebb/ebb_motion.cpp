@@ -1,6 +1,8 @@
 // EbbMotionExecutor: the EBB's 25 kHz accumulator algorithm, servo slewing and FIFO entry effects.
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 
+#include <math.h>
+
 namespace stepdance::ebb {
 namespace {
 
@@ -12,6 +14,33 @@ int64_t abs64(int64_t value) { return value < 0 ? -value : value; }
 int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 
 }  // namespace
+
+double ticks_to_cover(const EbbMove& move, int axis) {
+  const double distance = static_cast<double>(move.steps[axis]) * kStepThreshold;
+  const double rate = static_cast<double>(move.rate[axis]);
+  const double accel = static_cast<double>(move.accel[axis]);
+  if (accel == 0.0) return rate > 0.0 ? distance / rate : 0.0;
+  const double discriminant = rate * rate + 2.0 * accel * distance;
+  return discriminant > 0.0 ? (-rate + sqrt(discriminant)) / accel : 0.0;
+}
+
+double EbbMotionExecutor::peak_steps_per_tick() const {
+  const bool accumulated = move_.kind == EbbMove::Kind::kSteps || move_.kind == EbbMove::Kind::kTime;
+  if (!busy_ || !accumulated) return 0.0;  // kHome runs as kSteps (begin_home)
+  double peak = 0.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (!axis_active_[axis]) continue;
+    const double rate = static_cast<double>(move_.rate[axis]);
+    const double accel = static_cast<double>(move_.accel[axis]);
+    const double ticks = move_.kind == EbbMove::Kind::kTime ? move_.ticks : ticks_to_cover(move_, axis);
+    const double first = rate + accel / 2.0;
+    const double last = rate + accel * (ticks - 0.5);
+    const double most = (first < 0.0 || last < 0.0) ? kStepThreshold : (first > last ? first : last);
+    const double steps = most >= kStepThreshold ? 1.0 : most / kStepThreshold;
+    if (steps > peak) peak = steps;
+  }
+  return peak;
+}
 
 void EbbMotionExecutor::reset(uint16_t servo_reset) {
   *this = EbbMotionExecutor{};

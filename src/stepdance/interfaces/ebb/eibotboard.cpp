@@ -94,6 +94,7 @@ void Eibotboard::report_counters(CounterSink& sink) const {
   sink.counter("errors_replied", errors_replied_);
   sink.counter("replies_dropped", replies_.dropped());
   sink.counter("alarm_stops", alarm_stops_);
+  sink.counter("moves_stretched", moves_stretched_);
 }
 
 bool Eibotboard::is_idle() const {

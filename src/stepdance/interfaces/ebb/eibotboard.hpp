@@ -97,6 +97,8 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   enum class Control : uint8_t { kStop, kStopDisable, kClearSteps, kReset, kPenUpNow };
   static constexpr size_t kReplyBufferBytes = 512;
   static constexpr size_t kLargestReplyBytes = 160;
+  static constexpr uint32_t kUnstretchedQ16 = 65536;               // a stretch factor of 1 in Q16
+  static constexpr uint32_t kStretchReportIntervalUs = 1000000;    // at most one warning a second
 
   /// What the dispatcher checks before a handler runs.
   enum CommandFlags : uint8_t {
@@ -179,6 +181,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   void publish_frame_state();
   void update_outputs();
   double move_duration_s(const ebb::EbbMove& move) const;
+  void fit_move_to_step_rate();
 
   // loop side
   // ASCII lines ended by CR or LF (CR LF and LF CR end one; empty lines are skipped), control and
@@ -214,7 +217,11 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   volatile uint32_t alarm_stops_ = 0;     // frame: motor moves stopped or skipped while an alarm is raised
   // frame side
   ebb::EbbMotionExecutor executor_;
-  uint32_t tick_time_us_ = 0;  // frame time not yet spent on an EBB tick (< 40 µs)
+  uint32_t tick_time_q16_ = 0;  // frame time not yet spent on an EBB tick, µs·2^16 (< one tick)
+  uint32_t stretch_q16_ = kUnstretchedQ16;  // the current move's tick length over 40 µs, ·2^16 (≥ 1)
+  double move_stretch_ = 1.0;               // the same as a factor
+  uint32_t us_since_stretch_report_ = kStretchReportIntervalUs;
+  volatile uint32_t moves_stretched_ = 0;   // frame: moves slowed down to the step rate
   double mm_per_sixteenth_ = 25.4 / 2032.0;
   double z_units_per_step_ = 1.0 / 50.0;
   uint32_t move_ticks_done_ = 0;

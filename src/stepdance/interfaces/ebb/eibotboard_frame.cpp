@@ -34,9 +34,12 @@ void Eibotboard::run() {
 // The EBB's own 40 µs tick, whatever our frame period: a tick when 40 µs of frames have passed
 // (every frame at 40 µs, every 4th at 10 µs, 5 ticks in 8 frames at 25 µs).
 void Eibotboard::tick_ebb_time() {
-  tick_time_us_ += frame_period_us();
-  if (tick_time_us_ < ebb::kTickPeriodUs) return;
-  tick_time_us_ -= ebb::kTickPeriodUs;
+  const uint32_t period_us = frame_period_us();
+  if (us_since_stretch_report_ < kStretchReportIntervalUs) us_since_stretch_report_ += period_us;
+  tick_time_q16_ += period_us * kUnstretchedQ16;
+  const uint32_t tick_q16 = ebb::kTickPeriodUs * stretch_q16_;  // stretched: a longer tick
+  if (tick_time_q16_ < tick_q16) return;
+  tick_time_q16_ -= tick_q16;
   if (executor_.tick()) {
     ++move_ticks_done_;
   } else if (!executor_.busy()) {
@@ -110,6 +113,7 @@ void Eibotboard::load_next_move() {
     move_ticks_done_ = 0;
     move_duration_s_ = move_duration_s(move);
     executor_.start(move);
+    fit_move_to_step_rate();
     if (executor_.busy()) return;  // it takes time: tick it this frame
   }
 }
@@ -117,28 +121,33 @@ void Eibotboard::load_next_move() {
 double Eibotboard::move_duration_s(const EbbMove& move) const {
   switch (move.kind) {
     case EbbMove::Kind::kSteps: {
-      // The longer axis: steps·2^31 = rate·T + accel·T²/2, solved for T (ticks).
-      double longest = 0.0;
-      for (int axis = 0; axis < 2; ++axis) {
-        const double distance = static_cast<double>(move.steps[axis]) * ebb::kStepThreshold;
-        const double rate = static_cast<double>(move.rate[axis]);
-        const double accel = static_cast<double>(move.accel[axis]);
-        double ticks = 0.0;
-        if (accel == 0.0) {
-          ticks = rate > 0.0 ? distance / rate : 0.0;
-        } else {
-          const double discriminant = rate * rate + 2.0 * accel * distance;
-          ticks = discriminant > 0.0 ? (-rate + sqrt(discriminant)) / accel : 0.0;
-        }
-        if (ticks > longest) longest = ticks;
-      }
-      return longest / ebb::kTicksPerSecond;
+      const double ticks = fmax(ebb::ticks_to_cover(move, 0), ebb::ticks_to_cover(move, 1));
+      return ticks / ebb::kTicksPerSecond;
     }
     case EbbMove::Kind::kHome:
       return 0.0;  // known only when it starts
     default:
       return static_cast<double>(move.ticks) / ebb::kTicksPerSecond;
   }
+}
+
+// A channel steps at most once per frame: a move whose fastest motor would take more 1/16 steps
+// in an EBB tick than the frames of that tick carry runs on a slower clock, the whole move, so
+// every motor keeps its place on the path. Counted; reported at most once a second of frames.
+void Eibotboard::fit_move_to_step_rate() {
+  move_stretch_ = 1.0;
+  stretch_q16_ = kUnstretchedQ16;
+  const double sixteenths_per_tick = executor_.peak_steps_per_tick() * executor_.sixteenths_per_step();
+  const double carried_per_tick = static_cast<double>(ebb::kTickPeriodUs) / frame_period_us();
+  if (sixteenths_per_tick <= carried_per_tick) return;
+  stretch_q16_ = static_cast<uint32_t>(ceil(sixteenths_per_tick / carried_per_tick * kUnstretchedQ16));
+  move_stretch_ = static_cast<double>(stretch_q16_) / kUnstretchedQ16;
+  move_duration_s_ *= move_stretch_;
+  moves_stretched_ = moves_stretched_ + 1;
+  if (us_since_stretch_report_ < kStretchReportIntervalUs) return;
+  us_since_stretch_report_ = 0;
+  report_fault(FaultLevel::kWarning, FaultReason::kOverrun, "Eibotboard",
+               "a move faster than one step per frame per motor was slowed down to fit (moves_stretched)");
 }
 
 void Eibotboard::update_outputs() {
@@ -158,7 +167,8 @@ void Eibotboard::update_outputs() {
     ports[i]->push();
   }
   const double duration = move_duration_s_;
-  const double done = duration > 0.0 ? (move_ticks_done_ / static_cast<double>(ebb::kTicksPerSecond)) / duration : 1.0;
+  const double done_s = move_ticks_done_ / static_cast<double>(ebb::kTicksPerSecond) * move_stretch_;
+  const double done = duration > 0.0 ? done_s / duration : 1.0;
   output_parameter.set(executor_.busy() ? (done < 1.0 ? done : 1.0) : 1.0);
   output_parameter.push();
   output_duration.set(duration);
