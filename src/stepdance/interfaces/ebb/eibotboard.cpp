@@ -24,7 +24,9 @@ Status Eibotboard::begin_stream(ByteStream&) {
 }
 
 void Eibotboard::set_ratio_xy(float output_units_mm, float input_units_steps) {
-  if (input_units_steps != 0.0f && isfinite(output_units_mm)) mm_per_sixteenth_ = output_units_mm / input_units_steps;
+  if (input_units_steps == 0.0f || !isfinite(output_units_mm)) return;
+  mm_per_sixteenth_ = static_cast<double>(output_units_mm) / input_units_steps;
+  ratio_xy_given_ = true;
 }
 
 void Eibotboard::set_ratio_z(float output_units_mm, float input_units_steps) {

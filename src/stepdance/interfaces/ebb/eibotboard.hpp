@@ -32,14 +32,16 @@ enum EbbKinematics : uint8_t {
 /// API), saxi and other plotter programs drive a Stepdance machine, while live inputs mix in.
 ///
 /// Motion commands (SM, XM, LM, LT, HM, EM, SP, S2, TP) go through a FIFO to the frame, which
-/// executes them tick for tick as an EBB does (the 40 µs accumulator algorithm, not re-planned);
+/// executes them tick for tick as an EBB does (the 40 µs accumulator algorithm, not re-planned;
+/// a move faster than the channels' one step per frame runs on a slower clock, counted and reported);
 /// queries and settings act at once. While the FIFO is full the next motion command waits and
 /// nothing more is read (USB flow control), so no command is ever dropped. Both reply syntaxes
 /// (legacy and CU,10,1 "future") and the EBB's error replies are exact. See docs/axidraw.md.
 ///
-/// Outputs: x and y in mm from the motors' positions through the chosen kinematics and steps/mm
-/// (80 steps/mm at 1/16 microstepping by default, scaled by the EM mode), z the pen servo as
-/// pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs) times the z ratio.
+/// Outputs: x and y in mm from the motors' positions through the chosen kinematics and the steps/mm
+/// of the channels they drive (one 1/16 step is one channel step; see set_ratio_xy), scaled by the
+/// EM mode; z the pen servo as pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs)
+/// times the z ratio.
 /// Context: the loop (dance_loop serves the link); run() is the frame.
 class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProtocol<Eibotboard> {
  public:
@@ -58,8 +60,10 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   // begin(&Serial1, baud) on a hardware UART: link::LinkedProtocol. kFull if a registry is full.
   // Context: loop.
 
-  /// mm per motor step at 1/16 microstepping, as output_units_mm per input_units_steps
-  /// (default 25.4 mm per 2032 steps = 80 steps/mm; the original library used 2874). Context: loop.
+  /// mm per motor step at 1/16 microstepping, as output_units_mm per input_units_steps. Optional:
+  /// at start the board takes the ratio of the channels its x and y drive (one EBB 1/16 step is
+  /// one channel step), and refuses to start if this one disagrees with them; it is used as it is
+  /// only when no channel is reached (default 25.4 mm per 2032 steps = 80 steps/mm). Context: loop.
   void set_ratio_xy(float output_units_mm, float input_units_steps);
   /// Output units of z per servo step (µs of pulse width); default 1 per 50 (the original's).
   void set_ratio_z(float output_units_mm, float input_units_steps);
@@ -87,6 +91,10 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   /// loop pass). Context: loop.
   bool is_idle() const;
 
+  /// At start (dance_start): takes steps/mm from the channels output_x and output_y reach, directly
+  /// or through the block they feed (a kinematics); false, with a kBadConfiguration fault saying
+  /// why, when those channels differ or set_ratio_xy() disagrees with them. Context: loop.
+  bool accept_frame_period(uint32_t period_us) override;
   /// Serves the link: reads commands while the FIFO has room, replies. Context: loop.
   void loop() override;
   /// One tick of EBB motion; sets and pushes the outputs. Context: frame ISR.
@@ -223,6 +231,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   uint32_t us_since_stretch_report_ = kStretchReportIntervalUs;
   volatile uint32_t moves_stretched_ = 0;   // frame: moves slowed down to the step rate
   double mm_per_sixteenth_ = 25.4 / 2032.0;
+  bool ratio_xy_given_ = false;  // set_ratio_xy() was called: the channels must agree with it
   double z_units_per_step_ = 1.0 / 50.0;
   uint32_t move_ticks_done_ = 0;
   double move_duration_s_ = 0.0;
