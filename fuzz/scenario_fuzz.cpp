@@ -23,9 +23,11 @@ void check_accepted(const Scenario& scenario) {
     if (!in_range(board.loop_period_us, ranges::kLoopPeriodUs)) abort();
   }
   for (const CableConfig& cable : scenario.cables) {
-    if (!in_range(cable.delay_ns, ranges::kCableDelayNs) || !in_range(cable.stretch_ns, ranges::kCableStretchNs) ||
-        !in_range(cable.glitch_every_us, ranges::kGlitchEveryUs) ||
-        !in_range(cable.glitch_width_ns, ranges::kGlitchWidthNs)) {
+    const stepdance::sim::CableSettings& settings = cable.settings;
+    if (!in_range(settings.delay, ranges::kCableDelayNs) || !in_range(settings.stretch, ranges::kCableStretchNs) ||
+        settings.glitch_every % stepdance::sim::kMicrosecond != 0 ||
+        !in_range(settings.glitch_every / stepdance::sim::kMicrosecond, ranges::kGlitchEveryUs) ||
+        !in_range(settings.glitch_width, ranges::kGlitchWidthNs)) {
       abort();
     }
   }

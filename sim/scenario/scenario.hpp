@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/sim_time.hpp"
+#include "models/cable.hpp"
 
 namespace stepdance::sim {
 struct DeviceKind;
@@ -120,15 +121,12 @@ struct PortRef {
   char port = 'A';
 };
 
-/// A TRRS cable from an output port to an input port.
+/// A TRRS cable from an output port to an input port, with the model's settings (delay, stretch
+/// and glitches, in ns: models/cable.hpp).
 struct CableConfig {
   PortRef from;
   PortRef to;
-  int64_t delay_ns = 0;
-  int64_t stretch_ns = 0;
-  /// 0 = no glitches.
-  int64_t glitch_every_us = 0;
-  int64_t glitch_width_ns = 500;
+  CableSettings settings;
   int line = 0;
 };
 

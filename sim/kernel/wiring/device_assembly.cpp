@@ -71,13 +71,8 @@ void Simulation::build_vcd() {
 
 void Simulation::build_cables() {
   for (const scenario::CableConfig& config : scenario_.cables) {
-    CableSettings settings;
-    settings.delay = config.delay_ns;
-    settings.stretch = config.stretch_ns;
-    settings.glitch_every = config.glitch_every_us * kMicrosecond;
-    settings.glitch_width = config.glitch_width_ns;
     const uint8_t to_port = static_cast<uint8_t>(config.to.port - 'A');
-    cables_.push_back(std::make_unique<CableLink>(settings, *slot(config.to.board).board, to_port, delivery_));
+    cables_.push_back(std::make_unique<CableLink>(config.settings, *slot(config.to.board).board, to_port, delivery_));
     const auto tapped = vcd_inputs_.find(port_key(config.to.board, false, config.to.port));
     if (tapped != vcd_inputs_.end()) {
       VcdRecorder* recorder = vcd_.get();

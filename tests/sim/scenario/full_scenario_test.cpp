@@ -131,10 +131,10 @@ TEST(FullScenario, Cables) {
   EXPECT_EQ(cable.from.port, 'A');
   EXPECT_EQ(cable.to.board, "driver");
   EXPECT_EQ(cable.to.port, 'A');
-  EXPECT_EQ(cable.delay_ns, 20);
-  EXPECT_EQ(cable.stretch_ns, -400);
-  EXPECT_EQ(cable.glitch_every_us, 1000);
-  EXPECT_EQ(cable.glitch_width_ns, 300);
+  EXPECT_EQ(cable.settings.delay, 20);
+  EXPECT_EQ(cable.settings.stretch, -400);
+  EXPECT_EQ(cable.settings.glitch_every, 1000 * kMicrosecond);
+  EXPECT_EQ(cable.settings.glitch_width, 300);
 }
 
 TEST(FullScenario, TimelineIsSortedByTimeKeepingFileOrderForTies) {
