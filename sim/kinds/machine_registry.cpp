@@ -1,42 +1,26 @@
 // The machine kind registry: the built-in list plus kinds registered at run time.
 #include "kinds/machine_registry.hpp"
 
-#include <algorithm>
+#include "kinds/kind_registry.hpp"
 
 namespace stepdance::sim {
 namespace {
 
-std::vector<const MachineKind*>& registry() {
-  static std::vector<const MachineKind*> kinds = builtin_machine_kinds();
+KindRegistry<MachineKind>& registry() {
+  static KindRegistry<MachineKind> kinds(builtin_machine_kinds());
   return kinds;
 }
 
 }  // namespace
 
-const std::vector<const MachineKind*>& machine_kinds() { return registry(); }
+const std::vector<const MachineKind*>& machine_kinds() { return registry().all(); }
 
-const MachineKind* find_machine_kind(std::string_view name) {
-  for (const MachineKind* kind : machine_kinds()) {
-    if (kind->name == name) return kind;
-  }
-  return nullptr;
-}
+const MachineKind* find_machine_kind(std::string_view name) { return registry().find(name); }
 
-std::string machine_kind_names() {
-  std::string text;
-  const std::vector<const MachineKind*>& kinds = machine_kinds();
-  for (size_t i = 0; i < kinds.size(); ++i) {
-    if (i > 0) text += i + 1 == kinds.size() ? " or " : ", ";
-    text += "\"" + std::string(kinds[i]->name) + "\"";
-  }
-  return text;
-}
+std::string machine_kind_names() { return registry().names(); }
 
-ScopedMachineKind::ScopedMachineKind(const MachineKind& kind) : kind_(kind) { registry().push_back(&kind); }
+ScopedMachineKind::ScopedMachineKind(const MachineKind& kind) : kind_(kind) { registry().add(kind); }
 
-ScopedMachineKind::~ScopedMachineKind() {
-  std::vector<const MachineKind*>& kinds = registry();
-  kinds.erase(std::remove(kinds.begin(), kinds.end(), &kind_), kinds.end());
-}
+ScopedMachineKind::~ScopedMachineKind() { registry().remove(kind_); }
 
 }  // namespace stepdance::sim
