@@ -61,8 +61,10 @@ object_of() {
 compile_object() {
   local flags=$1 source=$2 object=$3
   mkdir -p "$(dirname "$object")"
+  local compiler=(clang++ -std=c++17)
+  [[ $source == *.c ]] && compiler=(clang -std=c99)  # the servo's pulse arithmetic is C
   # shellcheck disable=SC2086 # the flags are words
-  clang++ -std=c++17 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
+  "${compiler[@]}" -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
     -Isrc -Ihost/hal_manual $flags -c "$source" -o "$object"
 }
 export -f compile_object
