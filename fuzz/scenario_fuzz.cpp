@@ -31,6 +31,12 @@ void check_accepted(const Scenario& scenario) {
       abort();
     }
   }
+  // Every device and the machine carry their kind's row and that kind's settings (the simulation
+  // builds them from these alone).
+  for (const DeviceConfig& device : scenario.devices) {
+    if (device.kind == nullptr || !device.settings.has_value()) abort();
+  }
+  if (scenario.machine && (scenario.machine->kind == nullptr || !scenario.machine->settings.has_value())) abort();
   if (!in_range(scenario.output.csv_interval_ms, ranges::kCsvIntervalMs)) abort();
   for (const Action& action : scenario.timeline) {
     if (action.time < 0 || action.time > scenario.duration) abort();
