@@ -20,6 +20,11 @@
 
 namespace stepdance {
 
+class Encoder;
+class KinematicsCoreXY;
+class PositionGenerator;
+class TimeBasedInterpolator;
+
 namespace rpc {
 /// The __describe__ letter of an argument or return type. Context: compile time.
 template <typename T>
@@ -160,10 +165,12 @@ class RPC : public Block {
   }
   /// A block's BlockPort as "<instance_name>.<name>.read" etc. Context: loop.
   void enroll_port(const char* instance_name, const char* name, BlockPort& port);
-  /// A block: it enrolls its own names under "<name>." (see each class's enroll()).
-  template <class Name>
-  void enroll(const Name& name, Block& block) {
-    block.enroll(this, text_of(name));
+  /// A block: the names the original library gives its class, under "<name>." (docs/rpc.md;
+  /// Encoder, TimeBasedInterpolator, PositionGenerator, KinematicsCoreXY). The block's own type
+  /// picks them at compile time; a block of another class enrolls nothing. Context: loop (setup).
+  template <class Name, class B, std::enable_if_t<std::is_base_of_v<Block, B>, int> = 0>
+  void enroll(const Name& name, B& block) {
+    enroll_block(text_of(name), block);
   }
   /// A BlockPort: "<name>.read" (absolute, world units), "<name>.read_deep", "<name>.reset_deep".
   template <class Name>
@@ -212,6 +219,15 @@ class RPC : public Block {
   static void open_port(...) {}
 
   Status begin_stream(ByteStream& stream);
+  // The names of each block class (rpc_enroll_blocks.cpp); other blocks have none.
+  void enroll_block(const char* name, Encoder& encoder);
+  void enroll_block(const char* name, KinematicsCoreXY& kinematics);
+  void enroll_block(const char* name, PositionGenerator& generator);
+  void enroll_block(const char* name, TimeBasedInterpolator& interpolator);
+  void enroll_block(const char* name, Block& block) {
+    (void)name;
+    (void)block;
+  }
   Entry* add(const char* prefix, const char* suffix, bool parameter);
   void continue_index();
   void enroll_port(const char* name, BlockPort& port);
