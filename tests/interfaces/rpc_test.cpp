@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <regex>
 #include <string>
 
 #include "hal_manual.hpp"
@@ -225,6 +228,32 @@ TEST_F(RpcTest, NumbersComeBackWithNineSignificantDigits) {
   EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":2.5e20}\r\n");
   gain = 1.0 / 3.0;
   EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":0.333333333}\r\n");
+}
+
+TEST_F(RpcTest, EveryNumberComesBackAsAJsonNumber) {
+  // Fractions from 10^9 up were sent as `ovf`, and numbers below 10^-307 with a broken mantissa
+  // (the smallest double as `infe-324`). Whole digits are kept from 10^9 up (rounded half away
+  // from zero, as below 10^9); below 0.001 nine significant digits with an exponent.
+  gain = 1234567890.25;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":1234567890}\r\n");
+  gain = -12345678901234.5;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":-12345678901235}\r\n");
+  gain = 4.9406564584124654e-324;  // the smallest subnormal double, 2^-1074
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":4.94065646e-324}\r\n");
+  // Every magnitude: a JSON number that reads back within half a unit of the ninth digit.
+  const std::regex json_number(R"(-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE]-?[0-9]+)?)");
+  for (int power = -320; power <= 300; power += 7) {
+    for (double mantissa : {1.0, 1.23456789012, -4.4444444449, 9.99999999}) {
+      gain = mantissa * std::pow(10.0, power);
+      const std::string reply = call(R"({"name":"gain"})");
+      const std::string prefix = "{\"result\":\"ok\",\"return\":";
+      ASSERT_EQ(reply.substr(0, prefix.size()), prefix) << gain;
+      const std::string number = reply.substr(prefix.size(), reply.size() - prefix.size() - 3);
+      EXPECT_TRUE(std::regex_match(number, json_number)) << gain << " -> " << number;
+      const double back = std::strtod(number.c_str(), nullptr);
+      EXPECT_LE(std::fabs(back - gain), 5.0001e-9 * std::fabs(gain) + 4.95e-324) << gain << " -> " << number;
+    }
+  }
 }
 
 TEST(RpcRegistry, OverflowIsRefusedCountedAndReported) {

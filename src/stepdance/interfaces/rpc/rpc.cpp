@@ -255,6 +255,33 @@ void RPC::flush_replies() {
 
 // ---- JSON output --------------------------------------------------------------------------------------
 
+namespace {
+
+// `places` digits of value (below 10^places), leading zeros kept.
+void write_padded(TextWriter& out, uint32_t value, int places) {
+  char digits[12];
+  for (int i = places - 1; i >= 0; --i) {
+    digits[i] = static_cast<char>('0' + value % 10);
+    value /= 10;
+  }
+  digits[places] = '\0';
+  out.text(digits);
+}
+
+// A whole number from 0 to 10^15 (uint32 halves keep the core free of 64-bit division).
+void write_whole(TextWriter& out, double whole) {
+  const double high = floor(whole / 1e9);
+  const uint32_t low = static_cast<uint32_t>(whole - high * 1e9);
+  if (high == 0) {
+    out.unsigned_number(low);
+    return;
+  }
+  out.unsigned_number(static_cast<uint32_t>(high));
+  write_padded(out, low, 9);
+}
+
+}  // namespace
+
 void RPC::write_number(TextWriter& out, double value) {
   if (!isfinite(value)) {
     out.text("null");  // JSON has no NaN or infinity
@@ -263,53 +290,32 @@ void RPC::write_number(TextWriter& out, double value) {
   const double magnitude = fabs(value);
   if (magnitude == floor(magnitude) && magnitude < 1e15) {
     if (value < 0) out.character('-');
-    // Whole numbers up to 10^15: print the digits (uint32 halves keep the core free of 64-bit division).
-    const double high = floor(magnitude / 1e9);
-    const double low = magnitude - high * 1e9;
-    if (high > 0) {
-      out.unsigned_number(static_cast<uint32_t>(high));
-      char digits[10];
-      uint32_t rest = static_cast<uint32_t>(low);
-      for (int i = 8; i >= 0; --i) {
-        digits[i] = static_cast<char>('0' + rest % 10);
-        rest /= 10;
-      }
-      digits[9] = '\0';
-      out.text(digits);
-    } else {
-      out.unsigned_number(static_cast<uint32_t>(low));
-    }
+    write_whole(out, magnitude);
     return;
   }
   // Otherwise nine significant digits: plain between 0.001 and 10^15, else with an exponent.
   int exponent = static_cast<int>(floor(log10(magnitude)));
   const bool scientific = exponent < -3 || exponent >= 15;
-  const double shown = scientific ? magnitude / pow(10.0, exponent) : magnitude;
-  const int integer_digits = scientific ? 1 : (exponent >= 0 ? exponent + 1 : 1);
-  int decimals = 9 - integer_digits;
-  if (!scientific && exponent < 0) decimals = 8 - exponent;  // keep nine significant digits
-  if (decimals < 0) decimals = 0;
-  double scaled = floor(shown * pow(10.0, decimals) + 0.5);
-  const double whole = floor(scaled / pow(10.0, decimals));
-  double fraction = scaled - whole * pow(10.0, decimals);
+  double shown = magnitude;
+  if (scientific) {  // 10^exponent is subnormal below 10^-307: scale up first
+    shown = exponent < -307 ? magnitude * 1e20 / pow(10.0, exponent + 20) : magnitude / pow(10.0, exponent);
+  }
+  const int wanted_decimals = 8 - (scientific ? 0 : exponent);
+  const int decimals = wanted_decimals < 0 ? 0 : wanted_decimals;
+  const double scale = pow(10.0, decimals);
+  const double scaled = floor(shown * scale + 0.5);
+  const double whole = floor(scaled / scale);
+  uint32_t fraction = static_cast<uint32_t>(scaled - whole * scale);  // below 10^9
+  int places = decimals;
+  while (places > 0 && fraction % 10 == 0) {
+    fraction /= 10;
+    --places;
+  }
   if (value < 0) out.character('-');
-  if (whole >= 1e9) {
-    out.fixed(whole, 0);  // cannot happen below 10^15 with nine digits; kept for safety
-  } else {
-    out.unsigned_number(static_cast<uint32_t>(whole));
-  }
-  char digits[24];
-  int count = 0;
-  for (int i = 0; i < decimals && i < 20; ++i) {
-    const double place = pow(10.0, decimals - 1 - i);
-    const int digit = static_cast<int>(floor(fraction / place));
-    digits[count++] = static_cast<char>('0' + (digit < 0 ? 0 : digit > 9 ? 9 : digit));
-    fraction -= digit * place;
-  }
-  while (count > 0 && digits[count - 1] == '0') --count;
-  if (count > 0) {
-    digits[count] = '\0';
-    out.character('.').text(digits);
+  write_whole(out, whole);  // from 10^9 up every whole digit, rounded
+  if (places > 0) {
+    out.character('.');
+    write_padded(out, fraction, places);
   }
   if (scientific) {
     out.character('e');
