@@ -255,76 +255,12 @@ void RPC::flush_replies() {
 
 // ---- JSON output --------------------------------------------------------------------------------------
 
-namespace {
-
-// `places` digits of value (below 10^places), leading zeros kept.
-void write_padded(TextWriter& out, uint32_t value, int places) {
-  char digits[12];
-  for (int i = places - 1; i >= 0; --i) {
-    digits[i] = static_cast<char>('0' + value % 10);
-    value /= 10;
-  }
-  digits[places] = '\0';
-  out.text(digits);
-}
-
-// A whole number from 0 to 10^15 (uint32 halves keep the core free of 64-bit division).
-void write_whole(TextWriter& out, double whole) {
-  const double high = floor(whole / 1e9);
-  const uint32_t low = static_cast<uint32_t>(whole - high * 1e9);
-  if (high == 0) {
-    out.unsigned_number(low);
-    return;
-  }
-  out.unsigned_number(static_cast<uint32_t>(high));
-  write_padded(out, low, 9);
-}
-
-}  // namespace
-
 void RPC::write_number(TextWriter& out, double value) {
   if (!isfinite(value)) {
     out.text("null");  // JSON has no NaN or infinity
     return;
   }
-  const double magnitude = fabs(value);
-  if (magnitude == floor(magnitude) && magnitude < 1e15) {
-    if (value < 0) out.character('-');
-    write_whole(out, magnitude);
-    return;
-  }
-  // Otherwise nine significant digits: plain between 0.001 and 10^15, else with an exponent.
-  int exponent = static_cast<int>(floor(log10(magnitude)));
-  const bool scientific = exponent < -3 || exponent >= 15;
-  double shown = magnitude;
-  if (scientific) {  // 10^exponent is subnormal below 10^-307: scale up first
-    shown = exponent < -307 ? magnitude * 1e20 / pow(10.0, exponent + 20) : magnitude / pow(10.0, exponent);
-  }
-  const int wanted_decimals = 8 - (scientific ? 0 : exponent);
-  const int decimals = wanted_decimals < 0 ? 0 : wanted_decimals;
-  const double scale = pow(10.0, decimals);
-  const double scaled = floor(shown * scale + 0.5);
-  const double whole = floor(scaled / scale);
-  uint32_t fraction = static_cast<uint32_t>(scaled - whole * scale);  // below 10^9
-  int places = decimals;
-  while (places > 0 && fraction % 10 == 0) {
-    fraction /= 10;
-    --places;
-  }
-  if (value < 0) out.character('-');
-  write_whole(out, whole);  // from 10^9 up every whole digit, rounded
-  if (places > 0) {
-    out.character('.');
-    write_padded(out, fraction, places);
-  }
-  if (scientific) {
-    out.character('e');
-    if (exponent < 0) {
-      out.character('-');
-      exponent = -exponent;
-    }
-    out.unsigned_number(static_cast<uint32_t>(exponent));
-  }
+  out.significant(value, 9);
 }
 
 void RPC::write_string(TextWriter& out, const char* text) {
