@@ -10,6 +10,7 @@ packages=(
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
   libre2-dev  # RE2: scenario reply patterns matched in time linear in the line
   clang  # libFuzzer targets (scripts/fuzz.sh)
+  universal-ctags  # function lengths for the structure check (scripts/check-function-length.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
   prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)
   python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests

@@ -1,0 +1,67 @@
+// A protocol's commands by name, fixed at compile time.
+#pragma once
+
+#include <stddef.h>
+
+namespace stepdance::link {
+
+/// One named command and what handles it (a function or member-function pointer, or a small
+/// struct of them when a command has several parts).
+template <class Handler>
+struct Command {
+  const char* name = nullptr;
+  Handler handler{};
+};
+
+/// Compares two names; with `ignore_case` ASCII letters match either case. Context: any.
+constexpr bool same_name(const char* a, const char* b, bool ignore_case) {
+  for (;; ++a, ++b) {
+    char x = *a;
+    char y = *b;
+    if (ignore_case) {
+      if (x >= 'a' && x <= 'z') x = static_cast<char>(x - 'a' + 'A');
+      if (y >= 'a' && y <= 'z') y = static_cast<char>(y - 'a' + 'A');
+    }
+    if (x != y) return false;
+    if (x == '\0') return true;
+  }
+}
+
+/// The commands of one protocol: each name once (checked at compile time with
+/// `static_assert(table.names_unique())`), looked up by name. Context: any.
+template <class Handler, size_t N>
+struct CommandTable {
+  Command<Handler> commands[N];
+  /// Matches names without regard to ASCII case (EBB) or exactly (Grbl's `$` commands).
+  bool ignore_case = false;
+
+  /// The command named `name`, or null when there is none.
+  constexpr const Command<Handler>* find(const char* name) const {
+    for (const Command<Handler>& command : commands) {
+      if (same_name(command.name, name, ignore_case)) return &command;
+    }
+    return nullptr;
+  }
+  /// True when no two commands share a name.
+  constexpr bool names_unique() const {
+    for (size_t i = 0; i < N; ++i) {
+      for (size_t j = i + 1; j < N; ++j) {
+        if (same_name(commands[i].name, commands[j].name, ignore_case)) return false;
+      }
+    }
+    return true;
+  }
+  /// Number of commands.
+  static constexpr size_t size() { return N; }
+};
+
+/// Builds a table from a braced list: `make_command_table<H>({{"SM", &X::sm}, …}, true)`.
+template <class Handler, size_t N>
+constexpr CommandTable<Handler, N> make_command_table(const Command<Handler> (&commands)[N], bool ignore_case = false) {
+  CommandTable<Handler, N> table{};
+  for (size_t i = 0; i < N; ++i) table.commands[i] = commands[i];
+  table.ignore_case = ignore_case;
+  return table;
+}
+
+}  // namespace stepdance::link
