@@ -1,7 +1,6 @@
 // RPC: line reading, dispatch, replies (including the chunked __index__ and __describe__).
 #include "stepdance/interfaces/rpc/rpc.hpp"
 
-#include "stepdance/core/file_storage.hpp"
 #include "stepdance/interfaces/rpc/json_text.hpp"
 
 namespace stepdance {
@@ -13,10 +12,8 @@ constexpr int kRequestsPerLoop = 8;
 
 }  // namespace
 
-Status RPC::begin() { return begin_stream(hal::console()); }
-
 Status RPC::begin_stream(ByteStream& stream) {
-  stream_ = &stream;
+  (void)stream;  // the link keeps it: link_stream()
   return register_in(Stage::kLoop);
 }
 
@@ -41,44 +38,29 @@ void RPC::enroll_port(const char* instance_name, const char* name, BlockPort& po
 // ---- requests -----------------------------------------------------------------------------------------
 
 void RPC::loop() {
-  if (stream_ == nullptr) return;
+  ByteStream* stream = link_stream();
+  if (stream == nullptr) return;
   flush_replies();
   for (int requests = 0; requests < kRequestsPerLoop; ++requests) {
     if (index_cursor_ >= 0) {
       continue_index();
       if (index_cursor_ >= 0) break;  // the host reads slowly: go on next time
     }
-    if (reply_room() < kReplyRoomNeeded || !read_line()) break;
+    if (!replies_.reserve(kReplyRoomNeeded) || !lines_.pump(*stream)) break;
     handle_line();
-    line_length_ = 0;
-    line_overrun_ = false;
+    lines_.take();
   }
   send_events();
   flush_replies();
 }
 
-bool RPC::read_line() {
-  for (;;) {
-    const int value = stream_->read_byte();
-    if (value < 0) return false;
-    if (value == '\n') return true;
-    if (line_length_ < kMaxLineBytes) {
-      line_[line_length_++] = static_cast<char>(value);
-    } else {
-      line_overrun_ = true;
-    }
-  }
-}
-
 void RPC::handle_line() {
-  if (line_length_ > 0 && line_[line_length_ - 1] == '\r') --line_length_;
-  if (line_overrun_) {
+  if (lines_.overflowed()) {
     reply_error(14, "line too long", "");
     return;
   }
-  if (line_length_ == 0) return;  // blank lines are ignored
   rpc::JsonRequest request;
-  const rpc::JsonError error = rpc::parse_request(line_, line_length_, request, pool_, sizeof(pool_));
+  const rpc::JsonError error = rpc::parse_request(lines_.text(), lines_.length(), request, pool_, sizeof(pool_));
   if (error != rpc::JsonError::kNone) {
     reply_error(static_cast<int>(error), rpc::to_string(error), request.id);
   } else if (strcmp(request.name, "__index__") == 0 || strcmp(request.name, "__describe__") == 0) {
@@ -104,7 +86,7 @@ void RPC::call(rpc::Entry& entry, const rpc::JsonRequest& request) {
   }
   if (request.id[0] != '\0') reply.text(",\"id\":").text(request.id);
   reply.character('}');
-  send_line(reply);
+  replies_.send_line(reply);
 }
 
 // ---- replies ------------------------------------------------------------------------------------------
@@ -115,7 +97,7 @@ void RPC::reply_ok(const char* id) {
   reply.text("{\"result\":\"ok\"");
   if (id[0] != '\0') reply.text(",\"id\":").text(id);
   reply.character('}');
-  send_line(reply);
+  replies_.send_line(reply);
 }
 
 void RPC::reply_error(int code, const char* message, const char* id) {
@@ -128,13 +110,13 @@ void RPC::reply_error(int code, const char* message, const char* id) {
   reply.text(",\"code\":").unsigned_number(static_cast<uint32_t>(code));
   if (id != nullptr && id[0] != '\0') reply.text(",\"id\":").text(id);
   reply.character('}');
-  send_line(reply);
+  replies_.send_line(reply);
 }
 
 void RPC::reply_index(const rpc::JsonRequest& request, bool describe) {
   memcpy(index_id_, request.id, sizeof(index_id_));
   index_describes_ = describe;
-  append("{\"result\":\"ok\",\"return\":{");
+  replies_.send("{\"result\":\"ok\",\"return\":{");
   index_cursor_ = 0;
   continue_index();
 }
@@ -159,8 +141,8 @@ void RPC::continue_index() {
         piece.text(entry.parameter ? ":\"parameter\"" : ":\"function\"");
       }
     }
-    if (piece.size() > reply_room()) return;  // wait for the host to read
-    append(piece.c_str());
+    if (!replies_.reserve(piece.size())) return;  // wait for the host to read
+    replies_.send(piece.c_str());
     index_cursor_ = last ? -1 : index_cursor_ + 1;
   }
 }
@@ -180,29 +162,6 @@ void RPC::write_description(TextWriter& out, const rpc::Entry& entry) {
   out.character(' ').text(colon != nullptr ? colon + 1 : "v").character('"');
 }
 
-// ---- the reply buffer ---------------------------------------------------------------------------------
-
-void RPC::append(const char* text) {
-  for (const char* c = text; *c != '\0'; ++c) {
-    replies_[(reply_head_ + reply_count_++) % kReplyBufferBytes] = *c;
-  }
-}
-
-void RPC::send_line(const TextWriter& line) {
-  if (line.size() + 2 > reply_room()) return;  // callers check room first
-  append(line.c_str());
-  append("\r\n");
-}
-
-void RPC::flush_replies() {
-  while (reply_count_ > 0) {
-    const size_t contiguous = kReplyBufferBytes - reply_head_;
-    const size_t chunk = reply_count_ < contiguous ? reply_count_ : contiguous;
-    const size_t written = stream_->write_bytes(reinterpret_cast<const uint8_t*>(replies_ + reply_head_), chunk);
-    reply_head_ = (reply_head_ + written) % kReplyBufferBytes;
-    reply_count_ -= written;
-    if (written < chunk) return;
-  }
-}
+void RPC::flush_replies() { replies_.flush(*link_stream()); }
 
 }  // namespace stepdance

@@ -7,12 +7,14 @@
 
 #include <type_traits>
 
-#include "stepdance/core/arduino_stream_adapter.hpp"
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/core/text_writer.hpp"
+#include "stepdance/interfaces/link/line_reader.hpp"
+#include "stepdance/interfaces/link/reply_ring.hpp"
+#include "stepdance/interfaces/link/serial_link.hpp"
 #include "stepdance/interfaces/rpc/json_request.hpp"
 #include "stepdance/interfaces/rpc/rpc_arguments.hpp"
 #include "stepdance/interfaces/rpc/rpc_registry.hpp"
@@ -49,7 +51,10 @@ class TimeBasedInterpolator;
 /// Enrolled names live in a fixed registry of kMaxEntries (names up to kMaxNameBytes); an enroll
 /// that does not fit is refused, counted (enroll_failures()) and reported as a warning. No heap,
 /// no exceptions. Calls run in the loop, where the sketch's own code runs.
-class RPC : public Block {
+///
+/// begin() serves the board's console (USB Serial), begin(&port) any Arduino Stream (`&Serial`,
+/// `&SerialUSB1`), begin(&port, baud) a UART it opens first (link::LinkedProtocol). Context: loop.
+class RPC : public Block, public link::LinkedProtocol<RPC> {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "RPC"; }
@@ -63,21 +68,6 @@ class RPC : public Block {
   RPC() = default;
   RPC(const RPC&) = delete;
   RPC& operator=(const RPC&) = delete;
-
-  /// Serves the board's console (USB Serial). Context: loop.
-  Status begin();
-  /// Serves a port: `&Serial`, `&SerialUSB1`, any Arduino Stream. Context: loop.
-  template <class Port>
-  Status begin(Port* port) {
-    return port == nullptr ? Status::kBadArgument : begin_stream(adapter_.attach(port));
-  }
-  /// Opens a UART at `baud` first. Context: loop.
-  template <class Port>
-  Status begin(Port* port, uint32_t baud, uint16_t format = 0) {
-    if (port == nullptr) return Status::kBadArgument;
-    open_port(port, baud, format);
-    return begin(port);
-  }
 
   /// A free function with up to eight numeric, boolean or string arguments, returning nothing, a
   /// number, a boolean or a string. Context: loop (setup).
@@ -154,17 +144,13 @@ class RPC : public Block {
   void loop() override;
 
  private:
+  friend class link::LinkedProtocol<RPC>;
+
   static const char* text_of(const char* text) { return text; }
   template <class S>
   static auto text_of(const S& text) -> decltype(text.c_str()) {
     return text.c_str();
   }
-  template <class Port>
-  static auto open_port(Port* port, uint32_t baud, uint16_t format) -> decltype(port->begin(baud, format), void()) {
-    port->begin(baud, format);
-  }
-  static void open_port(...) {}
-
   Status begin_stream(ByteStream& stream);
   rpc::Entry* add_method(const char* instance_name, const char* name, void* instance, const void* method,
                          size_t method_bytes);
@@ -178,7 +164,6 @@ class RPC : public Block {
     (void)block;
   }
 
-  bool read_line();
   void handle_line();
   void call(rpc::Entry& entry, const rpc::JsonRequest& request);
   void reply_index(const rpc::JsonRequest& request, bool describe);
@@ -189,24 +174,16 @@ class RPC : public Block {
   void send_fault_events();
   void reply_ok(const char* id);
   void reply_error(int code, const char* message, const char* id);
-  size_t reply_room() const { return kReplyBufferBytes - reply_count_; }
-  void append(const char* text);
-  void send_line(const TextWriter& line);
   void flush_replies();
 
-  ByteStream* stream_ = nullptr;
-  ArduinoStreamAdapter adapter_;
+  static constexpr size_t kReplyBufferBytes = 2048;
   rpc::Registry registry_;
   rpc::Subscriptions subscriptions_;
   uint32_t errors_replied_ = 0;
-  char line_[kMaxLineBytes + 1] = {};
-  size_t line_length_ = 0;
-  bool line_overrun_ = false;
+  // Lines end with LF; a CR before it is dropped; blank lines are passed over.
+  link::LineReader<kMaxLineBytes> lines_{link::LineRules{false, true, true, false}};
   char pool_[kMaxLineBytes] = {};
-  static constexpr size_t kReplyBufferBytes = 2048;
-  char replies_[kReplyBufferBytes] = {};
-  size_t reply_head_ = 0;
-  size_t reply_count_ = 0;
+  link::ReplyRing<kReplyBufferBytes> replies_;
   int index_cursor_ = -1;  // __index__ being sent: next entry, or −1
   bool index_describes_ = false;  // sending __describe__ rather than __index__
   char index_id_[rpc::JsonRequest::kMaxIdBytes + 1] = {};

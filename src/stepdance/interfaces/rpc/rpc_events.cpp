@@ -44,19 +44,19 @@ void RPC::send_events() {
   send_fault_events();
   const uint32_t now_us = hal::micros_now();
   for (size_t slot = 0; slot < kMaxSubscriptions; ++slot) {
-    if (reply_room() < kEventRoomNeeded) return;
+    if (!replies_.reserve(kEventRoomNeeded)) return;
     char storage[kMaxNameBytes + 128];
     TextWriter event(storage, sizeof(storage));
-    if (subscriptions_.change_event(slot, registry_, now_us, event)) send_line(event);
+    if (subscriptions_.change_event(slot, registry_, now_us, event)) replies_.send_line(event);
   }
 }
 
 void RPC::send_fault_events() {
-  while (reply_room() >= kEventRoomNeeded) {
+  while (replies_.reserve(kEventRoomNeeded)) {
     char storage[256];
     TextWriter event(storage, sizeof(storage));
     if (!subscriptions_.fault_event(event)) return;
-    send_line(event);
+    replies_.send_line(event);
   }
 }
 
