@@ -11,6 +11,7 @@
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/motion/channel.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"
@@ -254,6 +255,103 @@ TEST_F(RpcTest, EveryNumberComesBackAsAJsonNumber) {
       EXPECT_LE(std::fabs(back - gain), 5.0001e-9 * std::fabs(gain) + 4.95e-324) << gain << " -> " << number;
     }
   }
+}
+
+// A Channel enrolls the names the original's Channel::enroll gives it, with the original's
+// argument types: set_ratio(float, float), set_upper/lower_limit(DecimalPosition),
+// disable/enable_upper/lower…, enable_filtering(uint16_t), the parameter current_position and
+// the ports input_target_position and input_target_position2 (sic).
+class RpcChannelTest : public test_support::EngineFixture {
+ protected:
+  void SetUp() override {
+    EngineFixture::SetUp();
+    ASSERT_EQ(rpc.begin(&host), Status::kOk);
+    ASSERT_EQ(channel.begin(), Status::kOk);
+    rpc.enroll("channel_a", channel);
+    ASSERT_EQ(dance_start(), Status::kOk);
+  }
+  std::string call(const std::string& line) {
+    host.take();
+    host.send(line + "\n");
+    dance_loop();
+    return host.take();
+  }
+
+  test_support::FakeByteStream host;
+  RPC rpc;
+  Channel channel;
+};
+
+TEST_F(RpcChannelTest, EnrollsTheOriginalsNamesWithTheirSignatures) {
+  std::string describe;
+  host.send("{\"name\":\"__describe__\"}\n");
+  for (int pass = 0; pass < 8; ++pass) dance_loop();
+  describe = host.take();
+  const std::string expected =
+      "{\"result\":\"ok\",\"return\":{"
+      "\"channel_a.set_ratio\":\"function nn v\","
+      "\"channel_a.set_upper_limit\":\"function n v\","
+      "\"channel_a.set_lower_limit\":\"function n v\","
+      "\"channel_a.disable_upper_limit\":\"function - v\","
+      "\"channel_a.disable_lower_limit\":\"function - v\","
+      "\"channel_a.disable\":\"function - v\","
+      "\"channel_a.enable\":\"function - v\","
+      "\"channel_a.disable_filtering\":\"function - v\","
+      "\"channel_a.enable_filtering\":\"function i v\","
+      "\"channel_a.current_position\":\"parameter n\","
+      "\"channel_a.input_target_position.read\":\"function - n\","
+      "\"channel_a.input_target_position.read_deep\":\"function - n\","
+      "\"channel_a.input_target_position.reset_deep\":\"function n v\","
+      "\"channel_a.input_target_position2.read\":\"function - n\","
+      "\"channel_a.input_target_position2.read_deep\":\"function - n\","
+      "\"channel_a.input_target_position2.reset_deep\":\"function n v\""
+      "}}\r\n";
+  EXPECT_EQ(describe, expected);
+  EXPECT_EQ(rpc.enroll_failures(), 0u);
+}
+
+TEST_F(RpcChannelTest, TheOriginalsSpellingEnrollsTheSameNames) {
+  RPC other;
+  channel.enroll(&other, "channel_b");  // as the original's Plugin::enroll(RPC*, name)
+  EXPECT_EQ(other.enrolled(), 16u);
+  EXPECT_EQ(other.enrolled(), rpc.enrolled());
+}
+
+TEST_F(RpcChannelTest, TheCallsActOnTheChannel) {
+  const std::string ok = "{\"result\":\"ok\"}\r\n";
+  EXPECT_EQ(call(R"({"name":"channel_a.set_ratio","args":[1, 80]})"), ok);  // 80 steps/mm
+  EXPECT_EQ(call(R"({"name":"channel_a.set_upper_limit","args":[1]})"), ok);  // 1 mm = 80 steps
+  channel.input_target_position.write(2.0, ABSOLUTE);  // 160 steps away, one step per frame
+  hal_manual::run_frames(300);
+  EXPECT_EQ(call(R"({"name":"channel_a.current_position"})"), "{\"result\":\"ok\",\"return\":80}\r\n");
+  EXPECT_EQ(call(R"({"name":"channel_a.disable_upper_limit"})"), ok);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(call(R"({"name":"channel_a.current_position"})"), "{\"result\":\"ok\",\"return\":160}\r\n");
+  EXPECT_EQ(call(R"({"name":"channel_a.input_target_position.read"})"), "{\"result\":\"ok\",\"return\":2}\r\n");
+
+  EXPECT_EQ(call(R"({"name":"channel_a.disable"})"), ok);  // a disabled channel does not step
+  channel.input_target_position.write(0.0, ABSOLUTE);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), 160.0);
+  EXPECT_EQ(call(R"({"name":"channel_a.enable"})"), ok);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), 0.0);
+
+  EXPECT_EQ(call(R"({"name":"channel_a.set_lower_limit","args":[-0.5]})"), ok);  // −40 steps
+  channel.input_target_position.write(-1.0, ABSOLUTE);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), -40.0);
+  EXPECT_EQ(call(R"({"name":"channel_a.disable_lower_limit"})"), ok);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), -80.0);
+
+  EXPECT_EQ(call(R"({"name":"channel_a.current_position","args":[5]})"), ok);
+  EXPECT_EQ(static_cast<double>(channel.current_position), 5.0);
+  EXPECT_EQ(call(R"({"name":"channel_a.enable_filtering","args":[65536]})"),
+            "{\"result\":\"error\",\"error\":\"argument out of range\",\"code\":13}\r\n");  // a uint16_t
+  EXPECT_EQ(call(R"({"name":"channel_a.enable_filtering","args":[4]})"), ok);
+  EXPECT_EQ(call(R"({"name":"channel_a.disable_filtering"})"), ok);
+  EXPECT_EQ(call(R"({"name":"channel_a.input_target_position2.read"})"), "{\"result\":\"ok\",\"return\":0}\r\n");
 }
 
 TEST(RpcRegistry, OverflowIsRefusedCountedAndReported) {

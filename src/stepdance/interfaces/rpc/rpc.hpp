@@ -22,6 +22,7 @@
 
 namespace stepdance {
 
+class Channel;
 class Encoder;
 class KinematicsCoreXY;
 class PositionGenerator;
@@ -119,7 +120,7 @@ class RPC : public Block, public link::LinkedProtocol<RPC> {
   /// A block's BlockPort as "<instance_name>.<name>.read" etc. Context: loop (setup).
   void enroll_port(const char* instance_name, const char* name, BlockPort& port);
   /// A block: the names the original library gives its class, under "<name>." (docs/rpc.md;
-  /// Encoder, TimeBasedInterpolator, PositionGenerator, KinematicsCoreXY). The block's own type
+  /// Channel, Encoder, TimeBasedInterpolator, PositionGenerator, KinematicsCoreXY). Its own type
   /// picks them at compile time; a block of another class enrolls nothing. Context: loop (setup).
   template <class Name, class B, std::enable_if_t<std::is_base_of_v<Block, B>, int> = 0>
   void enroll(const Name& name, B& block) {
@@ -155,6 +156,7 @@ class RPC : public Block, public link::LinkedProtocol<RPC> {
   rpc::Entry* add_method(const char* instance_name, const char* name, void* instance, const void* method,
                          size_t method_bytes);
   // The names of each block class (rpc_enroll_blocks.cpp); other blocks have none.
+  void enroll_block(const char* name, Channel& channel);
   void enroll_block(const char* name, Encoder& encoder);
   void enroll_block(const char* name, KinematicsCoreXY& kinematics);
   void enroll_block(const char* name, PositionGenerator& generator);

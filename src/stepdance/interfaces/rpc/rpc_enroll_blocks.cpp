@@ -1,6 +1,7 @@
 // The RPC names of each block class, as the original library exposes them (docs/rpc.md).
 #include "stepdance/interfaces/rpc/rpc.hpp"
 #include "stepdance/io/encoder.hpp"
+#include "stepdance/motion/channel.hpp"
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
@@ -37,6 +38,22 @@ void RPC::enroll_block(const char* name, KinematicsCoreXY& kinematics) {
   enroll_port(name, "input_y", kinematics.input_y);
   enroll_port(name, "output_a", kinematics.output_a);
   enroll_port(name, "output_b", kinematics.output_b);
+}
+
+void RPC::enroll_block(const char* name, Channel& channel) {
+  enroll(name, "set_ratio", channel, &Channel::set_ratio);
+  enroll(name, "set_upper_limit", channel, &Channel::set_upper_limit);
+  enroll(name, "set_lower_limit", channel, &Channel::set_lower_limit);
+  enroll(name, "disable_upper_limit", channel, &Channel::disable_upper_limit);
+  enroll(name, "disable_lower_limit", channel, &Channel::disable_lower_limit);
+  Block& block = channel;  // enable() and disable() are Block's
+  enroll(name, "disable", block, &Block::disable);
+  enroll(name, "enable", block, &Block::enable);
+  enroll(name, "disable_filtering", channel, &Channel::disable_filtering);
+  enroll(name, "enable_filtering", channel, &Channel::enable_filtering);
+  enroll_parameter(name, "current_position", channel.current_position);
+  enroll_port(name, "input_target_position", channel.input_target_position);
+  enroll_port(name, "input_target_position2", channel.input_target_position_2);  // the original's name
 }
 
 void RPC::enroll_block(const char* name, Encoder& encoder) {
