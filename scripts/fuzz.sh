@@ -13,9 +13,12 @@ mkdir -p "$build"
 
 # Portable-core folders (every .cpp in them) or files each target links besides its fuzz file.
 # "core" stands for the whole portable core and the manual board (hosts whole blocks).
+# The Grbl link without its block (GCodeInterface and its homing need the whole core).
+gcode_link_sources="$(find src/stepdance/interfaces/gcode -name '*.cpp' ! -name 'gcode_interface.cpp' ! -name 'gcode_homing.cpp' | sort | tr '\n' ' ')"
+gcode_link_sources+="src/stepdance/interfaces/link/line_reader.cpp src/stepdance/interfaces/link/reply_ring.cpp src/stepdance/core/text_writer.cpp"
 declare -A target_sources=(
-  [gcode]="src/stepdance/interfaces/gcode src/stepdance/core/text_writer.cpp"
-  [grbl]="src/stepdance/interfaces/gcode src/stepdance/core/text_writer.cpp"
+  [gcode]="$gcode_link_sources"
+  [grbl]="$gcode_link_sources"
   [ebb]="core"
   [rpc]="core"
   [scenario]="sim/scenario"
