@@ -125,10 +125,10 @@ class TimeBasedInterpolator : public Block, public MoveOutputPorts {
   /// Where the last queued move ends, world units (axis 0..5). Context: loop.
   double planned_position(int axis) const { return planned_end_[axis]; }
 
-  /// Enrolls its RPC names under "<instance_name>." (see docs/rpc.md). Context: loop.
-  void enroll(RPC* rpc, const char* instance_name) override { enroll_names(rpc, instance_name); }
-  /// The work of enroll(), defined with the RPC (kept out of line so virtuals stay inline).
-  void enroll_names(RPC* rpc, const char* instance_name);
+  /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
+  /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
   /// One frame: follow the committed blocks, set and push the outputs. Context: frame ISR.
   void run() override;
   /// Plans and commits final blocks; finishes stops. Context: loop (dance_loop).
