@@ -23,12 +23,20 @@ void check_accepted(const Scenario& scenario) {
     if (!in_range(board.loop_period_us, ranges::kLoopPeriodUs)) abort();
   }
   for (const CableConfig& cable : scenario.cables) {
-    if (!in_range(cable.delay_ns, ranges::kCableDelayNs) || !in_range(cable.stretch_ns, ranges::kCableStretchNs) ||
-        !in_range(cable.glitch_every_us, ranges::kGlitchEveryUs) ||
-        !in_range(cable.glitch_width_ns, ranges::kGlitchWidthNs)) {
+    const stepdance::sim::CableSettings& settings = cable.settings;
+    if (!in_range(settings.delay, ranges::kCableDelayNs) || !in_range(settings.stretch, ranges::kCableStretchNs) ||
+        settings.glitch_every % stepdance::sim::kMicrosecond != 0 ||
+        !in_range(settings.glitch_every / stepdance::sim::kMicrosecond, ranges::kGlitchEveryUs) ||
+        !in_range(settings.glitch_width, ranges::kGlitchWidthNs)) {
       abort();
     }
   }
+  // Every device and the machine carry their kind's row and that kind's settings (the simulation
+  // builds them from these alone).
+  for (const DeviceConfig& device : scenario.devices) {
+    if (device.kind == nullptr || !device.settings.has_value()) abort();
+  }
+  if (scenario.machine && (scenario.machine->kind == nullptr || !scenario.machine->settings.has_value())) abort();
   if (!in_range(scenario.output.csv_interval_ms, ranges::kCsvIntervalMs)) abort();
   for (const Action& action : scenario.timeline) {
     if (action.time < 0 || action.time > scenario.duration) abort();

@@ -13,18 +13,22 @@ mkdir -p "$build"
 
 # Portable-core folders (every .cpp in them) or files each target links besides its fuzz file.
 # "core" stands for the whole portable core and the manual board (hosts whole blocks).
+# The Grbl link without its block (GCodeInterface and its homing need the whole core).
+gcode_link_sources="$(find src/stepdance/interfaces/gcode -name '*.cpp' ! -name 'gcode_interface.cpp' ! -name 'gcode_homing.cpp' | sort | tr '\n' ' ')"
+gcode_link_sources+="src/stepdance/interfaces/link/line_reader.cpp src/stepdance/interfaces/link/reply_ring.cpp src/stepdance/core/text_writer.cpp"
 declare -A target_sources=(
-  [gcode]="src/stepdance/interfaces/gcode src/stepdance/core/text_writer.cpp"
-  [grbl]="src/stepdance/interfaces/gcode src/stepdance/core/text_writer.cpp"
+  [gcode]="$gcode_link_sources"
+  [grbl]="$gcode_link_sources"
   [ebb]="core"
   [rpc]="core"
-  [scenario]="sim/scenario"
+  [scenario]="sim/scenario sim/kinds sim/kinds/devices sim/kinds/machines sim/models servo/pulse/servo_pulse.c"
   [vcd]="sim/decode/vcd_reader.cpp sim/decode/vcd_tokenizer.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
 )
-# Extra compiler flags: the simulator's readers see sim/; toml++ is compiled in from its header
+# Extra compiler flags: the simulator's readers see sim/ (the scenario reader also links the device
+# and machine kinds, whose rows hold their models' factories); toml++ is compiled in from its header
 # (Debian's libtomlplusplus-dev) so the fuzzer also instruments the TOML parser.
 declare -A target_flags=(
-  [scenario]="-Isim -DTOML_HEADER_ONLY=1"
+  [scenario]="-Isim -Iservo/pulse -DTOML_HEADER_ONLY=1"
   [vcd]="-Isim"
 )
 # Libraries a target links besides its objects: reply patterns are RE2 (Debian's libre2-dev).
@@ -60,8 +64,10 @@ object_of() {
 compile_object() {
   local flags=$1 source=$2 object=$3
   mkdir -p "$(dirname "$object")"
+  local compiler=(clang++ -std=c++17)
+  [[ $source == *.c ]] && compiler=(clang -std=c99)  # the servo's pulse arithmetic is C
   # shellcheck disable=SC2086 # the flags are words
-  clang++ -std=c++17 -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
+  "${compiler[@]}" -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
     -Isrc -Ihost/hal_manual $flags -c "$source" -o "$object"
 }
 export -f compile_object

@@ -14,6 +14,7 @@ stage() {
 stage scripts/setup.sh
 stage scripts/setup-npm-clients.sh
 stage scripts/check-core-portability.sh
+stage scripts/check-interfaces-structure.sh
 stage scripts/build-target.sh
 stage scripts/build-teensy.sh
 stage scripts/test-target-qemu.sh

@@ -24,6 +24,11 @@ Encoder encoder_2;
 Eibotboard axidraw;
 
 void setup() {
+  // 10 µs frames, the shortest this graph fits (docs/high-speed.md): a channel then takes up to
+  // 100,000 steps/s, so every EBB move in 1/16, 1/8 or 1/4 stepping (at most 25,000 steps/s, i.e.
+  // 100,000 1/16 steps/s in 1/4) runs at its own speed; at 40 µs the board slows down the 1/8
+  // moves faster than 12,500 steps/s (saxi's and the AxiDraw software's fastest) to fit.
+  set_frame_period_us(10);
   output_a.begin(OUTPUT_A);
   output_b.begin(OUTPUT_B);
   output_c.begin(OUTPUT_C);

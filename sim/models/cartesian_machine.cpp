@@ -62,17 +62,9 @@ std::optional<double> CartesianMachine::deposit_shade(const PenPoint& pen, bool 
 }
 
 std::optional<double> CartesianMachine::axis_mm(MachineAxis axis) const {
-  switch (axis) {
-    case MachineAxis::kX:
-      return pen_position().x_mm;
-    case MachineAxis::kY:
-      return pen_position().y_mm;
-    case MachineAxis::kZ:
-      return z_mm_;
-    case MachineAxis::kE:
-      return e_mm_;
-  }
-  return std::nullopt;
+  if (axis == MachineAxis::kZ) return z_mm_;
+  if (axis == MachineAxis::kE) return e_mm_;
+  return pen_axis_mm(axis);
 }
 
 }  // namespace stepdance::sim

@@ -22,17 +22,6 @@ Machine::Sample CorexyPlotter::sample(SimTime time) {
   return now;
 }
 
-std::optional<double> CorexyPlotter::axis_mm(MachineAxis axis) const {
-  switch (axis) {
-    case MachineAxis::kX:
-      return pen_position().x_mm;
-    case MachineAxis::kY:
-      return pen_position().y_mm;
-    case MachineAxis::kZ:
-    case MachineAxis::kE:
-      break;
-  }
-  return std::nullopt;
-}
+std::optional<double> CorexyPlotter::axis_mm(MachineAxis axis) const { return pen_axis_mm(axis); }
 
 }  // namespace stepdance::sim

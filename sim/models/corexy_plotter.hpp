@@ -30,8 +30,10 @@ struct CorexySettings {
 /// those inverted channels, so DIR low is the EiBotBoard's positive direction. With both channels
 /// inverted, the kinematics' +x and +y are the page's (+x from motor A towards motor B, +y away
 /// from the long axis). docs/scenario-format.md has the table of every machine's convention.
-/// The pen is down while the servo board's current pulse is narrower than pen_down_below_us;
-/// without a servo board the pen is always down.
+/// The pen is down while the servo board's current pulse is narrower than pen_down_below_us.
+/// A scenario's plotter always has its pen servo (`pen_servo`, socket C by default: the reader
+/// requires one); built without a servo board (pen_servo null, as unit tests do), the pen is
+/// always down.
 class CorexyPlotter : public Machine {
  public:
   CorexyPlotter(const StepperDriver& motor_a, const StepperDriver& motor_b, ServoBoard* pen_servo,

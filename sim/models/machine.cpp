@@ -16,6 +16,12 @@ void Machine::update(SimTime time) {
   if (travel_) travel_->observe(time, now.pen);
 }
 
+std::optional<double> Machine::pen_axis_mm(MachineAxis axis) const {
+  if (axis == MachineAxis::kX) return pen_.x_mm;
+  if (axis == MachineAxis::kY) return pen_.y_mm;
+  return std::nullopt;
+}
+
 MachineStats Machine::stats() const {
   MachineStats stats;
   stats.updates = updates_;

@@ -71,6 +71,9 @@ class Machine {
   virtual Sample sample(SimTime time) = 0;
   /// Where the pen is before the first update (limit switches read it from power-on).
   void set_power_on_pen(PenPoint pen) { pen_ = pen; }
+  /// x and y: the pen's position at the last update; any other axis: none. For machines whose
+  /// x and y are the pen's (axis_mm() adds the axes a machine has besides).
+  std::optional<double> pen_axis_mm(MachineAxis axis) const;
 
  private:
   PenTrace trace_;

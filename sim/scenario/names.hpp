@@ -1,7 +1,8 @@
-// Scenario vocabulary: module, connector and device names, and what each module has.
+// Scenario vocabulary: module and connector names, and what each module has.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,39 +13,18 @@ namespace stepdance::sim::scenario {
 
 /// "driver" or "basic".
 std::string_view module_name(Module module);
-/// What the scenario reader knows of one kind of input device.
-struct DeviceKind {
-  DeviceType type;
-  std::string_view name;          ///< the `type` value in the file, e.g. "encoder"
-  std::string_view with_article;  ///< for messages, e.g. "an encoder"
-  std::string_view connectors;    ///< the connectors it fits, for messages, e.g. "ENC1 or ENC2"
-  bool (*fits)(Connector connector);
-};
-/// Every device kind, in the order messages list them.
-struct DeviceKindList {
-  const DeviceKind* first;
-  size_t size;
-  const DeviceKind* begin() const { return first; }
-  const DeviceKind* end() const { return first + size; }
-  const DeviceKind& front() const { return *first; }
-};
-DeviceKindList device_kinds();
-/// The row of a device type.
-const DeviceKind& device_kind(DeviceType type);
-
-/// "encoder", "potentiometer", "button", "limit_switch", "pendulum".
-std::string_view device_type_name(DeviceType type);
-/// "an encoder", "a potentiometer", "a button", "a limit switch".
-std::string_view device_with_article(DeviceType type);
-
 /// The connector with this silkscreen name, if any.
 std::optional<Connector> parse_connector(std::string_view name);
 /// Whether a module has the connector (the Basic Module has no limit headers).
 bool module_has_connector(Module module, Connector connector);
-/// Whether a device type can sit on the connector.
-bool device_fits_connector(DeviceType type, Connector connector);
-/// The connectors a device type can use, for messages, e.g. "ENC1 or ENC2".
-std::string_view connectors_for(DeviceType type);
+/// Connector groups, for the kinds' rules of where a device may sit.
+bool is_encoder_connector(Connector connector);  ///< ENC1, ENC2
+bool is_analog_connector(Connector connector);   ///< A1..A4
+bool is_digital_connector(Connector connector);  ///< D1, D2
+bool is_limit_connector(Connector connector);    ///< LIMIT_A..LIMIT_D
+bool is_qwiic_connector(Connector connector);    ///< QWIIC0, QWIIC1
+/// Index of a connector within its group (ENC1 → 0, A3 → 2, D2 → 1, LIMIT_C → 2, QWIIC1 → 1).
+uint8_t connector_index(Connector connector);
 
 /// Whether a module has input and output port `port` (Driver: A..D; Basic: A).
 bool module_has_port(Module module, char port);

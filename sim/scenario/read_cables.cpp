@@ -35,10 +35,11 @@ void read_cable(const toml::table& table, ParseContext& context, PortUsers& outp
     cable.to = *to;
     claim(reader, "to", *to, "input", inputs);
   }
-  if (const auto delay = reader.integer("delay_ns", ranges::kCableDelayNs)) cable.delay_ns = *delay;
-  if (const auto stretch = reader.integer("stretch_ns", ranges::kCableStretchNs)) cable.stretch_ns = *stretch;
-  if (const auto every = reader.integer("glitch_every_us", ranges::kGlitchEveryUs)) cable.glitch_every_us = *every;
-  if (const auto width = reader.integer("glitch_width_ns", ranges::kGlitchWidthNs)) cable.glitch_width_ns = *width;
+  CableSettings& settings = cable.settings;
+  if (const auto delay = reader.integer("delay_ns", ranges::kCableDelayNs)) settings.delay = *delay;
+  if (const auto stretch = reader.integer("stretch_ns", ranges::kCableStretchNs)) settings.stretch = *stretch;
+  if (const auto every = reader.integer("glitch_every_us", ranges::kGlitchEveryUs)) settings.glitch_every = *every * kMicrosecond;
+  if (const auto width = reader.integer("glitch_width_ns", ranges::kGlitchWidthNs)) settings.glitch_width = *width;
   reader.finish();
   if (from && to) context.scenario.cables.push_back(std::move(cable));
 }

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <utility>
 
+#include "kinds/devices/five_bar_arm.hpp"
+#include "kinds/devices/oled.hpp"
+#include "kinds/machines/cartesian.hpp"
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
 #include "scenario/line_pattern.hpp"
@@ -146,7 +149,7 @@ bool read_z(TableReader& reader, Expectation& check, const ParseContext& context
   bool ok = z.has_value() && std::isfinite(*z);
   if (z && !ok) reader.error("z_mm", "'z_mm' must be a finite number");
   if (ok) check.z_mm = *z;
-  const auto* cartesian = context.scenario.machine ? std::get_if<CartesianConfig>(&context.scenario.machine->kind) : nullptr;
+  const auto* cartesian = context.scenario.machine ? context.scenario.machine->settings_as<CartesianConfig>() : nullptr;
   if (context.scenario.machine && (cartesian == nullptr || !cartesian->z)) {
     reader.error("z_mm", "'z_mm' needs a cartesian [machine] with a 'z' socket");
     ok = false;
@@ -168,7 +171,7 @@ bool read_extrusion(TableReader& reader, Expectation& check, const ParseContext&
       ok = false;
     }
   }
-  const auto* cartesian = context.scenario.machine ? std::get_if<CartesianConfig>(&context.scenario.machine->kind) : nullptr;
+  const auto* cartesian = context.scenario.machine ? context.scenario.machine->settings_as<CartesianConfig>() : nullptr;
   if (cartesian == nullptr || !cartesian->e) {
     reader.error("extruded_per_mm", "'extruded_per_mm' needs a cartesian [machine] with an 'e' socket");
     ok = false;
@@ -181,7 +184,8 @@ bool read_traces(TableReader& reader, Expectation& check, const ParseContext& co
   const auto name = reader.string("traces");
   bool ok = name.has_value();
   const DeviceConfig* device = name ? context.scenario.device(*name) : nullptr;
-  if (name && (device == nullptr || device->type != DeviceType::kFiveBarArm)) {
+  const FiveBarArmConfig* arm = device != nullptr ? device->settings_as<FiveBarArmConfig>() : nullptr;
+  if (name && arm == nullptr) {
     reader.error("traces", "'traces' must name a five_bar_arm device, got '" + *name + "'");
     ok = false;
   }
@@ -193,7 +197,7 @@ bool read_traces(TableReader& reader, Expectation& check, const ParseContext& co
     }
   }
   if (const auto from = reader.integer("from_point")) {
-    const int64_t points = device != nullptr ? static_cast<int64_t>(device->path_mm.size()) : 0;
+    const int64_t points = arm != nullptr ? static_cast<int64_t>(arm->path_mm.size()) : 0;
     if (*from >= 0 && (device == nullptr || *from < points)) {
       check.from_point = *from;
     } else {
@@ -210,7 +214,7 @@ bool read_screen(TableReader& reader, Expectation& check, const ParseContext& co
   const auto name = reader.string("screen");
   bool ok = name.has_value();
   const DeviceConfig* device = name ? context.scenario.device(*name) : nullptr;
-  if (name && (device == nullptr || device->type != DeviceType::kOled)) {
+  if (name && (device == nullptr || device->settings_as<OledConfig>() == nullptr)) {
     reader.error("screen", "'screen' must name an oled device, got '" + *name + "'");
     ok = false;
   }

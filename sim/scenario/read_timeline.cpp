@@ -6,6 +6,8 @@
 #include <sstream>
 #include <utility>
 
+#include "kinds/device_registry.hpp"
+#include "kinds/devices/encoder.hpp"
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
 
@@ -37,18 +39,6 @@ const char* action_name(ActionType type) {
   return "?";
 }
 
-/// The device type an action works on (serial works on a board instead).
-DeviceType device_for(ActionType type) {
-  switch (type) {
-    case ActionType::kTurn:
-      return DeviceType::kEncoder;
-    case ActionType::kSet:
-      return DeviceType::kPotentiometer;
-    default:
-      return DeviceType::kButton;
-  }
-}
-
 /// Whether `end` lies within the run; reports at `key` otherwise.
 void check_end(TableReader& reader, const ParseContext& context, std::string_view key, SimTime end,
                const std::string& what) {
@@ -72,11 +62,12 @@ bool read_target(TableReader& reader, Action& action, const ParseContext& contex
     if (context.declared_devices.count(*target) == 0) reader.error(key, "unknown device '" + *target + "'");
     return false;
   }
-  const DeviceType wanted = device_for(action.type);
-  const bool knob_action = action.type != ActionType::kSet;  // a Twist turns, presses and clicks
-  if (device->type != wanted && !(knob_action && device->type == DeviceType::kTwist)) {
-    reader.error(key, "'" + std::string(key) + "' needs " + std::string(device_with_article(wanted)) + ", but '" +
-                          *target + "' is " + std::string(device_with_article(device->type)));
+  if (!device->kind->takes(action.type)) {
+    // Named after the first kind that takes it: `turn` needs "an encoder".
+    const DeviceKind* wanted = first_kind_taking(action.type);
+    const std::string needs = wanted != nullptr ? std::string(wanted->with_article) : "another device";
+    reader.error(key, "'" + std::string(key) + "' needs " + needs + ", but '" + *target +
+                          "' is " + std::string(device->kind->with_article));
     return false;
   }
   return true;
@@ -201,7 +192,8 @@ void check_encoder_totals(ParseContext& context) {
     if (action.type != ActionType::kTurn) continue;
     const DeviceConfig* device = context.scenario.device(action.target);
     auto [entry, fresh] = travel.emplace(action.target, 0);
-    if (fresh && device != nullptr) entry->second = device->start_count < 0 ? -device->start_count : device->start_count;
+    const EncoderConfig* encoder = device != nullptr ? device->settings_as<EncoderConfig>() : nullptr;
+    if (fresh && encoder != nullptr) entry->second = encoder->start_count < 0 ? -encoder->start_count : encoder->start_count;
     const int64_t counts = action.counts < 0 ? -action.counts : action.counts;  // within ±10^12
     if (entry->second <= kLimit - counts) {
       entry->second += counts;

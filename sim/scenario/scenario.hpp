@@ -1,15 +1,21 @@
 // The scenario as plain, validated data: boards, machine, devices, cables, timeline, outputs, checks.
 #pragma once
 
+#include <any>
 #include <cstdint>
 #include <map>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "common/sim_time.hpp"
+#include "models/cable.hpp"
+
+namespace stepdance::sim {
+struct DeviceKind;
+struct MachineKind;
+}  // namespace stepdance::sim
 
 namespace stepdance::sim::scenario {
 
@@ -66,63 +72,21 @@ struct BoardConfig {
   const SocketConfig* socket(char port) const;
 };
 
-/// AxiDraw-class CoreXY plotter.
-struct CorexyConfig {
-  /// Sockets of the two belt motors (steppers) and of the pen-lift servo board.
-  char motor_a = 'A';
-  char motor_b = 'B';
-  char pen_servo = 'C';
-  /// Motor microsteps per mm of belt.
-  double steps_per_mm = 80;
-  /// The pen touches the paper while the servo pulse is narrower than this (µs).
-  double pen_down_below_us = 1500;
-  /// Usable area from the origin (mm).
-  double travel_x_mm = 300;
-  double travel_y_mm = 218;
-  /// Where the pen is at power-on (mm); the sketch does not know it until it homes.
-  double start_x_mm = 0;
-  double start_y_mm = 0;
-};
-
-/// Cartesian XYZE machine. An axis without a socket stays at 0.
-struct CartesianConfig {
-  std::optional<char> x;
-  std::optional<char> y;
-  std::optional<char> z;
-  std::optional<char> e;
-  /// Microsteps per mm on each axis.
-  double x_steps_per_mm = 80;
-  double y_steps_per_mm = 80;
-  double z_steps_per_mm = 400;
-  double e_steps_per_mm = 93;
-  /// The pen is down while z ≤ this (mm)...
-  double pen_down_at_or_below_mm = 0;
-  /// ...or, with draw = "extruding", while the extruder advances (a printer's toolpath).
-  bool draws_while_extruding = false;
-};
-
-/// Polar turntable: the table turns the paper under a pen on a radial arm.
-struct PolarConfig {
-  /// Sockets of the table motor and the arm motor (steppers).
-  char angle = 'A';
-  char radius = 'B';
-  /// Optional pen-lift servo socket; without one the pen is always down.
-  std::optional<char> pen_servo;
-  /// Table motor microsteps per table revolution; arm motor microsteps per mm.
-  double steps_per_rev = 3200;
-  double steps_per_mm = 80;
-  double pen_down_below_us = 1500;
-};
-
 /// The machine and the board whose sockets drive it.
 struct MachineConfig {
   std::string board;
-  std::variant<CorexyConfig, CartesianConfig, PolarConfig> kind;
+  /// Its kind (kinds/machine_kind.hpp) and the kind's settings (its config struct, e.g.
+  /// CorexyConfig in kinds/machines/corexy_plotter.hpp).
+  const MachineKind* kind = nullptr;
+  std::any settings;
   int line = 0;
-};
 
-/// Input device models.
-enum class DeviceType { kEncoder, kPotentiometer, kButton, kLimitSwitch, kPendulum, kFiveBarArm, kOled, kTwist };
+  /// The settings if they are a T (the machine is of T's kind), else null.
+  template <typename T>
+  const T* settings_as() const {
+    return std::any_cast<T>(&settings);
+  }
+};
 
 /// Connectors on a module's edge.
 enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD, kQwiic0, kQwiic1 };
@@ -130,53 +94,25 @@ enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLim
 /// The connector's silkscreen name, e.g. "ENC1", "LIMIT_A".
 std::string_view connector_name(Connector connector);
 
-/// Machine axis watched by a limit switch.
-enum class LimitAxis { kX, kY, kZ };
-
-/// Which side of the trip point makes a limit switch active.
-enum class LimitSide { kBelow, kAbove };
-
-/// One input device on a board connector. Only the fields of its type are meaningful.
+/// One input device on a board connector: what every kind has, its kind, and the kind's own
+/// settings.
 struct DeviceConfig {
   std::string name;
-  DeviceType type = DeviceType::kEncoder;
   std::string board;
   Connector connector = Connector::kEnc1;
-  /// Encoder and pendulum: pulses per revolution per channel (counted ×4); encoder: the count
-  /// at time 0.
-  int32_t pulses_per_revolution = 600;
-  int64_t start_count = 0;
-  /// Potentiometer: initial wiper position, 0..1.
-  double position = 0.5;
-  /// Button: bounce time after each transition (ms) and the level while pressed.
-  double bounce_ms = 2;
-  bool pressed_level_high = true;
-  /// Limit switch: active while `axis` is at or beyond `at_mm` on `side`.
-  LimitAxis axis = LimitAxis::kX;
-  double at_mm = 0;
-  LimitSide side = LimitSide::kBelow;
-  /// Pendulum: held at amplitude_deg from vertical until release_s, then swinging with period_s
-  /// and its amplitude decaying with time constant decay_s.
-  double amplitude_deg = 30;
-  double period_s = 2;
-  double decay_s = 30;
-  double release_s = 0;
-  /// Five-bar arm: `connector` is the right joint's encoder, left_connector the left's; the
-  /// stylus leaves home at start_s and visits path_mm ([x, y] or [x, y, dwell_s]) at speed_mm_per_s.
-  Connector left_connector = Connector::kEnc2;
-  std::vector<std::pair<double, double>> path_mm;
-  std::vector<double> dwell_s;  ///< per path point: [x, y, dwell_s] rests there (0 if omitted)
-  double speed_mm_per_s = 20;
-  double start_s = 0;
-  /// Five-bar arm: the joints' stops (degrees): the right joint stays at or above right_min_deg,
-  /// the left at or below left_max_deg (the original pantograph's, where its arms rest at power-on).
-  double right_min_deg = -60;
-  double left_max_deg = 240;
-  /// OLED and Twist (on QWIIC0 or QWIIC1): the 7-bit I2C address (default 0x3C / 0x3F); the
-  /// OLED also writes a picture of its screen at each of snapshots_s (and one at the end).
+  /// Its kind (kinds/device_kind.hpp) and the kind's settings (its config struct, e.g.
+  /// EncoderConfig in kinds/devices/encoder.hpp).
+  const DeviceKind* kind = nullptr;
+  std::any settings;
+  /// On QWIIC0/QWIIC1: the 7-bit I2C address (−1 elsewhere).
   int i2c_address = -1;
-  std::vector<double> snapshots_s;
   int line = 0;
+
+  /// The settings if they are a T (the device is of T's kind), else null.
+  template <typename T>
+  const T* settings_as() const {
+    return std::any_cast<T>(&settings);
+  }
 };
 
 /// A board's port: "board:A".
@@ -185,15 +121,12 @@ struct PortRef {
   char port = 'A';
 };
 
-/// A TRRS cable from an output port to an input port.
+/// A TRRS cable from an output port to an input port, with the model's settings (delay, stretch
+/// and glitches, in ns: models/cable.hpp).
 struct CableConfig {
   PortRef from;
   PortRef to;
-  int64_t delay_ns = 0;
-  int64_t stretch_ns = 0;
-  /// 0 = no glitches.
-  int64_t glitch_every_us = 0;
-  int64_t glitch_width_ns = 500;
+  CableSettings settings;
   int line = 0;
 };
 

@@ -3,11 +3,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <regex>
 #include <string>
 
 #include "hal_manual.hpp"
 #include "stepdance/core/dance.hpp"
 #include "stepdance/core/fault.hpp"
+#include "stepdance/motion/channel.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
 #include "support/engine_fixture.hpp"
 #include "support/fake_byte_stream.hpp"
@@ -225,6 +229,129 @@ TEST_F(RpcTest, NumbersComeBackWithNineSignificantDigits) {
   EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":2.5e20}\r\n");
   gain = 1.0 / 3.0;
   EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":0.333333333}\r\n");
+}
+
+TEST_F(RpcTest, EveryNumberComesBackAsAJsonNumber) {
+  // Fractions from 10^9 up were sent as `ovf`, and numbers below 10^-307 with a broken mantissa
+  // (the smallest double as `infe-324`). Whole digits are kept from 10^9 up (rounded half away
+  // from zero, as below 10^9); below 0.001 nine significant digits with an exponent.
+  gain = 1234567890.25;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":1234567890}\r\n");
+  gain = -12345678901234.5;
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":-12345678901235}\r\n");
+  gain = 4.9406564584124654e-324;  // the smallest subnormal double, 2^-1074
+  EXPECT_EQ(call(R"({"name":"gain"})"), "{\"result\":\"ok\",\"return\":4.94065646e-324}\r\n");
+  // Every magnitude: a JSON number that reads back within half a unit of the ninth digit.
+  const std::regex json_number(R"(-?(0|[1-9][0-9]*)(\.[0-9]+)?([eE]-?[0-9]+)?)");
+  for (int power = -320; power <= 300; power += 7) {
+    for (double mantissa : {1.0, 1.23456789012, -4.4444444449, 9.99999999}) {
+      gain = mantissa * std::pow(10.0, power);
+      const std::string reply = call(R"({"name":"gain"})");
+      const std::string prefix = "{\"result\":\"ok\",\"return\":";
+      ASSERT_EQ(reply.substr(0, prefix.size()), prefix) << gain;
+      const std::string number = reply.substr(prefix.size(), reply.size() - prefix.size() - 3);
+      EXPECT_TRUE(std::regex_match(number, json_number)) << gain << " -> " << number;
+      const double back = std::strtod(number.c_str(), nullptr);
+      EXPECT_LE(std::fabs(back - gain), 5.0001e-9 * std::fabs(gain) + 4.95e-324) << gain << " -> " << number;
+    }
+  }
+}
+
+// A Channel enrolls the names the original's Channel::enroll gives it, with the original's
+// argument types: set_ratio(float, float), set_upper/lower_limit(DecimalPosition),
+// disable/enable_upper/lower…, enable_filtering(uint16_t), the parameter current_position and
+// the ports input_target_position and input_target_position2 (sic).
+class RpcChannelTest : public test_support::EngineFixture {
+ protected:
+  void SetUp() override {
+    EngineFixture::SetUp();
+    ASSERT_EQ(rpc.begin(&host), Status::kOk);
+    ASSERT_EQ(channel.begin(), Status::kOk);
+    rpc.enroll("channel_a", channel);
+    ASSERT_EQ(dance_start(), Status::kOk);
+  }
+  std::string call(const std::string& line) {
+    host.take();
+    host.send(line + "\n");
+    dance_loop();
+    return host.take();
+  }
+
+  test_support::FakeByteStream host;
+  RPC rpc;
+  Channel channel;
+};
+
+TEST_F(RpcChannelTest, EnrollsTheOriginalsNamesWithTheirSignatures) {
+  std::string describe;
+  host.send("{\"name\":\"__describe__\"}\n");
+  for (int pass = 0; pass < 8; ++pass) dance_loop();
+  describe = host.take();
+  const std::string expected =
+      "{\"result\":\"ok\",\"return\":{"
+      "\"channel_a.set_ratio\":\"function nn v\","
+      "\"channel_a.set_upper_limit\":\"function n v\","
+      "\"channel_a.set_lower_limit\":\"function n v\","
+      "\"channel_a.disable_upper_limit\":\"function - v\","
+      "\"channel_a.disable_lower_limit\":\"function - v\","
+      "\"channel_a.disable\":\"function - v\","
+      "\"channel_a.enable\":\"function - v\","
+      "\"channel_a.disable_filtering\":\"function - v\","
+      "\"channel_a.enable_filtering\":\"function i v\","
+      "\"channel_a.current_position\":\"parameter n\","
+      "\"channel_a.input_target_position.read\":\"function - n\","
+      "\"channel_a.input_target_position.read_deep\":\"function - n\","
+      "\"channel_a.input_target_position.reset_deep\":\"function n v\","
+      "\"channel_a.input_target_position2.read\":\"function - n\","
+      "\"channel_a.input_target_position2.read_deep\":\"function - n\","
+      "\"channel_a.input_target_position2.reset_deep\":\"function n v\""
+      "}}\r\n";
+  EXPECT_EQ(describe, expected);
+  EXPECT_EQ(rpc.enroll_failures(), 0u);
+}
+
+TEST_F(RpcChannelTest, TheOriginalsSpellingEnrollsTheSameNames) {
+  RPC other;
+  channel.enroll(&other, "channel_b");  // as the original's Plugin::enroll(RPC*, name)
+  EXPECT_EQ(other.enrolled(), 16u);
+  EXPECT_EQ(other.enrolled(), rpc.enrolled());
+}
+
+TEST_F(RpcChannelTest, TheCallsActOnTheChannel) {
+  const std::string ok = "{\"result\":\"ok\"}\r\n";
+  EXPECT_EQ(call(R"({"name":"channel_a.set_ratio","args":[1, 80]})"), ok);  // 80 steps/mm
+  EXPECT_EQ(call(R"({"name":"channel_a.set_upper_limit","args":[1]})"), ok);  // 1 mm = 80 steps
+  channel.input_target_position.write(2.0, ABSOLUTE);  // 160 steps away, one step per frame
+  hal_manual::run_frames(300);
+  EXPECT_EQ(call(R"({"name":"channel_a.current_position"})"), "{\"result\":\"ok\",\"return\":80}\r\n");
+  EXPECT_EQ(call(R"({"name":"channel_a.disable_upper_limit"})"), ok);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(call(R"({"name":"channel_a.current_position"})"), "{\"result\":\"ok\",\"return\":160}\r\n");
+  EXPECT_EQ(call(R"({"name":"channel_a.input_target_position.read"})"), "{\"result\":\"ok\",\"return\":2}\r\n");
+
+  EXPECT_EQ(call(R"({"name":"channel_a.disable"})"), ok);  // a disabled channel does not step
+  channel.input_target_position.write(0.0, ABSOLUTE);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), 160.0);
+  EXPECT_EQ(call(R"({"name":"channel_a.enable"})"), ok);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), 0.0);
+
+  EXPECT_EQ(call(R"({"name":"channel_a.set_lower_limit","args":[-0.5]})"), ok);  // −40 steps
+  channel.input_target_position.write(-1.0, ABSOLUTE);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), -40.0);
+  EXPECT_EQ(call(R"({"name":"channel_a.disable_lower_limit"})"), ok);
+  hal_manual::run_frames(300);
+  EXPECT_EQ(static_cast<double>(channel.current_position), -80.0);
+
+  EXPECT_EQ(call(R"({"name":"channel_a.current_position","args":[5]})"), ok);
+  EXPECT_EQ(static_cast<double>(channel.current_position), 5.0);
+  EXPECT_EQ(call(R"({"name":"channel_a.enable_filtering","args":[65536]})"),
+            "{\"result\":\"error\",\"error\":\"argument out of range\",\"code\":13}\r\n");  // a uint16_t
+  EXPECT_EQ(call(R"({"name":"channel_a.enable_filtering","args":[4]})"), ok);
+  EXPECT_EQ(call(R"({"name":"channel_a.disable_filtering"})"), ok);
+  EXPECT_EQ(call(R"({"name":"channel_a.input_target_position2.read"})"), "{\"result\":\"ok\",\"return\":0}\r\n");
 }
 
 TEST(RpcRegistry, OverflowIsRefusedCountedAndReported) {

@@ -1,13 +1,12 @@
-// Simulation assembly, part 1: sketches → boards, driver sockets → models, and the machine.
+// Simulation assembly, part 1: sketches → boards, driver sockets → models, and the machine (its
+// kind's row in kinds/ builds it).
 #include <algorithm>
 #include <filesystem>
 #include <functional>
 
 #include "loader/board_library.hpp"
 #include "loader/sketch_builder.hpp"
-#include "models/cartesian_machine.hpp"
-#include "models/corexy_plotter.hpp"
-#include "models/polar_turntable.hpp"
+#include "kinds/machine_kind.hpp"
 #include "wiring/simulation.hpp"
 #include "wiring/step_feeder.hpp"
 
@@ -20,53 +19,6 @@ std::string place(const scenario::Scenario& scenario, int line) {
 
 ServoBuild servo_build(scenario::ServoBuild build) {
   return build == scenario::ServoBuild::k180deg ? ServoBuild::k180deg : ServoBuild::k90deg;
-}
-
-/// The models in the machine board's sockets, by port letter (null where there is none).
-struct SocketModels {
-  std::function<StepperDriver*(char)> stepper;
-  std::function<ServoBoard*(char)> servo;
-};
-
-std::unique_ptr<Machine> make_corexy(const scenario::CorexyConfig& config, const SocketModels& sockets,
-                                     const PenTraceSettings& trace) {
-  StepperDriver* a = sockets.stepper(config.motor_a);
-  StepperDriver* b = sockets.stepper(config.motor_b);
-  if (a == nullptr || b == nullptr) return nullptr;
-  CorexySettings settings{config.steps_per_mm, config.pen_down_below_us, config.travel_x_mm, config.travel_y_mm,
-                          trace};
-  settings.start_x_mm = config.start_x_mm;
-  settings.start_y_mm = config.start_y_mm;
-  return std::make_unique<CorexyPlotter>(*a, *b, sockets.servo(config.pen_servo), settings);
-}
-
-std::unique_ptr<Machine> make_cartesian(const scenario::CartesianConfig& config, const SocketModels& sockets,
-                                        const PenTraceSettings& trace) {
-  auto axis = [&sockets](const std::optional<char>& port) { return port ? sockets.stepper(*port) : nullptr; };
-  CartesianSettings settings;
-  settings.x_steps_per_mm = config.x_steps_per_mm;
-  settings.y_steps_per_mm = config.y_steps_per_mm;
-  settings.z_steps_per_mm = config.z_steps_per_mm;
-  settings.e_steps_per_mm = config.e_steps_per_mm;
-  settings.pen_down_at_or_below_mm = config.pen_down_at_or_below_mm;
-  settings.draws_while_extruding = config.draws_while_extruding;
-  settings.trace = trace;
-  // One axis steps at a time, so the pen stair-steps up to a step off the true path on each
-  // axis: the stored toolpath smooths that out (its length is then the path's, not the stairs').
-  const double coarsest_step_mm = 1.0 / std::min(config.x_steps_per_mm, config.y_steps_per_mm);
-  settings.trace.tolerance_mm = std::max(trace.tolerance_mm, 1.5 * coarsest_step_mm);
-  return std::make_unique<CartesianMachine>(CartesianDrivers{axis(config.x), axis(config.y), axis(config.z), axis(config.e)},
-                                            settings);
-}
-
-std::unique_ptr<Machine> make_polar(const scenario::PolarConfig& config, const SocketModels& sockets,
-                                    const PenTraceSettings& trace) {
-  StepperDriver* angle = sockets.stepper(config.angle);
-  StepperDriver* radius = sockets.stepper(config.radius);
-  if (angle == nullptr || radius == nullptr) return nullptr;
-  const PolarSettings settings{config.steps_per_rev, config.steps_per_mm, config.pen_down_below_us, trace};
-  return std::make_unique<PolarTurntable>(*angle, *radius, config.pen_servo ? sockets.servo(*config.pen_servo) : nullptr,
-                                          settings);
 }
 
 SdCardSettings sd_card_settings(const scenario::SdCardConfig& config) {
@@ -190,13 +142,7 @@ bool Simulation::build_machine(SimulationError& error) {
                              [&owner](char port) { return owner.sockets[port - 'A'].servo.get(); }};
   PenTraceSettings trace;
   trace.record_pen_up = scenario_.output.pen_up_travel;
-  if (const auto* corexy = std::get_if<scenario::CorexyConfig>(&config.kind)) {
-    machine_ = make_corexy(*corexy, sockets, trace);
-  } else if (const auto* cartesian = std::get_if<scenario::CartesianConfig>(&config.kind)) {
-    machine_ = make_cartesian(*cartesian, sockets, trace);
-  } else if (const auto* polar = std::get_if<scenario::PolarConfig>(&config.kind)) {
-    machine_ = make_polar(*polar, sockets, trace);
-  }
+  machine_ = config.kind->build(config, sockets, trace);
   if (!machine_) {
     error = {SimulationError::kBadInput, place(scenario_, config.line) + "the machine's motor sockets must hold steppers"};
     return false;

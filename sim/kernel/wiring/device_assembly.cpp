@@ -1,6 +1,8 @@
 // Simulation assembly, part 2: input devices and their timeline, cables, VCD and CSV outputs.
 #include <filesystem>
 
+#include "kinds/device_kind.hpp"
+#include "wiring/board_plug.hpp"
 #include "wiring/csv_sampler.hpp"
 #include "wiring/simulation.hpp"
 
@@ -26,17 +28,17 @@ const SimDevice* Simulation::device(const std::string& name) const {
 void Simulation::write_device_outputs(SimulationReport& report) {
   const std::string directory = scenario_.output.directory;
   if (directory.empty() && !options_.output_directory) return;  // no output folder: no pictures
-  const auto path_for = [this, &directory](const std::string& file) {
+  PngPictureSink sink([this, &directory](const std::string& file) {
     return output_path((std::filesystem::path(directory) / file).string());
-  };
-  for (auto& [name, device] : devices_) device->write_outputs(name, path_for, report.files);
+  }, report.files);
+  for (auto& [name, device] : devices_) device->write_outputs(name, sink);
 }
 
-// Each [[device]] becomes its kind's model (wiring/device_kinds.cpp), plugged into its board.
+// Each [[device]] becomes its kind's model (its row in kinds/), plugged into its board.
 void Simulation::build_devices() {
   for (const scenario::DeviceConfig& device : scenario_.devices) {
-    DeviceSocket socket{*slot(device.board).board, scenario_.seed, [this] { return machine_.get(); }};
-    devices_[device.name] = build_device_model(device, socket);
+    BoardPlug plug(*slot(device.board).board, scenario_.seed, [this] { return machine_.get(); });
+    devices_[device.name] = device.kind->build(device, plug);
   }
 }
 
@@ -69,13 +71,8 @@ void Simulation::build_vcd() {
 
 void Simulation::build_cables() {
   for (const scenario::CableConfig& config : scenario_.cables) {
-    CableSettings settings;
-    settings.delay = config.delay_ns;
-    settings.stretch = config.stretch_ns;
-    settings.glitch_every = config.glitch_every_us * kMicrosecond;
-    settings.glitch_width = config.glitch_width_ns;
     const uint8_t to_port = static_cast<uint8_t>(config.to.port - 'A');
-    cables_.push_back(std::make_unique<CableLink>(settings, *slot(config.to.board).board, to_port, delivery_));
+    cables_.push_back(std::make_unique<CableLink>(config.settings, *slot(config.to.board).board, to_port, delivery_));
     const auto tapped = vcd_inputs_.find(port_key(config.to.board, false, config.to.port));
     if (tapped != vcd_inputs_.end()) {
       VcdRecorder* recorder = vcd_.get();
@@ -109,7 +106,9 @@ void Simulation::build_csv() {
       }
     }
   }
-  for (const auto& [name, device] : devices_) device->add_probes(name, probes);
+  std::vector<DeviceProbe> device_probes;
+  for (const auto& [name, device] : devices_) device->add_probes(name, device_probes);
+  for (DeviceProbe& probe : device_probes) probes.push_back({{probe.column, probe.decimals}, std::move(probe.read)});
   const SimTime interval = static_cast<SimTime>(scenario_.output.csv_interval_ms * 1e6 + 0.5);
   csv_ = std::make_unique<CsvSampler>(scheduler_, path, std::move(probes), interval);
 }

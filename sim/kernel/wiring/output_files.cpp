@@ -10,7 +10,8 @@
 #include "loader/sketch_sources.hpp"
 #include "output/png_writer.hpp"
 #include "scenario/names.hpp"
-#include "wiring/device_kinds.hpp"
+#include "kinds/device_kind.hpp"
+#include "kinds/machine_kind.hpp"
 #include "wiring/simulation.hpp"
 
 namespace stepdance::sim {
@@ -61,11 +62,11 @@ std::vector<RunInput> scenario_inputs(const scenario::Scenario& scenario) {
 /// (or the page is the drawing's bounding box, known only at the end), else the error.
 std::string plotter_png_problem(const scenario::Scenario& scenario, const std::string& png) {
   if (png.empty() || !scenario.machine) return {};
-  const auto* plotter = std::get_if<scenario::CorexyConfig>(&scenario.machine->kind);
-  if (plotter == nullptr) return {};
+  const std::optional<TravelArea> area = scenario.machine->kind->page ? scenario.machine->kind->page(*scenario.machine) : std::nullopt;
+  if (!area) return {};
   DrawingStyle page;
-  page.travel_width_mm = plotter->travel_x_mm;
-  page.travel_height_mm = plotter->travel_y_mm;
+  page.travel_width_mm = area->x_max_mm - area->x_min_mm;
+  page.travel_height_mm = area->y_max_mm - area->y_min_mm;
   const std::string problem = png_size_problem(page, scenario.output.png_px_per_mm);
   if (problem.empty()) return {};
   char resolution[48];
@@ -105,7 +106,8 @@ std::vector<PlannedOutput> Simulation::output_files() const {
     add(output_path(host.transcript), {at_line(scenario_, host.transcript_line), "'transcript'"});
   }
   for (const scenario::DeviceConfig& device : scenario_.devices) {
-    for (const std::string& name : device_output_names(device)) {
+    if (device.kind->output_names == nullptr) continue;
+    for (const std::string& name : device.kind->output_names(device)) {
       add(output_path((std::filesystem::path(scenario_.output.directory) / name).string()),
           {at_line(scenario_, device.line), "device '" + device.name + "''s picture " + name});
     }

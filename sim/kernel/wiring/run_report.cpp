@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "kinds/machine_kind.hpp"
 #include "output/png_writer.hpp"
 #include "output/summary_writer.hpp"
 #include "output/svg_writer.hpp"
@@ -56,13 +57,13 @@ void set_shade_scale(DrawingStyle& style, const std::vector<Stroke>& strokes) {
   style.shade_high = middle + half;
 }
 
-// A CoreXY plotter's page is its travel area. Other machines have none: their page is the
-// drawing's bounding box, moved so it starts at the page origin.
+// A machine with a fixed page (a CoreXY plotter's travel area) draws on it. Other machines have
+// none: their page is the drawing's bounding box, moved so it starts at the page origin.
 DrawingStyle page_for(const scenario::MachineConfig& machine, std::vector<Stroke>& strokes) {
   DrawingStyle style;
-  if (const auto* plotter = std::get_if<scenario::CorexyConfig>(&machine.kind)) {
-    style.travel_width_mm = plotter->travel_x_mm;
-    style.travel_height_mm = plotter->travel_y_mm;
+  if (const std::optional<TravelArea> area = machine.kind->page ? machine.kind->page(machine) : std::nullopt) {
+    style.travel_width_mm = area->x_max_mm - area->x_min_mm;
+    style.travel_height_mm = area->y_max_mm - area->y_min_mm;
     return style;
   }
   double min_x = std::numeric_limits<double>::max(), min_y = min_x, max_x = -min_x, max_y = -min_x;

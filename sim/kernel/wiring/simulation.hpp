@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "board/sim_board.hpp"
+#include "kinds/sim_device.hpp"
 #include "models/five_bar_arm.hpp"
 #include "models/machine.hpp"
 #include "models/servo_board.hpp"
@@ -21,7 +22,6 @@
 #include "scheduler/scheduler.hpp"
 #include "wiring/cable_link.hpp"
 #include "wiring/csv_sampler.hpp"
-#include "wiring/device_kinds.hpp"
 #include "wiring/expectations.hpp"
 #include "wiring/host_client.hpp"
 #include "wiring/output_plan.hpp"
@@ -216,7 +216,7 @@ class Simulation {
   uint32_t ticks_since_machine_update_ = 0;
   SimTime machine_time_ns_ = 0;
 
-  /// Every [[device]] by name, whatever its kind (wiring/device_kinds.hpp).
+  /// Every [[device]] by name, whatever its kind (kinds/sim_device.hpp).
   std::map<std::string, std::unique_ptr<SimDevice>> devices_;
 
   PulseDelivery delivery_;

@@ -10,7 +10,6 @@
 namespace stepdance {
 
 class BlockPort;
-class RPC;
 
 /// A unit of work the engine runs in one context. Blocks register themselves in begin(); at
 /// start the engine orders each stage so that producers run before their consumers (see
@@ -44,11 +43,13 @@ class Block {
   /// Default: the port's own absolute value. Context: any.
   virtual double read_deep(BlockPort& port) { return absolute_value(port); }
 
-  /// Enrolls this block's remotely callable names under "<instance_name>." (rpc.enroll(name,
-  /// block) calls it). Default: nothing. Context: loop (setup).
-  virtual void enroll(RPC* rpc, const char* instance_name) {
-    (void)rpc;
-    (void)instance_name;
+  /// The original library's spelling of `registry->enroll(instance_name, block)`: publishes the
+  /// block's remotely callable names under "<instance_name>." in a name registry (an RPC). The
+  /// registry alone knows which names a class has; a class with names repeats this line so that
+  /// the registry sees its own type. Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) {
+    registry->enroll(instance_name, *this);
   }
 
   /// Frame work: runs once per frame in the block's frame stage. Called by the engine only.

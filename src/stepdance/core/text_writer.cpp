@@ -60,12 +60,65 @@ TextWriter& TextWriter::fixed(double value, uint8_t decimals) {
   unsigned_number(static_cast<uint32_t>(whole));
   if (decimals == 0) return *this;
   character('.');
-  uint32_t fraction = static_cast<uint32_t>(scaled - whole * scale);
-  for (uint32_t place = scale / 10; place > 0; place /= 10) {
-    character(static_cast<char>('0' + fraction / place));
-    fraction %= place;
+  return padded(static_cast<uint32_t>(scaled - whole * scale), decimals);
+}
+
+TextWriter& TextWriter::significant(double value, uint8_t digits) {
+  if (isnan(value) || isinf(value)) return fixed(value, 0);
+  if (digits < 1) digits = 1;
+  if (digits > 9) digits = 9;
+  const double magnitude = fabs(value);
+  if (magnitude != floor(magnitude) || magnitude >= 1e15) return rounded(value, digits);
+  if (value < 0) character('-');
+  return whole_number(magnitude);
+}
+
+TextWriter& TextWriter::rounded(double value, uint8_t digits) {
+  const double magnitude = fabs(value);
+  const int exponent = static_cast<int>(floor(log10(magnitude)));
+  const bool scientific = exponent < -3 || exponent >= 15;
+  double shown = magnitude;
+  if (scientific) {  // 10^exponent is subnormal below 10^-307: scale up first
+    shown = exponent < -307 ? magnitude * 1e20 / pow(10.0, exponent + 20) : magnitude / pow(10.0, exponent);
   }
-  return *this;
+  const int wanted_decimals = digits - 1 - (scientific ? 0 : exponent);
+  const int decimals = wanted_decimals < 0 ? 0 : wanted_decimals;  // at most 11
+  const double scale = pow(10.0, decimals);
+  const double scaled = floor(shown * scale + 0.5);  // below 10^digits (10 after rounding up)
+  const double whole = floor(scaled / scale);
+  uint32_t fraction = static_cast<uint32_t>(scaled - whole * scale);
+  uint8_t places = static_cast<uint8_t>(decimals);
+  while (places > 0 && fraction % 10 == 0) {
+    fraction /= 10;
+    --places;
+  }
+  if (value < 0) character('-');
+  whole_number(whole);
+  if (places > 0) character('.').padded(fraction, places);
+  if (!scientific) return *this;
+  character('e');
+  if (exponent < 0) character('-');
+  return unsigned_number(static_cast<uint32_t>(exponent < 0 ? -exponent : exponent));
+}
+
+TextWriter& TextWriter::whole_number(double value) {
+  // 0 ≤ value ≤ 10^15, whole: two uint32 halves keep 64-bit division out of the firmware.
+  const double high = floor(value / 1e9);
+  const uint32_t low = static_cast<uint32_t>(value - high * 1e9);
+  if (high == 0) return unsigned_number(low);
+  unsigned_number(static_cast<uint32_t>(high));
+  return padded(low, 9);
+}
+
+TextWriter& TextWriter::padded(uint32_t value, uint8_t places) {
+  char digits[12];
+  if (places > sizeof(digits) - 1) places = sizeof(digits) - 1;
+  for (int i = places - 1; i >= 0; --i) {
+    digits[i] = static_cast<char>('0' + value % 10);
+    value /= 10;
+  }
+  digits[places] = '\0';
+  return text(digits);
 }
 
 }  // namespace stepdance

@@ -21,12 +21,21 @@ class TextWriter {
   /// A decimal number rounded to `decimals` places (0..6); NaN prints "nan", ±inf "inf"/"-inf",
   /// and magnitudes of 10^9 or more print "ovf" (no host protocol expects such numbers).
   TextWriter& fixed(double value, uint8_t decimals);
+  /// A number to `digits` significant digits (1..9) as short as it reads: whole numbers below
+  /// 10^15 with every digit; others rounded (half away from zero) with trailing zeros dropped,
+  /// plain from 0.001 up (every whole digit from 10^9 up) and with an exponent below 0.001 and
+  /// from 10^15 ("1.2345e-5", "2.5e20"); NaN and ±inf as fixed() prints them.
+  TextWriter& significant(double value, uint8_t digits);
 
   const char* c_str() const { return data_; }
   size_t size() const { return size_; }
   bool overflowed() const { return overflowed_; }
 
  private:
+  TextWriter& padded(uint32_t value, uint8_t places);
+  TextWriter& whole_number(double value);
+  TextWriter& rounded(double value, uint8_t digits);
+
   char* data_;
   size_t capacity_;
   size_t size_ = 0;

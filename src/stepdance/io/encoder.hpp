@@ -76,10 +76,10 @@ class Encoder : public Block {
   int32_t min_latch_value = 0;
   int32_t max_latch_value = 0;
 
-  /// Enrolls its RPC names under "<instance_name>." (see docs/rpc.md). Context: loop.
-  void enroll(RPC* rpc, const char* instance_name) override { enroll_names(rpc, instance_name); }
-  /// The work of enroll(), defined with the RPC (kept out of line so virtuals stay inline).
-  void enroll_names(RPC* rpc, const char* instance_name);
+  /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
+  /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
  private:
   // Virtuals stay inline (no key function): see Block.
   void sample_and_push();

@@ -83,6 +83,11 @@ class Channel : public Block {
   void invert_output() { inverted_ = true; }
   void invert_output(bool invert) { inverted_ = invert; }
 
+  /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
+  /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
+
   /// Deep sync: makes current_position and filtered_target_position equal target + target_2,
   /// so a reset of the inputs re-zeroes the error without a single step. Called by the inputs'
   /// push_deep(). Context: loop (interrupts are held off while it runs) or frame ISR.

@@ -27,10 +27,10 @@ class KinematicsCoreXY : public Block {
   /// the block in the pre-channel stage. kFull if that registry is full. Context: loop.
   Status begin();
 
-  /// Enrolls its RPC names under "<instance_name>." (see docs/rpc.md). Context: loop.
-  void enroll(RPC* rpc, const char* instance_name) override { enroll_names(rpc, instance_name); }
-  /// The work of enroll(), defined with the RPC (kept out of line so virtuals stay inline).
-  void enroll_names(RPC* rpc, const char* instance_name);
+  /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
+  /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
   /// One frame: pull and update both inputs, set a and b, push both outputs. Context: frame ISR.
   void run() override;
 

@@ -53,10 +53,10 @@ class PositionGenerator : public Block {
   /// Context: loop.
   bool is_idle() const;
 
-  /// Enrolls its RPC names under "<instance_name>." (see docs/rpc.md). Context: loop.
-  void enroll(RPC* rpc, const char* instance_name) override { enroll_names(rpc, instance_name); }
-  /// The work of enroll(), defined with the RPC (kept out of line so virtuals stay inline).
-  void enroll_names(RPC* rpc, const char* instance_name);
+  /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
+  /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
   /// One frame: apply the queued go() commands, step toward the target by at most
   /// speed × 40 µs, then set and push the output. Context: frame ISR.
   void run() override;

@@ -8,6 +8,7 @@
 #include "stepdance/core/spsc_queue.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/core/units.hpp"
+#include "stepdance/motion/move_output_ports.hpp"
 #include "stepdance/motion/planner/block_executor.hpp"
 #include "stepdance/motion/planner/lookahead_planner.hpp"
 #include "stepdance/motion/planner/motion_limits.hpp"
@@ -34,7 +35,7 @@ namespace stepdance {
 /// Every move ends exactly on its target whatever the override did.
 ///
 /// Contexts: add_*, reset_block_queue, limits and setters from the loop; run() is the frame.
-class TimeBasedInterpolator : public Block {
+class TimeBasedInterpolator : public Block, public MoveOutputPorts {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "TimeBasedInterpolator"; }
@@ -91,6 +92,9 @@ class TimeBasedInterpolator : public Block {
   bool is_idle();
   /// True when add_move would refuse for lack of room. Context: loop.
   bool queue_is_full();
+  /// Moves (and dwells) not yet finished: waiting in the planner, handed to the frame, and the
+  /// one executing. Context: loop.
+  size_t moves_held() const { return planner_.size() + committed_.size() + (executor_.idle() ? 0u : 1u); }
   /// Decelerates to rest within the acceleration limit, then drops every queued move. Positions
   /// stay where the deceleration ends. Context: loop.
   void reset_block_queue();
@@ -121,10 +125,10 @@ class TimeBasedInterpolator : public Block {
   /// Where the last queued move ends, world units (axis 0..5). Context: loop.
   double planned_position(int axis) const { return planned_end_[axis]; }
 
-  /// Enrolls its RPC names under "<instance_name>." (see docs/rpc.md). Context: loop.
-  void enroll(RPC* rpc, const char* instance_name) override { enroll_names(rpc, instance_name); }
-  /// The work of enroll(), defined with the RPC (kept out of line so virtuals stay inline).
-  void enroll_names(RPC* rpc, const char* instance_name);
+  /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
+  /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
+  template <class Registry>
+  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
   /// One frame: follow the committed blocks, set and push the outputs. Context: frame ISR.
   void run() override;
   /// Plans and commits final blocks; finishes stops. Context: loop (dance_loop).
@@ -138,16 +142,8 @@ class TimeBasedInterpolator : public Block {
   /// Planner slots left (as returned by add_move).
   volatile uint16_t slots_remaining = planner::LookaheadPlanner::kCapacity;
 
-  BlockPort output_x;
-  BlockPort output_y;
-  BlockPort output_z;
-  BlockPort output_e;
-  BlockPort output_r;
-  BlockPort output_t;
-  /// Fraction of the current move done, 0 → 1 (1 when idle).
-  BlockPort output_parameter;
-  /// Planned duration of the current move at override 1, seconds.
-  BlockPort output_duration;
+  // output_x … output_t, output_parameter, output_duration (MoveOutputPorts); the duration is the
+  // move's planned duration at override 1.
 
  private:
   enum class Command : uint8_t { kStop, kStopNow };

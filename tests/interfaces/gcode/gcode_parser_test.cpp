@@ -50,7 +50,8 @@ TEST(GcodeParser, SyntaxErrorsUseGrblNumbers) {
   EXPECT_EQ(parse("G1 X1.2.3"), GrblError::kExpectedCommandLetter);  // second '.' starts no word
   EXPECT_EQ(parse("G1 X-"), GrblError::kBadNumberFormat);
   EXPECT_EQ(parse("F-100"), GrblError::kNegativeValue);
-  EXPECT_EQ(parse("N10000000 G1"), GrblError::kInvalidLineNumber);
+  EXPECT_EQ(parse("N10000001 G1"), GrblError::kInvalidLineNumber);
+  EXPECT_EQ(parse("N10000000 G1"), GrblError::kOk);  // Grbl's MAX_LINE_NUMBER is allowed
   EXPECT_EQ(parse("T256"), GrblError::kToolNumberTooLarge);
   EXPECT_EQ(parse("G1 G0 X1"), GrblError::kModalGroupViolation);
   EXPECT_EQ(parse("G90 G91"), GrblError::kModalGroupViolation);

@@ -99,13 +99,19 @@ TEST_F(GrblLink, OkOnlyAfterValidationAndErrorNumbersOtherwise) {
   EXPECT_EQ(exchange("G1 X1 X2\n"), "error:25\r\n");
   EXPECT_EQ(exchange("G5\n"), "error:20\r\n");
   EXPECT_EQ(exchange("\n"), "ok\r\n");
-  EXPECT_EQ(exchange("(comment only)\r\n"), "ok\r\n");
+  EXPECT_EQ(exchange("(comment only)\n"), "ok\r\n");
   EXPECT_EQ(machine.motions.size(), 1u);
 }
 
-TEST_F(GrblLink, CrLfCrAndLfEachEndOneLine) {
-  EXPECT_EQ(exchange("G0 X1\r\nG0 X2\rG0 X3\n"), "ok\r\nok\r\nok\r\n");
+// Grbl 1.1's protocol loop ends a line at every CR and every LF and answers empty lines, so CR LF
+// is two lines, the second empty: two `ok`.
+TEST_F(GrblLink, EveryCrAndEveryLfEndsALineAndEmptyLinesAreAnswered) {
+  EXPECT_EQ(exchange("G0 X1\r\nG0 X2\rG0 X3\n"), "ok\r\nok\r\nok\r\nok\r\n");
   EXPECT_EQ(machine.motions.size(), 3u);
+  EXPECT_EQ(exchange("\r\n"), "ok\r\nok\r\n");
+  // A CR, then (in another read, as 0.3 s later) an LF: each is a line and gets its `ok`.
+  EXPECT_EQ(exchange("G0 X4\r"), "ok\r\n");
+  EXPECT_EQ(exchange("\n"), "ok\r\n");
 }
 
 // Grbl 1.1's protocol loop throws away every byte up to a space while it assembles a line
@@ -133,12 +139,19 @@ TEST_F(GrblLink, ControlBytesDoNotMakeALineOverlong) {
   EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 8.0);
 }
 
-TEST_F(GrblLink, OverlongLineIsErrorElevenAndTheNextLineWorks) {
-  std::string line = "G0 X1 ";
-  while (line.size() < 300) line += "(padding)";
-  EXPECT_EQ(exchange(line + "\nG0 X2\n"), "error:11\r\nok\r\n");
-  ASSERT_EQ(machine.motions.size(), 1u);
-  EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 2.0);
+// Grbl counts a line's characters after removing blanks and comments, into an 80-byte buffer
+// with its NUL (LINE_BUFFER_SIZE): 79 fit, the 80th makes the line error:11.
+TEST_F(GrblLink, LineLengthCountsCharactersWithoutBlanksAndComments) {
+  std::string commented = "G0 X1 ";
+  while (commented.size() < 300) commented += "(padding)";
+  EXPECT_EQ(exchange(commented + "\n"), "ok\r\n");
+  const std::string zeros(71, '0');
+  const std::string fits = "G1F100X" + zeros + "1";  // 79 characters: X000…001
+  ASSERT_EQ(fits.size(), 79u);
+  EXPECT_EQ(exchange("G1 F100 X" + zeros + "1\n"), "ok\r\n");
+  EXPECT_EQ(exchange("G1F100X0" + zeros + "1\nG0 X2\n"), "error:11\r\nok\r\n");
+  ASSERT_EQ(machine.motions.size(), 3u);
+  EXPECT_DOUBLE_EQ(machine.motions[2].end_mm[kAxisX], 2.0);
 }
 
 TEST_F(GrblLink, StatusIsAnsweredWhileTheQueueIsFull) {
@@ -172,7 +185,8 @@ TEST_F(GrblLink, SettingNumbersBeyondTheTableAreRefusedWithoutConversion) {
   // Found by fuzzing: a setting number too large for an integer was converted before the check.
   EXPECT_EQ(exchange("$111111111111=2\n"), "error:3\r\n");
   EXPECT_EQ(exchange("$-1=2\n"), "error:3\r\n");
-  EXPECT_EQ(exchange("$1.5=2\n"), "error:3\r\n");
+  EXPECT_EQ(exchange("$1.5=2\n"), "ok\r\n");  // Grbl truncates the number: `$1=2`
+  EXPECT_DOUBLE_EQ(protocol.settings().value(1), 2.0);
 }
 
 TEST_F(GrblLink, StatusReportFieldsFollowTheSettings) {
@@ -208,7 +222,8 @@ TEST_F(GrblLink, WorkOffsetIsReportedPeriodicallyAndAtOnceWhenItChanges) {
 }
 
 TEST_F(GrblLink, HomingIsAClearErrorUntilTheMachineHasIt) {
-  EXPECT_EQ(exchange("$H\n"), "[MSG:Homing is not set up on this machine]\r\nerror:5\r\n");
+  EXPECT_EQ(exchange("$H\n"), "error:5\r\n");  // $22 off: Grbl's "homing not enabled"
+  EXPECT_EQ(exchange("$22=1\n$H\n"), "ok\r\n[MSG:Homing is not set up on this machine]\r\nerror:5\r\n");
 }
 
 TEST_F(GrblLink, FeedHoldResumeAndSoftResetWithAlarm) {
@@ -241,15 +256,16 @@ TEST_F(GrblLink, SettingsListReportsTheSketchStepsAndRefusesWritingThem) {
   EXPECT_EQ(exchange("$100=80\n"), "[MSG:steps/mm are set by the sketch's channels]\r\nerror:3\r\n");
   EXPECT_EQ(exchange("$110=1234.5\n"), "ok\r\n");
   EXPECT_DOUBLE_EQ(protocol.settings().max_rate_mm_per_min(0), 1234.5);
-  EXPECT_EQ(exchange("$10=1.5\n"), "error:23\r\n");
+  EXPECT_EQ(exchange("$10=1.5\n"), "ok\r\n");  // Grbl truncates an integer setting's value
+  EXPECT_DOUBLE_EQ(protocol.settings().value(10), 1.0);
   EXPECT_EQ(exchange("$999=1\n"), "error:3\r\n");
-  EXPECT_EQ(exchange("$Q\n"), "error:3\r\n");
+  EXPECT_EQ(exchange("$Q\n"), "error:2\r\n");  // Grbl reads a setting number and finds none
 }
 
 TEST_F(GrblLink, ParserStateAndBuildInfo) {
   exchange("G91 G20 G1 F10\n");
   EXPECT_EQ(exchange("$G\n"), "[GC:G1 G54 G17 G20 G91 G94 M5 M9 T0 F10.0 S0]\r\nok\r\n");
-  EXPECT_EQ(exchange("$I\n"), "[VER:1.1h.20190825:Stepdance]\r\n[OPT:,15,128]\r\nok\r\n");
+  EXPECT_EQ(exchange("$I\n"), "[VER:1.1h.20190830:Stepdance]\r\n[OPT:,15,128]\r\nok\r\n");
 }
 
 TEST_F(GrblLink, JoggingLeavesTheParserModesAndCanBeCancelled) {
@@ -265,16 +281,43 @@ TEST_F(GrblLink, JoggingLeavesTheParserModesAndCanBeCancelled) {
   EXPECT_EQ(exchange("$J=F100\n"), "error:16\r\n");
 }
 
-TEST_F(GrblLink, SoftLimitsRefuseMovesOutsideTravel) {
-  exchange("$20=1\n$130=100\n");
-  EXPECT_EQ(exchange("G0 X150\n"), "error:15\r\n");
-  EXPECT_EQ(exchange("$J=X-1 F100\n"), "error:15\r\n");
+TEST_F(GrblLink, SoftLimitsNeedHomingAsOnGrbl) {
+  EXPECT_EQ(exchange("$20=1\n"), "error:10\r\n");
+  EXPECT_EQ(exchange("$22=1\n$20=1\n"), "ok\r\nok\r\n");
+  EXPECT_TRUE(protocol.settings().soft_limits());
+  EXPECT_EQ(exchange("$22=0\n"), "ok\r\n");  // homing off turns soft limits off
+  EXPECT_FALSE(protocol.settings().soft_limits());
+}
+
+// Grbl 1.1h's limits_soft_check: a moving machine comes to a controlled stop, the queue is
+// dropped, ALARM:2 and "Reset to continue"; the line gets no reply and nothing is heard but
+// Ctrl-X, after which the alarm holds until `$X`.
+TEST_F(GrblLink, ATargetOutsideTravelRaisesAlarmTwoAndLocksUntilReset) {
+  exchange("$22=1\n$20=1\n$130=100\n");
+  EXPECT_EQ(exchange("G0 X10 Y10\n"), "ok\r\n");
+  EXPECT_EQ(machine.state, MotionState::kRun);
+  EXPECT_EQ(exchange("G0 X150\nG0 X20\n"), "ALARM:2\r\n[MSG:Reset to continue]\r\n");
+  EXPECT_EQ(machine.holds, 1);
+  EXPECT_EQ(machine.resets, 1);
+  EXPECT_EQ(machine.motions.size(), 1u);  // neither the move nor the line after it
+  EXPECT_EQ(exchange("?G0 X30\n$X\n~"), "");
+  EXPECT_EQ(exchange("\x18"), "\r\nGrbl 1.1h ['$' for help]\r\n[MSG:'$H'|'$X' to unlock]\r\n");
+  EXPECT_EQ(exchange("G0 X20\n"), "error:9\r\n");
+  EXPECT_EQ(exchange("$X\n"), "[MSG:Caution: Unlocked]\r\nok\r\n");
+  EXPECT_EQ(exchange("G0 X20\n"), "ok\r\n");
+  EXPECT_EQ(machine.motions.size(), 2u);
+}
+
+TEST_F(GrblLink, SoftLimitsCheckArcsAndJogs) {
+  exchange("$22=1\n$20=1\n$130=100\n");
+  EXPECT_EQ(exchange("$J=X-1 F100\n"), "error:15\r\n");  // a jog is refused, no alarm
   EXPECT_EQ(exchange("G0 X10 Y10\n"), "ok\r\n");
   // A half circle from (10,10) around (10,20) reaches x = 0 at most: allowed. From (10,30), a full
-  // circle around (2,30) ends where it starts but passes x = 2 − 8 = −6: refused.
+  // circle around (2,30) ends where it starts but passes x = 2 − 8 = −6: the alarm.
   EXPECT_EQ(exchange("G2 X10 Y30 I0 J10 F100\n"), "ok\r\n");
-  EXPECT_EQ(exchange("G2 X10 Y30 I-8 J0\n"), "error:15\r\n");
   EXPECT_EQ(exchange("G2 X10 Y30 I-5 J0\n"), "ok\r\n");
+  EXPECT_EQ(exchange("G2 X10 Y30 I-8 J0\n"), "ALARM:2\r\n[MSG:Reset to continue]\r\n");
+  EXPECT_EQ(machine.motions.size(), 3u);
 }
 
 TEST_F(GrblLink, CheckModeValidatesWithoutMoving) {
@@ -286,7 +329,7 @@ TEST_F(GrblLink, CheckModeValidatesWithoutMoving) {
 
 TEST_F(GrblLink, RepliesWaitWhenTheHostDoesNotRead) {
   stream.write_room = 0;
-  stream.send("G0 X1\nG0 X2\n$$\n");
+  stream.send("G10 L2 P1 X1\nG10 L2 P2 X2\n$$\n");  // no motion: `$$` is refused while running
   for (int i = 0; i < 10; ++i) protocol.poll();
   EXPECT_EQ(stream.take(), "");
   stream.write_room = 1 << 20;
@@ -321,7 +364,7 @@ class GrblStoredSettings : public ::testing::Test {
 
 TEST_F(GrblStoredSettings, HostWritesSurviveAReboot) {
   EXPECT_EQ(boot(), "\r\nGrbl 1.1h ['$' for help]\r\n");  // erased store: no message
-  EXPECT_EQ(exchange("$110=7200\n$122=50.5\n$20=1\n$13=1\n"), "ok\r\nok\r\nok\r\nok\r\n");
+  EXPECT_EQ(exchange("$110=7200\n$122=50.5\n$22=1\n$20=1\n$13=1\n"), "ok\r\nok\r\nok\r\nok\r\nok\r\n");
   EXPECT_EQ(boot(), "\r\nGrbl 1.1h ['$' for help]\r\n");
   EXPECT_TRUE(lists("$110=7200.000"));
   EXPECT_TRUE(lists("$122=50.500"));

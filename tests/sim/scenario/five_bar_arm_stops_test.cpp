@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "kinds/devices/five_bar_arm.hpp"
 #include "scenario/load_scenario.hpp"
 
 namespace stepdance::sim::scenario {
@@ -31,15 +32,15 @@ std::string arm_scenario(const std::string& keys) {
 TEST(FiveBarArmStops, DefaultToTheOriginalPantographsLatches) {
   const LoadResult result = parse_scenario(arm_scenario(""), kFile);
   ASSERT_TRUE(result.ok()) << result.error_text();
-  EXPECT_EQ(result.scenario.devices[0].right_min_deg, -60);
-  EXPECT_EQ(result.scenario.devices[0].left_max_deg, 240);
+  EXPECT_EQ(result.scenario.devices[0].settings_as<FiveBarArmConfig>()->right_min_deg, -60);
+  EXPECT_EQ(result.scenario.devices[0].settings_as<FiveBarArmConfig>()->left_max_deg, 240);
 }
 
 TEST(FiveBarArmStops, AreReadWhenGiven) {
   const LoadResult result = parse_scenario(arm_scenario("right_min_deg = -90\nleft_max_deg = 270.5\n"), kFile);
   ASSERT_TRUE(result.ok()) << result.error_text();
-  EXPECT_EQ(result.scenario.devices[0].right_min_deg, -90);
-  EXPECT_EQ(result.scenario.devices[0].left_max_deg, 270.5);
+  EXPECT_EQ(result.scenario.devices[0].settings_as<FiveBarArmConfig>()->right_min_deg, -90);
+  EXPECT_EQ(result.scenario.devices[0].settings_as<FiveBarArmConfig>()->left_max_deg, 270.5);
 }
 
 // A right stop above −60° or a left one below 240° would hold the arm's home past its stop; one

@@ -3,6 +3,13 @@
 
 #include <string>
 
+#include "kinds/devices/button.hpp"
+#include "kinds/devices/encoder.hpp"
+#include "kinds/devices/limit_switch.hpp"
+#include "kinds/devices/potentiometer.hpp"
+#include "kinds/machines/cartesian.hpp"
+#include "kinds/machines/corexy_plotter.hpp"
+#include "kinds/machines/polar_turntable.hpp"
 #include "scenario/load_scenario.hpp"
 
 namespace stepdance::sim::scenario {
@@ -67,7 +74,7 @@ TEST(FullScenario, Machine) {
   ASSERT_TRUE(s.machine.has_value());
   EXPECT_EQ(s.machine->board, "driver");
   EXPECT_EQ(s.machine->line, 22);
-  const auto* corexy = std::get_if<CorexyConfig>(&s.machine->kind);
+  const auto* corexy = s.machine->settings_as<CorexyConfig>();
   ASSERT_NE(corexy, nullptr);
   EXPECT_EQ(corexy->motor_a, 'A');
   EXPECT_EQ(corexy->motor_b, 'B');
@@ -82,31 +89,37 @@ TEST(FullScenario, Devices) {
   const Scenario s = load_ok(kFixtures + "/full");
   ASSERT_EQ(s.devices.size(), 5u);
   const DeviceConfig& knob_x = s.devices[0];
-  EXPECT_EQ(knob_x.type, DeviceType::kEncoder);
+  EXPECT_EQ(knob_x.kind, &encoder_kind());
   EXPECT_EQ(knob_x.board, "basic");
   EXPECT_EQ(knob_x.connector, Connector::kEnc1);
-  EXPECT_EQ(knob_x.pulses_per_revolution, 600);
-  EXPECT_EQ(knob_x.start_count, 0);
+  ASSERT_NE(knob_x.settings_as<EncoderConfig>(), nullptr);
+  EXPECT_EQ(knob_x.settings_as<EncoderConfig>()->pulses_per_revolution, 600);
+  EXPECT_EQ(knob_x.settings_as<EncoderConfig>()->start_count, 0);
   const DeviceConfig& knob_y = *s.device("knob_y");
   EXPECT_EQ(knob_y.connector, Connector::kEnc2);
-  EXPECT_EQ(knob_y.pulses_per_revolution, 1000);
-  EXPECT_EQ(knob_y.start_count, -5);
+  ASSERT_NE(knob_y.settings_as<EncoderConfig>(), nullptr);
+  EXPECT_EQ(knob_y.settings_as<EncoderConfig>()->pulses_per_revolution, 1000);
+  EXPECT_EQ(knob_y.settings_as<EncoderConfig>()->start_count, -5);
   const DeviceConfig& speed = *s.device("speed");
-  EXPECT_EQ(speed.type, DeviceType::kPotentiometer);
+  EXPECT_EQ(speed.kind, &potentiometer_kind());
   EXPECT_EQ(speed.connector, Connector::kA1);
-  EXPECT_EQ(speed.position, 0.25);
+  ASSERT_NE(speed.settings_as<PotentiometerConfig>(), nullptr);
+  EXPECT_EQ(speed.settings_as<PotentiometerConfig>()->position, 0.25);
   const DeviceConfig& pen = *s.device("pen");
-  EXPECT_EQ(pen.type, DeviceType::kButton);
+  EXPECT_EQ(pen.kind, &button_kind());
   EXPECT_EQ(pen.connector, Connector::kD1);
-  EXPECT_EQ(pen.bounce_ms, 3.5);
-  EXPECT_FALSE(pen.pressed_level_high);
+  ASSERT_NE(pen.settings_as<ButtonConfig>(), nullptr);
+  EXPECT_EQ(pen.settings_as<ButtonConfig>()->bounce_ms, 3.5);
+  EXPECT_FALSE(pen.settings_as<ButtonConfig>()->pressed_level_high);
   const DeviceConfig& home = *s.device("home_x");
-  EXPECT_EQ(home.type, DeviceType::kLimitSwitch);
+  EXPECT_EQ(home.kind, &limit_switch_kind());
   EXPECT_EQ(home.connector, Connector::kLimitA);
   EXPECT_EQ(connector_name(home.connector), "LIMIT_A");
-  EXPECT_EQ(home.axis, LimitAxis::kX);
-  EXPECT_EQ(home.at_mm, -1);
-  EXPECT_EQ(home.side, LimitSide::kBelow);
+  const LimitSwitchConfig* limit = home.settings_as<LimitSwitchConfig>();
+  ASSERT_NE(limit, nullptr);
+  EXPECT_EQ(limit->axis, MachineAxis::kX);
+  EXPECT_EQ(limit->at_mm, -1);
+  EXPECT_FALSE(limit->active_above);
   EXPECT_EQ(home.line, 58);
 }
 
@@ -118,10 +131,10 @@ TEST(FullScenario, Cables) {
   EXPECT_EQ(cable.from.port, 'A');
   EXPECT_EQ(cable.to.board, "driver");
   EXPECT_EQ(cable.to.port, 'A');
-  EXPECT_EQ(cable.delay_ns, 20);
-  EXPECT_EQ(cable.stretch_ns, -400);
-  EXPECT_EQ(cable.glitch_every_us, 1000);
-  EXPECT_EQ(cable.glitch_width_ns, 300);
+  EXPECT_EQ(cable.settings.delay, 20);
+  EXPECT_EQ(cable.settings.stretch, -400);
+  EXPECT_EQ(cable.settings.glitch_every, 1000 * kMicrosecond);
+  EXPECT_EQ(cable.settings.glitch_width, 300);
 }
 
 TEST(FullScenario, TimelineIsSortedByTimeKeepingFileOrderForTies) {
@@ -204,7 +217,7 @@ TEST(OtherMachines, CartesianWithDefaultsAndInlineSockets) {
   EXPECT_EQ(s.seed, 1u);
   ASSERT_EQ(s.boards[0].sockets.size(), 3u);
   EXPECT_EQ(s.boards[0].socket('D')->microsteps, 8);
-  const auto* cartesian = std::get_if<CartesianConfig>(&s.machine->kind);
+  const auto* cartesian = s.machine->settings_as<CartesianConfig>();
   ASSERT_NE(cartesian, nullptr);
   EXPECT_EQ(cartesian->x, 'A');
   EXPECT_EQ(cartesian->y, 'B');
@@ -231,7 +244,7 @@ TEST(OtherMachines, CartesianWithDefaultsAndInlineSockets) {
 
 TEST(OtherMachines, PolarWithAPenServo) {
   const Scenario s = load_ok(kFixtures + "/polar");
-  const auto* polar = std::get_if<PolarConfig>(&s.machine->kind);
+  const auto* polar = s.machine->settings_as<PolarConfig>();
   ASSERT_NE(polar, nullptr);
   EXPECT_EQ(polar->angle, 'C');
   EXPECT_EQ(polar->radius, 'B');

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "kinds/devices/oled.hpp"
 #include "scenario/load_scenario.hpp"
 
 namespace stepdance::sim::scenario {
@@ -43,7 +44,7 @@ TEST(QwiicDevices, ScreenAndKnobShareQwiic1WithDefaultAddresses) {
   const Scenario& scenario = result.scenario;
   EXPECT_EQ(scenario.device("screen")->i2c_address, 0x3C);
   EXPECT_EQ(scenario.device("knob")->i2c_address, 0x3F);
-  EXPECT_EQ(scenario.device("screen")->snapshots_s, (std::vector<double>{1, 2.5}));
+  EXPECT_EQ(scenario.device("screen")->settings_as<OledConfig>()->snapshots_s, (std::vector<double>{1, 2.5}));
   ASSERT_EQ(scenario.expectations.size(), 2u);
   EXPECT_EQ(scenario.expectations[0].type, ExpectationType::kScreenText);
   EXPECT_EQ(scenario.expectations[0].screen_row, 2);

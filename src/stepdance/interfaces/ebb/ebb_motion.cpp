@@ -1,6 +1,8 @@
 // EbbMotionExecutor: the EBB's 25 kHz accumulator algorithm, servo slewing and FIFO entry effects.
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 
+#include <math.h>
+
 namespace stepdance::ebb {
 namespace {
 
@@ -12,6 +14,33 @@ int64_t abs64(int64_t value) { return value < 0 ? -value : value; }
 int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 
 }  // namespace
+
+double ticks_to_cover(const EbbMove& move, int axis) {
+  const double distance = static_cast<double>(move.steps[axis]) * kStepThreshold;
+  const double rate = static_cast<double>(move.rate[axis]);
+  const double accel = static_cast<double>(move.accel[axis]);
+  if (accel == 0.0) return rate > 0.0 ? distance / rate : 0.0;
+  const double discriminant = rate * rate + 2.0 * accel * distance;
+  return discriminant > 0.0 ? (-rate + sqrt(discriminant)) / accel : 0.0;
+}
+
+double EbbMotionExecutor::peak_steps_per_tick() const {
+  const bool accumulated = move_.kind == EbbMove::Kind::kSteps || move_.kind == EbbMove::Kind::kTime;
+  if (!busy_ || !accumulated) return 0.0;  // kHome runs as kSteps (begin_home)
+  double peak = 0.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    if (!axis_active_[axis]) continue;
+    const double rate = static_cast<double>(move_.rate[axis]);
+    const double accel = static_cast<double>(move_.accel[axis]);
+    const double ticks = move_.kind == EbbMove::Kind::kTime ? move_.ticks : ticks_to_cover(move_, axis);
+    const double first = rate + accel / 2.0;
+    const double last = rate + accel * (ticks - 0.5);
+    const double most = (first < 0.0 || last < 0.0) ? kStepThreshold : (first > last ? first : last);
+    const double steps = most >= kStepThreshold ? 1.0 : most / kStepThreshold;
+    if (steps > peak) peak = steps;
+  }
+  return peak;
+}
 
 void EbbMotionExecutor::reset(uint16_t servo_reset) {
   *this = EbbMotionExecutor{};
@@ -34,28 +63,9 @@ void EbbMotionExecutor::start(const EbbMove& move) {
     case EbbMove::Kind::kTime:
       begin_accumulated(move);
       break;
-    case EbbMove::Kind::kHome: {
-      EbbMove line = move;
-      line.kind = EbbMove::Kind::kSteps;
-      line.clear = 3;  // a straight line from a clean start
-      int64_t distance[2];
-      int64_t longest = 0;
-      for (int axis = 0; axis < 2; ++axis) {
-        distance[axis] = int64_t{move.target[axis]} - global_steps_[axis];
-        if (abs64(distance[axis]) > longest) longest = abs64(distance[axis]);
-      }
-      if (longest == 0 || move.frequency == 0) return;
-      const int64_t ticks = ceil_div(longest * kTicksPerSecond, move.frequency);
-      for (int axis = 0; axis < 2; ++axis) {
-        line.steps[axis] = static_cast<uint32_t>(abs64(distance[axis]));
-        line.direction[axis] = distance[axis] < 0 ? -1 : 1;
-        line.rate[axis] = ceil_div(abs64(distance[axis]) * kStepThreshold, ticks);
-        line.accel[axis] = 0;
-      }
-      move_ = line;
-      begin_accumulated(line);
+    case EbbMove::Kind::kHome:
+      begin_home(move);
       break;
-    }
     case EbbMove::Kind::kDelay:
       busy_ = ticks_left_ > 0;
       break;
@@ -70,9 +80,32 @@ void EbbMotionExecutor::start(const EbbMove& move) {
       if (move.microstep_mode >= 1 && move.microstep_mode <= 5) microstep_mode_ = move.microstep_mode;
       enabled_[0] = move.enable[0];
       enabled_[1] = move.enable[1];
-      global_steps_[0] = global_steps_[1] = 0;
+      clear_global_steps();  // every EM, as the EBB's firmware: the counters and both accumulators
       break;
   }
+}
+
+// HM: a straight constant-rate line from the global step counters to the target.
+void EbbMotionExecutor::begin_home(const EbbMove& move) {
+  EbbMove line = move;
+  line.kind = EbbMove::Kind::kSteps;
+  line.clear = 3;  // a straight line from a clean start
+  int64_t distance[2];
+  int64_t longest = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    distance[axis] = int64_t{move.target[axis]} - global_steps_[axis];
+    if (abs64(distance[axis]) > longest) longest = abs64(distance[axis]);
+  }
+  if (longest == 0 || move.frequency == 0) return;
+  const int64_t ticks = ceil_div(longest * kTicksPerSecond, move.frequency);
+  for (int axis = 0; axis < 2; ++axis) {
+    line.steps[axis] = static_cast<uint32_t>(abs64(distance[axis]));
+    line.direction[axis] = distance[axis] < 0 ? -1 : 1;
+    line.rate[axis] = ceil_div(abs64(distance[axis]) * kStepThreshold, ticks);
+    line.accel[axis] = 0;
+  }
+  move_ = line;
+  begin_accumulated(line);
 }
 
 void EbbMotionExecutor::begin_accumulated(const EbbMove& move) {

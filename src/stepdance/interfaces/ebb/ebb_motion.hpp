@@ -21,7 +21,7 @@ struct EbbMove {
     kHome,   ///< HM: to target[] (global step counters) at `frequency` steps/s, computed when it starts
     kDelay,  ///< SM with no steps, or a pen command's delay: `ticks` ticks of nothing
     kServo,  ///< SP/S2/TP: servo to `servo_target` at `servo_rate`, then `ticks` ticks of delay
-    kEnable, ///< EM: microstep mode and enables; clears the global step counters
+    kEnable, ///< EM: microstep mode and enables; clears the global step counters and accumulators
   };
   Kind kind = Kind::kDelay;
   int64_t rate[2] = {};     ///< accumulator increment per tick, ≥ 0 (direction in `direction`)
@@ -39,6 +39,10 @@ struct EbbMove {
   bool enable[2] = {true, true};
 };
 
+/// Ticks a step-limited axis of `move` needs to cover its steps: steps·2^31 = rate·T + accel·T²/2
+/// solved for T (0 when it never gets there). Context: any (pure).
+double ticks_to_cover(const EbbMove& move, int axis);
+
 /// Executes EBB moves one tick at a time. It keeps the accumulators, the global step counters
 /// (QS), each motor's position in 1/16-microsteps (exact whatever the microstep mode) and the
 /// servo's pulse width. Context: frame ISR for tick(), start() and stop(); readers may run in the
@@ -52,10 +56,16 @@ class EbbMotionExecutor {
   bool tick();
   /// Abandons the current move (ES). Returns true if one was running.
   bool stop();
+  /// Disables both drivers (ES,1): unlike EM, the step counters and accumulators stay.
+  void disable_motors() { enabled_[0] = enabled_[1] = false; }
   /// Sends the servo toward `target` at `rate` now, whatever the FIFO does (SP,2 and SP,3).
   void servo_now(uint16_t target, uint16_t rate, bool pen_up);
 
   bool busy() const { return busy_; }
+  /// The most steps any motor takes in one tick of the current move, 0 … 1: its larger rate, on
+  /// the first or the last tick, over 2^31 (a rate that would roll over counts as 1). 0 for moves
+  /// that turn no motor. Context: frame, after start().
+  double peak_steps_per_tick() const;
   bool motor_moving(int axis) const { return busy_ && axis_active_[axis]; }
   int32_t global_steps(int axis) const { return global_steps_[axis]; }
   /// CS: zeroes the global step counters and both accumulators.
@@ -78,6 +88,7 @@ class EbbMotionExecutor {
  private:
   void step_axis(int axis);
   void begin_accumulated(const EbbMove& move);
+  void begin_home(const EbbMove& move);
   void slew_servo();
 
   EbbMove move_;

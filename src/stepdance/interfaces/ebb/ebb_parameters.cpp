@@ -56,6 +56,22 @@ bool EbbParameters::integer(int64_t min, int64_t max, bool required, int64_t& ou
   return true;
 }
 
+bool EbbParameters::letter(bool required, char& out) {
+  if (!open_parameter(required)) return false;
+  if (position_ >= length_ || text_[position_] == ',') {
+    if (required) error_ = EbbError::kMissing;
+    return false;
+  }
+  const char c = text_[position_++];
+  if (position_ < length_ && text_[position_] != ',') {
+    error_ = EbbError::kNeedComma;
+    offending_ = text_[position_];
+    return false;
+  }
+  out = (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+  return true;
+}
+
 bool EbbParameters::text(char* out, size_t capacity, bool required) {
   if (!open_parameter(required)) return false;
   size_t written = 0;

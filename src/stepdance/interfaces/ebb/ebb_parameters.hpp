@@ -30,6 +30,9 @@ class EbbParameters {
   /// Reads an integer in [min, max]. Absent and required: kMissing; absent and optional: false
   /// with no error (out untouched). Not a number or out of range: kInvalid.
   bool integer(int64_t min, int64_t max, bool required, int64_t& out);
+  /// Reads a one-character parameter (PD/PI/PO's port), upper-cased. Absent: as integer(); more
+  /// than one character: kNeedComma at the second, as the EBB reads it.
+  bool letter(bool required, char& out);
   /// Reads the rest of a parameter as text (ST's name), at most capacity − 1 bytes.
   bool text(char* out, size_t capacity, bool required);
   /// True if another parameter follows.

@@ -4,7 +4,6 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "stepdance/core/arduino_stream_adapter.hpp"
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
 #include "stepdance/core/byte_stream.hpp"
@@ -13,6 +12,12 @@
 #include "stepdance/core/status.hpp"
 #include "stepdance/interfaces/ebb/ebb_motion.hpp"
 #include "stepdance/interfaces/ebb/ebb_parameters.hpp"
+#include "stepdance/interfaces/ebb/ebb_pins.hpp"
+#include "stepdance/interfaces/link/command_table.hpp"
+#include "stepdance/interfaces/link/line_reader.hpp"
+#include "stepdance/interfaces/link/reply_ring.hpp"
+#include "stepdance/interfaces/link/serial_link.hpp"
+#include "stepdance/motion/move_output_ports.hpp"
 #include "stepdance/core/text_writer.hpp"
 
 namespace stepdance {
@@ -27,16 +32,18 @@ enum EbbKinematics : uint8_t {
 /// API), saxi and other plotter programs drive a Stepdance machine, while live inputs mix in.
 ///
 /// Motion commands (SM, XM, LM, LT, HM, EM, SP, S2, TP) go through a FIFO to the frame, which
-/// executes them tick for tick as an EBB does (the 40 µs accumulator algorithm, not re-planned);
+/// executes them tick for tick as an EBB does (the 40 µs accumulator algorithm, not re-planned;
+/// a move faster than the channels' one step per frame runs on a slower clock, counted and reported);
 /// queries and settings act at once. While the FIFO is full the next motion command waits and
 /// nothing more is read (USB flow control), so no command is ever dropped. Both reply syntaxes
 /// (legacy and CU,10,1 "future") and the EBB's error replies are exact. See docs/axidraw.md.
 ///
-/// Outputs: x and y in mm from the motors' positions through the chosen kinematics and steps/mm
-/// (80 steps/mm at 1/16 microstepping by default, scaled by the EM mode), z the pen servo as
-/// pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs) times the z ratio.
+/// Outputs: x and y in mm from the motors' positions through the chosen kinematics and the steps/mm
+/// of the channels they drive (one 1/16 step is one channel step; see set_ratio_xy), scaled by the
+/// EM mode; z the pen servo as pulse-width offset from 1.5 ms in servo-board steps (1 step = 1 µs)
+/// times the z ratio.
 /// Context: the loop (dance_loop serves the link); run() is the frame.
-class Eibotboard : public Block {
+class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProtocol<Eibotboard> {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "Eibotboard"; }
@@ -49,16 +56,14 @@ class Eibotboard : public Block {
 
   Eibotboard();
 
-  /// Starts on the board's console (USB Serial). kFull if a registry is full. Context: loop.
-  Status begin();
-  /// Starts on a port (`&Serial`, `&SerialUSB1`, any Arduino Stream). Context: loop.
-  template <class Port>
-  Status begin(Port* port) {
-    return port == nullptr ? Status::kBadArgument : begin_stream(adapter_.attach(port));
-  }
+  // begin() on the board's console (USB Serial), begin(&Serial) on a port (any Arduino Stream),
+  // begin(&Serial1, baud) on a hardware UART: link::LinkedProtocol. kFull if a registry is full.
+  // Context: loop.
 
-  /// mm per motor step at 1/16 microstepping, as output_units_mm per input_units_steps
-  /// (default 25.4 mm per 2032 steps = 80 steps/mm; the original library used 2874). Context: loop.
+  /// mm per motor step at 1/16 microstepping, as output_units_mm per input_units_steps. Optional:
+  /// at start the board takes the ratio of the channels its x and y drive (one EBB 1/16 step is
+  /// one channel step), and refuses to start if this one disagrees with them; it is used as it is
+  /// only when no channel is reached (default 25.4 mm per 2032 steps = 80 steps/mm). Context: loop.
   void set_ratio_xy(float output_units_mm, float input_units_steps);
   /// Output units of z per servo step (µs of pulse width); default 1 per 50 (the original's).
   void set_ratio_z(float output_units_mm, float input_units_steps);
@@ -68,21 +73,12 @@ class Eibotboard : public Block {
   /// The text must outlive the block. Context: loop.
   void set_version_string(const char* version) { version_ = version; }
 
-  BlockPort output_x;
-  BlockPort output_y;
-  BlockPort output_z;
-  BlockPort output_e;
-  BlockPort output_r;
-  BlockPort output_t;
-  /// Fraction of the current move done (0 → 1).
-  BlockPort output_parameter;
-  /// Duration of the current move, seconds.
-  BlockPort output_duration;
+  // output_x … output_t, output_parameter, output_duration: MoveOutputPorts.
 
   /// Commands refused with an error reply since begin. Context: any.
   uint32_t errors_replied() const { return errors_replied_; }
   /// Replies that found no room (should stay 0: a line is taken only when its reply fits).
-  uint32_t replies_dropped() const { return replies_dropped_; }
+  uint32_t replies_dropped() const { return replies_.dropped(); }
 
   /// commands (lines answered), fifo_full_waits (motion commands that found the FIFO full and
   /// waited, unread input behind them), moves_started (FIFO entries the frame took),
@@ -95,64 +91,114 @@ class Eibotboard : public Block {
   /// loop pass). Context: loop.
   bool is_idle() const;
 
+  /// At start (dance_start): takes steps/mm from the channels output_x and output_y reach, directly
+  /// or through the block they feed (a kinematics); false, with a kBadConfiguration fault saying
+  /// why, when those channels differ or set_ratio_xy() disagrees with them. Context: loop.
+  bool accept_frame_period(uint32_t period_us) override;
   /// Serves the link: reads commands while the FIFO has room, replies. Context: loop.
   void loop() override;
   /// One tick of EBB motion; sets and pushes the outputs. Context: frame ISR.
   void run() override;
 
  private:
+  friend class link::LinkedProtocol<Eibotboard>;
   enum class Control : uint8_t { kStop, kStopDisable, kClearSteps, kReset, kPenUpNow };
   static constexpr size_t kReplyBufferBytes = 512;
   static constexpr size_t kLargestReplyBytes = 160;
+  static constexpr uint32_t kUnstretchedQ16 = 65536;               // a stretch factor of 1 in Q16
+  static constexpr uint32_t kStretchReportIntervalUs = 1000000;    // at most one warning a second
+
+  /// What the dispatcher checks before a handler runs.
+  enum CommandFlags : uint8_t {
+    kMovesMotors = 1,   // refused with !9 while an alarm is raised (the fault path)
+    kNoParameters = 2,  // any parameter is an error (the parser's reply), the handler is not called
+  };
+  /// A command's handler: false while the FIFO has no room (the line waits), true once answered.
+  struct CommandHandler {
+    bool (Eibotboard::*run)(ebb::EbbParameters&) = nullptr;
+    uint8_t flags = 0;
+  };
+  static const link::Command<CommandHandler>* find_command(const char* name);  // eibotboard_commands.cpp
 
   Status begin_stream(ByteStream& stream);
   // Link (eibotboard.cpp)
-  void read_lines();
-  bool take_byte(uint8_t byte);
+  void read_lines(ByteStream& stream);
   void execute_line();
-  void flush_replies();
-  // Commands (eibotboard_commands.cpp)
+  void take_command_name();
+  void finish_line();
+  // Dispatch and motion commands (eibotboard_commands.cpp); a handler returns false while the
+  // FIFO has no room (the line waits), true once the command is answered.
   bool dispatch(const char* name, ebb::EbbParameters& parameters);
   bool queue(const ebb::EbbMove& move);
-  bool command_sm(ebb::EbbParameters& p, bool mixed);
-  void servo_now(uint16_t target, uint16_t rate);
-  bool command_lm(ebb::EbbParameters& p, bool timed);
+  bool queue_and_reply(const ebb::EbbMove& move);
+  bool command_sm(ebb::EbbParameters& p);
+  bool command_xm(ebb::EbbParameters& p);
+  bool stepper_move(ebb::EbbParameters& p, bool mixed);
+  bool steps_move(const int64_t (&steps)[2], int64_t duration_ms, bool mixed, ebb::EbbMove& move);
+  bool command_lm(ebb::EbbParameters& p);
+  bool command_lt(ebb::EbbParameters& p);
+  bool low_level_move(ebb::EbbParameters& p, bool timed);
   bool command_hm(ebb::EbbParameters& p);
   bool command_em(ebb::EbbParameters& p);
   bool command_sp(ebb::EbbParameters& p);
   bool command_s2(ebb::EbbParameters& p);
   bool command_tp(ebb::EbbParameters& p);
+  ebb::EbbMove servo_move(bool up, uint32_t delay_ms) const;
+  void servo_now(uint16_t target, uint16_t rate);
+  // Settings and queries, answered at once (eibotboard_queries.cpp)
   bool command_sc(ebb::EbbParameters& p);
   bool command_cu(ebb::EbbParameters& p);
+  bool switch_syntax(int64_t value);
   bool command_qu(ebb::EbbParameters& p);
-  void command_es(ebb::EbbParameters& p);
-  void query_motion();
-  ebb::EbbMove servo_move(bool up, uint32_t delay_ms) const;
+  bool command_es(ebb::EbbParameters& p);
+  bool command_v(ebb::EbbParameters& p);
+  bool command_qm(ebb::EbbParameters& p);
+  bool command_qg(ebb::EbbParameters& p);
+  bool command_sr(ebb::EbbParameters& p);
+  bool command_sl(ebb::EbbParameters& p);
+  bool command_ql(ebb::EbbParameters& p);
+  bool command_st(ebb::EbbParameters& p);
+  bool command_qt(ebb::EbbParameters& p);
+  bool command_qs(ebb::EbbParameters& p);
+  bool command_cs(ebb::EbbParameters& p);
+  bool command_qp(ebb::EbbParameters& p);
+  bool command_qb(ebb::EbbParameters& p);
+  bool command_qc(ebb::EbbParameters& p);
+  bool command_qe(ebb::EbbParameters& p);
+  bool command_qr(ebb::EbbParameters& p);
+  bool command_r(ebb::EbbParameters& p);
+  // Pins (eibotboard_pins.cpp)
+  bool read_pin(ebb::EbbParameters& p, int& port, int& pin);
+  bool command_pd(ebb::EbbParameters& p);
+  bool command_po(ebb::EbbParameters& p);
+  bool command_pi(ebb::EbbParameters& p);
+  bool command_pc(ebb::EbbParameters& p);
+  bool command_pg(ebb::EbbParameters& p);
   // Replies (eibotboard_replies.cpp)
   void reply_ok();
   void reply_data(const char* data, bool ok_after, const char* legacy_ending = "\r\n");
   void reply_error(ebb::EbbError error, const char* name, char offending = ' ');
   bool reply_parameter_error(const ebb::EbbParameters& parameters);
-  void send(const char* text);
-  size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
-  // Frame (eibotboard.cpp)
+  void send(const char* text) { replies_.send(text); }
+  // Frame (eibotboard_frame.cpp)
   void apply_controls();
+  void flush_fifo();
   void stop_motion_for_alarm();
   void load_next_move();
+  void tick_ebb_time();
+  void publish_frame_state();
   void update_outputs();
   double move_duration_s(const ebb::EbbMove& move) const;
+  void fit_move_to_step_rate();
 
-  ByteStream* stream_ = nullptr;
-  ArduinoStreamAdapter adapter_;
   // loop side
-  char line_[kMaxLineBytes + 1] = {};
-  size_t line_length_ = 0;
-  bool line_overrun_ = false;
-  bool line_ready_ = false;      // a complete line waits (its motion command found the FIFO full)
+  // ASCII lines ended by CR or LF (CR LF and LF CR end one; empty lines are skipped), control and
+  // non-ASCII bytes dropped; a line waits in the reader while its motion command finds the FIFO full.
+  link::LineReader<kMaxLineBytes> lines_{link::LineRules{true, false, true, true}};
+  link::ReplyRing<kReplyBufferBytes> replies_;
   bool waiting_for_room_ = false;
   uint32_t commands_done_ = 0;
   uint32_t fifo_full_waits_ = 0;
-  bool last_was_terminator_ = false;
   char command_name_[3] = {};
   bool future_syntax_ = false;
   bool ack_enabled_ = true;
@@ -165,14 +211,11 @@ class Eibotboard : public Block {
   bool button_pressed_ = false;
   uint8_t variables_[32] = {};
   char tag_[17] = {};
+  ebb::EbbPins pins_;
   uint32_t servo_timeout_ms_ = 60000;
   bool motors_enabled_[2] = {};  // as the last queued EM or ES,1 left them (EM's default for motor 2)
   const char* version_ = kDefaultVersion;
   EbbKinematics kinematics_ = EBB_KINEMATICS_COREXY;
-  char replies_[kReplyBufferBytes] = {};
-  size_t reply_head_ = 0;
-  size_t reply_count_ = 0;
-  uint32_t replies_dropped_ = 0;
   uint32_t errors_replied_ = 0;
   // loop → frame
   SpscQueue<ebb::EbbMove, kFifoCapacity> fifo_;
@@ -182,8 +225,13 @@ class Eibotboard : public Block {
   volatile uint32_t alarm_stops_ = 0;     // frame: motor moves stopped or skipped while an alarm is raised
   // frame side
   ebb::EbbMotionExecutor executor_;
-  uint32_t tick_time_us_ = 0;  // frame time not yet spent on an EBB tick (< 40 µs)
+  uint32_t tick_time_q16_ = 0;  // frame time not yet spent on an EBB tick, µs·2^16 (< one tick)
+  uint32_t stretch_q16_ = kUnstretchedQ16;  // the current move's tick length over 40 µs, ·2^16 (≥ 1)
+  double move_stretch_ = 1.0;               // the same as a factor
+  uint32_t us_since_stretch_report_ = kStretchReportIntervalUs;
+  volatile uint32_t moves_stretched_ = 0;   // frame: moves slowed down to the step rate
   double mm_per_sixteenth_ = 25.4 / 2032.0;
+  bool ratio_xy_given_ = false;  // set_ratio_xy() was called: the channels must agree with it
   double z_units_per_step_ = 1.0 / 50.0;
   uint32_t move_ticks_done_ = 0;
   double move_duration_s_ = 0.0;
@@ -193,6 +241,7 @@ class Eibotboard : public Block {
   volatile bool frame_pen_up_ = true;
   volatile bool frame_servo_settled_ = true;
   volatile uint8_t frame_motor_resolution_[2] = {};  // QE: 16 … 1 (1/16 … full step) when enabled, else 0
+  volatile uint8_t frame_microstep_mode_ = 1;         // PI's MS1 … MS3: EM's mode, 1 … 5
   volatile uint16_t pen_now_target_ = 0;  // SP,2/3: written before kPenUpNow is queued
   volatile uint16_t pen_now_rate_ = 0;
   double last_output_[3] = {};  // x, y, z as last set, world units

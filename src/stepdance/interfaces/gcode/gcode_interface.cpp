@@ -24,8 +24,6 @@ constexpr gcode::CommandCode kM5 = 50;
 
 }  // namespace
 
-Status GCodeInterface::begin() { return begin_stream(hal::console()); }
-
 Status GCodeInterface::begin_stream(ByteStream& stream) {
   const Status planner = interpolator_.begin();
   if (planner != Status::kOk) return planner;
@@ -212,7 +210,13 @@ void GCodeInterface::position_mm(double (&out)[kAxisCount]) {
 
 double GCodeInterface::feed_now_mm_per_min() { return interpolator_.current_speed() * kSecondsPerMinute; }
 
-uint16_t GCodeInterface::queue_slots_free() { return interpolator_.slots_remaining; }
+// As Grbl's plan_get_block_buffer_available: the block executing and those handed to the frame
+// still take their place, so `Bf:` equals `[OPT:]`'s count only when nothing is left to do.
+uint16_t GCodeInterface::queue_slots_free() {
+  const size_t held = interpolator_.moves_held() + static_cast<size_t>(pending_count_);
+  const size_t total = queue_slots_total();
+  return static_cast<uint16_t>(held >= total ? 0 : total - held);
+}
 
 uint16_t GCodeInterface::queue_slots_total() { return planner::LookaheadPlanner::kCapacity; }
 

@@ -3,7 +3,6 @@
 
 #include <stdint.h>
 
-#include "stepdance/core/arduino_stream_adapter.hpp"
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
 #include "stepdance/core/byte_stream.hpp"
@@ -11,6 +10,7 @@
 #include "stepdance/interfaces/gcode/arc_geometry.hpp"
 #include "stepdance/interfaces/gcode/grbl_machine.hpp"
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
+#include "stepdance/interfaces/link/serial_link.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
 
 namespace stepdance {
@@ -27,26 +27,14 @@ class Homing;
 /// $120–$122 accelerations (mm/s²), $11 junction deviation (mm), $12 arc tolerance (mm).
 /// The feed override and a feed hold act live on the planned speed; the rapid override applies
 /// to rapids queued after it changes. Context: everything from the loop (dance_loop runs it).
-class GCodeInterface : public Block, private gcode::GrblMachine {
+class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>, private gcode::GrblMachine {
  public:
   /// The class name, for reports. Context: any.
   const char* type_name() const override { return "GCodeInterface"; }
   GCodeInterface() = default;
 
-  /// Starts the link on the board's console (USB Serial). kFull if a registry is full.
-  Status begin();
-  /// Starts the link on a port: `&Serial`, `&SerialUSB1` or any Arduino Stream.
-  template <class Port>
-  Status begin(Port* port) {
-    return port == nullptr ? Status::kBadArgument : begin_stream(adapter_.attach(port));
-  }
-  /// Opens a hardware UART at `baud` (format as Arduino's SERIAL_8N1…) and starts the link on it.
-  template <class Port>
-  Status begin(Port* port, uint32_t baud, uint16_t format = 0) {
-    if (port == nullptr) return Status::kBadArgument;
-    open_port(port, baud, format);
-    return begin(port);
-  }
+  // begin(), begin(&Serial), begin(&Serial1, baud[, format]): from link::LinkedProtocol, which
+  // starts the link on the board's console or the port (kFull if a registry is full).
 
   BlockPort& output_x = interpolator_.output_x;
   BlockPort& output_y = interpolator_.output_y;
@@ -75,7 +63,11 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
 
   /// `$H` runs `homing` (its status reads Run until it ends; the interface then adopts the
   /// homed machine position). Without one `$H` answers error:5. Context: loop.
-  void set_homing(Homing* homing) { homing_ = homing; }
+  /// Setting it turns `$22` (homing enabled) on by default, as `$H` and `$20` need.
+  void set_homing(Homing* homing) {
+    homing_ = homing;
+    settings().set_from_sketch(22, homing != nullptr ? 1.0 : 0.0);
+  }
 
   /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
   void loop() override;
@@ -98,12 +90,8 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
   };
   static constexpr int kPendingCapacity = 4;  // a line asks for at most a dwell and two motions
 
+  friend class link::LinkedProtocol<GCodeInterface>;
   Status begin_stream(ByteStream& stream);
-  template <class Port>
-  static auto open_port(Port* port, uint32_t baud, uint16_t format) -> decltype(port->begin(baud, format), void()) {
-    port->begin(baud, format);
-  }
-  static void open_port(...) {}
 
   // GrblMachine
   void on_motion(const gcode::Motion& motion) override;
@@ -140,7 +128,6 @@ class GCodeInterface : public Block, private gcode::GrblMachine {
 
   TimeBasedInterpolator interpolator_;
   gcode::GrblProtocol protocol_;
-  ArduinoStreamAdapter adapter_;
   Pending pending_[kPendingCapacity];
   int pending_head_ = 0;
   int pending_count_ = 0;

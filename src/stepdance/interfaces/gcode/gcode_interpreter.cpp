@@ -13,32 +13,10 @@ constexpr double kPi = 3.14159265358979323846;
 /// Most turns one G2/G3 line may ask for with P (a whole number from 1).
 constexpr double kMaxArcTurns = 100000.0;
 constexpr char kAxisLetters[kAxisCount] = {'X', 'Y', 'Z', 'E'};
-constexpr int kMaxMotionsPerLine = 2;  // G28/G30: intermediate point, then the stored position
 
 constexpr uint32_t letter_bit(char letter) { return 1u << word_index(letter); }
 constexpr uint32_t kAxisWords = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('E');
 constexpr uint32_t kOffsetWords = letter_bit('I') | letter_bit('J') | letter_bit('K');
-
-/// Requests a validated line will make of the sink, in order.
-struct LinePlan {
-  bool spindle = false;
-  bool coolant = false;
-  bool dwell = false;
-  double dwell_s = 0.0;
-  Motion motions[kMaxMotionsPerLine];
-  int motion_count = 0;
-  bool program_flow = false;
-  CommandCode program_flow_code = 0;
-  bool coordinates_changed = false;
-};
-
-/// Everything a line may change, copied so a refused line changes nothing.
-struct MachineState {
-  ModalState modal;
-  CoordinateData coordinates;
-  double g92_mm[kAxisCount];
-  double position_mm[kAxisCount];
-};
 
 /// Validates one block against a copy of the state and plans its requests.
 class LineExecution {
@@ -52,6 +30,11 @@ class LineExecution {
   GrblError apply_feed();
   GrblError apply_spindle_and_dwell(LinePlan& plan);
   GrblError apply_non_modal(LinePlan& plan);
+  GrblError set_coordinate_system(LinePlan& plan);
+  void go_to_stored_position(LinePlan& plan, bool g28);
+  GrblError set_g92_offset();
+  void apply_feed_to_motion(LinePlan& plan, CommandCode mode);
+  GrblError apply_tool_length();
   GrblError apply_motion(LinePlan& plan);
   GrblError plan_arc(Motion& motion);
   GrblError apply_arc_turns(Motion& motion);
@@ -63,6 +46,8 @@ class LineExecution {
   double system_offset_mm(int axis) const {
     return axis < kOffsetAxisCount ? state_.coordinates.system_offset_mm[state_.modal.coordinate_system][axis] : 0.0;
   }
+  /// G43.1's offset on Z, as Grbl adds it to absolute targets and work offsets (G10 L20, G92).
+  double tool_length_mm(int axis) const { return axis == kAxisZ ? state_.modal.tool_length_offset_mm : 0.0; }
   void use(uint32_t letters) { used_words_ |= (block_.words_present & letters); }
   void target_mm(bool machine_coordinates, double (&out)[kAxisCount]) const;
   Motion& add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]);
@@ -133,13 +118,14 @@ void LineExecution::target_mm(bool machine_coordinates, double (&out)[kAxisCount
     } else if (relative) {
       out[axis] = state_.position_mm[axis] + axis_mm(axis);
     } else {
-      out[axis] = axis_mm(axis) + system_offset_mm(axis) + state_.g92_mm[axis];
+      out[axis] = axis_mm(axis) + system_offset_mm(axis) + state_.g92_mm[axis] + tool_length_mm(axis);
     }
   }
 }
 
 Motion& LineExecution::add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]) {
   Motion& motion = plan.motions[plan.motion_count++];
+  motion = Motion{};
   motion.kind = kind;
   for (int axis = 0; axis < kAxisCount; ++axis) {
     motion.start_mm[axis] = state_.position_mm[axis];
@@ -158,39 +144,10 @@ GrblError LineExecution::apply_non_modal(LinePlan& plan) {
   }
   axis_words_taken_ = owns_axes;
   if (owns_axes) use(kAxisWords);
-  const bool has_axes = (block_.words_present & kAxisWords) != 0;
   switch (code) {
-    case 100: {  // G10 L2 / L20: set a coordinate system's offset
-      if (!block_.has_word('L') || !block_.has_word('P')) return GrblError::kValueWordMissing;
-      use(letter_bit('L') | letter_bit('P'));
-      const double l = block_.word('L');
-      const double p = block_.word('P');
-      if (l != 2.0 && l != 20.0) return GrblError::kUnsupportedCommand;
-      if (p != floor(p)) return GrblError::kCommandNeedsInteger;
-      if (p > CoordinateData::kSystemCount) return GrblError::kUnsupportedCoordinateSystem;
-      if (!has_axes) return GrblError::kNoAxisWords;
-      const int system = p == 0.0 ? state_.modal.coordinate_system : static_cast<int>(p) - 1;
-      for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
-        if (!has_axis(axis)) continue;
-        double& offset = state_.coordinates.system_offset_mm[system][axis];
-        offset = (l == 2.0) ? axis_mm(axis) : state_.position_mm[axis] - state_.g92_mm[axis] - axis_mm(axis);
-      }
-      plan.coordinates_changed = true;
-      break;
-    }
+    case 100: return set_coordinate_system(plan);
     case 280:
-    case 300: {  // G28 / G30: rapid through the optional intermediate point to the stored one
-      double end[kAxisCount];
-      if (has_axes) {
-        target_mm(false, end);
-        add_motion(plan, MotionKind::kRapid, end);
-      }
-      const double* stored = code == 280 ? state_.coordinates.g28_position_mm : state_.coordinates.g30_position_mm;
-      for (int axis = 0; axis < kAxisCount; ++axis) end[axis] = state_.position_mm[axis];
-      for (int axis = 0; axis < kOffsetAxisCount; ++axis) end[axis] = stored[axis];
-      add_motion(plan, MotionKind::kRapid, end);
-      break;
-    }
+    case 300: go_to_stored_position(plan, code == 280); break;
     case 281:
     case 301: {  // G28.1 / G30.1: remember the current position
       double* stored = code == 281 ? state_.coordinates.g28_position_mm : state_.coordinates.g30_position_mm;
@@ -198,18 +155,78 @@ GrblError LineExecution::apply_non_modal(LinePlan& plan) {
       plan.coordinates_changed = true;
       break;
     }
-    case 920:  // G92: the current position becomes the given work coordinates
-      if (!has_axes) return GrblError::kNoAxisWords;
-      for (int axis = 0; axis < kAxisCount; ++axis) {
-        if (has_axis(axis)) state_.g92_mm[axis] = state_.position_mm[axis] - system_offset_mm(axis) - axis_mm(axis);
-      }
-      break;
+    case 920: return set_g92_offset();
     case 921:  // G92.1
       for (double& offset : state_.g92_mm) offset = 0.0;
       break;
     default:  // G4 (handled with the dwell), G53 (with the motion)
       break;
   }
+  return GrblError::kOk;
+}
+
+// G10 L2 / L20: set a coordinate system's offset (L2: the value; L20: so the current position
+// reads the value).
+GrblError LineExecution::set_coordinate_system(LinePlan& plan) {
+  if (!block_.has_word('L') || !block_.has_word('P')) return GrblError::kValueWordMissing;
+  use(letter_bit('L') | letter_bit('P'));
+  const double l = block_.word('L');
+  const double p = block_.word('P');
+  if (l != 2.0 && l != 20.0) return GrblError::kUnsupportedCommand;
+  if (p != floor(p)) return GrblError::kCommandNeedsInteger;
+  if (p > CoordinateData::kSystemCount) return GrblError::kUnsupportedCoordinateSystem;
+  if ((block_.words_present & kAxisWords) == 0) return GrblError::kNoAxisWords;
+  const int system = p == 0.0 ? state_.modal.coordinate_system : static_cast<int>(p) - 1;
+  for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
+    if (!has_axis(axis)) continue;
+    double& offset = state_.coordinates.system_offset_mm[system][axis];
+    offset = (l == 2.0) ? axis_mm(axis)
+                        : state_.position_mm[axis] - state_.g92_mm[axis] - axis_mm(axis) - tool_length_mm(axis);
+  }
+  plan.coordinates_changed = true;
+  return GrblError::kOk;
+}
+
+// G28 / G30: rapid through the optional intermediate point to the stored one.
+void LineExecution::go_to_stored_position(LinePlan& plan, bool g28) {
+  double end[kAxisCount];
+  if ((block_.words_present & kAxisWords) != 0) {
+    target_mm(false, end);
+    add_motion(plan, MotionKind::kRapid, end);
+  }
+  const double* stored = g28 ? state_.coordinates.g28_position_mm : state_.coordinates.g30_position_mm;
+  for (int axis = 0; axis < kAxisCount; ++axis) end[axis] = state_.position_mm[axis];
+  for (int axis = 0; axis < kOffsetAxisCount; ++axis) end[axis] = stored[axis];
+  add_motion(plan, MotionKind::kRapid, end);
+}
+
+// G92: the current position becomes the given work coordinates.
+GrblError LineExecution::set_g92_offset() {
+  if ((block_.words_present & kAxisWords) == 0) return GrblError::kNoAxisWords;
+  for (int axis = 0; axis < kAxisCount; ++axis) {
+    if (!has_axis(axis)) continue;
+    state_.g92_mm[axis] = state_.position_mm[axis] - system_offset_mm(axis) - axis_mm(axis) - tool_length_mm(axis);
+  }
+  return GrblError::kOk;
+}
+
+// G43.1 Z<offset> / G49, as Grbl 1.1: an axis command of its own (no motion or G10/G28/G30/G92
+// beside it: error:24), G43.1 with exactly the Z word (error:37 otherwise).
+GrblError LineExecution::apply_tool_length() {
+  if (!block_.has_g(GGroup::kToolLength)) return GrblError::kOk;
+  const bool motion = block_.has_g(GGroup::kMotion) && block_.g_code(GGroup::kMotion) != 800;
+  const CommandCode non_modal = block_.has_g(GGroup::kNonModal) ? block_.g_code(GGroup::kNonModal) : 0;
+  const bool axis_command = non_modal == 100 || non_modal == 280 || non_modal == 300 || non_modal == 920;
+  if (motion || axis_command) return GrblError::kAxisCommandConflict;
+  axis_words_taken_ = true;
+  state_.modal.tool_length_dynamic = block_.g_code(GGroup::kToolLength) == 431;
+  if (!state_.modal.tool_length_dynamic) {
+    state_.modal.tool_length_offset_mm = 0.0;
+    return GrblError::kOk;
+  }
+  if ((block_.words_present & kAxisWords) != letter_bit('Z')) return GrblError::kG43DynamicAxisError;
+  use(letter_bit('Z'));
+  state_.modal.tool_length_offset_mm = axis_mm(kAxisZ);
   return GrblError::kOk;
 }
 
@@ -263,6 +280,7 @@ GrblError LineExecution::apply_motion(LinePlan& plan) {
                                                         : state_.modal.feed_mm_per_min <= 0.0;
     if (feed_missing) return GrblError::kUndefinedFeedRate;
   }
+  if ((mode == 20 || mode == 30) && !has_axes) return GrblError::kNoAxisWords;  // Grbl: before error:32
   if (mode == 20 || mode == 30) {
     double end[kAxisCount];
     target_mm(false, end);
@@ -281,15 +299,19 @@ GrblError LineExecution::apply_motion(LinePlan& plan) {
     target_mm(absolute_override, end);
     add_motion(plan, mode == 0 ? MotionKind::kRapid : MotionKind::kLinear, end);
   }
-  if (plan.motion_count > 0 && mode != 0) {
-    Motion& motion = plan.motions[plan.motion_count - 1];
-    if (state_.modal.inverse_time) {
-      motion.duration_min = 1.0 / inverse_time_f_;
-    } else {
-      motion.feed_mm_per_min = state_.modal.feed_mm_per_min;
-    }
-  }
+  apply_feed_to_motion(plan, mode);
   return GrblError::kOk;
+}
+
+// A feed motion (G1, G2, G3) takes the feed in force, or under G93 its duration.
+void LineExecution::apply_feed_to_motion(LinePlan& plan, CommandCode mode) {
+  if (plan.motion_count == 0 || mode == 0) return;
+  Motion& motion = plan.motions[plan.motion_count - 1];
+  if (state_.modal.inverse_time) {
+    motion.duration_min = 1.0 / inverse_time_f_;
+  } else {
+    motion.feed_mm_per_min = state_.modal.feed_mm_per_min;
+  }
 }
 
 void LineExecution::apply_program_flow(LinePlan& plan) {
@@ -303,6 +325,7 @@ GrblError LineExecution::run(LinePlan& plan) {
   apply_modes();
   GrblError error = apply_feed();
   if (error == GrblError::kOk) error = apply_spindle_and_dwell(plan);
+  if (error == GrblError::kOk) error = apply_tool_length();
   if (error == GrblError::kOk) error = apply_non_modal(plan);
   if (error == GrblError::kOk) error = apply_motion(plan);
   if (error != GrblError::kOk) return error;
@@ -316,54 +339,54 @@ GrblError LineExecution::run(LinePlan& plan) {
 
 }  // namespace
 
-GrblError GcodeInterpreter::execute(const GcodeBlock& block, GcodeSink& sink) {
-  MachineState next{modal_, coordinates_, {}, {}};
-  for (int axis = 0; axis < kAxisCount; ++axis) {
-    next.g92_mm[axis] = g92_offset_mm_[axis];
-    next.position_mm[axis] = position_mm_[axis];
-  }
-  LinePlan plan;
-  LineExecution line(block, next);
-  const GrblError error = line.run(plan);
-  if (error != GrblError::kOk) return error;
+GrblError GcodeInterpreter::plan(const GcodeBlock& block, LinePlan& plan) const {
+  plan.clear_requests();
+  plan.next = state_;
+  LineExecution line(block, plan.next);
+  return line.run(plan);
+}
 
-  modal_ = next.modal;
-  coordinates_ = next.coordinates;
-  for (int axis = 0; axis < kAxisCount; ++axis) {
-    g92_offset_mm_[axis] = next.g92_mm[axis];
-    position_mm_[axis] = next.position_mm[axis];
-  }
-  if (plan.spindle) sink.on_spindle(modal_.spindle, modal_.spindle_speed);
-  if (plan.coolant) sink.on_coolant(modal_.coolant);
-  if (plan.dwell) sink.on_dwell(plan.dwell_s);
-  for (int i = 0; i < plan.motion_count; ++i) sink.on_motion(plan.motions[i]);
-  if (plan.coordinates_changed) sink.on_coordinate_data_changed();
-  if (plan.program_flow) {
-    const CommandCode code = plan.program_flow_code;
-    if (code == 20 || code == 300) reset_modal_for_program_end();
-    sink.on_program_flow(code);
-  }
-  return GrblError::kOk;
+void GcodeInterpreter::commit(const LinePlan& plan, GcodeSink* sink) {
+  state_ = plan.next;
+  const bool program_end = plan.program_flow && (plan.program_flow_code == 20 || plan.program_flow_code == 300);
+  if (program_end) reset_modal_for_program_end();
+  if (sink == nullptr) return;
+  if (plan.spindle) sink->on_spindle(plan.next.modal.spindle, plan.next.modal.spindle_speed);
+  if (plan.coolant) sink->on_coolant(plan.next.modal.coolant);
+  if (plan.dwell) sink->on_dwell(plan.dwell_s);
+  for (int i = 0; i < plan.motion_count; ++i) sink->on_motion(plan.motions[i]);
+  if (plan.coordinates_changed) sink->on_coordinate_data_changed();
+  if (plan.program_flow) sink->on_program_flow(plan.program_flow_code);
+}
+
+GrblError GcodeInterpreter::execute(const GcodeBlock& block, GcodeSink& sink) {
+  LinePlan line;
+  const GrblError error = plan(block, line);
+  if (error == GrblError::kOk) commit(line, &sink);
+  return error;
 }
 
 double GcodeInterpreter::work_offset_mm(int axis) const {
-  const double system = axis < kOffsetAxisCount ? coordinates_.system_offset_mm[modal_.coordinate_system][axis] : 0.0;
-  return system + g92_offset_mm_[axis];
+  const double system =
+      axis < kOffsetAxisCount ? state_.coordinates.system_offset_mm[state_.modal.coordinate_system][axis] : 0.0;
+  const double tool_length = axis == kAxisZ ? state_.modal.tool_length_offset_mm : 0.0;
+  return system + state_.g92_mm[axis] + tool_length;
 }
 
 void GcodeInterpreter::set_position_mm(const double (&machine_mm)[kAxisCount]) {
-  for (int axis = 0; axis < kAxisCount; ++axis) position_mm_[axis] = machine_mm[axis];
+  for (int axis = 0; axis < kAxisCount; ++axis) state_.position_mm[axis] = machine_mm[axis];
 }
 
 void GcodeInterpreter::reset_modal_for_program_end() {
-  modal_.motion = 10;
-  modal_.plane = 170;
-  modal_.absolute = true;
-  modal_.inverse_time = false;
-  modal_.coordinate_system = 0;
-  modal_.spindle = 50;
-  modal_.coolant = 90;
-  modal_.extruder_relative = false;
+  ModalState& modal = state_.modal;
+  modal.motion = 10;
+  modal.plane = 170;
+  modal.absolute = true;
+  modal.inverse_time = false;
+  modal.coordinate_system = 0;
+  modal.spindle = 50;
+  modal.coolant = 90;
+  modal.extruder_relative = false;
 }
 
 }  // namespace stepdance::gcode

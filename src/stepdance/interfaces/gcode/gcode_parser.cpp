@@ -19,6 +19,12 @@ class Cursor {
     return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
   }
   void advance() { ++pos_; }
+  /// True when the next character directly follows a digit or a point, nothing between them.
+  bool follows_number() const {
+    if (pos_ == 0 || pos_ >= length_) return false;
+    const char c = text_[pos_ - 1];
+    return (c >= '0' && c <= '9') || c == '.';
+  }
 
  private:
   void skip_insignificant() {
@@ -89,7 +95,8 @@ constexpr CommandEntry kGCommands[] = {
     {210, uint8_t(GGroup::kUnits)},      {280, uint8_t(GGroup::kNonModal)},
     {281, uint8_t(GGroup::kNonModal)},   {300, uint8_t(GGroup::kNonModal)},
     {301, uint8_t(GGroup::kNonModal)},   {400, uint8_t(GGroup::kCutterComp)},
-    {490, uint8_t(GGroup::kToolLength)}, {530, uint8_t(GGroup::kNonModal)},
+    {431, uint8_t(GGroup::kToolLength)}, {490, uint8_t(GGroup::kToolLength)},
+    {530, uint8_t(GGroup::kNonModal)},
     {540, uint8_t(GGroup::kCoordSystem)}, {550, uint8_t(GGroup::kCoordSystem)},
     {560, uint8_t(GGroup::kCoordSystem)}, {570, uint8_t(GGroup::kCoordSystem)},
     {580, uint8_t(GGroup::kCoordSystem)}, {590, uint8_t(GGroup::kCoordSystem)},
@@ -173,7 +180,7 @@ GrblError check_value(char letter, double value) {
   const bool must_be_positive =
       letter == 'F' || letter == 'N' || letter == 'P' || letter == 'S' || letter == 'T' || letter == 'L';
   if (must_be_positive && value < 0.0) return GrblError::kNegativeValue;
-  if (letter == 'N' && value > 9999999.0) return GrblError::kInvalidLineNumber;
+  if (letter == 'N' && value > 10000000.0) return GrblError::kInvalidLineNumber;  // Grbl's MAX_LINE_NUMBER
   if (letter == 'T' && value > 255.0) return GrblError::kToolNumberTooLarge;
   return GrblError::kOk;
 }
@@ -214,11 +221,15 @@ GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const Par
     return cursor.peek() == 0 ? GrblError::kOk : GrblError::kExpectedCommandLetter;
   }
   for (char letter = cursor.peek(); letter != 0; letter = cursor.peek()) {
+    // An E written against the number before it is that number's exponent (`X1e1`): Grbl reads
+    // no exponents, so it refuses the line (error:20 for the E, error:2 if no number follows).
+    const bool exponent = letter == 'E' && cursor.follows_number();
     cursor.advance();
     if (letter == '/') continue;  // block delete is not supported: the line runs
     if (letter < 'A' || letter > 'Z') return GrblError::kExpectedCommandLetter;
     double value = 0.0;
     if (!read_number(cursor, value)) return GrblError::kBadNumberFormat;
+    if (exponent) return GrblError::kUnsupportedCommand;
     GrblError error = GrblError::kOk;
     if (letter == 'M' && options.accept_printer_codes && is_printer_housekeeping(value)) {
       out = GcodeBlock{};

@@ -20,7 +20,10 @@ struct ParserOptions {
 /// comments, a leading `/` and a lone `%` are skipped; letters are case-insensitive. Checks
 /// everything that needs no machine state: number syntax (magnitude below 10^12), known commands,
 /// one command per modal group, no repeated value word, N/F/P/S/T/L not negative,
-/// N ≤ 9,999,999, T ≤ 255. On error, `out` is unspecified and nothing else changes.
+/// N ≤ 10,000,000, T ≤ 255. Numbers have no exponent: an E written against the number before it
+/// (`X1e1`, `X1E1`) is read as one and the line refused as Grbl refuses it (error:20); an E word
+/// (the extruder) needs a blank or a comment before it (`X1 E1`). On error, `out` is unspecified
+/// and nothing else changes.
 /// Context: loop (pure function).
 GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const ParserOptions& options = {});
 

@@ -30,6 +30,8 @@ struct ModalState {
   double feed_mm_per_min = 0.0;  ///< F in force (G94); 0 = never set
   double spindle_speed = 0.0;   ///< S in force
   uint8_t tool = 0;             ///< T in force
+  bool tool_length_dynamic = false;  ///< G43.1 (true) / G49
+  double tool_length_offset_mm = 0.0;  ///< G43.1's Z offset, added to absolute Z targets
 };
 
 }  // namespace stepdance::gcode

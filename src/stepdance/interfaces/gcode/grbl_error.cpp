@@ -11,6 +11,7 @@ const char* describe(GrblError error) {
     case GrblError::kInvalidDollarStatement: return "unknown $ command";
     case GrblError::kNegativeValue: return "value must not be negative";
     case GrblError::kHomingDisabled: return "homing is not configured";
+    case GrblError::kStepPulseTooShort: return "step pulse must be at least 3 microseconds";
     case GrblError::kSettingReadFail: return "stored settings unreadable, defaults restored";
     case GrblError::kNotIdle: return "command needs the machine idle";
     case GrblError::kLocked: return "locked: clear the alarm first ($X)";
@@ -35,6 +36,7 @@ const char* describe(GrblError error) {
     case GrblError::kArcRadiusError: return "arc radius cannot reach the end point";
     case GrblError::kNoInPlaneOffsetWords: return "arc needs a centre offset in the plane";
     case GrblError::kUnusedValueWords: return "value words not used by any command";
+    case GrblError::kG43DynamicAxisError: return "G43.1 needs a Z word and no other axis";
     case GrblError::kToolNumberTooLarge: return "tool number above 255";
   }
   return "unknown error";

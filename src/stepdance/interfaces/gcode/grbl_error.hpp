@@ -13,7 +13,8 @@ enum class GrblError : uint8_t {
   kBadNumberFormat = 2,            ///< a letter without a number, or a malformed number
   kInvalidDollarStatement = 3,     ///< a `$` system command we do not know
   kNegativeValue = 4,              ///< F, N, P, S, T or L given a negative value
-  kHomingDisabled = 5,             ///< `$H` while the sketch has no homing configured
+  kHomingDisabled = 5,             ///< `$H` while `$22` is off or the sketch has no homing
+  kStepPulseTooShort = 6,          ///< `$0` below Grbl's minimum of 3 µs
   kSettingReadFail = 7,            ///< stored settings could not be read (defaults restored)
   kNotIdle = 8,                    ///< `$` command that needs the machine idle
   kLocked = 9,                     ///< G-code refused while in alarm or jogging
@@ -28,7 +29,7 @@ enum class GrblError : uint8_t {
   kAxisCommandConflict = 24,       ///< two commands in one line both want the axis words
   kRepeatedWord = 25,              ///< the same value word twice in one line
   kNoAxisWords = 26,               ///< a command that needs axis words got none
-  kInvalidLineNumber = 27,         ///< N outside 0..9,999,999
+  kInvalidLineNumber = 27,         ///< N outside 0..10,000,000
   kValueWordMissing = 28,          ///< a command's required value word (P, L, ...) is absent
   kUnsupportedCoordinateSystem = 29,  ///< G59.1, G59.2, G59.3
   kG53NeedsG0OrG1 = 30,            ///< G53 with a motion mode other than G0/G1
@@ -38,6 +39,7 @@ enum class GrblError : uint8_t {
   kArcRadiusError = 34,            ///< R form: the radius cannot reach the end point
   kNoInPlaneOffsetWords = 35,      ///< G2/G3 IJK form without an offset in the selected plane
   kUnusedValueWords = 36,          ///< value words that no command in the line used
+  kG43DynamicAxisError = 37,       ///< G43.1 without exactly one Z word
   kToolNumberTooLarge = 38,        ///< T beyond 255
 };
 

@@ -9,59 +9,8 @@ namespace {
 constexpr size_t kLargestReplyBytes = 640;  // `$$` and `$#` with their `ok`
 constexpr size_t kStatusReportBytes = 164;  // the longest report and its line end
 constexpr int kLinesPerPoll = 4;            // bounds the time one loop pass spends here
+constexpr uint8_t kAlarmSoftLimit = 2;      // Grbl's "soft limit": a target outside the travel
 constexpr uint8_t kAlarmHomingFailed = 9;   // Grbl's "homing fail: could not find limit switch"
-
-/// Holds a line's requests until its travel check passes, then hands them on in order.
-class DeferredRequests final : public GcodeSink {
- public:
-  void on_motion(const Motion& motion) override {
-    if (motion_count_ < kMaxMotions) motions_[motion_count_++] = motion;
-  }
-  void on_dwell(double seconds) override {
-    dwell_ = true;
-    dwell_s_ = seconds;
-  }
-  void on_spindle(CommandCode code, double speed) override {
-    spindle_ = code;
-    spindle_speed_ = speed;
-  }
-  void on_coolant(CommandCode code) override { coolant_ = code; }
-  void on_program_flow(CommandCode code) override { flow_ = code; }
-  void on_coordinate_data_changed() override { coordinates_changed_ = true; }
-
-  int motion_count() const { return motion_count_; }
-  const Motion& motion(int i) const { return motions_[i]; }
-
-  /// Replays in the interpreter's order: spindle, coolant, dwell, motions, data, flow.
-  void replay(GcodeSink& sink) const {
-    if (spindle_ != 0xFFFF) sink.on_spindle(spindle_, spindle_speed_);
-    if (coolant_ != 0xFFFF) sink.on_coolant(coolant_);
-    if (dwell_) sink.on_dwell(dwell_s_);
-    for (int i = 0; i < motion_count_; ++i) sink.on_motion(motions_[i]);
-    if (coordinates_changed_) sink.on_coordinate_data_changed();
-    if (flow_ != 0xFFFF) sink.on_program_flow(flow_);
-  }
-
- private:
-  static constexpr int kMaxMotions = 2;
-  Motion motions_[kMaxMotions];
-  int motion_count_ = 0;
-  bool dwell_ = false;
-  double dwell_s_ = 0.0;
-  CommandCode spindle_ = 0xFFFF;
-  double spindle_speed_ = 0.0;
-  CommandCode coolant_ = 0xFFFF;
-  CommandCode flow_ = 0xFFFF;
-  bool coordinates_changed_ = false;
-};
-
-const char* skip_blanks(const char* text, size_t& length) {
-  while (length > 0 && (*text == ' ' || *text == '\t')) {
-    ++text;
-    --length;
-  }
-  return text;
-}
 
 }  // namespace
 
@@ -77,25 +26,44 @@ void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileSt
 void GrblProtocol::poll() {
   if (stream_ == nullptr) return;
   flush_replies();
-  receiver_.pump(*stream_, *this);
+  if (soft_limit_ == SoftLimit::kLocked) {
+    receiver_.discard(*stream_, *this);  // as Grbl's critical-event loop: only a reset is heard
+  } else {
+    receiver_.pump(*stream_, *this);
+  }
   if (reset_requested_) soft_reset();
   if (status_requested_ && reply_space() >= kStatusReportBytes) {
     status_requested_ = false;
     report_status();
   }
-  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done() && answer_line_when_taken(); ++i) {
-    if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) break;
-    ReceivedLine line;
-    if (!receiver_.next_line(line)) break;
-    execute_line(line);
-  }
+  if (soft_limit_ == SoftLimit::kStopping) finish_soft_limit_stop();
+  serve_lines();
   flush_replies();
 }
 
+void GrblProtocol::serve_lines() {
+  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done() && answer_line_when_taken(); ++i) {
+    if (soft_limit_ != SoftLimit::kNone) return;
+    if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) return;
+    ReceivedLine line;
+    if (!receiver_.next_line(line)) return;
+    execute_line(line);
+    receiver_.take_line();
+  }
+}
+
 void GrblProtocol::on_realtime(uint8_t byte) {
+  if (byte == 0x18) {
+    reset_requested_ = true;
+    return;
+  }
+  if (soft_limit_ != SoftLimit::kNone) {
+    // Stopping for a soft limit: status is still answered; locked: nothing but the reset is.
+    if (byte == '?' && soft_limit_ == SoftLimit::kStopping) status_requested_ = true;
+    return;
+  }
   switch (byte) {
     case '?': status_requested_ = true; break;
-    case 0x18: reset_requested_ = true; break;
     case '!':
     case 0x84:  // safety door: we have no door input, so it acts as a feed hold
       if (machine_->motion_state() == MotionState::kJog) {
@@ -140,17 +108,21 @@ void GrblProtocol::handle_override(uint8_t byte) {
   reports_until_overrides_ = 0;
 }
 
+// Grbl 1.1's order: an over-long line, an empty one, a `$` command, a lock, then G-code.
 void GrblProtocol::execute_line(const ReceivedLine& line) {
   GrblError error = GrblError::kOk;
-  size_t length = line.length;
-  const char* text = skip_blanks(line.text, length);
   if (line.overflowed) {
     error = GrblError::kLineOverflow;
-  } else if (length > 0 && text[0] == '$') {
-    error = execute_system(text + 1, length - 1);
+  } else if (line.length == 0) {
+    error = GrblError::kOk;  // empty or comment only: answered, for the sender's count
+  } else if (line.text[0] == '$') {
+    error = execute_system(line.text + 1, line.length - 1);
+  } else if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) {
+    error = GrblError::kLocked;
   } else {
-    error = execute_gcode(text, length);
+    error = execute_gcode(line.text, line.length);
   }
+  if (soft_limit_ != SoftLimit::kNone) return;  // the alarm answers for the line, as on Grbl
   if (error == GrblError::kOk) {
     // `$H` is answered when its routine ends, a line still being taken once it has been.
     if (!homing_reply_pending_ && machine_->line_in_progress()) ok_owed_ = true;
@@ -169,18 +141,36 @@ GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
   if (syntax != GrblError::kOk) return syntax;
   const bool empty = block.words_present == 0 && block.g_groups_present == 0 && block.m_groups_present == 0;
   if (empty) return GrblError::kOk;
-  if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) return GrblError::kLocked;
   sync_position_when_idle();
-  GcodeInterpreter trial = interpreter_;
-  DeferredRequests requests;
-  const GrblError error = trial.execute(block, requests);
+  LinePlan plan;
+  const GrblError error = interpreter_.plan(block, plan);
   if (error != GrblError::kOk) return error;
-  for (int i = 0; i < requests.motion_count(); ++i) {
-    if (!within_travel(requests.motion(i))) return GrblError::kTravelExceeded;
+  for (int i = 0; i < plan.motion_count; ++i) {
+    if (within_travel(plan.motions[i])) continue;
+    begin_soft_limit_alarm();  // nothing of the line runs, and nothing after it until a reset
+    return GrblError::kOk;
   }
-  interpreter_ = trial;
-  if (!check_mode_) requests.replay(*machine_);
+  interpreter_.commit(plan, check_mode_ ? nullptr : machine_);
   return GrblError::kOk;
+}
+
+// A target outside the travel with soft limits on: as Grbl's limits_soft_check, a moving
+// machine first comes to a controlled stop (feed hold), then everything queued is dropped and
+// ALARM:2 raised; the link then hears nothing but a reset, after which `$X` or `$H` unlocks.
+void GrblProtocol::begin_soft_limit_alarm() {
+  soft_limit_ = SoftLimit::kStopping;
+  if (machine_->motion_state() == MotionState::kRun) machine_->feed_hold();
+  finish_soft_limit_stop();
+}
+
+void GrblProtocol::finish_soft_limit_stop() {
+  const MotionState state = machine_->motion_state();
+  const bool stopped = state == MotionState::kIdle || (state == MotionState::kHolding && machine_->hold_complete());
+  if (!stopped) return;
+  machine_->soft_reset();  // at rest: drops the queue, position kept
+  soft_limit_ = SoftLimit::kLocked;
+  raise_alarm(kAlarmSoftLimit);
+  send_text("[MSG:Reset to continue]");
 }
 
 bool GrblProtocol::within_travel(const Motion& motion) const {
@@ -233,6 +223,7 @@ void GrblProtocol::raise_alarm(uint8_t code) {
 
 void GrblProtocol::soft_reset() {
   reset_requested_ = false;
+  soft_limit_ = SoftLimit::kNone;
   homing_reply_pending_ = false;  // the reset answers for the `$H` line, as on Grbl
   ok_owed_ = false;               // and for a line whose arc it abandons
   const bool was_moving = machine_->soft_reset();
@@ -255,31 +246,8 @@ void GrblProtocol::send_text(const char* text) {
   send_line(line);
 }
 
-void GrblProtocol::send_line(const TextWriter& line) {
-  const size_t length = line.size();
-  if (length + 2 > reply_space()) {  // callers reserve room first; never a torn line
-    ++replies_dropped_;
-    return;
-  }
-  for (size_t i = 0; i < length + 2; ++i) {
-    const char c = i < length ? line.c_str()[i] : (i == length ? '\r' : '\n');
-    replies_[(reply_head_ + reply_count_) % kReplyBufferBytes] = c;
-    ++reply_count_;
-  }
-}
+void GrblProtocol::send_line(const TextWriter& line) { replies_.send_line(line); }
 
-void GrblProtocol::flush_replies() {
-  while (reply_count_ > 0) {
-    const size_t space = stream_->write_space();
-    if (space == 0) return;
-    size_t chunk = kReplyBufferBytes - reply_head_;
-    if (chunk > reply_count_) chunk = reply_count_;
-    if (chunk > space) chunk = space;
-    const size_t written = stream_->write_bytes(reinterpret_cast<const uint8_t*>(replies_ + reply_head_), chunk);
-    if (written == 0) return;
-    reply_head_ = (reply_head_ + written) % kReplyBufferBytes;
-    reply_count_ -= written;
-  }
-}
+void GrblProtocol::flush_replies() { replies_.flush(*stream_); }
 
 }  // namespace stepdance::gcode

@@ -11,6 +11,8 @@
 #include "stepdance/interfaces/gcode/grbl_machine.hpp"
 #include "stepdance/interfaces/gcode/grbl_receiver.hpp"
 #include "stepdance/interfaces/gcode/grbl_settings.hpp"
+#include "stepdance/interfaces/link/command_table.hpp"
+#include "stepdance/interfaces/link/reply_ring.hpp"
 #include "stepdance/core/text_writer.hpp"
 
 namespace stepdance::gcode {
@@ -18,8 +20,10 @@ namespace stepdance::gcode {
 /// Speaks Grbl 1.1 so G-code senders work unmodified. Each poll() reads what the stream has
 /// (realtime bytes act at once, even while the motion queue is full), executes complete lines
 /// while the machine has room, and replies `ok` or `error:N` only after a line is validated.
-/// Replies wait in a fixed 1 KiB buffer; a line is taken only when its largest reply fits, so
-/// nothing is torn or dropped when the host reads slowly. Context: loop only.
+/// Replies wait in a 1 KiB link::ReplyRing; a line is taken only when its largest reply fits, so
+/// nothing is torn or dropped when the host reads slowly. A line goes one way: the receiver's
+/// line, the parser, the interpreter's plan (nothing changed yet), the travel check, the commit
+/// that hands its requests to the machine. Context: loop only.
 class GrblProtocol final : private RealtimeHandler {
  public:
   /// Starts the link: loads the settings the host stored earlier (if a store is given), sends
@@ -42,16 +46,51 @@ class GrblProtocol final : private RealtimeHandler {
   bool answer_line_when_taken() { return !ok_owed_ || send_owed_ok(); }
 
   /// Replies that found no room (should stay 0: lines are taken only when their reply fits).
-  uint32_t replies_dropped() const { return replies_dropped_; }
+  uint32_t replies_dropped() const { return replies_.dropped(); }
 
   static constexpr size_t kReplyBufferBytes = 1024;
 
  private:
   void on_realtime(uint8_t byte) override;
   void handle_override(uint8_t byte);
+  /// Grbl's states as its `$` commands tell them apart (one at a time, alarm first).
+  enum class LinkState : uint8_t { kIdle, kAlarm, kCheck, kRun, kHold, kJog };
+  /// A soft-limit violation's course: the machine stops, ALARM:2, then only a reset is heard.
+  enum class SoftLimit : uint8_t { kNone, kStopping, kLocked };
+
+  LinkState link_state();
+  void serve_lines();
   void execute_line(const ReceivedLine& line);
   GrblError execute_gcode(const char* text, size_t length);
+  void begin_soft_limit_alarm();
+  void finish_soft_limit_stop();
+  /// A `$` command: its handler gets what follows the command letter; `states` (a bit per
+  /// LinkState) are those it runs in, error:8 in the others.
+  struct DollarCommand {
+    GrblError (GrblProtocol::*run)(const char* rest, size_t length) = nullptr;
+    uint8_t states = 0;
+  };
+  using DollarTable = link::CommandTable<DollarCommand, 11>;
+  static constexpr uint8_t state_bit(LinkState state) { return static_cast<uint8_t>(1u << static_cast<uint8_t>(state)); }
+  static constexpr uint8_t kAnyState = 0xFF;
+  static constexpr uint8_t kIdleOrJog = (1u << static_cast<uint8_t>(LinkState::kIdle)) |
+                                        (1u << static_cast<uint8_t>(LinkState::kJog));
+  static constexpr uint8_t kIdleOrAlarm = (1u << static_cast<uint8_t>(LinkState::kIdle)) |
+                                          (1u << static_cast<uint8_t>(LinkState::kAlarm));
+  static const DollarTable kDollarCommands;
+
   GrblError execute_system(const char* text, size_t length);
+  GrblError dollar_jog(const char* rest, size_t length);
+  GrblError dollar_settings(const char* rest, size_t length);
+  GrblError dollar_parser_state(const char* rest, size_t length);
+  GrblError dollar_check_mode(const char* rest, size_t length);
+  GrblError dollar_unlock(const char* rest, size_t length);
+  GrblError dollar_parameters(const char* rest, size_t length);
+  GrblError dollar_homing(const char* rest, size_t length);
+  GrblError dollar_build_info(const char* rest, size_t length);
+  GrblError dollar_startup_lines(const char* rest, size_t length);
+  GrblError dollar_sleep(const char* rest, size_t length);
+  GrblError dollar_restore(const char* rest, size_t length);
   GrblError execute_jog(const char* text, size_t length);
   GrblError execute_setting_write(const char* text, size_t length);
   GrblError execute_restore(const char* text, size_t length);
@@ -65,9 +104,12 @@ class GrblProtocol final : private RealtimeHandler {
   void send_line(const TextWriter& line);
   void send_text(const char* text);
   void flush_replies();
-  size_t reply_space() const { return kReplyBufferBytes - reply_count_; }
+  size_t reply_space() const { return replies_.space(); }
 
   void report_status();
+  void append_position(TextWriter& line, const double (&offset)[kOffsetAxisCount]);
+  void append_buffer_and_feed(TextWriter& line);
+  void append_offsets_and_overrides(TextWriter& line, const double (&offset)[kOffsetAxisCount], bool busy);
   void report_welcome();
   void report_settings();
   void report_parameters();
@@ -83,6 +125,7 @@ class GrblProtocol final : private RealtimeHandler {
   GcodeInterpreter interpreter_;
   ParserOptions parser_options_;
   uint8_t alarm_ = 0;
+  SoftLimit soft_limit_ = SoftLimit::kNone;
   bool homing_reply_pending_ = false;  // `$H` is answered when its routine ends, as Grbl does
   bool ok_owed_ = false;               // a line's `ok`, sent once the machine has taken all of it
   bool check_mode_ = false;
@@ -94,10 +137,7 @@ class GrblProtocol final : private RealtimeHandler {
   uint8_t reports_until_wco_ = 0;
   uint8_t reports_until_overrides_ = 0;
   double last_wco_mm_[kOffsetAxisCount] = {};
-  char replies_[kReplyBufferBytes] = {};
-  size_t reply_head_ = 0;
-  size_t reply_count_ = 0;
-  uint32_t replies_dropped_ = 0;
+  link::ReplyRing<kReplyBufferBytes> replies_;
 };
 
 }  // namespace stepdance::gcode

@@ -1,4 +1,4 @@
-// Receive buffer and line assembly of the Grbl link.
+// Receive buffer and line assembly of the Grbl link, by the rules of Grbl 1.1's protocol loop.
 #include "stepdance/interfaces/gcode/grbl_receiver.hpp"
 
 namespace stepdance::gcode {
@@ -25,69 +25,80 @@ void GrblReceiver::pump(ByteStream& stream, RealtimeHandler& handler) {
   }
 }
 
-uint8_t GrblReceiver::pop() {
-  const uint8_t byte = ring_[head_];
-  head_ = (head_ + 1) % kBufferBytes;
-  --count_;
-  return byte;
-}
-
-void GrblReceiver::append(ReceivedLine& line, uint8_t byte) {
-  if (is_discarded_control_byte(byte)) return;
-  if (line.length < ReceivedLine::kMaxLength) {
-    line.text[line.length++] = static_cast<char>(byte);
-  } else {
-    line.overflowed = true;
+void GrblReceiver::discard(ByteStream& stream, RealtimeHandler& handler) {
+  for (int value = stream.read_byte(); value >= 0; value = stream.read_byte()) {
+    if (is_realtime_byte(static_cast<uint8_t>(value))) handler.on_realtime(static_cast<uint8_t>(value));
   }
-}
-
-bool GrblReceiver::has_line_end() const {
-  for (size_t i = 0; i < count_; ++i) {
-    const uint8_t byte = ring_[(head_ + i) % kBufferBytes];
-    if (byte == '\n' || byte == '\r') return true;
-  }
-  return false;
 }
 
 bool GrblReceiver::next_line(ReceivedLine& line) {
-  if (skip_lf_ && count_ > 0) {
-    if (ring_[head_] == '\n') pop();
-    skip_lf_ = false;
+  while (!line_.ready() && count_ > 0) {
+    const uint8_t byte = ring_[head_];
+    head_ = (head_ + 1) % kBufferBytes;
+    --count_;
+    if (byte == '\r' || byte == '\n') {
+      end_line(byte);
+    } else {
+      assemble(byte);
+    }
   }
-  // Without a line end, a full buffer can only be the start of an over-long line: move it out
-  // so the buffer keeps draining.
-  if (!has_line_end()) {
-    if (count_ < kBufferBytes) return false;
-    partial_active_ = true;
-    while (count_ > 0) append(partial_, pop());
-    return false;
-  }
-  if (partial_active_) {
-    line = partial_;
-  } else {
-    line = ReceivedLine{};
-  }
-  partial_ = ReceivedLine{};
-  partial_active_ = false;
-  for (uint8_t byte = pop(); byte != '\n' && byte != '\r'; byte = pop()) append(line, byte);
-  line.text[line.length] = '\0';
-  // The byte just taken was the line end: remember a CR so a following LF is not a new line.
-  const uint8_t end = ring_[(head_ + kBufferBytes - 1) % kBufferBytes];
-  skip_lf_ = (end == '\r');
-  if (skip_lf_ && count_ > 0 && ring_[head_] == '\n') {
-    pop();
-    skip_lf_ = false;
-  }
+  if (!line_.ready()) return false;
+  line.text = line_.text();
+  line.length = line_.length();
+  line.overflowed = overflowed_ || line_.overflowed();
   return true;
+}
+
+void GrblReceiver::end_line(uint8_t byte) {
+  line_.feed(byte);
+  in_parentheses_ = false;
+  in_semicolon_ = false;
+  blank_pending_ = false;
+}
+
+void GrblReceiver::take_line() {
+  line_.take();
+  characters_ = 0;
+  overflowed_ = false;
+}
+
+void GrblReceiver::assemble(uint8_t byte) {
+  if (in_parentheses_ || in_semicolon_ || overflowed_) {
+    if (byte == ')') in_parentheses_ = false;  // only a `( )` comment ends before the line does
+    return;
+  }
+  if (is_discarded_control_byte(byte)) {
+    blank_pending_ = true;
+  } else if (byte == '(') {
+    in_parentheses_ = true;
+    blank_pending_ = true;
+  } else if (byte == ';') {
+    in_semicolon_ = true;
+  } else if (byte != '/') {  // block delete is not supported: the character is ignored
+    store(byte);
+  }
+}
+
+void GrblReceiver::store(uint8_t byte) {
+  if (characters_ == ReceivedLine::kMaxLength) {
+    overflowed_ = true;  // the rest of the line is thrown away; its reply is error:11
+    return;
+  }
+  if (blank_pending_ && characters_ > 0 && line_.text()[0] != '$') line_.feed(' ');
+  blank_pending_ = false;
+  line_.feed((byte >= 'a' && byte <= 'z') ? static_cast<uint8_t>(byte - 'a' + 'A') : byte);
+  ++characters_;
 }
 
 void GrblReceiver::clear() {
   head_ = 0;
   count_ = 0;
   held_byte_ = -1;
-  skip_lf_ = false;
-  partial_ = ReceivedLine{};
-  partial_active_ = false;
+  line_.clear();
+  take_line();
+  in_parentheses_ = false;
+  in_semicolon_ = false;
+  blank_pending_ = false;
 }
 
 }  // namespace stepdance::gcode

@@ -49,10 +49,17 @@ void GrblProtocol::report_status() {
   } else {
     line.text(state_name(state, machine_->hold_complete()));
   }
-  double position[kAxisCount];
-  machine_->position_mm(position);
   double offset[kOffsetAxisCount];
   for (int axis = 0; axis < kOffsetAxisCount; ++axis) offset[axis] = interpreter_.work_offset_mm(axis);
+  append_position(line, offset);
+  append_buffer_and_feed(line);
+  append_offsets_and_overrides(line, offset, state != MotionState::kIdle);
+  send_line(line.character('>'));
+}
+
+void GrblProtocol::append_position(TextWriter& line, const double (&offset)[kOffsetAxisCount]) {
+  double position[kAxisCount];
+  machine_->position_mm(position);
   if (settings_.report_machine_position()) {
     line.text("|MPos:");
   } else {
@@ -60,6 +67,9 @@ void GrblProtocol::report_status() {
     line.text("|WPos:");
   }
   append_axes(line, position, kOffsetAxisCount);
+}
+
+void GrblProtocol::append_buffer_and_feed(TextWriter& line) {
   if (settings_.report_buffer_state()) {
     line.text("|Bf:").unsigned_number(machine_->queue_slots_free()).character(',').unsigned_number(
         static_cast<uint32_t>(receiver_.bytes_free()));
@@ -67,7 +77,10 @@ void GrblProtocol::report_status() {
   const double feed = machine_->feed_now_mm_per_min();
   const double speed = interpreter_.modal().spindle == 50 ? 0.0 : interpreter_.modal().spindle_speed;
   line.text("|FS:").fixed(settings_.report_inches() ? feed / kMmPerInch : feed, 0).character(',').fixed(speed, 0);
-  const bool busy = state != MotionState::kIdle;
+}
+
+// `WCO:` and `Ov:` at Grbl's refresh counts (see the constants above).
+void GrblProtocol::append_offsets_and_overrides(TextWriter& line, const double (&offset)[kOffsetAxisCount], bool busy) {
   for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
     if (offset[axis] != last_wco_mm_[axis]) reports_until_wco_ = 0;  // changed: report it now
   }
@@ -87,8 +100,6 @@ void GrblProtocol::report_status() {
     line.unsigned_number(rapid_override_percent_).character(',').unsigned_number(spindle_override_percent_);
     reports_until_overrides_ = (busy ? kOverridesEveryReportsBusy : kOverridesEveryReportsIdle) - 1;
   }
-  line.character('>');
-  send_line(line);
 }
 
 void GrblProtocol::report_settings() {
@@ -127,7 +138,10 @@ void GrblProtocol::report_parameters() {
   line.text("[G92:");
   append_axes(line, interpreter_.g92_offset_mm(), kOffsetAxisCount);
   send_line(line.character(']'));
-  send_text("[TLO:0.000]");
+  line.clear();
+  line.text("[TLO:");
+  append_axes(line, &interpreter_.modal().tool_length_offset_mm, 1);
+  send_line(line.character(']'));
   send_text("[PRB:0.000,0.000,0.000:0]");
 }
 
@@ -151,7 +165,7 @@ void GrblProtocol::report_parser_state() {
 }
 
 void GrblProtocol::report_build_info() {
-  send_text("[VER:1.1h.20190825:Stepdance]");
+  send_text("[VER:1.1h.20190830:Stepdance]");
   char storage[32];
   TextWriter line(storage, sizeof(storage));
   // No Grbl build options apply; then planner blocks and receive-buffer bytes, honestly.

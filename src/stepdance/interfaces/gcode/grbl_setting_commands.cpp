@@ -1,25 +1,53 @@
 // The Grbl link's settings commands (`$N=v`, `$RST=`) and the settings kept in the board's store.
-#include <string.h>
-
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
 #include "stepdance/interfaces/gcode/grbl_settings_store.hpp"
 
 namespace stepdance::gcode {
 
+namespace {
+
+/// Reads a number as Grbl's read_float does: [+|-]digits[.digits], at least one digit, no
+/// exponent. Returns the characters used (0: no number). Context: any.
+size_t read_grbl_number(const char* text, size_t length, double& value) {
+  size_t used = (length > 0 && (text[0] == '+' || text[0] == '-')) ? 1 : 0;
+  const bool negative = used == 1 && text[0] == '-';
+  double magnitude = 0.0;
+  double scale = 1.0;
+  bool point = false;
+  int digits = 0;
+  for (; used < length; ++used) {
+    const char c = text[used];
+    if (c == '.' && !point) {
+      point = true;
+    } else if (c >= '0' && c <= '9') {
+      if (digits++ < 15) magnitude = magnitude * 10.0 + (c - '0');
+      if (point && digits <= 15) scale *= 10.0;
+      if (!point && digits > 15) magnitude *= 10.0;
+    } else {
+      break;
+    }
+  }
+  value = (negative ? -magnitude : magnitude) / scale;
+  return digits > 0 ? used : 0;
+}
+
+}  // namespace
+
+// `$N=v` in Grbl 1.1h's order: a number (error:2), `=` (error:3), a value (error:2), nothing
+// after it and N at most 255 (error:3); then the setting's own checks (GrblSettings::write).
 GrblError GrblProtocol::execute_setting_write(const char* text, size_t length) {
-  const char* equals_sign = static_cast<const char*>(memchr(text, '=', length));
-  if (equals_sign == nullptr) return GrblError::kInvalidDollarStatement;
   double number = 0.0;
   double value = 0.0;
-  const size_t number_length = static_cast<size_t>(equals_sign - text);
-  // A setting number is a whole number below 1000 (checked before any conversion: casting a
-  // larger double to an integer would be undefined behaviour).
-  if (!parse_number(text, number_length, number) || !(number >= 0.0 && number < 1000.0) ||
-      number != static_cast<double>(static_cast<uint32_t>(number))) {
-    return GrblError::kInvalidDollarStatement;
-  }
-  if (!parse_number(equals_sign + 1, length - number_length - 1, value)) return GrblError::kBadNumberFormat;
-  const uint32_t setting = static_cast<uint32_t>(number);
+  const size_t number_length = read_grbl_number(text, length, number);
+  if (number_length == 0) return GrblError::kBadNumberFormat;
+  if (number_length == length || text[number_length] != '=') return GrblError::kInvalidDollarStatement;
+  const size_t value_start = number_length + 1;
+  const size_t value_length = read_grbl_number(text + value_start, length - value_start, value);
+  if (value_length == 0) return GrblError::kBadNumberFormat;
+  if (value_start + value_length != length || number > 255.0) return GrblError::kInvalidDollarStatement;
+  if (value < 0.0) return GrblError::kNegativeValue;
+  if (number < 0.0) return GrblError::kInvalidDollarStatement;
+  const uint32_t setting = static_cast<uint32_t>(number);  // Grbl truncates: `$1.5=` is `$1=`
   if (setting >= 100 && setting <= 102) {
     send_text("[MSG:steps/mm are set by the sketch's channels]");
     return GrblError::kInvalidDollarStatement;

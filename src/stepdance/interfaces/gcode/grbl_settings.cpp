@@ -11,7 +11,7 @@ GrblSettings::GrblSettings()
           {3, 0, true, true},       {4, 0, true, true},      {5, 0, true, true},
           {6, 0, true, true},       {10, 3, true, true},     {11, 0.010, false, true},
           {12, 0.002, false, true}, {13, 0, true, true},     {20, 0, true, true},
-          {21, 0, true, true},      {22, 0, true, false},    {23, 0, true, true},
+          {21, 0, true, true},      {22, 0, true, true},    {23, 0, true, true},
           {24, 25, false, true},    {25, 500, false, true},  {26, 250, true, true},
           {27, 1, false, true},     {30, 1000, true, true},  {31, 0, true, true},
           {32, 0, true, true},      {100, 0, false, false},  {101, 0, false, false},
@@ -35,15 +35,39 @@ double GrblSettings::value(uint32_t number) const {
   return setting != nullptr ? setting->value : 0.0;
 }
 
+// Grbl 1.1h's settings_store_global_setting: a negative value is error:4 before anything else;
+// integer settings take the value truncated; $0 (step pulse, µs) below 3 is error:6; $20 (soft
+// limits) on without $22 (homing) is error:10, and $22 off turns $20 off.
 GrblError GrblSettings::write(uint32_t number, double value) {
-  GrblSetting* setting = const_cast<GrblSetting*>(find(number));
-  if (setting == nullptr || !setting->writable) return GrblError::kInvalidDollarStatement;
   if (!isfinite(value)) return GrblError::kBadNumberFormat;
   if (value < 0.0) return GrblError::kNegativeValue;
-  if (setting->integer && value != floor(value)) return GrblError::kCommandNeedsInteger;
+  GrblSetting* setting = writable_setting(number);
+  if (setting == nullptr) return GrblError::kInvalidDollarStatement;
+  if (setting->integer) value = trunc(value);
+  if (number == 0 && value < 3.0) return GrblError::kStepPulseTooShort;
+  if (number == 20 && value != 0.0 && !homing_enabled()) return GrblError::kSoftLimitNeedsHoming;
+  setting->value = value;
+  setting->host_set = true;
+  if (number == 22 && value == 0.0) {
+    GrblSetting* soft_limits = writable_setting(20);
+    soft_limits->value = 0.0;
+    soft_limits->host_set = true;
+  }
+  return GrblError::kOk;
+}
+
+GrblError GrblSettings::load(uint32_t number, double value) {
+  GrblSetting* setting = writable_setting(number);
+  if (setting == nullptr) return GrblError::kInvalidDollarStatement;
+  if (!isfinite(value) || value < 0.0 || (setting->integer && value != trunc(value))) return GrblError::kBadNumberFormat;
   setting->value = value;
   setting->host_set = true;
   return GrblError::kOk;
+}
+
+GrblSetting* GrblSettings::writable_setting(uint32_t number) {
+  GrblSetting* setting = const_cast<GrblSetting*>(find(number));
+  return (setting != nullptr && setting->writable) ? setting : nullptr;
 }
 
 bool GrblSettings::set_from_sketch(uint32_t number, double value) {

@@ -29,9 +29,14 @@ class GrblSettings {
   const GrblSetting* find(uint32_t number) const;
   /// Value of a setting (0 for unknown numbers).
   double value(uint32_t number) const;
-  /// `$N=value` from the host: kInvalidDollarStatement for unknown or read-only settings,
-  /// kNegativeValue for negative values, kCommandNeedsInteger for fractions on integer ones.
+  /// `$N=value` from the host, by Grbl 1.1h's rules: kNegativeValue for negative values,
+  /// kInvalidDollarStatement for unknown or read-only settings; integer settings keep the value
+  /// truncated; kStepPulseTooShort for `$0` below 3 µs; kSoftLimitNeedsHoming for `$20` on while
+  /// `$22` (homing) is off; `$22=0` also turns `$20` off.
   GrblError write(uint32_t number, double value);
+  /// A value the host wrote earlier, read back from the store: only the setting's own range is
+  /// checked (the order between settings, as `$20` after `$22`, held when it was written).
+  GrblError load(uint32_t number, double value);
   /// Sets a value on behalf of the sketch (read-only ones included). False if unknown.
   /// For a host-writable setting this is the default: a value the host wrote (and the board
   /// stored) wins over it, as a stored Grbl setting wins over the firmware's default.
@@ -46,6 +51,7 @@ class GrblSettings {
   bool report_buffer_state() const { return (static_cast<uint32_t>(value(10)) & 2u) != 0; }
   bool report_inches() const { return value(13) != 0.0; }
   bool soft_limits() const { return value(20) != 0.0; }
+  bool homing_enabled() const { return value(22) != 0.0; }
   double junction_deviation_mm() const { return value(11); }
   double arc_tolerance_mm() const { return value(12); }
   /// $110–$112 (axis 0–2), mm/min.
@@ -56,6 +62,8 @@ class GrblSettings {
   double max_travel_mm(int axis) const { return value(130 + axis); }
 
  private:
+  GrblSetting* writable_setting(uint32_t number);
+
   GrblSetting settings_[kCount];
 };
 

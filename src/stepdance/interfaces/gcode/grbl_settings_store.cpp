@@ -65,7 +65,7 @@ SettingsLoad load_settings(NonvolatileStore& store, GrblSettings& settings, uint
   GrblSettings loaded = settings;  // all or nothing
   for (size_t i = 0; i < count; ++i) {
     const uint8_t* entry = image + kHeaderBytes + i * kEntryBytes;
-    if (loaded.write(entry[0], get_double(entry + 1)) != GrblError::kOk) return SettingsLoad::kCorrupt;
+    if (loaded.load(entry[0], get_double(entry + 1)) != GrblError::kOk) return SettingsLoad::kCorrupt;
   }
   settings = loaded;
   return SettingsLoad::kLoaded;

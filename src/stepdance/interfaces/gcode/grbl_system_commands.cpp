@@ -4,106 +4,170 @@
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
 
 namespace stepdance::gcode {
-namespace {
 
-bool equals(const char* text, size_t length, const char* expected) {
-  return strlen(expected) == length && strncmp(text, expected, length) == 0;
+GrblProtocol::LinkState GrblProtocol::link_state() {
+  if (alarm_ != 0) return LinkState::kAlarm;
+  if (check_mode_) return LinkState::kCheck;
+  switch (machine_->motion_state()) {
+    case MotionState::kRun: return LinkState::kRun;
+    case MotionState::kHolding: return LinkState::kHold;
+    case MotionState::kJog: return LinkState::kJog;
+    case MotionState::kIdle: break;
+  }
+  return LinkState::kIdle;
 }
 
-char upper(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+// Grbl 1.1h's system_execute_line dispatches on the letter after the `$`: `$J=` runs in Idle or
+// Jog; `$$ $G $C $X` (the letter alone, error:3 otherwise) in any state, but `$$` not while
+// running or holding; every other command, and `$N=v` settings (no letter in the table), only in
+// Idle or Alarm.
+constexpr GrblProtocol::DollarTable GrblProtocol::kDollarCommands = link::make_command_table<DollarCommand>({
+    {"J", {&GrblProtocol::dollar_jog, kIdleOrJog}},
+    {"$", {&GrblProtocol::dollar_settings, kAnyState}},
+    {"G", {&GrblProtocol::dollar_parser_state, kAnyState}},
+    {"C", {&GrblProtocol::dollar_check_mode, kAnyState}},
+    {"X", {&GrblProtocol::dollar_unlock, kAnyState}},
+    {"#", {&GrblProtocol::dollar_parameters, kIdleOrAlarm}},
+    {"H", {&GrblProtocol::dollar_homing, kIdleOrAlarm}},
+    {"I", {&GrblProtocol::dollar_build_info, kIdleOrAlarm}},
+    {"N", {&GrblProtocol::dollar_startup_lines, kIdleOrAlarm}},
+    {"S", {&GrblProtocol::dollar_sleep, kIdleOrAlarm}},
+    {"R", {&GrblProtocol::dollar_restore, kIdleOrAlarm}},
+});
 
-}  // namespace
-
+// `text` follows the `$`, upper-cased and without blanks (the receiver's work).
 GrblError GrblProtocol::execute_system(const char* text, size_t length) {
-  char command[8] = {};
-  for (size_t i = 0; i < length && i < sizeof(command) - 1; ++i) command[i] = upper(text[i]);
-  const bool idle = machine_->motion_state() == MotionState::kIdle;
   if (length == 0) {
     send_text("[HLP:$$ $# $G $I $N $x=val $Nx=line $J=line $SLP $C $X $H ~ ! ? ctrl-x]");
-  } else if (equals(command, length, "$")) {
-    report_settings();
-  } else if (equals(command, length, "#")) {
-    report_parameters();
-  } else if (equals(command, length, "G")) {
-    report_parser_state();
-  } else if (equals(command, length, "I")) {
-    report_build_info();
-  } else if (equals(command, length, "N")) {
-    send_text("$N0=");  // startup lines are not stored: nothing runs at reset
-    send_text("$N1=");
-  } else if (equals(command, length, "X")) {
-    if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
-    alarm_ = 0;
-  } else if (equals(command, length, "H")) {
-    if (!idle) return GrblError::kNotIdle;
-    const GrblError error = machine_->home();
-    if (error == GrblError::kOk) {
-      alarm_ = 0;
-      homing_reply_pending_ = machine_->homing_in_progress();
-    }
-    if (error == GrblError::kHomingDisabled) send_text("[MSG:Homing is not set up on this machine]");
-    return error;
-  } else if (equals(command, length, "C")) {
-    if (!idle) return GrblError::kNotIdle;
-    check_mode_ = !check_mode_;
-    send_text(check_mode_ ? "[MSG:Enabled]" : "[MSG:Disabled]");
-    if (!check_mode_) reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
-  } else if (length > 4 && strncmp(command, "RST=", 4) == 0) {
-    if (!idle) return GrblError::kNotIdle;
-    return execute_restore(text + 4, length - 4);
-  } else if (length > 2 && upper(text[0]) == 'J' && text[1] == '=') {
-    return execute_jog(text + 2, length - 2);
-  } else if (length > 1 && text[0] >= '0' && text[0] <= '9') {
-    if (!idle) return GrblError::kNotIdle;
-    return execute_setting_write(text, length);
-  } else {
-    return GrblError::kInvalidDollarStatement;
+    return GrblError::kOk;
   }
+  static_assert(kDollarCommands.names_unique(), "each `$` letter once");
+  const char letter[2] = {text[0], '\0'};
+  const auto* command = kDollarCommands.find(letter);
+  const uint8_t states = command != nullptr ? command->handler.states : kIdleOrAlarm;  // `$N=v`: a setting
+  if ((states & state_bit(link_state())) == 0) return GrblError::kNotIdle;
+  if (command == nullptr) return execute_setting_write(text, length);
+  return (this->*command->handler.run)(text + 1, length - 1);
+}
+
+GrblError GrblProtocol::dollar_jog(const char* rest, size_t length) {
+  if (length == 0 || rest[0] != '=') return GrblError::kInvalidDollarStatement;
+  return execute_jog(rest + 1, length - 1);
+}
+
+GrblError GrblProtocol::dollar_settings(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  const LinkState state = link_state();
+  if (state == LinkState::kRun || state == LinkState::kHold) return GrblError::kNotIdle;
+  report_settings();
   return GrblError::kOk;
 }
 
-GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
-  if (alarm_ != 0) return GrblError::kLocked;
-  const MotionState state = machine_->motion_state();
-  if (state != MotionState::kIdle && state != MotionState::kJog) return GrblError::kNotIdle;
-  GcodeBlock block;
-  const GrblError syntax = parse_line(text, length, block, parser_options_);
-  if (syntax != GrblError::kOk) return syntax;
-  constexpr uint32_t kAllowedWords = (1u << word_index('X')) | (1u << word_index('Y')) |
-                                     (1u << word_index('Z')) | (1u << word_index('F')) |
-                                     (1u << word_index('N'));
-  constexpr uint16_t kAllowedGroups = (1u << static_cast<int>(GGroup::kUnits)) |
-                                      (1u << static_cast<int>(GGroup::kDistance)) |
-                                      (1u << static_cast<int>(GGroup::kNonModal));
+GrblError GrblProtocol::dollar_parser_state(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  report_parser_state();
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_check_mode(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  if (check_mode_) {
+    send_text("[MSG:Disabled]");
+    reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
+    return GrblError::kOk;
+  }
+  if (link_state() != LinkState::kIdle) return GrblError::kNotIdle;  // not in alarm either
+  check_mode_ = true;
+  send_text("[MSG:Enabled]");
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_unlock(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
+  alarm_ = 0;
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_parameters(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  report_parameters();
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_homing(const char*, size_t length) {
+  if (!settings_.homing_enabled()) return GrblError::kHomingDisabled;
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  const GrblError error = machine_->home();
+  if (error == GrblError::kOk) {
+    alarm_ = 0;
+    homing_reply_pending_ = machine_->homing_in_progress();
+  }
+  if (error == GrblError::kHomingDisabled) send_text("[MSG:Homing is not set up on this machine]");
+  return error;
+}
+
+GrblError GrblProtocol::dollar_build_info(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;
+  report_build_info();
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_startup_lines(const char*, size_t length) {
+  if (length != 0) return GrblError::kInvalidDollarStatement;  // startup lines are not stored
+  send_text("$N0=");
+  send_text("$N1=");
+  return GrblError::kOk;
+}
+
+GrblError GrblProtocol::dollar_sleep(const char*, size_t) {
+  return GrblError::kInvalidDollarStatement;  // `$SLP`: no sleep mode here
+}
+
+GrblError GrblProtocol::dollar_restore(const char* rest, size_t length) {
+  if (length < 3 || strncmp(rest, "ST=", 3) != 0) return GrblError::kInvalidDollarStatement;
+  return execute_restore(rest + 3, length - 3);
+}
+
+namespace {
+
+constexpr uint32_t word_bit(char letter) { return 1u << word_index(letter); }
+constexpr uint16_t group_bit(GGroup group) { return static_cast<uint16_t>(1u << static_cast<int>(group)); }
+
+/// Grbl's jog rules: X Y Z F N words, G20/G21, G90/G91 and G53 only (error:16), a feed
+/// (error:22) and an axis word (error:16).
+GrblError check_jog_words(const GcodeBlock& block) {
+  constexpr uint32_t kAxes = word_bit('X') | word_bit('Y') | word_bit('Z');
+  constexpr uint32_t kAllowedWords = kAxes | word_bit('F') | word_bit('N');
+  constexpr uint16_t kAllowedGroups = group_bit(GGroup::kUnits) | group_bit(GGroup::kDistance) | group_bit(GGroup::kNonModal);
   const bool only_g53 = !block.has_g(GGroup::kNonModal) || block.g_code(GGroup::kNonModal) == 530;
   if ((block.words_present & ~kAllowedWords) != 0 || (block.g_groups_present & ~kAllowedGroups) != 0 ||
       block.m_groups_present != 0 || !only_g53 || block.ignored) {
     return GrblError::kInvalidJogCommand;
   }
   if (!block.has_word('F')) return GrblError::kUndefinedFeedRate;
-  if ((block.words_present & ~((1u << word_index('F')) | (1u << word_index('N')))) == 0) {
-    return GrblError::kInvalidJogCommand;  // no axis word
-  }
-  // A jog is a G1 at its own feed that leaves the parser's modes as they were.
+  return (block.words_present & kAxes) == 0 ? GrblError::kInvalidJogCommand : GrblError::kOk;
+}
+
+}  // namespace
+
+GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
+  GcodeBlock block;
+  GrblError error = parse_line(text, length, block, parser_options_);
+  if (error == GrblError::kOk) error = check_jog_words(block);
+  if (error != GrblError::kOk) return error;
+  // A jog is a G1 at its own feed that leaves the parser's modes as they were: planned, never
+  // committed.
   block.g[static_cast<int>(GGroup::kMotion)] = 10;
   block.g[static_cast<int>(GGroup::kFeedMode)] = 940;
-  block.g_groups_present |= (1u << static_cast<int>(GGroup::kMotion)) | (1u << static_cast<int>(GGroup::kFeedMode));
+  block.g_groups_present |= group_bit(GGroup::kMotion) | group_bit(GGroup::kFeedMode);
   sync_position_when_idle();
-  GcodeInterpreter trial = interpreter_;
-  struct JogCapture final : GcodeSink {
-    Motion motion;
-    bool has_motion = false;
-    void on_motion(const Motion& m) override {
-      motion = m;
-      has_motion = true;
-    }
-    void on_dwell(double) override {}
-  } capture;
-  const GrblError error = trial.execute(block, capture);
+  LinePlan plan;
+  error = interpreter_.plan(block, plan);
   if (error != GrblError::kOk) return error;
-  if (!capture.has_motion) return GrblError::kInvalidJogCommand;
-  if (!within_travel(capture.motion)) return GrblError::kTravelExceeded;
-  machine_->jog(capture.motion);
+  if (plan.motion_count == 0) return GrblError::kInvalidJogCommand;
+  if (!within_travel(plan.motions[0])) return GrblError::kTravelExceeded;
+  machine_->jog(plan.motions[0]);
   return GrblError::kOk;
 }
 

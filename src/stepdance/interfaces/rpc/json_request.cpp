@@ -44,31 +44,7 @@ class Reader {
     while (position_ < length_ && text_[position_] != '"') {
       char c = text_[position_++];
       if (c == '\\') {
-        if (position_ >= length_) return fail(JsonError::kSyntax);
-        const char escape = text_[position_++];
-        switch (escape) {
-          case '"': case '\\': case '/': c = escape; break;
-          case 'b': c = '\b'; break;
-          case 'f': c = '\f'; break;
-          case 'n': c = '\n'; break;
-          case 'r': c = '\r'; break;
-          case 't': c = '\t'; break;
-          case 'u': {
-            if (position_ + 4 > length_) return fail(JsonError::kSyntax);
-            unsigned code = 0;
-            for (int i = 0; i < 4; ++i) {
-              const char h = text_[position_++];
-              const int digit = (h >= '0' && h <= '9') ? h - '0' : (h >= 'a' && h <= 'f') ? h - 'a' + 10
-                                : (h >= 'A' && h <= 'F') ? h - 'A' + 10 : -1;
-              if (digit < 0) return fail(JsonError::kSyntax);
-              code = code * 16 + static_cast<unsigned>(digit);
-            }
-            if (code == 0 || code > 0x7F) return fail(JsonError::kSyntax);  // ASCII names and text only
-            c = static_cast<char>(code);
-            break;
-          }
-          default: return fail(JsonError::kSyntax);
-        }
+        if (!escape(c)) return false;
       } else if (static_cast<unsigned char>(c) < 0x20) {
         return fail(JsonError::kSyntax);
       }
@@ -81,43 +57,85 @@ class Reader {
     return true;
   }
 
+  /// The character an escape after a backslash stands for.
+  bool escape(char& c) {
+    if (position_ >= length_) return fail(JsonError::kSyntax);
+    const char letter = text_[position_++];
+    switch (letter) {
+      case '"': case '\\': case '/': c = letter; return true;
+      case 'b': c = '\b'; return true;
+      case 'f': c = '\f'; return true;
+      case 'n': c = '\n'; return true;
+      case 'r': c = '\r'; return true;
+      case 't': c = '\t'; return true;
+      case 'u': return unicode_escape(c);
+      default: return fail(JsonError::kSyntax);
+    }
+  }
+
+  /// \uXXXX: ASCII names and text only (1..0x7F).
+  bool unicode_escape(char& c) {
+    if (position_ + 4 > length_) return fail(JsonError::kSyntax);
+    unsigned code = 0;
+    for (int i = 0; i < 4; ++i) {
+      const char h = text_[position_++];
+      const int digit = (h >= '0' && h <= '9') ? h - '0' : (h >= 'a' && h <= 'f') ? h - 'a' + 10
+                        : (h >= 'A' && h <= 'F') ? h - 'A' + 10 : -1;
+      if (digit < 0) return fail(JsonError::kSyntax);
+      code = code * 16 + static_cast<unsigned>(digit);
+    }
+    if (code == 0 || code > 0x7F) return fail(JsonError::kSyntax);
+    c = static_cast<char>(code);
+    return true;
+  }
+
   bool number(double& out) {
     skip_space();
     const size_t start = position_;
     if (position_ < length_ && text_[position_] == '-') ++position_;
     size_t digits = 0;
     double value = 0.0;
-    while (position_ < length_ && text_[position_] >= '0' && text_[position_] <= '9') {
+    while (at_digit()) {
       value = value * 10.0 + (text_[position_++] - '0');
       ++digits;
     }
     if (digits == 0) return fail(JsonError::kSyntax);
-    if (position_ < length_ && text_[position_] == '.') {
-      ++position_;
-      double scale = 0.1;
-      size_t fraction_digits = 0;
-      while (position_ < length_ && text_[position_] >= '0' && text_[position_] <= '9') {
-        value += (text_[position_++] - '0') * scale;
-        scale *= 0.1;
-        ++fraction_digits;
-      }
-      if (fraction_digits == 0) return fail(JsonError::kSyntax);
-    }
-    if (position_ < length_ && (text_[position_] == 'e' || text_[position_] == 'E')) {
-      ++position_;
-      bool negative = false;
-      if (position_ < length_ && (text_[position_] == '+' || text_[position_] == '-')) negative = text_[position_++] == '-';
-      int exponent = 0;
-      size_t exponent_digits = 0;
-      while (position_ < length_ && text_[position_] >= '0' && text_[position_] <= '9') {
-        if (exponent < 1000) exponent = exponent * 10 + (text_[position_] - '0');
-        ++position_;
-        ++exponent_digits;
-      }
-      if (exponent_digits == 0) return fail(JsonError::kSyntax);
-      value *= pow(10.0, negative ? -exponent : exponent);
-    }
+    if (!fraction(value) || !exponent(value)) return false;
     out = text_[start] == '-' ? -value : value;
+    return true;
+  }
+
+  bool at_digit() const { return position_ < length_ && text_[position_] >= '0' && text_[position_] <= '9'; }
+
+  /// An optional ".digits", added to `value`.
+  bool fraction(double& value) {
+    if (position_ >= length_ || text_[position_] != '.') return true;
+    ++position_;
+    double scale = 0.1;
+    size_t fraction_digits = 0;
+    while (at_digit()) {
+      value += (text_[position_++] - '0') * scale;
+      scale *= 0.1;
+      ++fraction_digits;
+    }
+    return fraction_digits > 0 || fail(JsonError::kSyntax);
+  }
+
+  /// An optional "e[+-]digits", applied to `value`.
+  bool exponent(double& value) {
+    if (position_ >= length_ || (text_[position_] != 'e' && text_[position_] != 'E')) return true;
+    ++position_;
+    bool negative = false;
+    if (position_ < length_ && (text_[position_] == '+' || text_[position_] == '-')) negative = text_[position_++] == '-';
+    int power = 0;
+    size_t exponent_digits = 0;
+    while (at_digit()) {
+      if (power < 1000) power = power * 10 + (text_[position_] - '0');
+      ++position_;
+      ++exponent_digits;
+    }
+    if (exponent_digits == 0) return fail(JsonError::kSyntax);
+    value *= pow(10.0, negative ? -power : power);
     return true;
   }
 
@@ -221,6 +239,24 @@ bool read_args(Reader& reader, JsonRequest& out) {
   }
 }
 
+/// One "key": value member of the request object.
+bool read_member(Reader& reader, JsonRequest& out, bool& have_name) {
+  const char* key;
+  if (!reader.string(key) || !reader.take(':')) return false;
+  if (strcmp(key, "name") == 0) {
+    const char* name;
+    if (!reader.peek('"')) return reader.fail(JsonError::kMissingName);
+    if (!reader.string(name)) return false;
+    if (strlen(name) > JsonRequest::kMaxNameBytes) return reader.fail(JsonError::kTooLong);
+    strcpy(out.name, name);
+    have_name = true;
+    return true;
+  }
+  if (strcmp(key, "args") == 0) return reader.peek('n') ? reader.literal("null") : read_args(reader, out);
+  if (strcmp(key, "id") == 0) return reader.id(out.id, sizeof(out.id));
+  return reader.skip_value();
+}
+
 }  // namespace
 
 JsonError parse_request(const char* line, size_t length, JsonRequest& out, char* pool, size_t pool_size) {
@@ -230,31 +266,9 @@ JsonError parse_request(const char* line, size_t length, JsonRequest& out, char*
   if (!reader.take('{')) return reader.error;
   if (!reader.peek('}')) {
     for (;;) {
-      const char* key;
-      if (!reader.string(key) || !reader.take(':')) return reader.error;
-      if (strcmp(key, "name") == 0) {
-        const char* name;
-        if (!reader.peek('"')) return JsonError::kMissingName;
-        if (!reader.string(name)) return reader.error;
-        if (strlen(name) > JsonRequest::kMaxNameBytes) return JsonError::kTooLong;
-        strcpy(out.name, name);
-        have_name = true;
-      } else if (strcmp(key, "args") == 0) {
-        if (reader.peek('n')) {
-          if (!reader.literal("null")) return reader.error;
-        } else if (!read_args(reader, out)) {
-          return reader.error;
-        }
-      } else if (strcmp(key, "id") == 0) {
-        if (!reader.id(out.id, sizeof(out.id))) return reader.error;
-      } else if (!reader.skip_value()) {
-        return reader.error;
-      }
-      if (reader.peek(',')) {
-        reader.take(',');
-        continue;
-      }
-      break;
+      if (!read_member(reader, out, have_name)) return reader.error;
+      if (!reader.peek(',')) break;
+      reader.take(',');
     }
   }
   if (!reader.take('}') || !reader.at_end()) return reader.fail(JsonError::kSyntax), reader.error;

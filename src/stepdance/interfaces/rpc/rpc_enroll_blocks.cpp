@@ -1,50 +1,68 @@
-// The RPC names each block class enrolls, as the original library exposes them.
+// The RPC names of each block class, as the original library exposes them (docs/rpc.md).
 #include "stepdance/interfaces/rpc/rpc.hpp"
 #include "stepdance/io/encoder.hpp"
+#include "stepdance/motion/channel.hpp"
 #include "stepdance/motion/kinematics_core_xy.hpp"
 #include "stepdance/motion/position_generator.hpp"
 #include "stepdance/motion/time_based_interpolator.hpp"
 
 namespace stepdance {
 
-void TimeBasedInterpolator::enroll_names(RPC* rpc, const char* name) {
-  rpc->enroll(name, "add_move", *this, &TimeBasedInterpolator::add_move);
-  rpc->enroll(name, "add_timed_move", *this, &TimeBasedInterpolator::add_timed_move);
-  rpc->enroll(name, "is_idle", *this, &TimeBasedInterpolator::is_idle);
-  rpc->enroll(name, "queue_is_full", *this, &TimeBasedInterpolator::queue_is_full);
-  rpc->enroll(name, "reset_block_queue", *this, &TimeBasedInterpolator::reset_block_queue);
-  rpc->enroll_parameter(name, "speed_override", speed_overide);
-  rpc->enroll_parameter(name, "slots_remaining", slots_remaining);
-  rpc->enroll_port(name, "output_x", output_x);
-  rpc->enroll_port(name, "output_y", output_y);
-  rpc->enroll_port(name, "output_z", output_z);
-  rpc->enroll_port(name, "output_e", output_e);
-  rpc->enroll_port(name, "output_r", output_r);
-  rpc->enroll_port(name, "output_t", output_t);
+void RPC::enroll_block(const char* name, TimeBasedInterpolator& interpolator) {
+  using Tbi = TimeBasedInterpolator;
+  enroll(name, "add_move", interpolator, &Tbi::add_move);
+  enroll(name, "add_timed_move", interpolator, &Tbi::add_timed_move);
+  enroll(name, "is_idle", interpolator, &Tbi::is_idle);
+  enroll(name, "queue_is_full", interpolator, &Tbi::queue_is_full);
+  enroll(name, "reset_block_queue", interpolator, &Tbi::reset_block_queue);
+  enroll_parameter(name, "speed_override", interpolator.speed_overide);
+  enroll_parameter(name, "slots_remaining", interpolator.slots_remaining);
+  enroll_port(name, "output_x", interpolator.output_x);
+  enroll_port(name, "output_y", interpolator.output_y);
+  enroll_port(name, "output_z", interpolator.output_z);
+  enroll_port(name, "output_e", interpolator.output_e);
+  enroll_port(name, "output_r", interpolator.output_r);
+  enroll_port(name, "output_t", interpolator.output_t);
 }
 
-void PositionGenerator::enroll_names(RPC* rpc, const char* name) {
-  rpc->enroll(name, "set_speed", *this, &PositionGenerator::set_speed);
+void RPC::enroll_block(const char* name, PositionGenerator& generator) {
+  enroll(name, "set_speed", generator, &PositionGenerator::set_speed);
   Status (PositionGenerator::*go_with_speed)(double, PositionMode, double) = &PositionGenerator::go;
-  rpc->enroll(name, "go", *this, go_with_speed);
-  rpc->enroll_parameter(name, "speed_units_per_sec", speed_units_per_sec);
-  rpc->enroll_port(name, "output", output);
+  enroll(name, "go", generator, go_with_speed);
+  enroll_parameter(name, "speed_units_per_sec", generator.speed_units_per_sec);
+  enroll_port(name, "output", generator.output);
 }
 
-void KinematicsCoreXY::enroll_names(RPC* rpc, const char* name) {
-  rpc->enroll_port(name, "input_x", input_x);
-  rpc->enroll_port(name, "input_y", input_y);
-  rpc->enroll_port(name, "output_a", output_a);
-  rpc->enroll_port(name, "output_b", output_b);
+void RPC::enroll_block(const char* name, KinematicsCoreXY& kinematics) {
+  enroll_port(name, "input_x", kinematics.input_x);
+  enroll_port(name, "input_y", kinematics.input_y);
+  enroll_port(name, "output_a", kinematics.output_a);
+  enroll_port(name, "output_b", kinematics.output_b);
 }
 
-void Encoder::enroll_names(RPC* rpc, const char* name) {
+void RPC::enroll_block(const char* name, Channel& channel) {
+  enroll(name, "set_ratio", channel, &Channel::set_ratio);
+  enroll(name, "set_upper_limit", channel, &Channel::set_upper_limit);
+  enroll(name, "set_lower_limit", channel, &Channel::set_lower_limit);
+  enroll(name, "disable_upper_limit", channel, &Channel::disable_upper_limit);
+  enroll(name, "disable_lower_limit", channel, &Channel::disable_lower_limit);
+  Block& block = channel;  // enable() and disable() are Block's
+  enroll(name, "disable", block, &Block::disable);
+  enroll(name, "enable", block, &Block::enable);
+  enroll(name, "disable_filtering", channel, &Channel::disable_filtering);
+  enroll(name, "enable_filtering", channel, &Channel::enable_filtering);
+  enroll_parameter(name, "current_position", channel.current_position);
+  enroll_port(name, "input_target_position", channel.input_target_position);
+  enroll_port(name, "input_target_position2", channel.input_target_position_2);  // the original's name
+}
+
+void RPC::enroll_block(const char* name, Encoder& encoder) {
   double (Encoder::*read_position)() const = &Encoder::read;
-  rpc->enroll(name, "read", *this, read_position);
-  rpc->enroll(name, "reset", *this, &Encoder::reset);
-  rpc->enroll(name, "set", *this, &Encoder::set);
-  rpc->enroll(name, "set_ratio", *this, &Encoder::set_ratio);
-  rpc->enroll_port(name, "output", output);
+  enroll(name, "read", encoder, read_position);
+  enroll(name, "reset", encoder, &Encoder::reset);
+  enroll(name, "set", encoder, &Encoder::set);
+  enroll(name, "set_ratio", encoder, &Encoder::set_ratio);
+  enroll_port(name, "output", encoder.output);
 }
 
 }  // namespace stepdance

@@ -1,0 +1,42 @@
+// Machine kind "polar": PolarTurntable on two stepper sockets and an optional servo socket; its
+// page is the drawing's bounding box.
+#include "kinds/machines/polar_turntable.hpp"
+
+#include "kinds/machines/machine_keys.hpp"
+#include "models/polar_turntable.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+using scenario::SocketDevice;
+
+std::any read(MachineReading& reading) {
+  PolarConfig config;
+  config.angle = reading.sockets.take("angle", SocketDevice::kStepper, 'A').value_or('A');
+  config.radius = reading.sockets.take("radius", SocketDevice::kStepper, 'B').value_or('B');
+  config.pen_servo = reading.sockets.take("pen_servo", SocketDevice::kServo, std::nullopt);
+  read_positive(reading.reader, "steps_per_rev", "steps", config.steps_per_rev);
+  read_positive(reading.reader, "steps_per_mm", "steps/mm", config.steps_per_mm);
+  read_positive(reading.reader, "pen_down_below_us", "µs", config.pen_down_below_us);
+  return config;
+}
+
+std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const SocketModels& sockets,
+                               const PenTraceSettings& trace) {
+  const auto& config = *machine.settings_as<PolarConfig>();
+  StepperDriver* angle = sockets.stepper(config.angle);
+  StepperDriver* radius = sockets.stepper(config.radius);
+  if (angle == nullptr || radius == nullptr) return nullptr;
+  const PolarSettings settings{config.steps_per_rev, config.steps_per_mm, config.pen_down_below_us, trace};
+  return std::make_unique<PolarTurntable>(*angle, *radius, config.pen_servo ? sockets.servo(*config.pen_servo) : nullptr,
+                                          settings);
+}
+
+}  // namespace
+
+const MachineKind& polar_turntable_kind() {
+  static const MachineKind kind{"polar", "x", read, build};
+  return kind;
+}
+
+}  // namespace stepdance::sim
