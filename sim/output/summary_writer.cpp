@@ -14,7 +14,7 @@ nlohmann::json summary_json(const RunSummary& summary) {
   for (const auto& [name, port] : summary.ports) {
     nlohmann::json entry = {{"pulses", signal_counts_json(port.pulses)}};
     if (port.is_input) {
-      entry["rejected"] = {{"too_long", port.rejected_too_long}, {"too_short", port.rejected_too_short}};
+      entry["rejected"] = {{"too_long", port.pulses.too_long}, {"too_short", port.pulses.too_short}};
     } else {
       entry["carried"] = port.carried;
     }
