@@ -25,7 +25,7 @@ void decode_and_check(const VcdWire& step, const VcdWire& dir, stepdance::InputM
   if (counted != result.accepted) abort();
   uint64_t rises = step.initial ? 1 : 0;
   for (const Edge& edge : step.edges) rises += edge.level ? 1 : 0;
-  if (result.accepted + result.too_short + result.too_long + result.incomplete != rises) abort();
+  if (result.accepted + result.counts.rejected() + result.incomplete != rises) abort();
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "exit_codes.hpp"
-#include "usage.hpp"
+#include "option_kinds.hpp"
 #include "decode/capture_decoder.hpp"
 #include "decode/decode_report.hpp"
 #include "decode/pair_decoders.hpp"
@@ -133,7 +133,7 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
       "from a logic analyzer): step counts per axis and direction, rejected pulses with reasons, "
       "frame statistics. Exit status: 0 ok, 2 bad capture or options, 4 the capture is truncated (it ends "
       "mid-stream: what it holds is decoded and reported, with a warning).");
-  decode.add_option("capture", options.capture_path, "the .vcd file")->required()->check(non_empty_path());
+  add_path_option(decode, "capture", options.capture_path, "the .vcd file")->required();
   decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
   decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");
   decode.add_option("--mode", options.mode, "stepdance: axis by pulse width, DIR at the falling edge; "
@@ -141,10 +141,9 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
       ->check(CLI::IsMember({"stepdance", "step_dir"}))
       ->capture_default_str();
   decode.add_option("--axis", options.axis, "the axis step_dir pulses count as (X, Y, R, T, Z, E)")->capture_default_str();
-  decode.add_option("--frame-us", options.frame_period_us,
+  add_number_option(decode, "--frame-us", options.frame_period_us,
                     "the sending board's frame period in us (10, 20, 25 or 40): how pulses group into "
                     "frames for the frame statistics; the counts do not depend on it")
-      ->check(non_empty_number())
       ->capture_default_str();
   decode.add_flag("--json", options.json, "print JSON instead of text");
   return decode;

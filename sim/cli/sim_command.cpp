@@ -12,8 +12,8 @@
 #include "containment.hpp"
 #include "exit_codes.hpp"
 #include "live_run.hpp"
+#include "option_kinds.hpp"
 #include "progress_bar.hpp"
-#include "usage.hpp"
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "wiring/simulation.hpp"
@@ -41,9 +41,7 @@ constexpr double kDefaultWatchdogS = 10;
 bool check_number(const char* option, const std::string& text, const sim::scenario::NumberRange& range,
                   std::optional<double>& out) {
   if (text.empty()) return true;
-  std::string error;
-  out = sim::scenario::parse_number_option(option, text, range, error);
-  if (!out) std::cerr << error << "\n";
+  out = read_number_option(option, text, range);
   return out.has_value();
 }
 
@@ -196,37 +194,30 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
       "sketch crashed or ended the program, 6 a sketch hung, 130/143 interrupted by SIGINT/SIGTERM.");
   sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
       ->required();
-  sim.add_option("--out", options.output_directory, "write the output files into this folder instead")
-      ->check(non_empty_path());
-  sim.add_option("--duration", options.duration_s,
-                 "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS))
-      ->check(non_empty_number());
-  sim.add_option("--vcd", options.vcd_file,
-                 "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)")
-      ->check(non_empty_path());
-  sim.add_option("--csv", options.csv_file, "write the CSV of positions over time here")->check(non_empty_path());
-  sim.add_option("--csv-interval-ms", options.csv_interval_ms,
-                 "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs))
-      ->check(non_empty_number());
+  add_path_option(sim, "--out", options.output_directory, "write the output files into this folder instead");
+  add_number_option(sim, "--duration", options.duration_s,
+                    "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS));
+  add_path_option(sim, "--vcd", options.vcd_file,
+                  "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)");
+  add_path_option(sim, "--csv", options.csv_file, "write the CSV of positions over time here");
+  add_number_option(sim, "--csv-interval-ms", options.csv_interval_ms,
+                    "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs));
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
   sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
   sim.add_flag("--live", options.live,
                "run in real time until interrupted (Ctrl-C), each board's USB serial on a pseudo-terminal announced "
                "as `serial <board>: <path>`; outputs are written when the run ends");
-  sim.add_option("--speed", options.speed,
-                 "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) +
-                     ", or 'max' (default 1)")
-      ->check(non_empty_number());
+  add_number_option(sim, "--speed", options.speed,
+                    "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) +
+                        ", or 'max' (default 1)");
   sim.add_option("--serial-link", options.serial_links,
                  "live only: also make a symlink to a board's terminal (board=path; path must not exist, or be a "
                  "symlink)");
-  sim.add_option("--watchdog-s", options.watchdog_s,
-                 "stop a sketch that runs this many seconds of wall time without simulated time moving (default 10, "
-                 "in " + describe(kWatchdogS) + ")")
-      ->check(non_empty_number());
-  sim.add_option("--cache", options.cache_directory,
-                 "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)")
-      ->check(non_empty_path());
+  add_number_option(sim, "--watchdog-s", options.watchdog_s,
+                    "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
+                    "10, in " + describe(kWatchdogS) + ")");
+  add_path_option(sim, "--cache", options.cache_directory,
+                  "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)");
   return sim;
 }
 

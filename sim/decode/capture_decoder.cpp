@@ -58,14 +58,12 @@ void StepDirDecoder::apply_step(SimTime time_ns, bool level) {
                                     capture_ticks(time_ns, options.clock.ticks_per_us), dir_high, options.clock);
   const protocol::DecodedPulse decoded =
       protocol::decode_pulse(pulse, options.clock, options.mode, options.step_dir_signal);
+  result_.counts.add(decoded);
   if (decoded.verdict == protocol::PulseVerdict::kAccepted) {
-    DirectionCounts& counts = result_.counts[decoded.signal];
-    ++(decoded.direction > 0 ? counts.forward : counts.reverse);
     ++result_.accepted;
     frames_.add(rise_, time_ns);
     return;
   }
-  ++(decoded.verdict == protocol::PulseVerdict::kTooLong ? result_.too_long : result_.too_short);
   if (result_.first_rejected.size() < options.max_rejected_examples) {
     result_.first_rejected.push_back(RejectedPulse{rise_, time_ns, decoded.width_us, decoded.verdict});
   }

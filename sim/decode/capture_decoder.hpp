@@ -45,10 +45,8 @@ struct RejectedPulse {
 /// Everything decoded from one STEP/DIR pair.
 struct DecodeResult {
   DecodeOptions options;          ///< the options used
-  SignalCounts counts{};          ///< accepted pulses per signal and direction
-  uint64_t accepted = 0;          ///< sum of counts
-  uint64_t too_short = 0;         ///< rejected as shorter than the narrowest signal
-  uint64_t too_long = 0;          ///< rejected as wider than the widest signal
+  PulseCounts counts;             ///< accepted pulses per signal and direction, rejected ones by reason
+  uint64_t accepted = 0;          ///< sum of the accepted counts
   /// Pulses cut by the capture's edges: STEP already high at the start, or still high at the end.
   uint64_t incomplete = 0;
   std::vector<RejectedPulse> first_rejected;  ///< the first max_rejected_examples rejections

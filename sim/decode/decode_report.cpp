@@ -40,9 +40,9 @@ std::string format_decode_report(const DecodeResult& result, const std::string& 
     out += " (DIR at STEP falling edge)";
   }
   out += ", clock " + std::to_string(options.clock.ticks_per_us) + " ticks/us\n";
-  const uint64_t rejected = result.too_short + result.too_long;
+  const uint64_t rejected = result.counts.rejected();
   out += "  pulses   " + std::to_string(result.accepted) + " accepted, " + std::to_string(rejected) +
-         " rejected (" + std::to_string(result.too_short) + " too short, " + std::to_string(result.too_long) +
+         " rejected (" + std::to_string(result.counts.too_short) + " too short, " + std::to_string(result.counts.too_long) +
          " too long), " + std::to_string(result.incomplete) + " incomplete\n";
   out += "  signal   forward   reverse\n";
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
@@ -86,7 +86,7 @@ nlohmann::json decode_report_json(const DecodeResult& result) {
       {"incomplete", result.incomplete},
       {"mode", mode_name(result.options.mode)},
       {"pulses", signal_counts_json(result.counts)},
-      {"rejected", {{"examples", examples}, {"too_long", result.too_long}, {"too_short", result.too_short}}},
+      {"rejected", {{"examples", examples}, {"too_long", result.counts.too_long}, {"too_short", result.counts.too_short}}},
   };
   if (result.options.mode == INPUT_MODE_STEP_DIR) out["step_dir_signal"] = signal_name(result.options.step_dir_signal);
   return out;

@@ -1,8 +1,9 @@
 // Summary writer: sorted JSON from nlohmann::json, wall time appended last in insertion order.
 #include "output/summary_writer.hpp"
 
-#include <fstream>
 #include <stdexcept>
+
+#include "output/text_file.hpp"
 
 namespace stepdance::sim {
 
@@ -13,7 +14,7 @@ nlohmann::json summary_json(const RunSummary& summary) {
   for (const auto& [name, port] : summary.ports) {
     nlohmann::json entry = {{"pulses", signal_counts_json(port.pulses)}};
     if (port.is_input) {
-      entry["rejected"] = {{"too_long", port.rejected_too_long}, {"too_short", port.rejected_too_short}};
+      entry["rejected"] = {{"too_long", port.pulses.too_long}, {"too_short", port.pulses.too_short}};
     } else {
       entry["carried"] = port.carried;
     }
@@ -45,12 +46,7 @@ std::string summary_text(const RunSummary& summary) {
 }
 
 void write_summary(const std::string& path, const RunSummary& summary) {
-  const std::string text = summary_text(summary);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throw std::runtime_error(path + ": write failed");
+  write_text_file(path, summary_text(summary));
 }
 
 }  // namespace stepdance::sim

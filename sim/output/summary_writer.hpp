@@ -15,10 +15,8 @@ namespace stepdance::sim {
 /// Counts of one output or input port over the run.
 struct PortSummary {
   bool is_input = false;   ///< an input port (has rejections) or an output port (has carries)
-  SignalCounts pulses{};   ///< pulses sent (output) or accepted (input) per signal and direction
+  PulseCounts pulses;      ///< pulses sent (output) or accepted and rejected (input)
   uint64_t carried = 0;    ///< output: signals that did not fit their frame and went in a later one
-  uint64_t rejected_too_short = 0;  ///< input: pulses rejected as too short
-  uint64_t rejected_too_long = 0;   ///< input: pulses rejected as too long
 };
 
 /// Counts of one board over the run.

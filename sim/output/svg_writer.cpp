@@ -1,10 +1,8 @@
 // SVG writer: text assembled directly so the bytes depend only on the strokes and the style.
 #include "output/svg_writer.hpp"
 
-#include <fstream>
-#include <stdexcept>
-
 #include "output/number_format.hpp"
+#include "output/text_file.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -77,12 +75,7 @@ std::string svg_document(const std::vector<Stroke>& strokes, const DrawingStyle&
 }
 
 void write_svg(const std::string& path, const std::vector<Stroke>& strokes, const DrawingStyle& style) {
-  const std::string text = svg_document(strokes, style);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  out.write(text.data(), static_cast<std::streamsize>(text.size()));
-  out.close();
-  if (!out) throw std::runtime_error(path + ": write failed");
+  write_text_file(path, svg_document(strokes, style));
 }
 
 }  // namespace stepdance::sim

@@ -10,13 +10,13 @@
 #include <boost/asio/steady_timer.hpp>
 
 #include "exit_codes.hpp"
+#include "option_kinds.hpp"
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "serve/request_router.hpp"
 #include "serve/serial_device_link.hpp"
 #include "serve/simulated_board_link.hpp"
 #include "serve/web_server.hpp"
-#include "usage.hpp"
 
 namespace stepdance::cli {
 namespace {
@@ -42,14 +42,10 @@ struct ServeNumbers {
 /// --speed, --board and --out only steer a simulation: given with a serial device, they are
 /// refused rather than ignored.
 bool read_numbers(const ServeCommandOptions& options, bool serial_device, ServeNumbers& numbers) {
-  std::string error;
-  const auto port = sim::scenario::parse_integer_option("--port", options.port, ranges::kTcpPort, error);
-  if (!port) std::cerr << error << "\n";
-  const auto baud = sim::scenario::parse_integer_option("--baud", options.baud, ranges::kBaudRate, error);
-  if (!baud) std::cerr << error << "\n";
+  const auto port = read_integer_option("--port", options.port, ranges::kTcpPort);
+  const auto baud = read_integer_option("--baud", options.baud, ranges::kBaudRate);
   std::optional<double> speed = 1.0;
-  if (!options.speed.empty()) speed = sim::scenario::parse_number_option("--speed", options.speed, ranges::kServeSpeed, error);
-  if (!speed) std::cerr << error << "\n";
+  if (!options.speed.empty()) speed = read_number_option("--speed", options.speed, ranges::kServeSpeed);
   if (!port || !baud || !speed) return false;
   if (serial_device && (!options.speed.empty() || !options.board.empty() || !options.output_directory.empty())) {
     std::cerr << "serve: --speed, --board and --out steer a simulation; " << options.target << " is a serial device\n";
@@ -170,22 +166,17 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
       "simulation then writes its output files.");
   serve.add_option("target", options.target, "a serial device, or a scenario .toml / example folder")->required();
   serve.add_option("--host", options.host, "address to listen on (default 127.0.0.1)");
-  serve.add_option("--port", options.port, "TCP port, in [0, 65,535] (default 8001; 0 picks a free one)")
-      ->check(non_empty_number());
+  add_number_option(serve, "--port", options.port, "TCP port, in [0, 65,535] (default 8001; 0 picks a free one)");
   serve.add_option("--allow-origin", options.allowed_origins,
                    "also accept WebSockets from this origin, e.g. http://192.168.1.5:8001 (repeatable)");
-  serve.add_option("--baud", options.baud,
-                   "serial device: baud rate, in " + describe(ranges::kBaudRate) + " (default 115200; USB ignores it)")
-      ->check(non_empty_number());
+  add_number_option(serve, "--baud", options.baud,
+                    "serial device: baud rate, in " + describe(ranges::kBaudRate) + " (default 115200; USB ignores it)");
   serve.add_option("--board", options.board, "simulation: the board to bridge (default the first)");
-  serve.add_option("--speed", options.speed,
-                   "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) +
-                       " (default 1)")
-      ->check(non_empty_number());
-  serve.add_option("--out", options.output_directory, "simulation: write the output files into this folder")
-      ->check(non_empty_path());
-  serve.add_option("--cache", options.cache_directory, "simulation: folder for compiled sketches")
-      ->check(non_empty_path());
+  add_number_option(serve, "--speed", options.speed,
+                    "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) +
+                        " (default 1)");
+  add_path_option(serve, "--out", options.output_directory, "simulation: write the output files into this folder");
+  add_path_option(serve, "--cache", options.cache_directory, "simulation: folder for compiled sketches");
   return serve;
 }
 

@@ -10,7 +10,7 @@
 
 #include "abi/board_abi.h"
 #include "board/board_storage.hpp"
-#include "board/pulse_counts.hpp"
+#include "board/frame_pulses.hpp"
 #include "board/wire.hpp"
 #include "common/sim_time.hpp"
 #include "loader/board_library.hpp"

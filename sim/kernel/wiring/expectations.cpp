@@ -206,10 +206,11 @@ const PulseCounts* counts_of(const scenario::PortLineRef& port, const Simulation
 
 ExpectationResult port_pulses(const Expectation& expectation, const Simulation& simulation) {
   const PulseCounts* counts = counts_of(expectation.port, simulation);
-  const std::string what = port_name(expectation.port) + " " + signal_name(static_cast<uint8_t>(expectation.signal));
+  const uint8_t signal = static_cast<uint8_t>(expectation.signal);
+  const std::string what = port_name(expectation.port) + " " + signal_name(signal);
   if (counts == nullptr) return {false, what + ": no such board"};
-  const int64_t forward = static_cast<int64_t>(counts->forward[expectation.signal]);
-  const int64_t reverse = static_cast<int64_t>(counts->reverse[expectation.signal]);
+  const int64_t forward = static_cast<int64_t>((*counts)[signal].forward);
+  const int64_t reverse = static_cast<int64_t>((*counts)[signal].reverse);
   ExpectationResult result{true, what + ":"};
   if (expectation.forward) {
     const ExpectationResult check = compare(" forward", *expectation.forward, forward);
@@ -238,10 +239,7 @@ ExpectationResult cable_counts(const scenario::Scenario& scenario, const Simulat
   for (const scenario::CableConfig& cable : scenario.cables) {
     const PulseCounts& sent = simulation.board(cable.from.board)->sent(static_cast<uint8_t>(cable.from.port - 'A'));
     const PulseCounts& got = simulation.board(cable.to.board)->received(static_cast<uint8_t>(cable.to.port - 'A'));
-    bool same = true;
-    for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-      same = same && sent.forward[signal] == got.forward[signal] && sent.reverse[signal] == got.reverse[signal];
-    }
+    const bool same = sent.signals == got.signals;
     result.met = result.met && same;
     result.message += " " + cable.from.board + ":OUT_" + cable.from.port + " → " + cable.to.board + ":IN_" +
                       cable.to.port + " sent " + std::to_string(sent.accepted()) + ", accepted " +

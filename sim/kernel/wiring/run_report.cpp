@@ -218,17 +218,13 @@ RunSummary Simulation::run_summary() const {
       const std::string letter(1, static_cast<char>('A' + port));
       if (slot.board->output_claimed(port)) {
         PortSummary& out = summary.ports[slot.config->name + ":OUT_" + letter];
-        const PulseCounts& sent = slot.board->sent(port);
-        for (uint8_t signal = 0; signal < kNumSignals; ++signal) out.pulses[signal] = {sent.forward[signal], sent.reverse[signal]};
+        out.pulses = slot.board->sent(port);
         out.carried = slot.board->port_counter("OutputPort", port, "carried");
       }
       if (slot.board->input_begun(port)) {
         PortSummary& in = summary.ports[slot.config->name + ":IN_" + letter];
         in.is_input = true;
-        const PulseCounts& got = slot.board->received(port);
-        for (uint8_t signal = 0; signal < kNumSignals; ++signal) in.pulses[signal] = {got.forward[signal], got.reverse[signal]};
-        in.rejected_too_short = got.too_short;
-        in.rejected_too_long = got.too_long;
+        in.pulses = slot.board->received(port);
       }
     }
   }

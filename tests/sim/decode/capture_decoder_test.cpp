@@ -92,8 +92,8 @@ TEST(CaptureDecoder, EncodedFramesDecodeToExactCountsAndFrameStatistics) {
   ASSERT_EQ(capture.pulses_per_frame, (std::vector<int>{5, 1, 5, 1, 5, 1, 2}));  // E is carried each time
   const DecodeResult result = decode_step_dir(capture.wave.step, capture.wave.dir, DecodeOptions{});
   expect_round_counts(result);
-  EXPECT_EQ(result.too_short, 0u);
-  EXPECT_EQ(result.too_long, 0u);
+  EXPECT_EQ(result.counts.too_short, 0u);
+  EXPECT_EQ(result.counts.too_long, 0u);
   EXPECT_EQ(result.incomplete, 0u);
   EXPECT_TRUE(result.first_rejected.empty());
   EXPECT_EQ(result.frames.count, 7u);
@@ -107,7 +107,7 @@ TEST(CaptureDecoder, PulsesStretchedByACableDecodeTheSame) {
     const EncodedCapture capture = encode_rounds(kRounds, stretch);
     const DecodeResult result = decode_step_dir(capture.wave.step, capture.wave.dir, DecodeOptions{});
     expect_round_counts(result);
-    EXPECT_EQ(result.too_short + result.too_long, 0u) << stretch;
+    EXPECT_EQ(result.counts.too_short + result.counts.too_long, 0u) << stretch;
     EXPECT_EQ(result.frames.count, 7u) << stretch;
   }
 }
@@ -122,8 +122,8 @@ TEST(CaptureDecoder, GlitchesAreTooShortAndAnEightMicrosecondPulseIsTooLong) {
   append_pulse(capture.wave.step, 500 * kMicrosecond, 8 * kMicrosecond);
   const DecodeResult result = decode_step_dir(capture.wave.step, capture.wave.dir, DecodeOptions{});
   expect_round_counts(result);
-  EXPECT_EQ(result.too_short, 2u);
-  EXPECT_EQ(result.too_long, 1u);
+  EXPECT_EQ(result.counts.too_short, 2u);
+  EXPECT_EQ(result.counts.too_long, 1u);
   ASSERT_EQ(result.first_rejected.size(), 3u);
   EXPECT_EQ(result.first_rejected[0].rise, 310000);
   EXPECT_EQ(result.first_rejected[0].fall, 310500);
@@ -141,7 +141,7 @@ TEST(CaptureDecoder, GlitchesAreTooShortAndAnEightMicrosecondPulseIsTooLong) {
   few.max_rejected_examples = 1;
   const DecodeResult limited = decode_step_dir(capture.wave.step, capture.wave.dir, few);
   EXPECT_EQ(limited.first_rejected.size(), 1u);
-  EXPECT_EQ(limited.too_short + limited.too_long, 3u);
+  EXPECT_EQ(limited.counts.too_short + limited.counts.too_long, 3u);
 }
 
 TEST(CaptureDecoder, WidthsRoundInCaptureTicksLikeTheFirmware) {
@@ -154,8 +154,8 @@ TEST(CaptureDecoder, WidthsRoundInCaptureTicksLikeTheFirmware) {
   const DecodeResult result = decode_step_dir(step, EdgeList{}, DecodeOptions{});
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{0, 2}));
   EXPECT_EQ(result.counts[SIGNAL_E], (DirectionCounts{0, 1}));
-  EXPECT_EQ(result.too_short, 1u);
-  EXPECT_EQ(result.too_long, 1u);
+  EXPECT_EQ(result.counts.too_short, 1u);
+  EXPECT_EQ(result.counts.too_long, 1u);
 }
 
 TEST(CaptureDecoder, CaptureTicksRoundHalfUp) {
@@ -175,8 +175,8 @@ TEST(CaptureDecoder, PulsesPastTheCounterWrapAreMeasuredWholeLikeTheFirmware) {
   append_pulse(step, 13 * kSecond, 500 * kMicrosecond);       // 75000 ticks (wrapped alone: 63 µs)
   const DecodeResult result = decode_step_dir(step, EdgeList{}, DecodeOptions{});
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{0, 1}));
-  EXPECT_EQ(result.too_short, 0u);
-  EXPECT_EQ(result.too_long, 3u);
+  EXPECT_EQ(result.counts.too_short, 0u);
+  EXPECT_EQ(result.counts.too_long, 3u);
   for (const RejectedPulse& pulse : result.first_rejected) EXPECT_EQ(pulse.width_us, 255);  // saturated
 }
 
@@ -203,8 +203,8 @@ TEST(CaptureDecoder, StepDirModeSamplesDirAtTheRisingEdgeAndCountsOneSignal) {
   EXPECT_EQ(result.counts[SIGNAL_Z], (DirectionCounts{2, 3}));
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{0, 0}));
   EXPECT_EQ(result.accepted, 5u);
-  EXPECT_EQ(result.too_short, 1u);
-  EXPECT_EQ(result.too_long, 0u);
+  EXPECT_EQ(result.counts.too_short, 1u);
+  EXPECT_EQ(result.counts.too_long, 0u);
   // Frames: {10} then a 9 µs gap, {21, 31, 40} (gaps 8 and 7 µs), then a 19 µs gap, {60}.
   EXPECT_EQ(result.frames.count, 3u);
   EXPECT_EQ(result.frames.max_pulses, 3u);
@@ -216,8 +216,8 @@ TEST(CaptureDecoder, StepdanceModeSamplesDirAtTheFallingEdge) {
   const PortWaveform wave = mixed_step_dir();
   const DecodeResult result = decode_step_dir(wave.step, wave.dir, DecodeOptions{});
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{1, 2}));
-  EXPECT_EQ(result.too_short, 2u);
-  EXPECT_EQ(result.too_long, 1u);
+  EXPECT_EQ(result.counts.too_short, 2u);
+  EXPECT_EQ(result.counts.too_long, 1u);
 }
 
 TEST(CaptureDecoder, ADirEdgeAtTheSamplingInstantHasAlreadyHappened) {
@@ -335,7 +335,7 @@ TEST(StepDirDecoder, PulsesWithinOneTimestampAreZeroWideAndEachCounted) {
   }
   decoder.step_edge(5000, false);  // no change: ignored
   const DecodeResult result = decoder.finish();
-  EXPECT_EQ(result.too_short, 1000u);
+  EXPECT_EQ(result.counts.too_short, 1000u);
   EXPECT_EQ(result.first_rejected.size(), 10u);
   EXPECT_EQ(result.incomplete, 0u);
 }
@@ -369,8 +369,8 @@ TEST(StepDirDecoder, TheOrderOfEdgesAtOneTimeDoesNotMatter) {
       for (; next_dir < dir.size(); ++next_dir) decoder.dir_edge(dir[next_dir].time, dir[next_dir].level);
       const DecodeResult streamed = decoder.finish();
       EXPECT_EQ(streamed.counts, merged.counts) << round;
-      EXPECT_EQ(streamed.too_short, merged.too_short) << round;
-      EXPECT_EQ(streamed.too_long, merged.too_long) << round;
+      EXPECT_EQ(streamed.counts.too_short, merged.counts.too_short) << round;
+      EXPECT_EQ(streamed.counts.too_long, merged.counts.too_long) << round;
       EXPECT_EQ(streamed.incomplete, merged.incomplete) << round;
       EXPECT_EQ(streamed.frames.count, merged.frames.count) << round;
       ASSERT_EQ(streamed.first_rejected.size(), merged.first_rejected.size()) << round;

@@ -12,8 +12,8 @@ DecodeResult sample_result() {
   result.counts[SIGNAL_Y] = {2, 0};
   result.counts[SIGNAL_E] = {0, 12345678};
   result.accepted = 12345682;
-  result.too_short = 2;
-  result.too_long = 1;
+  result.counts.too_short = 2;
+  result.counts.too_long = 1;
   result.incomplete = 1;
   result.first_rejected = {{310000, 310500, 0, protocol::PulseVerdict::kTooShort},
                            {500000, 508000, 8, protocol::PulseVerdict::kTooLong}};

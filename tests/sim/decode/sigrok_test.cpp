@@ -93,7 +93,7 @@ TEST(Sigrok, ReExportOfOurVcdDecodesToTheSameCounts) {
   EXPECT_EQ(original.frames.count, 10u);
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) EXPECT_EQ(exported.counts[signal], original.counts[signal]);
   EXPECT_EQ(exported.frames.count, original.frames.count);
-  EXPECT_EQ(exported.too_short + exported.too_long, 0u);
+  EXPECT_EQ(exported.counts.too_short + exported.counts.too_long, 0u);
 }
 
 TEST(Sigrok, ReadsADemoDeviceCapture) {

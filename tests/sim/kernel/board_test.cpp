@@ -38,9 +38,9 @@ TEST(SimBoardTest, StepASketchTurnsKnobCountsIntoMotorPulses) {
   board->power_on(0);
   scheduler.run_until(100 * kMillisecond);
   // +100 counts on the inverted 0.01 mm/count knob: x = −1 mm, a = b = −80 steps, inverted twice.
-  EXPECT_EQ(board->sent(0).forward[SIGNAL_E], 80u);
-  EXPECT_EQ(board->sent(0).reverse[SIGNAL_E], 0u);
-  EXPECT_EQ(board->sent(1).forward[SIGNAL_E], 80u);
+  EXPECT_EQ(board->sent(0)[SIGNAL_E].forward, 80u);
+  EXPECT_EQ(board->sent(0)[SIGNAL_E].reverse, 0u);
+  EXPECT_EQ(board->sent(1)[SIGNAL_E].forward, 80u);
   const StepdanceBoardStatsV1 stats = board->stats();
   EXPECT_EQ(board->port_counter("OutputPort", 0, "sent_e_forward"), 80u);  // the board's own count agrees with the wire
   EXPECT_EQ(stats.frames, 2500u);               // frames at 40 µs … 100 ms
@@ -56,8 +56,8 @@ TEST(SimBoardTest, TwoBoardsRunningOneSketchKeepSeparateGlobals) {
   first->power_on(0);
   second->power_on(0);
   scheduler.run_until(20 * kMillisecond);
-  EXPECT_EQ(first->sent(0).forward[SIGNAL_E], 40u);
-  EXPECT_EQ(second->sent(0).reverse[SIGNAL_E], 20u);
+  EXPECT_EQ(first->sent(0)[SIGNAL_E].forward, 40u);
+  EXPECT_EQ(second->sent(0)[SIGNAL_E].reverse, 20u);
   EXPECT_EQ(first->port_counter("OutputPort", 0, "sent_e_forward"), 40u);
   EXPECT_EQ(second->port_counter("OutputPort", 0, "sent_e_reverse"), 20u);
 }

@@ -77,11 +77,11 @@ TEST(CableTest, PulsesStretchedByFourTenthsOfAMicrosecondLoseNothing) {
   const Tallies tallies = run("stretch_ns = 400\ndelay_ns = 150", "cable_stretch");
   EXPECT_EQ(tallies.sent.accepted(), 5000u);
   // The knob counts, inverted: 3000 reverse X pulses, 2000 forward Y pulses.
-  EXPECT_EQ(tallies.sent.reverse[SIGNAL_X], 3000u);
-  EXPECT_EQ(tallies.sent.forward[SIGNAL_Y], 2000u);
+  EXPECT_EQ(tallies.sent[SIGNAL_X].reverse, 3000u);
+  EXPECT_EQ(tallies.sent[SIGNAL_Y].forward, 2000u);
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    EXPECT_EQ(tallies.received.forward[signal], tallies.sent.forward[signal]);
-    EXPECT_EQ(tallies.received.reverse[signal], tallies.sent.reverse[signal]);
+    EXPECT_EQ(tallies.received[signal].forward, tallies.sent[signal].forward);
+    EXPECT_EQ(tallies.received[signal].reverse, tallies.sent[signal].reverse);
   }
   EXPECT_EQ(tallies.received.rejected(), 0u);
   EXPECT_EQ(tallies.cable.pulses_merged + tallies.cable.pulses_removed, 0u);
@@ -95,17 +95,17 @@ TEST(CableTest, GlitchesShorterThanAMicrosecondAreRejectedAndCounted) {
   EXPECT_EQ(tallies.received.too_short, tallies.cable.glitches_injected);
   EXPECT_EQ(tallies.received.too_long, 0u);
   EXPECT_EQ(tallies.received.accepted(), 5000u);
-  EXPECT_EQ(tallies.received.reverse[SIGNAL_X], 3000u);
-  EXPECT_EQ(tallies.received.forward[SIGNAL_Y], 2000u);
+  EXPECT_EQ(tallies.received[SIGNAL_X].reverse, 3000u);
+  EXPECT_EQ(tallies.received[SIGNAL_Y].forward, 2000u);
 }
 
 TEST(CableTest, StretchingPastHalfAMicrosecondMisreadsTheAxis) {
   // 2 µs X pulses stretched to 2.6 µs round to 3 µs and read as Y: why the limit is 0.4 µs.
   // (And 3 µs Y pulses read as 4 µs R pulses.)
   const Tallies tallies = run("stretch_ns = 600", "cable_overstretch");
-  EXPECT_EQ(tallies.received.reverse[SIGNAL_X], 0u);
-  EXPECT_EQ(tallies.received.reverse[SIGNAL_Y], 3000u);
-  EXPECT_EQ(tallies.received.forward[SIGNAL_R], 2000u);
+  EXPECT_EQ(tallies.received[SIGNAL_X].reverse, 0u);
+  EXPECT_EQ(tallies.received[SIGNAL_Y].reverse, 3000u);
+  EXPECT_EQ(tallies.received[SIGNAL_R].forward, 2000u);
 }
 
 }  // namespace

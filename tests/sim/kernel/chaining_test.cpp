@@ -9,8 +9,8 @@ namespace {
 
 void expect_same_pulses(const PulseCounts& sent, const PulseCounts& received) {
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    EXPECT_EQ(sent.forward[signal], received.forward[signal]) << "signal " << int{signal};
-    EXPECT_EQ(sent.reverse[signal], received.reverse[signal]) << "signal " << int{signal};
+    EXPECT_EQ(sent[signal].forward, received[signal].forward) << "signal " << int{signal};
+    EXPECT_EQ(sent[signal].reverse, received[signal].reverse) << "signal " << int{signal};
   }
 }
 
@@ -43,10 +43,10 @@ TEST(ChainingTest, DecodingTheSimulatorsOwnVcdReproducesItsCounts) {
     const PulseCounts& counted = output ? simulation->board("knobs")->sent(0) : simulation->board("plotter")->received(0);
     ASSERT_TRUE(output || pair.label == "plotter.IN_A") << pair.label;
     for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-      EXPECT_EQ(decoded.counts[signal].forward, counted.forward[signal]) << pair.label;
-      EXPECT_EQ(decoded.counts[signal].reverse, counted.reverse[signal]) << pair.label;
+      EXPECT_EQ(decoded.counts[signal].forward, counted[signal].forward) << pair.label;
+      EXPECT_EQ(decoded.counts[signal].reverse, counted[signal].reverse) << pair.label;
     }
-    EXPECT_EQ(decoded.too_short, counted.too_short);
+    EXPECT_EQ(decoded.counts.too_short, counted.too_short);
   }
 }
 

@@ -30,7 +30,7 @@ TEST(HighSpeedScenario, A100kHzStreamCrossesABadCableExactly) {
     EXPECT_EQ(decoded.counts[SIGNAL_X].forward, 300000u) << prefix;
     EXPECT_EQ(decoded.counts[SIGNAL_X].reverse, 100000u) << prefix;
     EXPECT_EQ(decoded.accepted, 400000u) << prefix;
-    EXPECT_EQ(decoded.too_long, 0u) << prefix;
+    EXPECT_EQ(decoded.counts.too_long, 0u) << prefix;
     // One X pulse in every 10 µs frame, frames 10 µs apart (the cable delays them all alike).
     EXPECT_EQ(decoded.frames.count, 400000u) << prefix;
     EXPECT_EQ(decoded.frames.max_pulses, 1u) << prefix;

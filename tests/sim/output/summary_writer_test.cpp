@@ -22,8 +22,8 @@ RunSummary sample_summary() {
   PortSummary in;
   in.is_input = true;
   in.pulses[SIGNAL_X] = {119, 4};
-  in.rejected_too_short = 2;
-  in.rejected_too_long = 1;
+  in.pulses.too_short = 2;
+  in.pulses.too_long = 1;
   summary.ports["driver:IN_A"] = in;
   summary.extra["strokes"] = 3;
   summary.extra["expectations"] = {{"failed", 0}, {"passed", 2}};
