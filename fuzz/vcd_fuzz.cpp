@@ -21,7 +21,7 @@ void decode_and_check(const VcdWire& step, const VcdWire& dir, stepdance::InputM
   options.mode = mode;
   const DecodeResult result = decode_step_dir(step.edges, dir.edges, options, {step.initial, dir.initial});
   uint64_t counted = 0;
-  for (const DirectionCounts& counts : result.counts) counted += counts.forward + counts.reverse;
+  for (const DirectionCounts& counts : result.counts.signals) counted += counts.forward + counts.reverse;
   if (counted != result.accepted) abort();
   uint64_t rises = step.initial ? 1 : 0;
   for (const Edge& edge : step.edges) rises += edge.level ? 1 : 0;
