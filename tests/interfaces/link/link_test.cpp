@@ -141,16 +141,17 @@ struct Calls {
   void two() { last = 2; }
 };
 using Handler = void (Calls::*)();
-constexpr auto kTable = make_command_table<Handler>({{"SM", &Calls::one}, {"QP", &Calls::two}}, true);
+constexpr auto kTable = make_command_table<Handler>({{"SM", &Calls::one}, {"QP", &Calls::two}});
 static_assert(kTable.names_unique(), "each command once");
-static_assert(kTable.find("sm") == &kTable.commands[0], "found at compile time, either case");
+static_assert(kTable.find("SM") == &kTable.commands[0], "found at compile time");
+static_assert(kTable.find("S") == nullptr && kTable.find("SMX") == nullptr, "a prefix or a longer name is another name");
 static_assert(kTable.find("XX") == nullptr, "unknown names are not found");
 constexpr auto kDuplicate = make_command_table<Handler>({{"$$", &Calls::one}, {"$$", &Calls::two}});
 static_assert(!kDuplicate.names_unique(), "a name twice is caught");
 
-TEST(CommandTableTest, DispatchesByNameWithTheTablesCaseRule) {
+TEST(CommandTableTest, DispatchesByExactName) {
   Calls calls;
-  (calls.*kTable.find("qp")->handler)();
+  (calls.*kTable.find("QP")->handler)();
   EXPECT_EQ(calls.last, 2);
   constexpr auto exact = make_command_table<Handler>({{"$G", &Calls::one}});
   EXPECT_EQ(exact.find("$g"), nullptr);

@@ -60,8 +60,7 @@ void Eibotboard::execute_line() {
     finish_line();
     return;
   }
-  take_command_name();
-  const size_t name_length = strlen(command_name_);
+  const size_t name_length = take_command_name();
   EbbParameters parameters(lines_.text() + name_length, lines_.length() - name_length);
   if (!dispatch(command_name_, parameters)) {  // waits for FIFO room; the line stays
     if (!waiting_for_room_) ++fifo_full_waits_;
@@ -71,16 +70,18 @@ void Eibotboard::execute_line() {
   finish_line();
 }
 
-// The command is one or two characters up to the first comma, case-insensitive.
-void Eibotboard::take_command_name() {
+// The command is one or two characters up to the first comma, case-insensitive: folded to upper case
+// here, the form the command table lists.
+// Returns the name's length. The line holds no NUL before its end (control bytes are dropped).
+size_t Eibotboard::take_command_name() {
   const char* line = lines_.text();
   size_t name_length = 0;
-  while (name_length < lines_.length() && name_length < 2 && line[name_length] != ',') {
+  for (; name_length < 2 && line[name_length] != '\0' && line[name_length] != ','; ++name_length) {
     const char c = line[name_length];
     command_name_[name_length] = (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
-    ++name_length;
   }
   command_name_[name_length] = '\0';
+  return name_length;
 }
 
 void Eibotboard::finish_line() {

@@ -124,7 +124,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   // Link (eibotboard.cpp)
   void read_lines(ByteStream& stream);
   void execute_line();
-  void take_command_name();
+  size_t take_command_name();
   void finish_line();
   // Dispatch and motion commands (eibotboard_commands.cpp); a handler returns false while the
   // FIFO has no room (the line waits), true once the command is answered.

@@ -76,8 +76,7 @@ const link::Command<Eibotboard::CommandHandler>* Eibotboard::find_command(const 
           {"PD", {&Eibotboard::command_pd, 0}},       {"PO", {&Eibotboard::command_po, 0}},
           {"PI", {&Eibotboard::command_pi, 0}},       {"PC", {&Eibotboard::command_pc, 0}},
           {"PG", {&Eibotboard::command_pg, 0}},
-      },
-      true);
+      });
   static_assert(kTable.names_unique(), "an EBB command is listed twice");
   return kTable.find(name);
 }

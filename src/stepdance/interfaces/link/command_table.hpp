@@ -13,32 +13,25 @@ struct Command {
   Handler handler{};
 };
 
-/// Compares two names; with `ignore_case` ASCII letters match either case. Context: any.
-constexpr bool same_name(const char* a, const char* b, bool ignore_case) {
-  for (;; ++a, ++b) {
-    char x = *a;
-    char y = *b;
-    if (ignore_case) {
-      if (x >= 'a' && x <= 'z') x = static_cast<char>(x - 'a' + 'A');
-      if (y >= 'a' && y <= 'z') y = static_cast<char>(y - 'a' + 'A');
-    }
-    if (x != y) return false;
-    if (x == '\0') return true;
+/// True when two NUL-terminated names are the same bytes. Context: any.
+constexpr bool same_name(const char* a, const char* b) {
+  for (; *a == *b; ++a, ++b) {
+    if (*a == '\0') return true;
   }
+  return false;
 }
 
 /// The commands of one protocol: each name once (checked at compile time with
-/// `static_assert(table.names_unique())`), looked up by name. Context: any.
+/// `static_assert(table.names_unique())`), looked up by exact name; a protocol whose names ignore
+/// case (EBB) folds the name before the lookup. Context: any.
 template <class Handler, size_t N>
 struct CommandTable {
   Command<Handler> commands[N];
-  /// Matches names without regard to ASCII case (EBB) or exactly (Grbl's `$` commands).
-  bool ignore_case = false;
 
   /// The command named `name`, or null when there is none.
   constexpr const Command<Handler>* find(const char* name) const {
     for (const Command<Handler>& command : commands) {
-      if (same_name(command.name, name, ignore_case)) return &command;
+      if (same_name(command.name, name)) return &command;
     }
     return nullptr;
   }
@@ -46,7 +39,7 @@ struct CommandTable {
   constexpr bool names_unique() const {
     for (size_t i = 0; i < N; ++i) {
       for (size_t j = i + 1; j < N; ++j) {
-        if (same_name(commands[i].name, commands[j].name, ignore_case)) return false;
+        if (same_name(commands[i].name, commands[j].name)) return false;
       }
     }
     return true;
@@ -55,12 +48,11 @@ struct CommandTable {
   static constexpr size_t size() { return N; }
 };
 
-/// Builds a table from a braced list: `make_command_table<H>({{"SM", &X::sm}, …}, true)`.
+/// Builds a table from a braced list: `make_command_table<H>({{"SM", &X::sm}, …})`.
 template <class Handler, size_t N>
-constexpr CommandTable<Handler, N> make_command_table(const Command<Handler> (&commands)[N], bool ignore_case = false) {
+constexpr CommandTable<Handler, N> make_command_table(const Command<Handler> (&commands)[N]) {
   CommandTable<Handler, N> table{};
   for (size_t i = 0; i < N; ++i) table.commands[i] = commands[i];
-  table.ignore_case = ignore_case;
   return table;
 }
 

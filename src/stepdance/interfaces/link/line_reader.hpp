@@ -59,8 +59,8 @@ class LineReaderBase {
   ~LineReaderBase() = default;
 
  private:
+  bool step(uint8_t byte, const LineRules& rules);
   bool end_line();
-  void store(uint8_t byte);
 
   char* buffer_;
   size_t capacity_;

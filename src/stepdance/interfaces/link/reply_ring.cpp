@@ -5,7 +5,23 @@
 
 namespace stepdance::link {
 
-bool ReplyRingBase::send(const char* text) { return append(text, strlen(text)); }
+// One pass: the bytes go in as they are read and count only once the whole text fitted.
+bool ReplyRingBase::send(const char* text) {
+  const size_t room = space();
+  size_t tail = head_ + count_;
+  if (tail >= capacity_) tail -= capacity_;
+  size_t length = 0;
+  for (; text[length] != '\0'; ++length) {
+    if (length == room) {
+      ++dropped_;
+      return false;
+    }
+    data_[tail] = text[length];
+    if (++tail == capacity_) tail = 0;
+  }
+  count_ += length;
+  return true;
+}
 
 bool ReplyRingBase::send_line(const TextWriter& line, const char* ending) {
   const size_t ending_length = strlen(ending);
@@ -18,33 +34,29 @@ bool ReplyRingBase::send_line(const TextWriter& line, const char* ending) {
   return true;
 }
 
-bool ReplyRingBase::append(const char* bytes, size_t length) {
-  if (length > space()) {
-    ++dropped_;
-    return false;
-  }
-  push(bytes, length);
-  return true;
-}
-
+// Replies are a few bytes: a byte loop that wraps costs less than two memcpy calls.
 void ReplyRingBase::push(const char* bytes, size_t length) {
-  for (size_t i = 0; i < length; ++i) data_[(head_ + count_ + i) % capacity_] = bytes[i];
+  size_t tail = head_ + count_;
+  if (tail >= capacity_) tail -= capacity_;
+  for (size_t i = 0; i < length; ++i) {
+    data_[tail] = bytes[i];
+    if (++tail == capacity_) tail = 0;
+  }
   count_ += length;
 }
 
 size_t ReplyRingBase::flush(ByteStream& stream) {
   size_t total = 0;
   while (count_ > 0) {
-    const size_t room = stream.write_space();
     size_t chunk = capacity_ - head_;  // contiguous bytes from head_
     if (chunk > count_) chunk = count_;
-    if (chunk > room) chunk = room;
-    if (chunk == 0) break;
+    // write_bytes() never blocks: it takes what fits, and the rest waits for the next flush.
     const size_t written = stream.write_bytes(reinterpret_cast<const uint8_t*>(data_ + head_), chunk);
-    if (written == 0) break;
-    head_ = (head_ + written) % capacity_;
+    head_ += written;
+    if (head_ == capacity_) head_ = 0;  // a chunk never runs past the end of the storage
     count_ -= written;
     total += written;
+    if (written < chunk) break;
   }
   return total;
 }

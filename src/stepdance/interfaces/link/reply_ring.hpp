@@ -40,7 +40,6 @@ class ReplyRingBase {
   ~ReplyRingBase() = default;
 
  private:
-  bool append(const char* bytes, size_t length);
   void push(const char* bytes, size_t length);
 
   char* data_;
