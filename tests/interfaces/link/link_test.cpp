@@ -121,6 +121,27 @@ TEST(ReplyRingTest, QueuesWholeTextsAndFlushesAsTheHostReads) {
   EXPECT_EQ(ring.space(), 8u);
 }
 
+TEST(ReplyRingTest, ATextThatWrapsGoesInWholeAndARefusalLeavesTheQueueAsItWas) {
+  ReplyRing<8> ring;
+  FakeByteStream stream;
+  stream.write_room = 4;
+  EXPECT_TRUE(ring.send("abcdef"));
+  EXPECT_EQ(ring.flush(stream), 4u);  // "ef" stays, from the middle of the storage
+  EXPECT_TRUE(ring.send("ghijkl"));   // 6 bytes: to the end of the storage and on from its start
+  EXPECT_FALSE(ring.send("x"));       // full: refused and counted
+  char storage[4];
+  TextWriter empty(storage, sizeof(storage));
+  EXPECT_FALSE(ring.send_line(empty));  // even an empty line needs room for its CR LF
+  EXPECT_EQ(ring.dropped(), 2u);
+  stream.write_room = 100;
+  EXPECT_EQ(ring.flush(stream), 8u);
+  EXPECT_EQ(stream.take(), "abcdefghijkl");
+  EXPECT_TRUE(ring.send("mnopqrs"));  // 7 of 8 bytes fit ...
+  EXPECT_FALSE(ring.send("tu"));      // ... and a text that would run out half way is refused whole
+  EXPECT_EQ(ring.flush(stream), 7u);
+  EXPECT_EQ(stream.take(), "mnopqrs");
+}
+
 TEST(ReplyRingTest, AHostThatReadsNothingLosesNothing) {
   ReplyRing<16> ring;
   FakeByteStream stream;
