@@ -33,7 +33,7 @@ std::string_view connector_name(Connector connector) {
   return "?";
 }
 
-std::string_view module_name(Module module) { return module == Module::kBasic ? "basic" : "driver"; }
+std::string_view module_name(const BoardDefinition& module) { return module.scenario_name; }
 
 std::optional<Connector> parse_connector(std::string_view name) {
   for (const auto& [known, value] : kConnectors) {
@@ -42,8 +42,13 @@ std::optional<Connector> parse_connector(std::string_view name) {
   return std::nullopt;
 }
 
-bool module_has_connector(Module module, Connector connector) {
-  return module == Module::kDriver || !is_limit_connector(connector);
+bool module_has_connector(const BoardDefinition& module, Connector connector) {
+  const uint8_t index = connector_index(connector);
+  if (is_encoder_connector(connector)) return module.encoder_pins[index][0] != kNoPin;
+  if (is_analog_connector(connector)) return module.io_a[index] != kNoPin;
+  if (is_digital_connector(connector)) return module.io_d[index] != kNoPin;
+  if (is_qwiic_connector(connector)) return module.qwiic[index][0] != kNoPin;
+  return index < module.output_port_count && module.output_ports[index].limit != kNoPin;
 }
 
 bool is_encoder_connector(Connector c) { return c == Connector::kEnc1 || c == Connector::kEnc2; }
@@ -66,8 +71,21 @@ uint8_t connector_index(Connector connector) {
   return 0;
 }
 
-bool module_has_port(Module module, char port) {
-  return module == Module::kBasic ? port == 'A' : (port >= 'A' && port <= 'D');
+bool module_has_output_port(const BoardDefinition& module, char port) {
+  return port >= 'A' && port < 'A' + module.output_port_count;
+}
+
+bool module_has_input_port(const BoardDefinition& module, char port) {
+  return port >= 'A' && port < 'A' + module.input_port_count;
+}
+
+std::string socket_letters(const BoardDefinition& module) {
+  std::string text;
+  for (uint8_t port = 0; port < module.output_port_count; ++port) {
+    if (port > 0) text += port + 1 == module.output_port_count ? " and " : ", ";
+    text += static_cast<char>('A' + port);
+  }
+  return text;
 }
 
 std::optional<SplitRef> split_ref(std::string_view text) {

@@ -1,4 +1,4 @@
-// Scenario vocabulary: module and connector names, and what each module has.
+// Scenario vocabulary: connector names, and what each module has (read from its board table).
 #pragma once
 
 #include <cstddef>
@@ -11,12 +11,13 @@
 
 namespace stepdance::sim::scenario {
 
-/// "driver" or "basic".
-std::string_view module_name(Module module);
+/// The module's scenario name: "driver", "basic", …
+std::string_view module_name(const BoardDefinition& module);
 /// The connector with this silkscreen name, if any.
 std::optional<Connector> parse_connector(std::string_view name);
-/// Whether a module has the connector (the Basic Module has no limit headers).
-bool module_has_connector(Module module, Connector connector);
+/// Whether a module has the connector: its table has the pin(s) behind it (the Basic Module has no
+/// limit headers).
+bool module_has_connector(const BoardDefinition& module, Connector connector);
 /// Connector groups, for the kinds' rules of where a device may sit.
 bool is_encoder_connector(Connector connector);  ///< ENC1, ENC2
 bool is_analog_connector(Connector connector);   ///< A1..A4
@@ -26,8 +27,12 @@ bool is_qwiic_connector(Connector connector);    ///< QWIIC0, QWIIC1
 /// Index of a connector within its group (ENC1 → 0, A3 → 2, D2 → 1, LIMIT_C → 2, QWIIC1 → 1).
 uint8_t connector_index(Connector connector);
 
-/// Whether a module has input and output port `port` (Driver: A..D; Basic: A).
-bool module_has_port(Module module, char port);
+/// Whether a module has output port `port` (Driver: A..D; Basic: A).
+bool module_has_output_port(const BoardDefinition& module, char port);
+/// Whether a module has input port `port` (Driver: A..D; Basic: A).
+bool module_has_input_port(const BoardDefinition& module, char port);
+/// "A, B, C and D": the letters of the module's driver sockets, for messages.
+std::string socket_letters(const BoardDefinition& module);
 
 /// "board:rest" split at its only ':'; nothing if the form is wrong or a part is empty.
 struct SplitRef {

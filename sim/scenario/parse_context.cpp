@@ -44,8 +44,8 @@ std::optional<PortRef> read_port(TableReader& reader, std::string_view key, bool
     return std::nullopt;
   }
   const char port = split->rest[0];
-  if (!module_has_port(board->module, port)) {
-    reader.error(key, "board '" + board->name + "' (" + std::string(module_name(board->module)) + " module) has no " +
+  if (!(output ? module_has_output_port(*board->module, port) : module_has_input_port(*board->module, port))) {
+    reader.error(key, "board '" + board->name + "' (" + std::string(module_name(*board->module)) + " module) has no " +
                           (output ? "output" : "input") + " port " + split->rest);
     return std::nullopt;
   }
@@ -68,8 +68,8 @@ std::optional<PortLineRef> parse_port_line(std::string_view text, std::string_vi
     return std::nullopt;
   }
   const char port = split->rest.back();
-  if (!module_has_port(board->module, port)) {
-    context.reporter.error(line, "board '" + board->name + "' (" + std::string(module_name(board->module)) +
+  if (!(out_form ? module_has_output_port(*board->module, port) : module_has_input_port(*board->module, port))) {
+    context.reporter.error(line, "board '" + board->name + "' (" + std::string(module_name(*board->module)) +
                                      " module) has no " + (out_form ? "output" : "input") + " port " + port);
     return std::nullopt;
   }

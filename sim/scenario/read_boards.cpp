@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <map>
 
+#include "kinds/board_registry.hpp"
 #include "scenario/file_names.hpp"
 #include "scenario/names.hpp"
 #include "scenario/parse_context.hpp"
@@ -83,15 +84,16 @@ std::optional<SocketConfig> read_socket(char port, const toml::node& value, Repo
 void read_sockets(TableReader& board_reader, BoardConfig& board, ParseContext& context) {
   const toml::table* sockets = board_reader.table("sockets");
   if (sockets == nullptr) return;
-  if (board.module == Module::kBasic) {
-    context.reporter.error(line_of(*sockets), "a basic module has no driver sockets");
+  if (!board.module->has_drivers) {
+    context.reporter.error(line_of(*sockets), "a " + std::string(module_name(*board.module)) +
+                                                  " module has no driver sockets");
     return;
   }
   for (const auto& [key, value] : *sockets) {
     const std::string_view name = key.str();
-    if (name.size() != 1 || name[0] < 'A' || name[0] > 'D') {
+    if (name.size() != 1 || !module_has_output_port(*board.module, name[0])) {
       context.reporter.error(static_cast<int>(key.source().begin.line),
-                             "unknown socket '" + std::string(name) + "' (sockets are A, B, C and D)");
+                             "unknown socket '" + std::string(name) + "' (sockets are " + socket_letters(*board.module) + ")");
       continue;
     }
     if (const auto socket = read_socket(name[0], value, context.reporter)) board.sockets.push_back(*socket);
@@ -127,12 +129,10 @@ void read_board(const toml::table& table, ParseContext& context, std::map<std::s
     }
   }
   if (const auto module = reader.string("module")) {
-    if (*module == "driver") {
-      board.module = Module::kDriver;
-    } else if (*module == "basic") {
-      board.module = Module::kBasic;
+    if (const BoardDefinition* found = find_board(*module)) {
+      board.module = found;
     } else {
-      reader.error("module", "'module' must be \"driver\" or \"basic\", got \"" + *module + "\"");
+      reader.error("module", "'module' must be " + board_names() + ", got \"" + *module + "\"");
     }
   }
   if (const auto period = reader.integer("loop_period_us", ranges::kLoopPeriodUs)) board.loop_period_us = *period;

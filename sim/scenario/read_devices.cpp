@@ -89,8 +89,8 @@ void read_connector(TableReader& reader, DeviceConfig& device, const DeviceKind*
   } else if (kind != nullptr && !kind->fits(*connector)) {
     reader.error("connector", std::string(kind->with_article) + " cannot use connector " + *text + " (use " +
                                   std::string(kind->connectors) + ")");
-  } else if (board != nullptr && !module_has_connector(board->module, *connector)) {
-    reader.error("connector", "board '" + board->name + "' (" + std::string(module_name(board->module)) +
+  } else if (board != nullptr && !module_has_connector(*board->module, *connector)) {
+    reader.error("connector", "board '" + board->name + "' (" + std::string(module_name(*board->module)) +
                                   " module) has no connector " + *text);
   } else if (board != nullptr) {
     if (!is_qwiic_connector(*connector)) claim(reader, "connector", *text, *board, *connector, device.name, names);

@@ -17,8 +17,9 @@ void read_machine(TableReader& top, ParseContext& context) {
     board = context.scenario.board(*name);
     if (board == nullptr) {
       reader.error("board", "unknown board '" + *name + "'");
-    } else if (board->module == Module::kBasic) {
-      reader.error("board", "board '" + *name + "' is a basic module, which has no driver sockets");
+    } else if (!board->module->has_drivers) {
+      reader.error("board", "board '" + *name + "' is a " + std::string(module_name(*board->module)) +
+                                " module, which has no driver sockets");
       board = nullptr;
     } else {
       machine.board = *name;

@@ -11,6 +11,7 @@
 
 #include "common/sim_time.hpp"
 #include "models/cable.hpp"
+#include "stepdance/boards/driver_module_v1.hpp"
 
 namespace stepdance::sim {
 struct DeviceKind;
@@ -18,9 +19,6 @@ struct MachineKind;
 }  // namespace stepdance::sim
 
 namespace stepdance::sim::scenario {
-
-/// Which module a sketch runs on.
-enum class Module { kDriver, kBasic };
 
 /// What sits in a driver socket.
 enum class SocketDevice { kStepper, kServo };
@@ -57,12 +55,14 @@ struct BoardConfig {
   std::string name;
   /// Absolute path of the `.ino` (checked to exist).
   std::string sketch;
-  Module module = Module::kDriver;
+  /// The module it is: a table of the board registry (kinds/board_registry.hpp), found by its
+  /// scenario name (`module = "basic"`); the Driver Module unless the file says otherwise.
+  const BoardDefinition* module = &kDriverModuleV1;
   /// How often loop() runs, in µs of virtual time (> 0).
   int64_t loop_period_us = 200;
   /// Offset of this board's 40 µs frame clock, µs (0..39).
   int frame_phase_us = 0;
-  /// Populated sockets, sorted by port (Driver Module only).
+  /// Populated sockets, sorted by port (boards with driver sockets only).
   std::vector<SocketConfig> sockets;
   /// Speed and failures of the board's card.
   SdCardConfig sd_card;

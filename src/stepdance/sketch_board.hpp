@@ -1,13 +1,17 @@
 // Selects the board from the sketch's module macro and defines the original's pin names.
 // This is the one place the public API reads a preprocessor macro: sketches choose their
-// board with `#define module_driver` or `#define module_basic` before including stepdance.hpp.
+// board with `#define module_driver` or `#define module_basic` before including stepdance.hpp
+// (the original library's macros), or name any board table with `#define STEPDANCE_BOARD <table>`
+// after including the header that defines it (a board the original never had, or a test's).
 #pragma once
 
 #include "stepdance/boards/board.hpp"
 
 namespace stepdance::sketch {
 
-#if defined(module_basic)
+#if defined(STEPDANCE_BOARD)
+constexpr const BoardDefinition& kBoard = STEPDANCE_BOARD;
+#elif defined(module_basic)
 constexpr const BoardDefinition& kBoard = kBasicModuleV1;
 #else
 constexpr const BoardDefinition& kBoard = kDriverModuleV1;

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 7u
+#define STEPDANCE_BOARD_ABI_VERSION 8u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -132,8 +132,9 @@ enum StepdanceSketchEnd { STEPDANCE_END_EXIT = 0, STEPDANCE_END_QUICK_EXIT = 1, 
  * the frame ticks), and escape() leaves the innermost one only. */
 typedef struct StepdanceBoardV1 {
   uint32_t abi_version;
-  /* The module the sketch selected (`#define module_driver` / `module_basic`): 0 driver, 1 basic. */
-  int module;
+  /* The name of the board table the sketch selected (stepdance::BoardDefinition::name, e.g.
+   * "Driver Module v1.0"); static. The host finds the same table in its board registry. */
+  const char* board_name;
   int (*run_setup)(int64_t now_ns);
   int (*run_frame_tick)(int64_t now_ns);
   int (*run_khz_tick)(int64_t now_ns);

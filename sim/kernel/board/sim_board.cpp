@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "board/board_callbacks.hpp"
+#include "kinds/board_registry.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -52,11 +53,14 @@ bool SimBoard::attach(std::string& error) {
     error = options_.name + ": the board library speaks another ABI version; rebuild the sketch";
     return false;
   }
+  const char* selected = board_->board_name != nullptr ? board_->board_name : "";
+  definition_ = find_board_named(selected);
+  if (definition_ == nullptr) {
+    definition_ = &kDriverModuleV1;
+    error = options_.name + ": the sketch selects the board \"" + selected + "\", which the simulator does not know";
+    return false;
+  }
   return true;
-}
-
-const BoardDefinition& SimBoard::definition() const {
-  return is_basic_module() ? kBasicModuleV1 : kDriverModuleV1;
 }
 
 void SimBoard::power_on(SimTime time_ns) { scheduler_.schedule(setup_event_, time_ns); }

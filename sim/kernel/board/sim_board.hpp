@@ -70,9 +70,9 @@ class SimBoard {
 
   /// Binds the library to this board. False (with `error`) if the ABI versions differ.
   bool attach(std::string& error);
-  /// The module the sketch selected: the Driver Module unless it defines module_basic.
-  const BoardDefinition& definition() const;
-  bool is_basic_module() const { return board_ != nullptr && board_->module == 1; }
+  /// The board the sketch selected (`#define module_basic`, …), as the board registry
+  /// (kinds/board_registry.hpp) has it; the Driver Module until attach().
+  const BoardDefinition& definition() const { return *definition_; }
   const std::string& name() const { return options_.name; }
 
   /// Runs setup() at `time_ns`, then loop() every loop period.
@@ -190,7 +190,7 @@ class SimBoard {
  private:
   friend struct BoardCallbacks;
   static constexpr uint8_t kPorts = 4;
-  static constexpr uint8_t kPins = 55;
+  static constexpr uint8_t kPins = kTeensy41.highest_pin + 1;  ///< the largest Teensy's pins
 
   struct PortState {
     bool output_claimed = false;
@@ -276,6 +276,7 @@ class SimBoard {
   BoardOptions options_;
   std::unique_ptr<BoardLibrary> library_;
   const StepdanceBoardV1* board_ = nullptr;
+  const BoardDefinition* definition_ = &kDriverModuleV1;
   std::unique_ptr<StepdanceHostV1> host_table_;
   PeriodicTimer frame_timer_;
   PeriodicTimer khz_timer_;

@@ -1,6 +1,4 @@
 // Inside a board's shared object: the one exported symbol, binding the sketch to the simulator.
-#include <cstring>
-
 #include "IntervalTimer.h"
 #include "abi/board_abi.h"
 #include "runtime/entry_guard.hpp"
@@ -95,7 +93,7 @@ int deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pul
 }
 
 StepdanceBoardV1 board_table = {
-    STEPDANCE_BOARD_ABI_VERSION, 0, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
+    STEPDANCE_BOARD_ABI_VERSION, nullptr, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
     &read_counters, &EntryGuard::escape,
 };
 
@@ -108,7 +106,6 @@ extern "C" __attribute__((visibility("default"))) const StepdanceBoardV1* stepda
   if (host == nullptr || host->abi_version != STEPDANCE_BOARD_ABI_VERSION) return nullptr;
   stepdance::sim_runtime::attach_host(host, host_context);
   auto& table = stepdance::sim_runtime::board_table;
-  // Board tables are constexpr (one copy per translation unit), so compare names, not addresses.
-  table.module = std::strcmp(stepdance::active_board().name, stepdance::kBasicModuleV1.name) == 0 ? 1 : 0;
+  table.board_name = stepdance::active_board().name;
   return &table;
 }

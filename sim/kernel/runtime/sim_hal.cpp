@@ -16,7 +16,6 @@ namespace {
 
 constexpr uint8_t kPorts = 4;
 constexpr uint8_t kEncoders = 2;
-constexpr uint8_t kHighestPin = 54;  // Teensy 4.1
 
 struct CaptureSink {
   hal::PulseSink sink = nullptr;
@@ -35,8 +34,10 @@ const StepdanceHostV1& host() { return sim_runtime::host(); }
 void* ctx() { return sim_runtime::host_context(); }
 Status status(int code) { return static_cast<Status>(code); }
 
-// Teensy 4.1 pins with an ADC input: A0..A13 on pins 14..27, A14..A17 on pins 38..41.
-bool has_adc(uint8_t pin) { return (pin >= 14 && pin <= 27) || (pin >= 38 && pin <= 41); }
+// The simulator models the Teensy the board is built around (its table's `teensy`).
+const TeensyPinout& teensy() { return *active_board().teensy; }
+bool has_adc(uint8_t pin) { return has_analog_input(teensy(), pin); }
+bool has_gpio(uint8_t pin) { return has_pin(teensy(), pin); }
 
 }  // namespace
 
@@ -131,12 +132,12 @@ uint16_t adc_read(uint8_t pin) { return has_adc(pin) ? host().adc_read(ctx(), pi
 uint32_t adc_sample_count(uint8_t pin) { return has_adc(pin) ? host().adc_sample_count(ctx(), pin) : 0; }
 
 Status gpio_mode(uint8_t pin, PinMode mode) {
-  if (pin > kHighestPin) return Status::kNoSuchPin;
+  if (!has_gpio(pin)) return Status::kNoSuchPin;
   return status(host().gpio_mode(ctx(), pin, static_cast<int>(mode)));
 }
-bool gpio_read(uint8_t pin) { return pin <= kHighestPin && host().gpio_read(ctx(), pin) != 0; }
+bool gpio_read(uint8_t pin) { return has_gpio(pin) && host().gpio_read(ctx(), pin) != 0; }
 void gpio_write(uint8_t pin, bool high) {
-  if (pin <= kHighestPin) host().gpio_write(ctx(), pin, high ? 1 : 0);
+  if (has_gpio(pin)) host().gpio_write(ctx(), pin, high ? 1 : 0);
 }
 
 void enter_safe_state() {

@@ -95,13 +95,12 @@ bool Simulation::build_boards(SimulationError& error) {
 
 // The scenario's `module` must be the board the sketch selects with its #define.
 bool Simulation::check_module(const BoardSlot& slot, SimulationError& error) const {
-  const bool scenario_basic = slot.config->module == scenario::Module::kBasic;
-  if (scenario_basic == slot.board->is_basic_module()) return true;
+  const BoardDefinition& selected = slot.board->definition();
+  if (slot.config->module == &selected) return true;
   error = {SimulationError::kBadInput,
            place(scenario_, slot.config->line) + "board '" + slot.config->name + "' is a " +
-               (scenario_basic ? "Basic" : "Driver") + " Module in the scenario, but its sketch selects the " +
-               slot.board->definition().name + " (#define " + (scenario_basic ? "module_driver" : "module_basic") +
-               ")"};
+               slot.config->module->name + " in the scenario, but its sketch selects the " + selected.name +
+               " (#define " + selected.sketch_macro + ")"};
   return false;
 }
 

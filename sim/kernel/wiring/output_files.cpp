@@ -152,7 +152,7 @@ std::vector<scenario::PortLineRef> Simulation::vcd_ports() const {
   std::vector<scenario::PortLineRef> ports;
   for (const scenario::BoardConfig& board : scenario_.boards) {
     for (char port = 'A'; port <= 'D'; ++port) {
-      if (scenario::module_has_port(board.module, port)) ports.push_back({board.name, true, port});
+      if (scenario::module_has_output_port(*board.module, port)) ports.push_back({board.name, true, port});
     }
   }
   for (const scenario::CableConfig& cable : scenario_.cables) ports.push_back({cable.to.board, false, cable.to.port});

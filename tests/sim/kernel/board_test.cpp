@@ -33,7 +33,7 @@ std::unique_ptr<SimBoard> load_board(Scheduler& scheduler, const std::string& sk
 TEST(SimBoardTest, StepASketchTurnsKnobCountsIntoMotorPulses) {
   Scheduler scheduler;
   auto board = load_board(scheduler, kStepASketch, "driver");
-  EXPECT_FALSE(board->is_basic_module());
+  EXPECT_STREQ(board->definition().name, "Driver Module v1.0");
   board->connect_encoder(0, [](SimTime time) { return time >= 10 * kMillisecond ? int64_t{100} : int64_t{0}; });
   board->power_on(0);
   scheduler.run_until(100 * kMillisecond);

@@ -43,7 +43,7 @@ TEST(FullScenario, Boards) {
   const BoardConfig& driver = s.boards[0];
   EXPECT_EQ(driver.name, "driver");
   EXPECT_EQ(driver.sketch, kFixtures + "/sketches/driver.ino");
-  EXPECT_EQ(driver.module, Module::kDriver);
+  EXPECT_STREQ(driver.module->name, "Driver Module v1.0");
   EXPECT_EQ(driver.loop_period_us, 250);
   EXPECT_EQ(driver.frame_phase_us, 0);
   EXPECT_EQ(driver.line, 5);
@@ -61,7 +61,7 @@ TEST(FullScenario, Boards) {
   EXPECT_EQ(driver.socket('C')->line, 13);
 
   const BoardConfig& basic = s.boards[1];
-  EXPECT_EQ(basic.module, Module::kBasic);
+  EXPECT_STREQ(basic.module->name, "Basic Module v1.0");
   EXPECT_EQ(basic.loop_period_us, 200);
   EXPECT_EQ(basic.frame_phase_us, 17);
   EXPECT_TRUE(basic.sockets.empty());

@@ -45,10 +45,19 @@ constexpr bool has_adc_channel(uint8_t pin) {
   }
   return false;
 }
-// Every analog pin of the board tables (A1..A4, and the drivers' VREF read-back) has a channel.
+// The channel table covers exactly the analog pins of this Teensy (boards/teensy_pinout.hpp).
+constexpr bool channels_match_teensy() {
+  if (kMaxPinsPerModule != kThisTeensy.analog_pin_count) return false;
+  for (uint8_t i = 0; i < kThisTeensy.analog_pin_count; ++i) {
+    if (!has_adc_channel(kThisTeensy.analog_pins[i])) return false;
+  }
+  return true;
+}
+static_assert(channels_match_teensy(), "the ADC channel table and the Teensy's analog pins differ");
+// Every analog pin of every board on this Teensy (A1..A4, the drivers' VREF read-back) has a channel.
 constexpr bool analog_pins_have_channels(const BoardDefinition& board) {
   for (uint8_t pin : board.io_a) {
-    if (!has_adc_channel(pin)) return false;
+    if (pin != kNoPin && !has_adc_channel(pin)) return false;
   }
   for (uint8_t port = 0; port < board.output_port_count; ++port) {
     const uint8_t vref = board.output_ports[port].vref;
@@ -56,10 +65,13 @@ constexpr bool analog_pins_have_channels(const BoardDefinition& board) {
   }
   return true;
 }
-static_assert(analog_pins_have_channels(kBasicModuleV1), "a Basic Module analog pin has no ADC channel");
-#if !defined(ARDUINO_TEENSY40)
-static_assert(analog_pins_have_channels(kDriverModuleV1), "a Driver Module analog pin has no ADC channel");
-#endif
+constexpr bool boards_have_channels() {
+  for (const BoardDefinition* board : kBoards) {
+    if (board_takes(*board, kThisTeensy) && !analog_pins_have_channels(*board)) return false;
+  }
+  return true;
+}
+static_assert(boards_have_channels(), "an analog pin of a board has no ADC channel");
 
 /// One ADC's round robin: the pins it converts, in begin() order.
 struct RoundRobin {

@@ -68,9 +68,17 @@ static_assert(pin_pad(kWiring[0].step_pin).mux == pad::emc(6).mux, "input A STEP
 static_assert(pin_pad(kWiring[1].step_pin).mux == pad::emc(8).mux, "input B STEP must be pad EMC_08 (ALT1)");
 static_assert(pin_pad(kWiring[2].step_pin).mux == pad::b1(0).mux, "input C STEP must be pad B1_00 (ALT6)");
 static_assert(pin_pad(kWiring[3].step_pin).mux == pad::b0(11).mux, "input D STEP must be pad B0_11 (ALT2)");
-static_assert(kBasicModuleV1.input_ports[0].step == kWiring[0].step_pin &&
-                  kBasicModuleV1.input_ports[0].dir == kWiring[0].dir_pin,
-              "Basic Module input port = port A");
+// Every registered board wires its input port n as port n here.
+constexpr bool boards_match_wiring() {
+  for (const BoardDefinition* board : kBoards) {
+    for (uint8_t port = 0; port < board->input_port_count; ++port) {
+      const InputPortPins& pins = board->input_ports[port];
+      if (pins.step != kWiring[port].step_pin || pins.dir != kWiring[port].dir_pin) return false;
+    }
+  }
+  return true;
+}
+static_assert(boards_match_wiring(), "a board's input port n is not wired as port n of this backend");
 
 struct CaptureState {
   hal::PulseSink sink = nullptr;

@@ -28,15 +28,24 @@ constexpr OutputWiring wiring_of(const OutputPortPins& pins) {
 constexpr OutputWiring kWiring[4] = {
     wiring_of(kDriverModuleV1.output_ports[0]), wiring_of(kDriverModuleV1.output_ports[1]),
     wiring_of(kDriverModuleV1.output_ports[2]), wiring_of(kDriverModuleV1.output_ports[3])};
-// The Basic Module's one output port is port A's pins.
-static_assert(kBasicModuleV1.output_ports[0].step == kWiring[0].step_pin &&
-                  kBasicModuleV1.output_ports[0].dir == kWiring[0].dir_pin,
-              "Basic Module output port = port A");
 #if defined(ARDUINO_TEENSY40)
 constexpr uint8_t kPortCount = 2;  // pins 34..37 of a Teensy 4.0 are SD pads without FlexIO3
 #else
 constexpr uint8_t kPortCount = 4;
 #endif
+// Every registered board that sits on this Teensy wires its port n as port n here.
+constexpr bool boards_match_wiring() {
+  for (const BoardDefinition* board : kBoards) {
+    if (!board_takes(*board, kThisTeensy)) continue;
+    if (board->output_port_count > kPortCount) return false;
+    for (uint8_t port = 0; port < board->output_port_count; ++port) {
+      const OutputPortPins& pins = board->output_ports[port];
+      if (pins.step != kWiring[port].step_pin || pins.dir != kWiring[port].dir_pin) return false;
+    }
+  }
+  return true;
+}
+static_assert(boards_match_wiring(), "a board's output port n is not wired as port n of this backend");
 constexpr bool ports_have_flexio3_pads() {
   for (uint8_t port = 0; port < kPortCount; ++port) {
     if (kWiring[port].step_flexio == 0xFF || kWiring[port].dir_flexio == 0xFF) return false;

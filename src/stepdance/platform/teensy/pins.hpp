@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "stepdance/boards/teensy_pinout.hpp"
 #include "stepdance/platform/teensy/regs_iomuxc.hpp"
 
 #if defined(ARDUINO_TEENSY_MICROMOD)
@@ -57,14 +58,18 @@ constexpr PinInfo kCommonPins[34] = {
 /// Teensy 4.0 pins 34..39: the SD-card pads on the underside.
 constexpr PinInfo kBoardPins[6] = {pad::sd_b0(3), pad::sd_b0(2), pad::sd_b0(1),
                                    pad::sd_b0(0), pad::sd_b0(5), pad::sd_b0(4)};
+/// The Teensy this build is for (its pin facts: boards/teensy_pinout.hpp).
+inline constexpr const TeensyPinout& kThisTeensy = kTeensy40;
 #else
 /// Teensy 4.1 pins 34..41.
 constexpr PinInfo kBoardPins[8] = {pad::b1(13),  pad::b1(12), pad::b1(2),  pad::b1(3),
                                    pad::ad_b1(12), pad::ad_b1(13), pad::ad_b1(4), pad::ad_b1(5)};
+inline constexpr const TeensyPinout& kThisTeensy = kTeensy41;
 #endif
 
 /// Highest pin number this backend knows on the selected Teensy.
 constexpr uint8_t kMaxPin = static_cast<uint8_t>(34u + sizeof(kBoardPins) / sizeof(kBoardPins[0]) - 1u);
+static_assert(kMaxPin <= kThisTeensy.highest_pin, "the pad table lists a pin the Teensy does not have");
 
 /// The pad and GPIO bit of a Teensy pin (constant expression), or {0, 0, 0} if there is none.
 constexpr PinInfo pin_pad(uint8_t pin) {

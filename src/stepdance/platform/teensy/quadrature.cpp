@@ -49,9 +49,19 @@ static_assert(pin_pad(kPins[0][0]).mux == pad::ad_b0(3).mux && pin_pad(kPins[0][
               "ENC1 phases must be pads AD_B0_03/AD_B0_02 (XBAR1 INOUT17/16)");
 static_assert(pin_pad(kPins[1][0]).mux == pad::emc(4).mux && pin_pad(kPins[1][1]).mux == pad::emc(5).mux,
               "ENC2 phases must be pads EMC_04/EMC_05 (XBAR1 INOUT06/07)");
-static_assert(kBasicModuleV1.encoder_pins[0][0] == kPins[0][0] && kBasicModuleV1.encoder_pins[0][1] == kPins[0][1] &&
-                  kBasicModuleV1.encoder_pins[1][0] == kPins[1][0] && kBasicModuleV1.encoder_pins[1][1] == kPins[1][1],
-              "both modules wire the encoders alike");
+// Every registered board wires ENCn as ENCn here (or leaves it out).
+constexpr bool boards_match_wiring() {
+  for (const BoardDefinition* board : kBoards) {
+    for (uint8_t index = 0; index < 2; ++index) {
+      for (uint8_t phase = 0; phase < 2; ++phase) {
+        const uint8_t pin = board->encoder_pins[index][phase];
+        if (pin != kNoPin && pin != kPins[index][phase]) return false;
+      }
+    }
+  }
+  return true;
+}
+static_assert(boards_match_wiring(), "a board's encoder n is not wired as encoder n of this backend");
 
 volatile bool begun[2] = {false, false};
 
