@@ -4,9 +4,9 @@
 // cost model of the frame being run: kModelCyclesPerBlock for every block the engine has run in
 // it so far. Simulated time does not move during a frame, so the model is what the engine's load
 // figures (stepdance_get_cpu_usage, overruns) see: deterministic, and growing with the graph.
-#include "runtime/sim_hal.hpp"
+#include "stepdance/platform/sim/sim_hal.hpp"
 
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/hal/hal.hpp"

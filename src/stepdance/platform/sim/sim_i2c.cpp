@@ -2,7 +2,7 @@
 // models, then the loop waits for the transfer's time on the wire (delay_ns), as it does on a
 // Teensy whose Wire library blocks until the transfer ends. Frames keep running meanwhile.
 #include "abi/board_abi.h"
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/hal/i2c.hpp"
 
 namespace stepdance::hal {

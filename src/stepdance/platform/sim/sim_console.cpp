@@ -1,5 +1,5 @@
 // Inside a board's shared object: the console stream and file storage, forwarded to the simulator.
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/file_storage.hpp"
 

@@ -3,7 +3,7 @@
 // as a Teensy's EEPROM survives a reset. The size is a Teensy 4.0's (the smaller of the two).
 #include <string.h>
 
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/core/file_storage.hpp"
 #include "stepdance/core/nonvolatile_store.hpp"
 

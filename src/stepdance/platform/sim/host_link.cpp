@@ -1,5 +1,5 @@
 // The board-side link to the simulator: the current callback table and the detached stand-ins.
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 #include <unistd.h>
 
