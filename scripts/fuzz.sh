@@ -68,7 +68,7 @@ compile_object() {
   [[ $source == *.c ]] && compiler=(clang -std=c99)  # the servo's pulse arithmetic is C
   # shellcheck disable=SC2086 # the flags are words
   "${compiler[@]}" -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
-    -Isrc -Isrc/stepdance/platform/manual $flags -c "$source" -o "$object"
+    -Isrc -Isrc/stepdance/platform/manual -DSTEPDANCE_PLATFORM_MANUAL $flags -c "$source" -o "$object"
 }
 export -f compile_object
 

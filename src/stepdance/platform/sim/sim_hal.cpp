@@ -4,6 +4,8 @@
 // cost model of the frame being run: kModelCyclesPerBlock for every block the engine has run in
 // it so far. Simulated time does not move during a frame, so the model is what the engine's load
 // figures (stepdance_get_cpu_usage, overruns) see: deterministic, and growing with the graph.
+#if defined(STEPDANCE_PLATFORM_SIM)
+
 #include "stepdance/platform/sim/sim_hal.hpp"
 
 #include "stepdance/platform/sim/host_link.hpp"
@@ -153,3 +155,5 @@ void log_message(const char* text) {
 
 }  // namespace hal
 }  // namespace stepdance
+
+#endif  // STEPDANCE_PLATFORM_SIM
