@@ -44,7 +44,7 @@ sources_of() {
   for entry in ${target_sources[$name]}; do
     if [ "$entry" = core ]; then
       find src/stepdance -name '*.cpp' -not -path '*/platform/*' | sort
-      printf '%s\n' host/hal_manual/*.cpp
+      printf '%s\n' src/stepdance/platform/manual/hal_manual.cpp src/stepdance/platform/manual/i2c_manual.cpp
     elif [ -d "$entry" ]; then
       printf '%s\n' "$entry"/*.cpp
     else
@@ -68,7 +68,7 @@ compile_object() {
   [[ $source == *.c ]] && compiler=(clang -std=c99)  # the servo's pulse arithmetic is C
   # shellcheck disable=SC2086 # the flags are words
   "${compiler[@]}" -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all \
-    -Isrc -Ihost/hal_manual $flags -c "$source" -o "$object"
+    -Isrc -Isrc/stepdance/platform/manual -DSTEPDANCE_PLATFORM_MANUAL $flags -c "$source" -o "$object"
 }
 export -f compile_object
 

@@ -4,7 +4,7 @@
 #include <initializer_list>
 
 #include "arduino_state.hpp"
-#include "stepdance/core/file_storage.hpp"
+#include "stepdance/hal/console.hpp"
 
 using stepdance::arduino_backend::SerialPortId;
 

@@ -3,7 +3,7 @@
 
 #include <string.h>
 
-#include "stepdance/core/file_storage.hpp"
+#include "stepdance/hal/storage.hpp"
 
 namespace {
 

@@ -4,7 +4,7 @@
 // facade has no notion of "the sketch waits" or of serial ports besides the console, so the
 // backend that runs the sketch defines these functions as well, exactly once per board:
 //   - the simulator's board runtime (sim/kernel), inside each board's shared object;
-//   - sim/arduino/manual/ for tests on the manual backend (host/hal_manual).
+//   - src/stepdance/platform/manual/arduino_manual.cpp for tests on the manual backend.
 #pragma once
 
 #include <stdint.h>

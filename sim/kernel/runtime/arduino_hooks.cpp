@@ -1,7 +1,7 @@
 // Inside a board's shared object: the host Arduino API's backend hooks (delay, extra serial ports).
 #include "IntervalTimer.h"
 #include "arduino_backend.hpp"
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 namespace stepdance::arduino_backend {
 

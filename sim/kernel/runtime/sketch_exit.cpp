@@ -12,7 +12,7 @@
 
 #include "abi/board_abi.h"
 #include "runtime/entry_guard.hpp"
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 namespace stepdance::sim_runtime {
 namespace {

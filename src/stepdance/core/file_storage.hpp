@@ -31,11 +31,9 @@ class FileStorage {
   ~FileStorage() = default;
 };
 
-namespace hal {
-/// The board's console stream (USB serial on a Teensy). Context: loop.
-ByteStream& console();
-/// The board's file storage; open() fails with kUnsupported where there is none. Context: loop.
-FileStorage& storage();
-}  // namespace hal
-
 }  // namespace stepdance
+
+// hal::console() and hal::storage() are the HAL facade's (hal/console.hpp, hal/storage.hpp);
+// included here too, so code that reached them through this header still compiles.
+#include "stepdance/hal/console.hpp"
+#include "stepdance/hal/storage.hpp"

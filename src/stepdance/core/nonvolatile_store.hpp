@@ -27,9 +27,8 @@ class NonvolatileStore {
   ~NonvolatileStore() = default;
 };
 
-namespace hal {
-/// The board's non-volatile store. Context: loop.
-NonvolatileStore& nonvolatile_store();
-}  // namespace hal
-
 }  // namespace stepdance
+
+// hal::nonvolatile_store() is the HAL facade's (hal/nonvolatile.hpp); included here too, so code
+// that reached it through this header still compiles.
+#include "stepdance/hal/nonvolatile.hpp"

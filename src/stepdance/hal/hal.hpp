@@ -1,11 +1,22 @@
 // The hardware-abstraction facade: the only door from the portable core to time, timers and pins.
 //
-// Exactly one backend defines these functions, chosen at build time:
-//   - platform/teensy/  (i.MX RT1062, compiled only when __IMXRT1062__ is defined)
-//   - host/hal_manual/  (unit tests: time and inputs advanced by hand)
-//   - sim/              (the discrete-event simulator)
+// The facade is the headers of src/stepdance/hal/, and every function a backend defines is
+// declared in one of them:
+//   - hal.hpp          time, timers, critical sections, ports, capture, quadrature, ADC, GPIO,
+//                      safe state and log
+//   - i2c.hpp          the QWIIC I2C buses
+//   - console.hpp      the console stream
+//   - storage.hpp      file storage
+//   - nonvolatile.hpp  the non-volatile byte store
+// Exactly one backend defines them, chosen at build time; the three sit side by side under
+// src/stepdance/platform/<name>/, each file compiled only under its own switch (so an Arduino
+// build, which compiles all of src/, keeps only the Teensy one):
+//   - teensy/  i.MX RT1062 (when __IMXRT1062__ is defined)
+//   - manual/  unit tests: time and inputs advanced by hand (STEPDANCE_PLATFORM_MANUAL)
+//   - sim/     inside a simulated board, through the board ABI (STEPDANCE_PLATFORM_SIM)
 // The contracts below are the single statement of each primitive's semantics; backends must not
-// relax them. No function here allocates or throws.
+// relax them, and one conformance suite (tests/hal/conformance/) checks every backend against
+// them. No function here allocates or throws.
 #pragma once
 
 #include <stdint.h>

@@ -1,10 +1,10 @@
 // I2C on the board's QWIIC connectors, as the core sees it: one transfer at a time per bus,
 // started and polled from the loop, never from the frame.
 //
-// A backend defines these functions next to the rest of the HAL facade (hal.hpp):
-//   - platform/teensy/i2c_wire.cpp  (Teensyduino Wire / Wire1: QWIIC0 / QWIIC1)
-//   - host/hal_manual/i2c_manual.cpp (unit tests: a scripted bus)
-//   - sim/kernel/runtime/sim_i2c.cpp (the simulator: device models by address, 400 kHz timing)
+// Part of the HAL facade (see hal.hpp). A backend defines these functions:
+//   - platform/teensy/i2c_wire.cpp   (Teensyduino Wire / Wire1: QWIIC0 / QWIIC1)
+//   - platform/manual/i2c_manual.cpp (unit tests: a scripted bus)
+//   - platform/sim/sim_i2c.cpp       (the simulator: device models by address, 400 kHz timing)
 // A transfer may occupy the loop for at most its own time on the wire (the Teensy backend uses
 // Teensyduino's blocking Wire; the simulator models exactly that), so callers bound the loop's
 // time on the bus by bounding the size of each transfer (kI2cMaxTransferBytes) and starting at

@@ -5,7 +5,7 @@
 
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/file_storage.hpp"
-#include "stepdance/core/nonvolatile_store.hpp"
+#include "stepdance/hal/nonvolatile.hpp"
 
 namespace stepdance {
 

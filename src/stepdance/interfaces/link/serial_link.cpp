@@ -1,7 +1,7 @@
 // The console end of the serial link.
 #include "stepdance/interfaces/link/serial_link.hpp"
 
-#include "stepdance/core/file_storage.hpp"  // hal::console()
+#include "stepdance/hal/console.hpp"
 
 namespace stepdance::link {
 

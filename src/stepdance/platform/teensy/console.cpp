@@ -4,7 +4,7 @@
 #include "stepdance/platform/teensy/console.hpp"
 
 #include "stepdance/core/byte_stream.hpp"
-#include "stepdance/core/file_storage.hpp"
+#include "stepdance/hal/console.hpp"
 #include "stepdance/platform/teensy/teensyduino_services.hpp"
 
 namespace stepdance::platform::teensy {

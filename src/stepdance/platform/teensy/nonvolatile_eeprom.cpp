@@ -3,7 +3,7 @@
 // interrupts off, so callers write only while no motion runs.
 #if defined(__IMXRT1062__)
 
-#include "stepdance/core/nonvolatile_store.hpp"
+#include "stepdance/hal/nonvolatile.hpp"
 #include "stepdance/platform/teensy/teensyduino_services.hpp"
 
 namespace stepdance::platform::teensy {

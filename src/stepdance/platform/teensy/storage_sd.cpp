@@ -11,8 +11,8 @@
 #include <new>
 #include <string.h>
 
-#include "stepdance/core/byte_stream.hpp"  // file_storage.hpp names ByteStream without including it
-#include "stepdance/core/file_storage.hpp"
+#include "stepdance/core/byte_stream.hpp"
+#include "stepdance/hal/storage.hpp"
 #include "stepdance/platform/teensy/teensyduino_storage.hpp"
 
 namespace stepdance::platform::teensy {

@@ -4,9 +4,11 @@
 // cost model of the frame being run: kModelCyclesPerBlock for every block the engine has run in
 // it so far. Simulated time does not move during a frame, so the model is what the engine's load
 // figures (stepdance_get_cpu_usage, overruns) see: deterministic, and growing with the graph.
-#include "runtime/sim_hal.hpp"
+#if defined(STEPDANCE_PLATFORM_SIM)
 
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/sim_hal.hpp"
+
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/hal/hal.hpp"
@@ -154,3 +156,5 @@ void log_message(const char* text) {
 
 }  // namespace hal
 }  // namespace stepdance
+
+#endif  // STEPDANCE_PLATFORM_SIM

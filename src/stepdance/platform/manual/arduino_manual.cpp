@@ -1,4 +1,6 @@
 // The Arduino backend hooks on the manual backend: delays run frames, serial ports are memory.
+#if defined(STEPDANCE_PLATFORM_MANUAL)
+
 #include "arduino_manual.hpp"
 
 #include <array>
@@ -109,3 +111,5 @@ void reset_all(uint32_t start_us) {
 
 }  // namespace arduino_manual
 }  // namespace stepdance
+
+#endif  // STEPDANCE_PLATFORM_MANUAL

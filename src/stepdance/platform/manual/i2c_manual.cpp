@@ -1,4 +1,6 @@
 // The manual backend of hal/i2c.hpp: transfers are recorded and answered by a test's responder.
+#if defined(STEPDANCE_PLATFORM_MANUAL)
+
 #include "i2c_manual.hpp"
 
 #include <cstring>
@@ -82,3 +84,5 @@ I2cResult i2c_poll(uint8_t bus) {
 }
 
 }  // namespace stepdance::hal
+
+#endif  // STEPDANCE_PLATFORM_MANUAL

@@ -1,11 +1,13 @@
 // Inside a board's shared object: the non-volatile store, kept as one file of the board's storage
 // folder (`<output>/<board>.sd/eeprom.bin`), so it survives a re-run into the same output folder
 // as a Teensy's EEPROM survives a reset. The size is a Teensy 4.0's (the smaller of the two).
+#if defined(STEPDANCE_PLATFORM_SIM)
+
 #include <string.h>
 
-#include "runtime/host_link.hpp"
-#include "stepdance/core/file_storage.hpp"
-#include "stepdance/core/nonvolatile_store.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
+#include "stepdance/hal/storage.hpp"
+#include "stepdance/hal/nonvolatile.hpp"
 
 namespace stepdance {
 namespace {
@@ -76,3 +78,5 @@ NonvolatileStore& nonvolatile_store() { return the_eeprom; }
 }  // namespace hal
 
 }  // namespace stepdance
+
+#endif  // STEPDANCE_PLATFORM_SIM

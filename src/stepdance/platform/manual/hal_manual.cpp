@@ -1,4 +1,6 @@
 // The manual host backend of the HAL facade: deterministic, single-threaded, driven by tests.
+#if defined(STEPDANCE_PLATFORM_MANUAL)
+
 #include "hal_manual.hpp"
 
 #include <array>
@@ -8,8 +10,9 @@
 #include <vector>
 
 #include "stepdance/core/byte_stream.hpp"
-#include "stepdance/core/file_storage.hpp"
-#include "stepdance/core/nonvolatile_store.hpp"
+#include "stepdance/hal/console.hpp"
+#include "stepdance/hal/storage.hpp"
+#include "stepdance/hal/nonvolatile.hpp"
 #include "stepdance/core/units.hpp"
 
 namespace stepdance {
@@ -319,3 +322,5 @@ void feed_console(const std::string& bytes) {
 
 }  // namespace hal_manual
 }  // namespace stepdance
+
+#endif  // STEPDANCE_PLATFORM_MANUAL

@@ -1,7 +1,10 @@
 // Inside a board's shared object: the console stream and file storage, forwarded to the simulator.
-#include "runtime/host_link.hpp"
+#if defined(STEPDANCE_PLATFORM_SIM)
+
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/core/byte_stream.hpp"
-#include "stepdance/core/file_storage.hpp"
+#include "stepdance/hal/console.hpp"
+#include "stepdance/hal/storage.hpp"
 
 namespace stepdance {
 namespace {
@@ -47,3 +50,5 @@ FileStorage& storage() { return the_storage; }
 }  // namespace hal
 
 }  // namespace stepdance
+
+#endif  // STEPDANCE_PLATFORM_SIM

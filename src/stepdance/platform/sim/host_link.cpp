@@ -1,5 +1,7 @@
 // The board-side link to the simulator: the current callback table and the detached stand-ins.
-#include "runtime/host_link.hpp"
+#if defined(STEPDANCE_PLATFORM_SIM)
+
+#include "stepdance/platform/sim/host_link.hpp"
 
 #include <unistd.h>
 
@@ -70,3 +72,5 @@ void attach_host(const StepdanceHostV1* table, void* context) {
 }
 
 }  // namespace stepdance::sim_runtime
+
+#endif  // STEPDANCE_PLATFORM_SIM

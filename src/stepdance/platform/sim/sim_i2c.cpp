@@ -1,8 +1,10 @@
 // The simulator backend of hal/i2c.hpp: each transfer is answered at once by the host's device
 // models, then the loop waits for the transfer's time on the wire (delay_ns), as it does on a
 // Teensy whose Wire library blocks until the transfer ends. Frames keep running meanwhile.
+#if defined(STEPDANCE_PLATFORM_SIM)
+
 #include "abi/board_abi.h"
-#include "runtime/host_link.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/hal/i2c.hpp"
 
 namespace stepdance::hal {
@@ -39,3 +41,5 @@ Status i2c_start(uint8_t bus, const I2cTransfer& transfer) {
 I2cResult i2c_poll(uint8_t bus) { return i2c_take_result(bus, latest); }
 
 }  // namespace stepdance::hal
+
+#endif  // STEPDANCE_PLATFORM_SIM
