@@ -16,7 +16,7 @@
 
 #include "scenario/load_scenario.hpp"
 #include "step_a_sketch_graph.hpp"
-#include "wiring/simulation.hpp"
+#include "assembly/simulation.hpp"
 
 namespace {
 
