@@ -1,21 +1,16 @@
-// Simulation assembly, part 1: sketches → boards, driver sockets → models, and the machine (its
-// kind's row in kinds/ builds it).
+// Simulation assembly: sketches → boards (each checked against its scenario module), and the
+// driver sockets → stepper and servo models.
 #include <algorithm>
 #include <filesystem>
 #include <functional>
 
 #include "board/loader/board_library.hpp"
 #include "board/loader/sketch_builder.hpp"
-#include "kinds/machine_kind.hpp"
 #include "assembly/simulation.hpp"
 #include "assembly/step_feeder.hpp"
 
 namespace stepdance::sim {
 namespace {
-
-std::string place(const scenario::Scenario& scenario, int line) {
-  return scenario.file + ":" + std::to_string(line) + ": ";
-}
 
 ServoBuild servo_build(scenario::ServoBuild build) {
   return build == scenario::ServoBuild::k180deg ? ServoBuild::k180deg : ServoBuild::k90deg;
@@ -52,7 +47,7 @@ bool Simulation::build_boards(SimulationError& error) {
     builds.push_back(builder.build(config.sketch));
     const SketchBuild& build = builds.back();
     if (!build.ok) {
-      error = {SimulationError::kBadInput, place(scenario_, config.line) + "board '" + config.name + "': " + build.error};
+      error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name + "': " + build.error};
       return false;
     }
     if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
@@ -98,7 +93,7 @@ bool Simulation::check_module(const BoardSlot& slot, SimulationError& error) con
   const bool scenario_basic = slot.config->module == scenario::Module::kBasic;
   if (scenario_basic == slot.board->is_basic_module()) return true;
   error = {SimulationError::kBadInput,
-           place(scenario_, slot.config->line) + "board '" + slot.config->name + "' is a " +
+           place(slot.config->line) + "board '" + slot.config->name + "' is a " +
                (scenario_basic ? "Basic" : "Driver") + " Module in the scenario, but its sketch selects the " +
                slot.board->definition().name + " (#define " + (scenario_basic ? "module_driver" : "module_basic") +
                ")"};
@@ -132,23 +127,6 @@ void Simulation::build_sockets(BoardSlot& slot) {
     }
     slot.board->add_wire_listener(port, socket.feeder.get());
   }
-}
-
-bool Simulation::build_machine(SimulationError& error) {
-  if (!scenario_.machine) return true;
-  const scenario::MachineConfig& config = *scenario_.machine;
-  BoardSlot& owner = slot(config.board);
-  const SocketModels sockets{[&owner](char port) { return owner.sockets[port - 'A'].stepper.get(); },
-                             [&owner](char port) { return owner.sockets[port - 'A'].servo.get(); }};
-  PenTraceSettings trace;
-  trace.record_pen_up = scenario_.output.pen_up_travel;
-  machine_ = config.kind->build(config, sockets, trace);
-  if (!machine_) {
-    error = {SimulationError::kBadInput, place(scenario_, config.line) + "the machine's motor sockets must hold steppers"};
-    return false;
-  }
-  owner.board->on_frames_played([this](SimTime time) { after_frames(time); });
-  return true;
 }
 
 }  // namespace stepdance::sim

@@ -147,16 +147,4 @@ bool Simulation::prepare_outputs(SimulationError& error) const {
   return true;
 }
 
-std::vector<scenario::PortLineRef> Simulation::vcd_ports() const {
-  if (!scenario_.output.vcd_ports.empty() || !options_.vcd_file) return scenario_.output.vcd_ports;
-  std::vector<scenario::PortLineRef> ports;
-  for (const scenario::BoardConfig& board : scenario_.boards) {
-    for (char port = 'A'; port <= 'D'; ++port) {
-      if (scenario::module_has_port(board.module, port)) ports.push_back({board.name, true, port});
-    }
-  }
-  for (const scenario::CableConfig& cable : scenario_.cables) ports.push_back({cable.to.board, false, cable.to.port});
-  return ports;
-}
-
 }  // namespace stepdance::sim

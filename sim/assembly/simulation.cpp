@@ -1,4 +1,5 @@
-// Simulation: creation order, the run loop, machine updates and the end of a run.
+// Simulation: creation order, the run loop, stopping early, the end of a run and lookups. What
+// each part of a run is built from has its own file (simulation.hpp lists them).
 #include "assembly/simulation.hpp"
 
 #include <algorithm>
@@ -6,19 +7,12 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "stepdance/protocol/signals.hpp"
-
 namespace stepdance::sim {
 namespace {
 
 /// The run advances in slices of this much simulated time, flushing the VCD and reporting
 /// progress between them.
 constexpr SimTime kSliceNs = 10 * kMillisecond;
-/// The machine is re-read at least every this many frames even when no motor stepped, so the
-/// pen follows the servo board (whose pulse changes every 24.85 ms).
-constexpr uint32_t kIdleFramesPerMachineUpdate = 25;
-/// A frame's last possible edge, after its start.
-constexpr SimTime kFrameWireNs = SimTime{protocol::kFrameBitsUs} * kMicrosecond;
 
 }  // namespace
 
@@ -133,39 +127,6 @@ void Simulation::flush_console_lines() {
   for (BoardSlot& slot : boards_) slot.board->flush_console_line();
 }
 
-void Simulation::after_frames(SimTime frame_start_ns) {
-  ++ticks_since_machine_update_;
-  if (!machine_moved_ && ticks_since_machine_update_ < kIdleFramesPerMachineUpdate) return;
-  update_machine(frame_start_ns + kFrameWireNs);
-}
-
-void Simulation::update_machine(SimTime time_ns) {
-  machine_time_ns_ = std::max(machine_time_ns_, time_ns);
-  machine_->update(machine_time_ns_);
-  machine_moved_ = false;
-  ticks_since_machine_update_ = 0;
-}
-
-void Simulation::build_hosts() {
-  for (const scenario::HostClientConfig& config : scenario_.hosts) {
-    hosts_.push_back(std::make_unique<HostClient>(config, *slot(config.board).board, scheduler_));
-    hosts_.back()->start();
-  }
-}
-
-const HostClient* Simulation::host_client(const std::string& board) const {
-  for (const auto& host : hosts_) {
-    if (host->board_name() == board) return host.get();
-  }
-  return nullptr;
-}
-
-void Simulation::on_serial_action(void* context, SimTime, const size_t& action_index) {
-  auto& simulation = *static_cast<Simulation*>(context);
-  const scenario::Action& action = simulation.scenario_.timeline[action_index];
-  simulation.slot(action.target).board->send_console(action.serial_bytes);
-}
-
 void Simulation::end_now() {
   duration_ = scheduler_.now();
   for (BoardSlot& slot : boards_) slot.board->set_end_time(duration_);
@@ -191,16 +152,7 @@ SimulationReport Simulation::finish() {
   }
   write_drawings(report);
   write_device_outputs(report);
-  for (const auto& host : hosts_) {
-    const scenario::HostClientConfig* config = nullptr;
-    for (const auto& candidate : scenario_.hosts) {
-      if (candidate.board == host->board_name()) config = &candidate;
-    }
-    if (config == nullptr || config->transcript.empty()) continue;
-    const std::string path = output_path(config->transcript);
-    host->write_transcript(path);
-    report.files.push_back(path);
-  }
+  write_transcripts(report);
   if (!scenario_.output.summary.empty()) {
     write_summary_file(report);
     report.files.push_back(output_path(scenario_.output.summary));
@@ -225,6 +177,8 @@ void Simulation::add_storage_violations(SimulationReport& report) const {
 }
 
 // ---- lookups ------------------------------------------------------------------------------------
+
+std::string Simulation::place(int line) const { return scenario_.file + ":" + std::to_string(line) + ": "; }
 
 std::string Simulation::output_path(const std::string& configured) const {
   if (configured.empty() || !options_.output_directory) return configured;

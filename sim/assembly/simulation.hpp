@@ -152,7 +152,11 @@ class Simulation {
   };
   Simulation(const scenario::Scenario& scenario, const SimulationOptions& options);
 
-  // Assembly (board_assembly.cpp, device_assembly.cpp, output_assembly.cpp).
+  // Assembly, one file a concern: board_assembly.cpp (boards, sockets), machine_assembly.cpp,
+  // device_assembly.cpp (devices, their timeline, their pictures), host_assembly.cpp (host
+  // clients, serial input, transcripts), cable_assembly.cpp, recorder_assembly.cpp (VCD, CSV),
+  // output_files.cpp (the files a run writes, checked before it), run_report.cpp (drawings,
+  // summary); expectations.cpp checks the [[expect]] entries.
   bool build_boards(SimulationError& error);
   void add_storage_violations(SimulationReport& report) const;
   bool check_module(const BoardSlot& slot, SimulationError& error) const;
@@ -165,8 +169,11 @@ class Simulation {
   void build_vcd();
   void build_csv();
   void write_device_outputs(SimulationReport& report);
+  void write_transcripts(SimulationReport& report) const;
   BoardSlot& slot(const std::string& name);
   const BoardSlot* find_slot(const std::string& name) const;
+  /// "scenario.toml:LINE: ", the start of a message about that line.
+  std::string place(int line) const;
   /// A configured output file's path, moved into --out's directory when that was given.
   std::string output_path(const std::string& configured) const;
   /// Every file and folder the run will write, and who asked for it (output_plan.hpp).
@@ -177,6 +184,8 @@ class Simulation {
   bool prepare_outputs(SimulationError& error) const;
   /// The lines the VCD records: the scenario's vcd_ports, or everything (see vcd_file).
   std::vector<scenario::PortLineRef> vcd_ports() const;
+  /// The key of a recorded input port in vcd_inputs_: "board:IN_A".
+  static std::string vcd_input_key(const std::string& board, char port);
 
   // Running.
   static void on_serial_action(void* context, SimTime time, const size_t& action_index);
