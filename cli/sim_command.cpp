@@ -16,6 +16,7 @@
 #include "progress_bar.hpp"
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
+#include "simulator_hooks.hpp"
 #include "assembly/simulation.hpp"
 
 namespace stepdance::cli {
@@ -104,7 +105,7 @@ std::string absolute_path(const std::string& path) {
 sim::SimulationOptions simulation_options(const SimCommandOptions& options, const CheckedNumbers& numbers,
                                           ProgressBar& progress, ConsoleEcho& echo) {
   sim::SimulationOptions sim_options;
-  sim_options.sketch_cache_dir = options.cache_directory;
+  plug_front_end(sim_options, options.cache_directory);
   if (numbers.duration_s) sim_options.duration = sim::from_seconds(*numbers.duration_s);
   if (!options.output_directory.empty()) sim_options.output_directory = absolute_path(options.output_directory);
   sim_options.write_vcd = !options.no_vcd;

@@ -17,6 +17,7 @@
 #include "serve/serial_device_link.hpp"
 #include "serve/simulated_board_link.hpp"
 #include "serve/web_server.hpp"
+#include "simulator_hooks.hpp"
 
 namespace stepdance::cli {
 namespace {
@@ -72,7 +73,7 @@ std::unique_ptr<sim::Simulation> make_simulation(const ServeCommandOptions& opti
   }
   board = options.board.empty() ? loaded.scenario.boards.front().name : options.board;
   sim::SimulationOptions sim_options;
-  sim_options.sketch_cache_dir = options.cache_directory;
+  plug_front_end(sim_options, options.cache_directory);
   sim_options.duration = sim::from_seconds(kServeDurationS);
   sim_options.write_vcd = false;  // hours of interactive use would make it huge
   if (!options.output_directory.empty()) {

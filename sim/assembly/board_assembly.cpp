@@ -5,7 +5,6 @@
 #include <functional>
 
 #include "board/loader/board_library.hpp"
-#include "board/loader/sketch_builder.hpp"
 #include "assembly/simulation.hpp"
 #include "assembly/step_feeder.hpp"
 
@@ -41,10 +40,13 @@ std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const 
 // Every sketch is built first, and the outputs checked against every file the compilers read,
 // before any board library is loaded (loading runs the sketch's global constructors).
 bool Simulation::build_boards(SimulationError& error) {
-  const SketchBuilder builder(options_.sketch_cache_dir);
+  if (!options_.boards) {
+    error = {SimulationError::kFailure, "no board source: this simulation cannot compile or load sketches"};
+    return false;
+  }
   std::vector<SketchBuild> builds;
   for (const scenario::BoardConfig& config : scenario_.boards) {
-    builds.push_back(builder.build(config.sketch));
+    builds.push_back(options_.boards->build(config.sketch));
     const SketchBuild& build = builds.back();
     if (!build.ok) {
       error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name + "': " + build.error};
@@ -72,6 +74,7 @@ bool Simulation::build_boards(SimulationError& error) {
     board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
     board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
     board_options.sd_card = sd_card_settings(config.sd_card);
+    board_options.board_source = options_.boards.get();
     boards_.push_back(BoardSlot{&config, std::make_unique<SimBoard>(scheduler_, board_options, std::move(library)), {}});
     BoardSlot& slot = boards_.back();
     if (!slot.board->attach(load_error)) {

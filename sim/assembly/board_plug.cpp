@@ -1,9 +1,8 @@
-// BoardPlug: a connector's pin or channel on the board's definition; PngPictureSink.
+// BoardPlug: a connector's pin or channel on the board's definition; PictureFileSink.
 #include "assembly/board_plug.hpp"
 
 #include <filesystem>
 
-#include "output/screen_png.hpp"
 #include "scenario/names.hpp"
 
 namespace stepdance::sim {
@@ -37,11 +36,11 @@ void BoardPlug::attach_i2c(Connector connector, uint8_t address, I2cDevice* devi
   board_.attach_i2c_device(scenario::connector_index(connector), address, device);
 }
 
-void PngPictureSink::write_picture(const std::string& file_name, const std::vector<bool>& lit, int width, int height,
+void PictureFileSink::write_picture(const std::string& file_name, const std::vector<bool>& lit, int width, int height,
                                    int scale) {
   const std::string path = path_for_(file_name);
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-  write_screen_png(path, lit, width, height, scale);
+  writer_.write_screen(path, lit, width, height, scale);
   files_.push_back(path);
 }
 

@@ -8,6 +8,7 @@
 
 #include "board/host/sim_board.hpp"
 #include "kinds/sim_device.hpp"
+#include "output/picture_writer.hpp"
 
 namespace stepdance::sim {
 
@@ -30,16 +31,18 @@ class BoardPlug : public DevicePlug {
   std::function<const Machine*()> machine_;
 };
 
-/// Writes device pictures as PNG files; path_for(file name) gives the path in the output folder.
-/// The paths written are appended to `files`.
-class PngPictureSink : public PictureSink {
+/// Writes device pictures into files through `writer` (the PNG module); path_for(file name)
+/// gives the path in the output folder. The paths written are appended to `files`.
+class PictureFileSink : public PictureSink {
  public:
-  PngPictureSink(std::function<std::string(const std::string&)> path_for, std::vector<std::string>& files)
-      : path_for_(std::move(path_for)), files_(files) {}
+  PictureFileSink(const PictureWriter& writer, std::function<std::string(const std::string&)> path_for,
+                  std::vector<std::string>& files)
+      : writer_(writer), path_for_(std::move(path_for)), files_(files) {}
   void write_picture(const std::string& file_name, const std::vector<bool>& lit, int width, int height,
                      int scale) override;
 
  private:
+  const PictureWriter& writer_;
   std::function<std::string(const std::string&)> path_for_;
   std::vector<std::string>& files_;
 };

@@ -20,7 +20,8 @@ const SimDevice* Simulation::device(const std::string& name) const {
 void Simulation::write_device_outputs(SimulationReport& report) {
   const std::string directory = scenario_.output.directory;
   if (directory.empty() && !options_.output_directory) return;  // no output folder: no pictures
-  PngPictureSink sink([this, &directory](const std::string& file) {
+  if (!options_.pictures) return;                                // no picture writer
+  PictureFileSink sink(*options_.pictures, [this, &directory](const std::string& file) {
     return output_path((std::filesystem::path(directory) / file).string());
   }, report.files);
   for (auto& [name, device] : devices_) device->write_outputs(name, sink);

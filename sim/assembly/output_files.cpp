@@ -8,7 +8,7 @@
 #include <set>
 
 #include "board/loader/sketch_sources.hpp"
-#include "output/png_writer.hpp"
+#include "output/png_page.hpp"
 #include "scenario/names.hpp"
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
@@ -99,14 +99,14 @@ std::vector<PlannedOutput> Simulation::output_files() const {
   add(csv_path_, options_.csv_file ? OutputOrigin{"--csv", "--csv"} : key("csv"));
   if (scenario_.machine) {
     add(output_path(scenario_.output.svg), key("svg"));
-    add(output_path(scenario_.output.png), key("png"));
+    if (options_.pictures) add(output_path(scenario_.output.png), key("png"));
   }
   add(output_path(scenario_.output.summary), key("summary"));
   for (const scenario::HostClientConfig& host : scenario_.hosts) {
     add(output_path(host.transcript), {at_line(scenario_, host.transcript_line), "'transcript'"});
   }
   for (const scenario::DeviceConfig& device : scenario_.devices) {
-    if (device.kind->output_names == nullptr) continue;
+    if (device.kind->output_names == nullptr || !options_.pictures) continue;
     for (const std::string& name : device.kind->output_names(device)) {
       add(output_path((std::filesystem::path(scenario_.output.directory) / name).string()),
           {at_line(scenario_, device.line), "device '" + device.name + "''s picture " + name});
@@ -117,7 +117,8 @@ std::vector<PlannedOutput> Simulation::output_files() const {
 }
 
 bool Simulation::prepare_outputs(SimulationError& error) const {
-  if (const std::string problem = plotter_png_problem(scenario_, output_path(scenario_.output.png)); !problem.empty()) {
+  const std::string png = options_.pictures ? output_path(scenario_.output.png) : std::string();
+  if (const std::string problem = plotter_png_problem(scenario_, png); !problem.empty()) {
     error = {SimulationError::kBadInput, problem};
     return false;
   }

@@ -1,11 +1,11 @@
-// Simulation results: the pen drawing (SVG, PNG) and the JSON summary.
+// Simulation results: the pen drawing (SVG; PNG through the picture writer) and the JSON summary.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
 
 #include "kinds/machine_kind.hpp"
-#include "output/png_writer.hpp"
+#include "output/png_page.hpp"
 #include "output/summary_writer.hpp"
 #include "output/svg_writer.hpp"
 #include "assembly/simulation.hpp"
@@ -86,7 +86,7 @@ DrawingStyle page_for(const scenario::MachineConfig& machine, std::vector<Stroke
 
 void Simulation::write_drawings(SimulationReport& report) const {
   const std::string svg = output_path(scenario_.output.svg);
-  const std::string png = output_path(scenario_.output.png);
+  const std::string png = options_.pictures ? output_path(scenario_.output.png) : std::string();
   if (!machine_ || (svg.empty() && png.empty())) return;
   std::vector<Stroke> strokes = strokes_of(*machine_);
   DrawingStyle style = page_for(*scenario_.machine, strokes);
@@ -103,7 +103,7 @@ void Simulation::write_drawings(SimulationReport& report) const {
   if (!png.empty()) {
     // A plotter's page was checked when the run was prepared; a page that is the drawing's
     // bounding box is only known now, so it is drawn at the resolution that fits, never refused.
-    write_png(png, strokes, style, fitting_px_per_mm(style, scenario_.output.png_px_per_mm));
+    options_.pictures->write_drawing(png, strokes, style, fitting_px_per_mm(style, scenario_.output.png_px_per_mm));
     report.files.push_back(png);
   }
 }

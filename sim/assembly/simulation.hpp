@@ -9,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "board/host/board_source.hpp"
 #include "board/host/sim_board.hpp"
 #include "kinds/sim_device.hpp"
 #include "models/five_bar_arm.hpp"
 #include "models/machine.hpp"
 #include "models/servo_board.hpp"
 #include "models/stepper_driver.hpp"
+#include "output/picture_writer.hpp"
 #include "output/summary_writer.hpp"
 #include "scenario/scenario.hpp"
 #include "kernel/scheduler/one_shot_pool.hpp"
@@ -32,8 +34,12 @@ namespace stepdance::sim {
 
 /// How to run a scenario, beyond what the scenario file says.
 struct SimulationOptions {
-  /// Where compiled sketches are cached ("" = SketchBuilder::default_cache_dir()).
-  std::string sketch_cache_dir;
+  /// Gives each board's library for its sketch: SketchBuilder compiles them (the command line,
+  /// the tests); a build without a compiler hands precompiled ones. Null: no board can be built.
+  std::shared_ptr<const BoardSource> boards;
+  /// Writes the drawing's and the devices' pictures (png_picture_writer.hpp, the PNG module).
+  /// Null: no picture is planned or written, whatever the scenario names.
+  std::shared_ptr<const PictureWriter> pictures;
   /// Replaces the scenario's duration.
   std::optional<SimTime> duration;
   /// Replaces the output directory; the files keep their names.

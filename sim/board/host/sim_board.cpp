@@ -82,7 +82,7 @@ void SimBoard::escaped(SketchEntry entry) {
   const EscapeRecord record = EntryMonitor::take_record();
   if (record.cause == EscapeCause::kRunOver) return;  // the run ended while the sketch waited
   scheduler_.stop();
-  if (stop_listener_) stop_listener_(describe_stop(record, name(), entry, scheduler_.now(), library_.get()));
+  if (stop_listener_) stop_listener_(describe_stop(record, name(), entry, scheduler_.now(), library_.get(), options_.board_source));
 }
 
 void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {

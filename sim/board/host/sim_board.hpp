@@ -37,6 +37,8 @@ struct BoardOptions {
   std::string storage_dir;
   /// Speed and failures of the card (default: instant, never failing).
   SdCardSettings sd_card;
+  /// Names the addresses of a crashed sketch's backtrace (null: they stay addresses).
+  const BoardSource* board_source = nullptr;
 };
 
 /// A fault the board reported through hal::log_fault().

@@ -3,16 +3,13 @@
 
 #include <cxxabi.h>
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
 
 #include "board/abi/board_abi.h"
-#include "board/loader/process.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -76,34 +73,6 @@ std::string demangled(const char* name) {
   return text;
 }
 
-// "function at file:line" for each offset in the board library, from one run of addr2line
-// (binutils, which the sketch compiler needs anyway); "" where it cannot say.
-std::vector<std::string> board_symbols(const BoardLibrary& library, const std::vector<uintptr_t>& offsets) {
-  std::vector<std::string> symbols(offsets.size());
-  if (offsets.empty()) return symbols;
-  std::vector<std::string> command{"addr2line", "-f", "-C", "-e", library.path()};
-  for (const uintptr_t offset : offsets) {
-    char hex[32];
-    std::snprintf(hex, sizeof hex, "0x%lx", static_cast<unsigned long>(offset));
-    command.push_back(hex);
-  }
-  const std::string log =
-      (std::filesystem::temp_directory_path() / ("stepdance-addr2line-" + std::to_string(::getpid()))).string();
-  const ProcessResult result = run_process(command, log);
-  std::filesystem::remove(log);
-  if (!result.started || result.exit_code != 0) return symbols;
-  std::istringstream lines(result.output);
-  for (std::string& symbol : symbols) {
-    std::string function;
-    std::string place;
-    if (!std::getline(lines, function) || !std::getline(lines, place)) break;
-    if (function.empty() || function == "??") continue;
-    const bool unknown_place = place.empty() || place.rfind("??", 0) == 0 || place.find(":?") != std::string::npos;
-    symbol = unknown_place ? function : function + " at " + place;
-  }
-  return symbols;
-}
-
 std::string library_frame_text(void* address) {
   const auto pc = reinterpret_cast<uintptr_t>(address);
   char where[64];
@@ -157,7 +126,8 @@ std::vector<std::string> collapse_repeats(const std::vector<std::string>& frames
   return out;
 }
 
-std::vector<std::string> sketch_frames(const EscapeRecord& record, const BoardLibrary* library) {
+std::vector<std::string> sketch_frames(const EscapeRecord& record, const BoardLibrary* library,
+                                       const BoardSource* source) {
   const auto [first, end] = sketch_frame_range(record, library);
   std::vector<uintptr_t> offsets;
   for (int i = first; i < end; ++i) {
@@ -166,8 +136,9 @@ std::vector<std::string> sketch_frames(const EscapeRecord& record, const BoardLi
     // interrupted instruction is itself.
     if (library != nullptr && library->code().contains(pc)) offsets.push_back(pc - library->load_base() - (i == first ? 0 : 1));
   }
-  const std::vector<std::string> symbols =
-      library != nullptr ? board_symbols(*library, offsets) : std::vector<std::string>{};
+  std::vector<std::string> symbols(offsets.size());
+  if (library != nullptr && source != nullptr) symbols = source->symbols(library->path(), offsets);
+  symbols.resize(offsets.size());
   std::vector<std::string> frames;
   size_t next_symbol = 0;
   for (int i = first; i < end; ++i) {
@@ -194,14 +165,14 @@ std::string SketchStop::message() const {
 }
 
 SketchStop describe_stop(const EscapeRecord& record, const std::string& board, SketchEntry entry, SimTime time_ns,
-                         const BoardLibrary* library) {
+                         const BoardLibrary* library, const BoardSource* source) {
   SketchStop stop;
   stop.cause = record.cause;
   stop.board = board;
   stop.entry = entry;
   stop.time_ns = time_ns;
   stop.what = what_happened(record);
-  if (record.cause == EscapeCause::kCrashed) stop.backtrace = sketch_frames(record, library);
+  if (record.cause == EscapeCause::kCrashed) stop.backtrace = sketch_frames(record, library, source);
   return stop;
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "board/host/board_source.hpp"
 #include "board/host/entry_monitor.hpp"
 #include "common/sim_time.hpp"
 
@@ -27,8 +28,8 @@ struct SketchStop {
 };
 
 /// Builds the report of an escape from `record`, made in `entry` of `board` at `time_ns`.
-/// `library` symbolises the backtrace's addresses in the board's own code.
+/// `source` names the backtrace's addresses in `library`, the board's own code (null: none named).
 SketchStop describe_stop(const EscapeRecord& record, const std::string& board, SketchEntry entry, SimTime time_ns,
-                         const BoardLibrary* library);
+                         const BoardLibrary* library, const BoardSource* source);
 
 }  // namespace stepdance::sim

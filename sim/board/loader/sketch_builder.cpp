@@ -4,9 +4,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "board/abi/board_abi.h"
 #include "board/loader/content_hash.hpp"
@@ -258,6 +260,34 @@ bool SketchBuilder::compile(const SketchSources& sources, const std::string& ste
     return false;
   }
   return true;
+}
+
+// "function at file:line" for each offset in the board library, from one run of addr2line; ""
+// where it cannot say.
+std::vector<std::string> SketchBuilder::symbols(const std::string& library_path, const std::vector<uintptr_t>& offsets) const {
+  std::vector<std::string> symbols(offsets.size());
+  if (offsets.empty()) return symbols;
+  std::vector<std::string> command{"addr2line", "-f", "-C", "-e", library_path};
+  for (const uintptr_t offset : offsets) {
+    char hex[32];
+    std::snprintf(hex, sizeof hex, "0x%lx", static_cast<unsigned long>(offset));
+    command.push_back(hex);
+  }
+  const std::string log =
+      (std::filesystem::temp_directory_path() / ("stepdance-addr2line-" + std::to_string(::getpid()))).string();
+  const ProcessResult result = run_process(command, log);
+  std::filesystem::remove(log);
+  if (!result.started || result.exit_code != 0) return symbols;
+  std::istringstream lines(result.output);
+  for (std::string& symbol : symbols) {
+    std::string function;
+    std::string place;
+    if (!std::getline(lines, function) || !std::getline(lines, place)) break;
+    if (function.empty() || function == "??") continue;
+    const bool unknown_place = place.empty() || place.rfind("??", 0) == 0 || place.find(":?") != std::string::npos;
+    symbol = unknown_place ? function : function + " at " + place;
+  }
+  return symbols;
 }
 
 }  // namespace stepdance::sim

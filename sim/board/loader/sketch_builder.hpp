@@ -1,24 +1,14 @@
-// Compiles a sketch (.ino) into a board shared object, cached by a hash of everything that shapes it.
+// Compiles a sketch (.ino) into a board shared object, cached by a hash of everything that shapes
+// it: the compiling BoardSource, linked by the command line and the tests (it runs the compiler).
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "board/host/board_source.hpp"
 #include "board/loader/sketch_sources.hpp"
 
 namespace stepdance::sim {
-
-/// The outcome of building one sketch.
-struct SketchBuild {
-  bool ok = false;
-  std::string library_path;  ///< the board .so, when ok
-  bool from_cache = false;   ///< true if no compiler ran
-  std::string error;         ///< when !ok: what failed, with the compiler's own messages
-  std::string diagnostics;   ///< when ok and freshly compiled: the compiler's warnings, if any
-  /// When ok: every file the compiler read (its -MD dependency output: the sketch's sources and
-  /// every header they include, wherever it lies, system headers too), absolute, sorted.
-  std::vector<std::string> inputs;
-};
 
 /// Builds sketches the way the Arduino IDE would, but for the host: the sketch folder's .ino
 /// files are concatenated in IDE order with prototypes generated (sketch_sources.hpp), compiled
@@ -35,14 +25,16 @@ struct SketchBuild {
 /// files' contents>.so. An edited sketch, an edited header wherever it lies, or a rebuilt
 /// runtime therefore gets a fresh build, and an unchanged one is loaded without compiling.
 /// Concurrent builders are safe: each writes temporary files and renames them into place.
-class SketchBuilder {
+class SketchBuilder : public BoardSource {
  public:
   /// `cache_dir` is created on first use. Empty means default_cache_dir().
   explicit SketchBuilder(std::string cache_dir = {});
 
   /// Builds (or finds in the cache) the board library for `sketch_path` (an .ino or a sketch
   /// folder). Context: loop (runs the compiler).
-  SketchBuild build(const std::string& sketch_path) const;
+  SketchBuild build(const std::string& sketch_path) const override;
+  /// Names the offsets with one run of addr2line (binutils, which the compiler needs anyway).
+  std::vector<std::string> symbols(const std::string& library_path, const std::vector<uintptr_t>& offsets) const override;
 
   /// $STEPDANCE_SKETCH_CACHE, else $XDG_CACHE_HOME/stepdance/sketches, else
   /// $HOME/.cache/stepdance/sketches, else the build tree's sketch-cache/.

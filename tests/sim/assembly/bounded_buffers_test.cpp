@@ -23,7 +23,7 @@ uint64_t chatter_bytes_through(uint64_t last_line) {
 TEST(BoundedBuffers, AnUnfinishedConsoleLineIsShownAfterAQuietInterval) {
   std::vector<std::pair<SimTime, std::string>> lines;
   SimulationOptions options;
-  options.sketch_cache_dir = kSketchCache;
+  plug_test_hooks(options);
   options.output_directory = test_output_dir("bounded_progress");
   std::unique_ptr<Simulation> simulation;
   options.console = [&](const std::string&, const std::string& line) { lines.push_back({simulation->now(), line}); };

@@ -17,7 +17,7 @@ std::string scenario_text(const std::string& out, const std::string& steps) {
 /// Runs the scenario into `out` without emptying it first (a re-run into the same folder).
 std::unique_ptr<Simulation> run_into(const std::string& out, const std::string& steps) {
   SimulationOptions options;
-  options.sketch_cache_dir = kSketchCache;
+  plug_test_hooks(options);
   options.output_directory = out;
   options.write_vcd = false;
   SimulationError error;

@@ -12,6 +12,8 @@
 
 #include "scenario/load_scenario.hpp"
 #include "assembly/simulation.hpp"
+#include "board/loader/sketch_builder.hpp"
+#include "output/png_picture_writer.hpp"
 
 namespace stepdance::sim::test {
 
@@ -52,11 +54,18 @@ inline scenario::Scenario parse(const std::string& text, const std::string& file
   return loaded.scenario;
 }
 
+/// What the command line plugs into a simulation, for tests: the compiling board source
+/// (caching in kSketchCache) and the PNG module.
+inline void plug_test_hooks(SimulationOptions& options) {
+  options.boards = std::make_shared<SketchBuilder>(kSketchCache);
+  options.pictures = png_pictures();
+}
+
 /// Builds a simulation writing into test_output_dir(output_name) (emptied first).
 inline std::unique_ptr<Simulation> create(const scenario::Scenario& scenario, const std::string& output_name,
                                           bool write_vcd = true) {
   SimulationOptions options;
-  options.sketch_cache_dir = kSketchCache;
+  plug_test_hooks(options);
   options.output_directory = test_output_dir(output_name);
   options.write_vcd = write_vcd;
   std::filesystem::remove_all(*options.output_directory);

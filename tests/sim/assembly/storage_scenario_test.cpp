@@ -72,7 +72,7 @@ sketch = "fixtures/Storage/PlayBack/PlayBack.ino"
 A = { device = "stepper" }
 )", kScenarioFile);
   SimulationOptions options;
-  options.sketch_cache_dir = kSketchCache;
+  plug_test_hooks(options);
   options.output_directory = test_output_dir("storage_record");
   options.write_vcd = false;
   SimulationError error;
