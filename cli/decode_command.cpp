@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "command_help.hpp"
 #include "exit_codes.hpp"
 #include "option_kinds.hpp"
 #include "decode/capture_decoder.hpp"
@@ -127,12 +128,15 @@ int read_capture(const DecodeCommandOptions& options, const sim::DecodeOptions& 
 }  // namespace
 
 CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
-  CLI::App& decode = *app.add_subcommand(
-      "decode",
+  CLI::App& decode = add_command(
+      app, "decode",
       "Decode a VCD capture of a Stepdance cable (from the simulator, or exported by PulseView/sigrok "
       "from a logic analyzer): step counts per axis and direction, rejected pulses with reasons, "
-      "frame statistics. Exit status: 0 ok, 2 bad capture or options, 4 the capture is truncated (it ends "
-      "mid-stream: what it holds is decoded and reported, with a warning).");
+      "frame statistics.",
+      {{kExitOk, "ok"},
+       {kExitBadInput, "bad capture or options"},
+       {kExitTruncatedCapture,
+        "the capture is truncated (it ends mid-stream: what it holds is decoded and reported, with a warning)"}});
   add_path_option(decode, "capture", options.capture_path, "the .vcd file")->required();
   decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
   decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");

@@ -3,11 +3,13 @@
 
 #include <sys/stat.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
+#include "command_help.hpp"
 #include "console_echo.hpp"
 #include "containment.hpp"
 #include "exit_codes.hpp"
@@ -187,15 +189,20 @@ int exit_status(const sim::SimulationReport& report) {
 }  // namespace
 
 CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
-  CLI::App& sim = *app.add_subcommand(
-      "sim",
+  CLI::App& sim = add_command(
+      app, "sim",
       "Run a simulation: the boards' sketches (compiled for the host, cached), devices, cables and machine "
       "described by a scenario file, then write the drawing, VCD, CSV and summary it asks for and check its "
-      "[[expect]] entries. Exit status: 0 ok, 1 failure, 2 bad scenario or sketch, 3 an expectation failed, 5 a "
-      "sketch crashed or ended the program, 6 a sketch hung, 130/143 interrupted by SIGINT/SIGTERM.");
+      "[[expect]] entries.",
+      {{kExitOk, "ok"},
+       {kExitFailure, "failure"},
+       {kExitBadInput, "bad scenario or sketch"},
+       {kExitExpectationFailed, "an expectation failed"},
+       {kExitSketchFailed, "a sketch crashed or ended the program"},
+       {kExitSketchHung, "a sketch hung"},
+       {kExitSignalBase + SIGINT, "interrupted by SIGINT/SIGTERM", kExitSignalBase + SIGTERM}});
   sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
       ->required();
-  add_path_option(sim, "--out", options.output_directory, "write the output files into this folder instead");
   add_number_option(sim, "--duration", options.duration_s,
                     "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS));
   add_path_option(sim, "--vcd", options.vcd_file,
@@ -217,8 +224,7 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   add_number_option(sim, "--watchdog-s", options.watchdog_s,
                     "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
                     "10, in " + describe(kWatchdogS) + ")");
-  add_path_option(sim, "--cache", options.cache_directory,
-                  "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else ~/.cache/stepdance/sketches)");
+  add_simulation_folder_options(sim, options.output_directory, options.cache_directory, "");
   return sim;
 }
 

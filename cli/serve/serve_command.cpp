@@ -9,6 +9,7 @@
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
 
+#include "command_help.hpp"
 #include "exit_codes.hpp"
 #include "option_kinds.hpp"
 #include "scenario/load_scenario.hpp"
@@ -158,8 +159,8 @@ int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::Simu
 }  // namespace
 
 CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
-  CLI::App& serve = *app.add_subcommand(
-      "serve",
+  CLI::App& serve = add_command(
+      app, "serve",
       "Serve a web control page for a board's RPC names and bridge it over WebSocket to the board's serial "
       "line: a real board (a serial device such as /dev/ttyACM0) or a simulated one (a scenario or example "
       "folder, run live with a view of its drawing). Listens on 127.0.0.1 only unless --host says otherwise; "
@@ -176,8 +177,7 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
   add_number_option(serve, "--speed", options.speed,
                     "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) +
                         " (default 1)");
-  add_path_option(serve, "--out", options.output_directory, "simulation: write the output files into this folder");
-  add_path_option(serve, "--cache", options.cache_directory, "simulation: folder for compiled sketches");
+  add_simulation_folder_options(serve, options.output_directory, options.cache_directory, "simulation: ");
   return serve;
 }
 
