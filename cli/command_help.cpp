@@ -19,9 +19,11 @@ CLI::App& add_command(CLI::App& app, const char* name, const std::string& summar
   return *app.add_subcommand(name, description);
 }
 
-void add_simulation_folder_options(CLI::App& command, std::string& output_directory, std::string& cache_directory,
-                                   const std::string& scope) {
+void add_output_folder_option(CLI::App& command, std::string& output_directory, const std::string& scope) {
   add_path_option(command, "--out", output_directory, scope + "write the output files into this folder instead");
+}
+
+void add_cache_folder_option(CLI::App& command, std::string& cache_directory, const std::string& scope) {
   add_path_option(command, "--cache", cache_directory,
                   scope + "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else "
                           "~/.cache/stepdance/sketches)");

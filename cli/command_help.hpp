@@ -22,9 +22,10 @@ struct ExitStatusHelp {
 CLI::App& add_command(CLI::App& app, const char* name, const std::string& summary,
                       std::initializer_list<ExitStatusHelp> statuses = {});
 
-/// Adds --out (into `output_directory`) and --cache (into `cache_directory`), their help
-/// prefixed by `scope` ("" or "simulation: "). Context: as add_command().
-void add_simulation_folder_options(CLI::App& command, std::string& output_directory, std::string& cache_directory,
-                                   const std::string& scope);
+/// Adds --out, the folder a simulation writes its files into, its help prefixed by `scope` (""
+/// or "simulation: "). Context: as add_command().
+void add_output_folder_option(CLI::App& command, std::string& output_directory, const std::string& scope);
+/// Adds --cache, the folder for compiled sketches, likewise.
+void add_cache_folder_option(CLI::App& command, std::string& cache_directory, const std::string& scope);
 
 }  // namespace stepdance::cli

@@ -203,6 +203,7 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
        {kExitSignalBase + SIGINT, "interrupted by SIGINT/SIGTERM", kExitSignalBase + SIGTERM}});
   sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
       ->required();
+  add_output_folder_option(sim, options.output_directory, "");
   add_number_option(sim, "--duration", options.duration_s,
                     "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS));
   add_path_option(sim, "--vcd", options.vcd_file,
@@ -224,7 +225,7 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   add_number_option(sim, "--watchdog-s", options.watchdog_s,
                     "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
                     "10, in " + describe(kWatchdogS) + ")");
-  add_simulation_folder_options(sim, options.output_directory, options.cache_directory, "");
+  add_cache_folder_option(sim, options.cache_directory, "");
   return sim;
 }
 

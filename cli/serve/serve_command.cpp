@@ -177,7 +177,8 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
   add_number_option(serve, "--speed", options.speed,
                     "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) +
                         " (default 1)");
-  add_simulation_folder_options(serve, options.output_directory, options.cache_directory, "simulation: ");
+  add_output_folder_option(serve, options.output_directory, "simulation: ");
+  add_cache_folder_option(serve, options.cache_directory, "simulation: ");
   return serve;
 }
 
