@@ -23,8 +23,8 @@ import tty
 import unittest
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
-FIXTURES = os.path.join(SOURCE_DIR, "tests", "sim", "kernel", "fixtures", "Contained")
-BOUNDED = os.path.join(SOURCE_DIR, "tests", "sim", "kernel", "fixtures", "Bounded")
+FIXTURES = os.path.join(SOURCE_DIR, "tests", "sim", "assembly", "fixtures", "Contained")
+BOUNDED = os.path.join(SOURCE_DIR, "tests", "sim", "assembly", "fixtures", "Bounded")
 
 
 def rss_kb(pid):

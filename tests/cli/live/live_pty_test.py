@@ -19,7 +19,7 @@ import unittest
 import serial
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
-EXAMPLE = os.path.join(SOURCE_DIR, "tests", "sim", "live", "SerialEcho")
+EXAMPLE = os.path.join(SOURCE_DIR, "tests", "cli", "live", "SerialEcho")
 
 
 def read_exactly(port, count, timeout_s=20.0):

@@ -31,7 +31,7 @@ class LiveRpcTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.sim = subprocess.Popen(
-            [STEPDANCE, "sim", os.path.join(SOURCE_DIR, "tests", "sim", "live", "RpcTarget"), "--live",
+            [STEPDANCE, "sim", os.path.join(SOURCE_DIR, "tests", "cli", "live", "RpcTarget"), "--live",
              "--speed", "1", "--out", os.path.join(WORK_DIR, "rpc-out")],
             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         line = cls.sim.stdout.readline()

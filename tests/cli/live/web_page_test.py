@@ -71,7 +71,7 @@ class WebPageTest(unittest.TestCase):
     def setUpClass(cls):
         shutil.rmtree(OUT_DIR, ignore_errors=True)
         cls.serve = subprocess.Popen(
-            [STEPDANCE, "serve", os.path.join(SOURCE_DIR, "tests", "sim", "live", "WebPanelTarget"), "--port", "0",
+            [STEPDANCE, "serve", os.path.join(SOURCE_DIR, "tests", "cli", "live", "WebPanelTarget"), "--port", "0",
              "--out", OUT_DIR], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         line = cls.serve.stdout.readline()
         match = re.fullmatch(r"serving (http://127\.0\.0\.1:(\d+)/) for simulated board driver\n", line)
