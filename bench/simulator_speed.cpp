@@ -14,9 +14,10 @@
 #include <cstdlib>
 #include <string>
 
+#include "board/loader/sketch_builder.hpp"
 #include "scenario/load_scenario.hpp"
 #include "step_a_sketch_graph.hpp"
-#include "wiring/simulation.hpp"
+#include "assembly/simulation.hpp"
 
 namespace {
 
@@ -41,7 +42,7 @@ scenario::Scenario step_a_sketch() {
 
 std::unique_ptr<Simulation> make(const scenario::Scenario& scenario, SimTime duration) {
   stepdance::sim::SimulationOptions options;
-  options.sketch_cache_dir = STEPDANCE_BUILD_DIR "/sketch-cache";
+  options.boards = std::make_shared<stepdance::sim::SketchBuilder>(STEPDANCE_BUILD_DIR "/sketch-cache");
   options.duration = duration;
   options.write_vcd = false;
   stepdance::sim::SimulationError error;

@@ -3,7 +3,7 @@
 # links the images, reports flash/RAM use, rejects heap/exception symbols and checks the library zip.
 # Sketch folders are prepared as the Arduino IDE does (.ino files concatenated, prototypes
 # generated, .c/.cpp beside them compiled) by the simulator's own preparation code, built here for
-# the host. The compile-only sketch fixtures under tests/sim/kernel/fixtures are compiled too.
+# the host. The compile-only sketch fixtures under tests/sim/assembly/fixtures are compiled too.
 #
 # Usage: scripts/build-teensy.sh      (output in build-teensy/, or $STEPDANCE_TEENSY_BUILD_DIR)
 # The images link against do-nothing stand-ins for Teensyduino's core (targets/teensy/stand-in):
@@ -130,14 +130,14 @@ third_party_compile() {
 # ---- The IDE's sketch preparation, as a host tool -------------------------------------------------
 
 prep="$out/tools/stepdance-sketch-prep"
-prep_sources=(sim/kernel/loader/sketch_prep_main.cpp sim/kernel/loader/sketch_prototypes.cpp
-  sim/kernel/loader/sketch_sources.cpp)
+prep_sources=(sim/board/loader/sketch_prep_main.cpp sim/board/loader/sketch_prototypes.cpp
+  sim/board/loader/sketch_sources.cpp)
 prep_stale=0
 [ -x "$prep" ] || prep_stale=1
-for source in "${prep_sources[@]}" sim/kernel/loader/*.hpp; do [ "$source" -nt "$prep" ] && prep_stale=1; done
+for source in "${prep_sources[@]}" sim/board/loader/*.hpp; do [ "$source" -nt "$prep" ] && prep_stale=1; done
 if [ $prep_stale -eq 1 ]; then
   mkdir -p "$out/tools"
-  c++ -std=gnu++17 -O1 -Isim/kernel "${prep_sources[@]}" -o "$prep" || fail "building the sketch preparation tool"
+  c++ -std=gnu++17 -O1 -Isim "${prep_sources[@]}" -o "$prep" || fail "building the sketch preparation tool"
 fi
 
 # prepare_sketch FOLDER OUTPUT.cpp: writes the IDE's translation unit (rewritten only when it
@@ -359,7 +359,7 @@ done
 # The library builds for both boards even when no example needs the Teensy 4.0.
 [ -n "${config_objects[teensy40-serial]+set}" ] || build_configuration teensy40 serial
 
-# ---- Compile-only sketch fixtures (tests/sim/kernel/fixtures): the IDE-style folder and the ----
+# ---- Compile-only sketch fixtures (tests/sim/assembly/fixtures): the IDE-style folder and the ----
 # original library's names. A fixture marked "// waits-for: NAME..." may fail only because those
 # names do not exist yet (the host test, original_api_fixtures_test.cpp, applies the same rule).
 waiting_only() {
@@ -382,7 +382,7 @@ waiting_only() {
 
 fixtures_built=0
 declare -a fixtures_waiting=()
-mapfile -t fixture_dirs < <(find tests/sim/kernel/fixtures/IdeSketch tests/sim/kernel/fixtures/original_api -name '*.ino' -printf '%h\n' | LC_ALL=C sort -u)
+mapfile -t fixture_dirs < <(find tests/sim/assembly/fixtures/IdeSketch tests/sim/assembly/fixtures/original_api -name '*.ino' -printf '%h\n' | LC_ALL=C sort -u)
 for folder in "${fixture_dirs[@]}"; do
   name=$(basename "$folder")
   [ -f "$folder/$name.ino" ] || continue

@@ -22,14 +22,14 @@ declare -A target_sources=(
   [ebb]="core"
   [rpc]="core"
   [scenario]="sim/scenario sim/kinds sim/kinds/devices sim/kinds/machines sim/models servo/pulse/servo_pulse.c"
-  [vcd]="sim/decode/vcd_reader.cpp sim/decode/vcd_tokenizer.cpp sim/decode/step_dir_pairs.cpp sim/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
+  [vcd]="cli/decode/vcd_reader.cpp cli/decode/vcd_tokenizer.cpp cli/decode/step_dir_pairs.cpp cli/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
 )
-# Extra compiler flags: the simulator's readers see sim/ (the scenario reader also links the device
-# and machine kinds, whose rows hold their models' factories); toml++ is compiled in from its header
+# Extra compiler flags: the scenario reader sees sim/ (it also links the device and machine kinds,
+# whose rows hold their models' factories), the capture reader sim/ and cli/; toml++ is compiled in from its header
 # (Debian's libtomlplusplus-dev) so the fuzzer also instruments the TOML parser.
 declare -A target_flags=(
   [scenario]="-Isim -Iservo/pulse -DTOML_HEADER_ONLY=1"
-  [vcd]="-Isim"
+  [vcd]="-Isim -Icli"
 )
 # Libraries a target links besides its objects: reply patterns are RE2 (Debian's libre2-dev).
 declare -A target_libs=(

@@ -3,7 +3,7 @@
 // Everything else the Arduino API does goes through the HAL facade (stepdance/hal/hal.hpp). The
 // facade has no notion of "the sketch waits" or of serial ports besides the console, so the
 // backend that runs the sketch defines these functions as well, exactly once per board:
-//   - the simulator's board runtime (sim/kernel), inside each board's shared object;
+//   - the simulator's board runtime (sim/board), inside each board's shared object;
 //   - src/stepdance/platform/manual/arduino_manual.cpp for tests on the manual backend.
 #pragma once
 

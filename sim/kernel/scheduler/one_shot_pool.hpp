@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "common/sim_time.hpp"
-#include "scheduler/event.hpp"
-#include "scheduler/scheduler.hpp"
+#include "kernel/scheduler/event.hpp"
+#include "kernel/scheduler/scheduler.hpp"
 
 namespace stepdance::sim {
 

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "common/sim_time.hpp"
-#include "scheduler/event.hpp"
-#include "scheduler/scheduler.hpp"
+#include "kernel/scheduler/event.hpp"
+#include "kernel/scheduler/scheduler.hpp"
 
 namespace stepdance::sim {
 

@@ -1,5 +1,5 @@
 // The discrete-event kernel's binary heap and its dispatch loop.
-#include "scheduler/scheduler.hpp"
+#include "kernel/scheduler/scheduler.hpp"
 
 namespace stepdance::sim {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/sim_time.hpp"
-#include "scheduler/event.hpp"
+#include "kernel/scheduler/event.hpp"
 
 namespace stepdance::sim {
 

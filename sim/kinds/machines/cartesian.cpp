@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "kinds/machines/machine_keys.hpp"
-#include "models/cartesian_machine.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -49,13 +48,7 @@ std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const Soc
                                const PenTraceSettings& trace) {
   const auto& config = *machine.settings_as<CartesianConfig>();
   auto axis = [&sockets](const std::optional<char>& port) { return port ? sockets.stepper(*port) : nullptr; };
-  CartesianSettings settings;
-  settings.x_steps_per_mm = config.x_steps_per_mm;
-  settings.y_steps_per_mm = config.y_steps_per_mm;
-  settings.z_steps_per_mm = config.z_steps_per_mm;
-  settings.e_steps_per_mm = config.e_steps_per_mm;
-  settings.pen_down_at_or_below_mm = config.pen_down_at_or_below_mm;
-  settings.draws_while_extruding = config.draws_while_extruding;
+  CartesianSettings settings = config;
   settings.trace = trace;
   // One axis steps at a time, so the pen stair-steps up to a step off the true path on each
   // axis: the stored toolpath smooths that out (its length is then the path's, not the stairs').

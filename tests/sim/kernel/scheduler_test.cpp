@@ -3,9 +3,9 @@
 
 #include <vector>
 
-#include "scheduler/one_shot_pool.hpp"
-#include "scheduler/periodic_timer.hpp"
-#include "scheduler/scheduler.hpp"
+#include "kernel/scheduler/one_shot_pool.hpp"
+#include "kernel/scheduler/periodic_timer.hpp"
+#include "kernel/scheduler/scheduler.hpp"
 
 namespace stepdance::sim {
 namespace {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "kinds/board_registry.hpp"
-#include "sim/kernel/simulation_fixture.hpp"
+#include "sim/assembly/simulation_fixture.hpp"
 #include "sim/kinds/TestModuleSketch/test_module.hpp"
 
 namespace stepdance::sim::test {
@@ -114,7 +114,7 @@ TEST_F(TestOnlyBoard, RunsItsSketchOnItsOwnPins) {
 
 TEST_F(TestOnlyBoard, AScenarioThatNamesAnotherModuleIsRefused) {
   SimulationOptions options;
-  options.sketch_cache_dir = kSketchCache;
+  plug_test_hooks(options);
   options.output_directory = test_output_dir("test_only_board_mismatch");
   SimulationError error;
   EXPECT_EQ(Simulation::create(parse(board_text("driver"), kFile), options, error), nullptr);
@@ -124,7 +124,7 @@ TEST_F(TestOnlyBoard, AScenarioThatNamesAnotherModuleIsRefused) {
 
 TEST(TestOnlyBoardRegistry, ASketchOnAnUnregisteredBoardIsRefused) {
   SimulationOptions options;
-  options.sketch_cache_dir = kSketchCache;
+  plug_test_hooks(options);
   options.output_directory = test_output_dir("test_only_board_unknown");
   SimulationError error;
   EXPECT_EQ(Simulation::create(parse(board_text("driver"), kFile), options, error), nullptr);

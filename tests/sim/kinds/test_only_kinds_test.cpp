@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "sim/kernel/simulation_fixture.hpp"
+#include "sim/assembly/simulation_fixture.hpp"
 #include "sim/kinds/test_crank.hpp"
 #include "sim/kinds/test_gauge.hpp"
 

@@ -1,7 +1,7 @@
 // Inside a board's shared object: the simulator's callback table and context, set at attach time.
 #pragma once
 
-#include "abi/board_abi.h"
+#include "board/abi/board_abi.h"
 
 namespace stepdance::sim_runtime {
 

@@ -3,7 +3,7 @@
 
 #include <stdint.h>
 
-#include "abi/board_abi.h"
+#include "board/abi/board_abi.h"
 
 namespace stepdance::sim_runtime {
 

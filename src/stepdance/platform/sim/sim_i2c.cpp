@@ -3,7 +3,7 @@
 // Teensy whose Wire library blocks until the transfer ends. Frames keep running meanwhile.
 #if defined(STEPDANCE_PLATFORM_SIM)
 
-#include "abi/board_abi.h"
+#include "board/abi/board_abi.h"
 #include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/hal/i2c.hpp"
 

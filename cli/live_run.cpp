@@ -1,0 +1,106 @@
+// run_live: terminals, signal handling and wall-clock pacing around Simulation::run_until.
+#include "live_run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+#include "board/host/entry_monitor.hpp"
+#include "pty_port.hpp"
+
+namespace stepdance::cli {
+namespace {
+
+/// Simulated time between exchanges with the terminals: 1 ms, about a USB full-speed frame.
+constexpr sim::SimTime kExchangeNs = sim::kMillisecond;
+
+/// The longest the pacing sleeps at once, so a stop request is seen within this (at any speed).
+constexpr auto kLongestSleep = std::chrono::milliseconds(20);
+
+// Ctrl-C and SIGTERM reach the run through Containment (containment.hpp).
+bool stop_requested() { return sim::EntryMonitor::requested() != sim::EscapeCause::kNone; }
+
+// Sleeps until `due`, in short naps, while nobody asked the run to stop; returns the seconds
+// it slept.
+double sleep_until(std::chrono::steady_clock::time_point due) {
+  const auto started = std::chrono::steady_clock::now();
+  while (!stop_requested()) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now >= due) break;
+    std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(due - now, kLongestSleep));
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+struct BoardLink {
+  sim::SimBoard* board;
+  std::unique_ptr<PtyPort> port;
+};
+
+std::vector<BoardLink> open_terminals(sim::Simulation& simulation, const std::vector<std::string>& boards,
+                                      const LiveOptions& options) {
+  std::vector<BoardLink> links;
+  for (const std::string& name : boards) {
+    BoardLink link{simulation.board(name), std::make_unique<PtyPort>()};
+    auto found = options.serial_links.find(name);
+    if (found != options.serial_links.end()) link.port->link_as(found->second);
+    PtyPort* port = link.port.get();
+    link.board->on_console_bytes([port](const uint8_t* data, size_t length) { port->write_to_client(data, length); });
+    links.push_back(std::move(link));
+  }
+  for (const auto& [name, path] : options.serial_links) {
+    if (simulation.board(name) == nullptr) throw std::runtime_error("--serial-link: no board named '" + name + "'");
+  }
+  return links;
+}
+
+void exchange(std::vector<BoardLink>& links) {
+  std::string received;
+  for (BoardLink& link : links) {
+    received.clear();
+    link.port->read_from_client(received, link.board->console_input_room());
+    if (!received.empty()) link.board->send_console(received);
+    link.port->flush();
+  }
+}
+
+}  // namespace
+
+LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options) {
+  std::vector<BoardLink> links = open_terminals(simulation, boards, options);
+  for (size_t i = 0; i < links.size(); ++i) std::printf("serial %s: %s\n", boards[i].c_str(), links[i].port->path().c_str());
+  std::fflush(stdout);
+  const auto wall_start = std::chrono::steady_clock::now();
+  const sim::SimTime sim_start = simulation.now();
+  double slept_s = 0;
+  // Every simulated millisecond, wherever the run is (a sketch waiting in delay() included).
+  simulation.pace_every(kExchangeNs, [&](sim::SimTime now) {
+    exchange(links);
+    if (options.speed <= 0.0) return;
+    const double due_s = sim::to_seconds(now - sim_start) / options.speed;
+    slept_s += sleep_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                            std::chrono::duration<double>(due_s)));
+  });
+  exchange(links);
+  while (!stop_requested() && simulation.now() < simulation.duration() && !simulation.stopped()) {
+    simulation.run_until(simulation.duration());
+  }
+  exchange(links);
+  for (size_t i = 0; i < links.size(); ++i) {
+    links[i].board->on_console_bytes(nullptr);
+    const uint64_t dropped = links[i].port->dropped_bytes();
+    links[i].board->count_console_dropped(dropped);
+    if (dropped > 0) {
+      std::printf("serial %s: %llu bytes the board printed were dropped, oldest first (nobody read them)\n",
+                  boards[i].c_str(), static_cast<unsigned long long>(dropped));
+    }
+  }
+  simulation.end_now();
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  return {wall_s, std::max(0.0, wall_s - slept_s)};
+}
+
+}  // namespace stepdance::cli

@@ -1,0 +1,279 @@
+// `stepdance sim`: scenario → Simulation → files, with a progress bar and a short report.
+#include "sim_command.hpp"
+
+#include <sys/stat.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "command_help.hpp"
+#include "console_echo.hpp"
+#include "containment.hpp"
+#include "exit_codes.hpp"
+#include "live_run.hpp"
+#include "option_kinds.hpp"
+#include "progress_bar.hpp"
+#include "scenario/load_scenario.hpp"
+#include "scenario/value_range.hpp"
+#include "simulator_hooks.hpp"
+#include "assembly/simulation.hpp"
+
+namespace stepdance::cli {
+namespace {
+
+/// A live run ends when interrupted; this bounds it (a year of simulated time).
+constexpr double kLiveDurationS = 365.0 * 86400.0;
+
+namespace ranges = sim::scenario::ranges;
+
+/// The numbers of the command line, checked by the scenario file's rules (value_range.hpp).
+struct CheckedNumbers {
+  std::optional<double> duration_s;
+  std::optional<double> csv_interval_ms;
+  std::optional<double> watchdog_s;
+};
+
+/// --watchdog-s: from a tenth of a second (tests) to a day; 10 s unless given.
+constexpr sim::scenario::NumberRange kWatchdogS{0.1, 86400, false, "s"};
+constexpr double kDefaultWatchdogS = 10;
+
+/// Checks an optional number option; false (message on stderr) when it is given and bad.
+bool check_number(const char* option, const std::string& text, const sim::scenario::NumberRange& range,
+                  std::optional<double>& out) {
+  if (text.empty()) return true;
+  out = read_number_option(option, text, range);
+  return out.has_value();
+}
+
+bool check_numbers(const SimCommandOptions& options, CheckedNumbers& numbers) {
+  return check_number("--duration", options.duration_s, ranges::kDurationS, numbers.duration_s) &&
+         check_number("--csv-interval-ms", options.csv_interval_ms, ranges::kCsvIntervalMs, numbers.csv_interval_ms) &&
+         check_number("--watchdog-s", options.watchdog_s, kWatchdogS, numbers.watchdog_s);
+}
+
+/// Options that only mean something in a live run: refused without --live (they used to be
+/// ignored silently). False, with a message on stderr, when one is given.
+bool check_live_only(const SimCommandOptions& options) {
+  if (options.live) return true;
+  if (!options.speed.empty()) std::cerr << "--speed: needs --live (it paces a live run)\n";
+  if (!options.serial_links.empty()) std::cerr << "--serial-link: needs --live (it names a live run's terminal)\n";
+  return options.speed.empty() && options.serial_links.empty();
+}
+
+/// A --serial-link path is replaced by a symlink and removed at the end: only a path that does
+/// not exist, or a symlink (one an earlier run left), may be used. "" if `path` is fine.
+std::string serial_link_problem(const std::string& path) {
+  struct stat status {};
+  if (lstat(path.c_str(), &status) != 0 || S_ISLNK(status.st_mode)) return {};
+  return "'" + path + "' exists and is not a symlink; it would be deleted (name a new path)";
+}
+
+/// Reads --speed and --serial-link; false (with a message on stderr) when one is malformed.
+bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
+  if (options.speed == "max") {
+    live.speed = 0.0;
+  } else if (!options.speed.empty()) {
+    std::string error;
+    const std::optional<double> speed = sim::scenario::parse_number_option("--speed", options.speed, ranges::kSpeed, error);
+    if (!speed) {
+      std::cerr << error << " (or 'max')\n";
+      return false;
+    }
+    live.speed = *speed;
+  }
+  for (const std::string& link : options.serial_links) {
+    const size_t equals = link.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == link.size()) {
+      std::cerr << "--serial-link: '" << link << "' is not board=path\n";
+      return false;
+    }
+    const std::string path = link.substr(equals + 1);
+    if (const std::string problem = serial_link_problem(path); !problem.empty()) {
+      std::cerr << "--serial-link: " << problem << "\n";
+      return false;
+    }
+    live.serial_links[link.substr(0, equals)] = path;
+  }
+  return true;
+}
+
+std::string absolute_path(const std::string& path) {
+  return std::filesystem::absolute(path).lexically_normal().string();
+}
+
+sim::SimulationOptions simulation_options(const SimCommandOptions& options, const CheckedNumbers& numbers,
+                                          ProgressBar& progress, ConsoleEcho& echo) {
+  sim::SimulationOptions sim_options;
+  plug_front_end(sim_options, options.cache_directory);
+  if (numbers.duration_s) sim_options.duration = sim::from_seconds(*numbers.duration_s);
+  if (!options.output_directory.empty()) sim_options.output_directory = absolute_path(options.output_directory);
+  sim_options.write_vcd = !options.no_vcd;
+  if (!options.vcd_file.empty()) sim_options.vcd_file = absolute_path(options.vcd_file);
+  if (!options.csv_file.empty()) sim_options.csv_file = absolute_path(options.csv_file);
+  sim_options.csv_interval_ms = numbers.csv_interval_ms;
+  sim_options.live = options.live;
+  if (options.live) {
+    // Runs until interrupted (or --duration); the terminals carry the console: nothing echoed.
+    if (!numbers.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
+    return sim_options;
+  }
+  sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
+  if (!options.quiet) {
+    sim_options.console = [&echo](const std::string& board, const std::string& line) { echo.line(board, line); };
+    sim_options.build_diagnostics = [&progress](const std::string& sketch, const std::string& text) {
+      progress.clear();
+      std::cerr << sketch << ": compiler warnings:\n" << text;
+    };
+  }
+  return sim_options;
+}
+
+// A stopped sketch is reported whatever --quiet says: the run failed, or was cut short.
+void print_stop(const sim::SimulationReport& report) {
+  if (!report.sketch_stop) return;
+  std::cerr << report.sketch_stop->message() << "\n";
+  for (size_t i = 0; i < report.sketch_stop->backtrace.size(); ++i) {
+    std::cerr << "  #" << i << " " << report.sketch_stop->backtrace[i] << "\n";
+  }
+}
+
+const char* result_label(const sim::ExpectationResult& result) {
+  if (!result.checked) return "NOT RUN ";
+  return result.met ? "ok      " : "FAILED  ";
+}
+
+// `live`: a live run's wall-clock time and computing time (zeros for a batch run, which computes
+// all the time).
+void print_report(const sim::SimulationReport& report, bool quiet, const LiveTiming& live) {
+  for (const sim::ExpectationResult& result : report.expectations) {
+    if (!result.met || !quiet) std::cout << result_label(result) << result.message << "\n";
+  }
+  if (quiet) return;
+  const double simulated_s = sim::to_seconds(report.simulated_ns);
+  char line[200];
+  if (live.wall_s > 0) {
+    std::snprintf(line, sizeof line,
+                  "simulated %.3f s in %.3f s of wall time (live; %.3f s of it computing, %.1f %%)\n", simulated_s,
+                  live.wall_s, live.computing_s, 100.0 * live.computing_s / live.wall_s);
+  } else {
+    std::snprintf(line, sizeof line, "simulated %.3f s in %.3f s of wall time (%.0fx real time)\n", simulated_s,
+                  report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
+  }
+  std::cout << line;
+  for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
+}
+
+int exit_status(const sim::SimulationReport& report) {
+  if (report.sketch_stop) {
+    switch (report.sketch_stop->cause) {
+      case sim::EscapeCause::kHung:
+        return kExitSketchHung;
+      case sim::EscapeCause::kCrashed:
+      case sim::EscapeCause::kEnded:
+        return kExitSketchFailed;
+      default:
+        break;
+    }
+  }
+  if (report.interrupted_by != 0) return kExitSignalBase + report.interrupted_by;
+  if (report.sketch_stop && report.sketch_stop->cause == sim::EscapeCause::kInterrupted &&
+      !report.all_expectations_met()) {
+    return kExitExpectationFailed;
+  }
+  return report.all_expectations_met() ? kExitOk : kExitExpectationFailed;
+}
+
+}  // namespace
+
+CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
+  CLI::App& sim = add_command(
+      app, "sim",
+      "Run a simulation: the boards' sketches (compiled for the host, cached), devices, cables and machine "
+      "described by a scenario file, then write the drawing, VCD, CSV and summary it asks for and check its "
+      "[[expect]] entries.",
+      {{kExitOk, "ok"},
+       {kExitFailure, "failure"},
+       {kExitBadInput, "bad scenario or sketch"},
+       {kExitExpectationFailed, "an expectation failed"},
+       {kExitSketchFailed, "a sketch crashed or ended the program"},
+       {kExitSketchHung, "a sketch hung"},
+       {kExitSignalBase + SIGINT, "interrupted by SIGINT/SIGTERM", kExitSignalBase + SIGTERM}});
+  sim.add_option("scenario", options.scenario_path, "a scenario .toml file, or an example folder holding scenario.toml")
+      ->required();
+  add_output_folder_option(sim, options.output_directory, "");
+  add_number_option(sim, "--duration", options.duration_s,
+                    "simulated seconds to run instead of duration_s, in " + describe(ranges::kDurationS));
+  add_path_option(sim, "--vcd", options.vcd_file,
+                  "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)");
+  add_path_option(sim, "--csv", options.csv_file, "write the CSV of positions over time here");
+  add_number_option(sim, "--csv-interval-ms", options.csv_interval_ms,
+                    "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs));
+  sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
+  sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
+  sim.add_flag("--live", options.live,
+               "run in real time until interrupted (Ctrl-C), each board's USB serial on a pseudo-terminal announced "
+               "as `serial <board>: <path>`; outputs are written when the run ends");
+  add_number_option(sim, "--speed", options.speed,
+                    "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) +
+                        ", or 'max' (default 1)");
+  sim.add_option("--serial-link", options.serial_links,
+                 "live only: also make a symlink to a board's terminal (board=path; path must not exist, or be a "
+                 "symlink)");
+  add_number_option(sim, "--watchdog-s", options.watchdog_s,
+                    "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
+                    "10, in " + describe(kWatchdogS) + ")");
+  add_cache_folder_option(sim, options.cache_directory, "");
+  return sim;
+}
+
+int run_sim_command(const SimCommandOptions& options) {
+  CheckedNumbers numbers;
+  LiveOptions live;
+  if (!check_numbers(options, numbers) || !check_live_only(options) || !parse_live_options(options, live)) {
+    return kExitBadInput;
+  }
+  const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
+  if (!loaded.ok()) {
+    std::cerr << loaded.error_text();
+    return kExitBadInput;
+  }
+  if (options.live && !loaded.scenario.hosts.empty()) {
+    std::cerr << loaded.scenario.file << ":" << loaded.scenario.hosts.front().line
+              << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";
+    return kExitBadInput;
+  }
+  ProgressBar progress(!options.quiet && !options.live);
+  ConsoleEcho echo([&progress] { progress.clear(); });
+  sim::SimulationError error;
+  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, numbers, progress, echo), error);
+  if (!simulation) {
+    std::cerr << error.message << (error.message.empty() || error.message.back() != '\n' ? "\n" : "");
+    return error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;
+  }
+  sim::SimulationReport report;
+  Containment containment(numbers.watchdog_s.value_or(kDefaultWatchdogS));
+  LiveTiming live_timing;
+  try {
+    if (options.live) {
+      std::vector<std::string> boards;
+      for (const auto& board : loaded.scenario.boards) boards.push_back(board.name);
+      live_timing = run_live(*simulation, boards, live);
+    }
+    report = simulation->finish();
+  } catch (const std::exception& failure) {
+    progress.clear();
+    std::cerr << failure.what() << "\n";
+    return kExitFailure;
+  }
+  echo.flush();
+  progress.clear();
+  std::cout.flush();
+  print_stop(report);
+  print_report(report, options.quiet, live_timing);
+  return exit_status(report);
+}
+
+}  // namespace stepdance::cli

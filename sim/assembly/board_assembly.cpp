@@ -1,0 +1,134 @@
+// Simulation assembly: sketches → boards (each checked against its scenario module), and the
+// driver sockets → stepper and servo models.
+#include <algorithm>
+#include <filesystem>
+#include <functional>
+
+#include "board/loader/board_library.hpp"
+#include "assembly/simulation.hpp"
+#include "assembly/step_feeder.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+ServoBuild servo_build(scenario::ServoBuild build) {
+  return build == scenario::ServoBuild::k180deg ? ServoBuild::k180deg : ServoBuild::k90deg;
+}
+
+SdCardSettings sd_card_settings(const scenario::SdCardConfig& config) {
+  SdCardSettings settings;
+  settings.write_kb_per_s = config.write_kb_per_s;
+  settings.read_kb_per_s = config.read_kb_per_s;
+  settings.stall_every_kb = config.stall_every_kb;
+  settings.stall = static_cast<SimTime>(config.stall_ms * 1e6 + 0.5);
+  settings.fail_after_bytes = static_cast<uint64_t>(config.fail_after_kb * 1000.0 + 0.5);
+  return settings;
+}
+
+/// Every file the boards' compilers read, as inputs no output may replace (output_plan.hpp).
+std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const std::vector<SketchBuild>& builds) {
+  std::vector<RunInput> inputs;
+  for (size_t i = 0; i < builds.size(); ++i) {
+    const std::string what = "a file the sketch of board '" + scenario.boards[i].name + "' includes";
+    for (const std::string& file : builds[i].inputs) inputs.push_back({file, what});
+  }
+  return inputs;
+}
+
+}  // namespace
+
+// Every sketch is built first, and the outputs checked against every file the compilers read,
+// before any board library is loaded (loading runs the sketch's global constructors).
+bool Simulation::build_boards(SimulationError& error) {
+  if (!options_.boards) {
+    error = {SimulationError::kFailure, "no board source: this simulation cannot compile or load sketches"};
+    return false;
+  }
+  std::vector<SketchBuild> builds;
+  for (const scenario::BoardConfig& config : scenario_.boards) {
+    builds.push_back(options_.boards->build(config.sketch));
+    const SketchBuild& build = builds.back();
+    if (!build.ok) {
+      error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name + "': " + build.error};
+      return false;
+    }
+    if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
+  }
+  if (std::string conflicts = output_conflicts_text(output_files(), compiled_inputs(scenario_, builds)); !conflicts.empty()) {
+    error = {SimulationError::kBadInput, std::move(conflicts)};
+    return false;
+  }
+  boards_.reserve(scenario_.boards.size());
+  for (size_t index = 0; index < scenario_.boards.size(); ++index) {
+    const scenario::BoardConfig& config = scenario_.boards[index];
+    const SketchBuild& build = builds[index];
+    std::string load_error;
+    auto library = BoardLibrary::load(build.library_path, load_error);
+    if (!library) {
+      error = {SimulationError::kFailure, load_error};
+      return false;
+    }
+    BoardOptions board_options;
+    board_options.name = config.name;
+    board_options.frame_phase_ns = SimTime{config.frame_phase_us} * kMicrosecond;
+    board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
+    board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
+    board_options.sd_card = sd_card_settings(config.sd_card);
+    board_options.board_source = options_.boards.get();
+    boards_.push_back(BoardSlot{&config, std::make_unique<SimBoard>(scheduler_, board_options, std::move(library)), {}});
+    BoardSlot& slot = boards_.back();
+    if (!slot.board->attach(load_error)) {
+      error = {SimulationError::kFailure, load_error};
+      return false;
+    }
+    if (!check_module(slot, error)) return false;
+    slot.board->on_console_line([this, &config](const std::string& line) {
+      if (options_.console) options_.console(config.name, line);
+    });
+    slot.board->on_sketch_stop([this](const SketchStop& stop) { on_sketch_stop(stop); });
+    build_sockets(slot);
+  }
+  return true;
+}
+
+// The scenario's `module` must be the board the sketch selects with its #define.
+bool Simulation::check_module(const BoardSlot& slot, SimulationError& error) const {
+  const BoardDefinition& selected = slot.board->definition();
+  if (slot.config->module == &selected) return true;
+  error = {SimulationError::kBadInput,
+           place(slot.config->line) + "board '" + slot.config->name + "' is a " +
+               slot.config->module->name + " in the scenario, but its sketch selects the " + selected.name +
+               " (#define " + selected.sketch_macro + ")"};
+  return false;
+}
+
+// Each populated socket gets its model, fed by the port's STEP/DIR; a stepper also follows its
+// socket's ENABLE pin (active low, disabled until the sketch drives it).
+void Simulation::build_sockets(BoardSlot& slot) {
+  const BoardDefinition& definition = slot.board->definition();
+  for (const scenario::SocketConfig& config : slot.config->sockets) {
+    const uint8_t port = static_cast<uint8_t>(config.port - 'A');
+    Socket& socket = slot.sockets[port];
+    if (config.device == scenario::SocketDevice::kStepper) {
+      StepperDriverSettings settings;
+      settings.microsteps = config.microsteps;
+      settings.full_steps_per_rev = config.full_steps_per_rev;
+      settings.reversed = config.reversed;
+      const uint8_t enable_pin = definition.output_ports[port].enable;
+      settings.enabled = enable_pin == kNoPin;  // a socket without an ENABLE line is always on
+      socket.stepper = std::make_unique<StepperDriver>(settings);
+      socket.feeder = std::make_unique<StepFeeder<StepperDriver>>(*socket.stepper, &machine_moved_);
+      StepperDriver* stepper = socket.stepper.get();
+      if (enable_pin != kNoPin) {
+        slot.board->on_pin_change(enable_pin,
+                                  [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
+      }
+    } else {
+      socket.servo = std::make_unique<ServoBoard>(servo_build(config.build), 0);
+      socket.feeder = std::make_unique<StepFeeder<ServoBoard>>(*socket.servo, &machine_moved_);
+    }
+    slot.board->add_wire_listener(port, socket.feeder.get());
+  }
+}
+
+}  // namespace stepdance::sim

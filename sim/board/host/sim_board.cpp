@@ -1,0 +1,422 @@
+// A simulated board: timers in virtual time, pin and port state, console, and the sketch's entry points.
+#include "board/host/sim_board.hpp"
+
+#include <algorithm>
+
+#include "board/host/board_callbacks.hpp"
+#include "kinds/board_registry.hpp"
+
+namespace stepdance::sim {
+namespace {
+
+constexpr SimTime kKhzOffsetNs = 20 * kMicrosecond;  // half a frame after the frame tick
+/// The simulated ADC converts every pin continuously at this period.
+constexpr SimTime kAdcConversionNs = 100 * kMicrosecond;
+/// Capture timer: 150 ticks per µs into a 16-bit counter.
+constexpr int64_t kCaptureTicksPerUs = 150;
+
+// The capture counter at a time, unwrapped: ticks rounded half up (as `stepdance decode` converts
+// edges). The board's 16-bit counter is this modulo 2^16; captured_from_ticks keeps the overflow
+// count, as the Teensy backend does by counting counter reloads.
+uint64_t capture_ticks(SimTime time_ns) {
+  return static_cast<uint64_t>((time_ns * kCaptureTicksPerUs + 500) / 1000);
+}
+
+
+}  // namespace
+
+SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardLibrary> library)
+    : scheduler_(scheduler),
+      options_(std::move(options)),
+      library_(std::move(library)),
+      host_table_(std::make_unique<StepdanceHostV1>(BoardCallbacks::table())),
+      frame_timer_(scheduler, &frame_tick, this),
+      khz_timer_(scheduler, &khz_tick, this),
+      loop_event_(*this),
+      setup_event_(*this),
+      console_quiet_event_(*this),
+      storage_(options_.storage_dir),
+      sd_timing_(options_.sd_card) {}
+
+SimBoard::~SimBoard() {
+  scheduler_.cancel(loop_event_);
+  scheduler_.cancel(setup_event_);
+  scheduler_.cancel(console_quiet_event_);
+  frame_timer_.stop();
+  khz_timer_.stop();
+  library_.reset();  // the sketch's destructors may still call back: everything else is alive
+}
+
+bool SimBoard::attach(std::string& error) {
+  board_ = library_ ? library_->attach()(host_table_.get(), this) : nullptr;
+  if (board_ == nullptr) {
+    error = options_.name + ": the board library speaks another ABI version; rebuild the sketch";
+    return false;
+  }
+  const char* selected = board_->board_name != nullptr ? board_->board_name : "";
+  definition_ = find_board_named(selected);
+  if (definition_ == nullptr) {
+    definition_ = &kDriverModuleV1;
+    error = options_.name + ": the sketch selects the board \"" + selected + "\", which the simulator does not know";
+    return false;
+  }
+  return true;
+}
+
+void SimBoard::power_on(SimTime time_ns) { scheduler_.schedule(setup_event_, time_ns); }
+
+// ---- entering the sketch ----------------------------------------------------------------------
+
+template <typename Call>
+void SimBoard::enter(SketchEntry entry, Call call) {
+  if (frozen_) return;
+  int code = 0;
+  {
+    EntryMonitor::Scope running(*this, entry, board_->escape, &library_->code());
+    code = call();
+  }
+  if (code != 0) escaped(entry);
+}
+
+void SimBoard::escaped(SketchEntry entry) {
+  frozen_ = true;
+  frame_timer_.stop();
+  khz_timer_.stop();
+  scheduler_.cancel(loop_event_);
+  const EscapeRecord record = EntryMonitor::take_record();
+  if (record.cause == EscapeCause::kRunOver) return;  // the run ended while the sketch waited
+  scheduler_.stop();
+  if (stop_listener_) stop_listener_(describe_stop(record, name(), entry, scheduler_.now(), library_.get(), options_.board_source));
+}
+
+void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
+  SimBoard& board = static_cast<SetupEvent&>(event).owner;
+  board.enter(SketchEntry::kSetup, [&] { return board.board_->run_setup(scheduler.now()); });
+  if (!board.frozen_) scheduler.schedule(board.loop_event_, scheduler.now());
+}
+
+void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
+  SimBoard& board = static_cast<LoopEvent&>(event).owner;
+  const SimTime started = event.time();
+  board.in_loop_pass_ = true;
+  board.i2c_ns_this_pass_ = 0;
+  board.enter(SketchEntry::kLoop, [&] { return board.board_->run_loop(scheduler.now()); });
+  board.in_loop_pass_ = false;
+  if (board.frozen_) return;
+  if (board.i2c_ns_this_pass_ > 0) {
+    ++board.i2c_timing_.loop_passes_with_i2c;
+    board.i2c_timing_.max_loop_pass_ns = std::max(board.i2c_timing_.max_loop_pass_ns, board.i2c_ns_this_pass_);
+  }
+  const SimTime next = started + board.options_.loop_period_ns;
+  scheduler.schedule(event, next > scheduler.now() ? next : scheduler.now());
+}
+
+// ---- timers -------------------------------------------------------------------------------------
+
+SimTime SimBoard::next_aligned(SimTime offset_ns, SimTime period_ns) const {
+  const SimTime now = scheduler_.now();
+  if (now < offset_ns) return offset_ns;
+  return offset_ns + ((now - offset_ns) / period_ns + 1) * period_ns;
+}
+
+int SimBoard::start_timer(int timer_id, uint32_t period_us) {
+  if (period_us == 0) return static_cast<int>(Status::kBadArgument);
+  const SimTime period = SimTime{period_us} * kMicrosecond;
+  if (timer_id == STEPDANCE_TIMER_FRAME) {
+    frame_timer_.start(next_aligned(options_.frame_phase_ns, period), period);
+  } else if (timer_id == STEPDANCE_TIMER_KHZ) {
+    khz_timer_.start(next_aligned(options_.frame_phase_ns + kKhzOffsetNs, period), period);
+  } else {
+    return static_cast<int>(Status::kBadArgument);
+  }
+  return static_cast<int>(Status::kOk);
+}
+
+void SimBoard::stop_timers() {
+  frame_timer_.stop();
+  khz_timer_.stop();
+}
+
+void SimBoard::frame_tick(void* context, SimTime time) {
+  auto& board = *static_cast<SimBoard*>(context);
+  board.play_pending_frames(time);
+  if (board.tick_listener_) board.tick_listener_(time);
+  board.in_isr_ = true;
+  board.enter(SketchEntry::kFrameTick, [&] { return board.board_->run_frame_tick(time); });
+  board.in_isr_ = false;
+}
+
+void SimBoard::khz_tick(void* context, SimTime time) {
+  auto& board = *static_cast<SimBoard*>(context);
+  board.in_isr_ = true;
+  board.enter(SketchEntry::kKhzTick, [&] { return board.board_->run_khz_tick(time); });
+  board.in_isr_ = false;
+}
+
+// The words handed over during the previous frame go on the wire now, at the fixed phase.
+void SimBoard::play_pending_frames(SimTime start_ns) {
+  if ((pending_ports_ | idle_listening_ports_) == 0) return;
+  for (PortState& port : ports_) {
+    if (!port.frame_pending) {
+      for (WireListener* listener : port.idle_listeners) listener->on_frame(start_ns, protocol::FrameWords{}, frame_timer_.period_ns());
+      continue;
+    }
+    port.frame_pending = false;
+    const SimTime frame_end_ns = start_ns + SimTime{protocol::kFrameBitsUs} * kMicrosecond;
+    if (frame_end_ns <= end_ns_) {
+      count_frame_pulses(port.pending, port.sent);
+    } else {
+      count_frame_pulses(port.pending, port.sent, (end_ns_ - start_ns) / kMicrosecond);
+    }
+    for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending, frame_timer_.period_ns());
+  }
+  pending_ports_ = 0;
+}
+
+// The rest of the world runs for the delay, but never past the run's end: a sketch waiting
+// there (`while (1) delay(1000);`) is left in its delay when the run ends (see BoardCallbacks).
+void SimBoard::delay(SimTime duration_ns) {
+  if (in_isr_) {
+    ++delays_in_isr_;
+    return;
+  }
+  const SimTime wanted = scheduler_.now() + (duration_ns > 0 ? duration_ns : 0);
+  scheduler_.run_until(std::min(wanted, end_ns_));
+  EntryMonitor::note_progress();
+}
+
+bool SimBoard::run_is_over() const { return scheduler_.stopped() || scheduler_.now() >= end_ns_; }
+
+// ---- storage: loop only; a slow card holds the loop while frames run on -----------------------
+
+bool SimBoard::storage_refused_in_isr() {
+  if (!in_isr_) return false;
+  ++storage_calls_in_isr_;
+  return true;
+}
+
+int SimBoard::storage_write(int handle, const uint8_t* data, size_t length) {
+  if (storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
+  const SdCardTiming::Write outcome = sd_timing_.write(length);
+  if (outcome.fails) return static_cast<int>(Status::kIoError);
+  delay(outcome.duration);
+  return static_cast<int>(storage_.write(handle, data, length));
+}
+
+int SimBoard::storage_read(int handle, uint8_t* data, size_t length, size_t* read) {
+  *read = 0;
+  if (storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
+  delay(sd_timing_.read(length));
+  return static_cast<int>(storage_.read(handle, data, length, *read));
+}
+
+// ---- ports --------------------------------------------------------------------------------------
+
+void SimBoard::add_wire_listener(uint8_t port, WireListener* listener) {
+  PortState& state = ports_.at(port);
+  state.listeners.push_back(listener);
+  if (!listener->wants_idle_frames()) return;
+  state.idle_listeners.push_back(listener);
+  idle_listening_ports_ = static_cast<uint8_t>(idle_listening_ports_ | (1u << port));
+}
+
+void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
+  PortState& state = ports_.at(port);
+  if (!state.input_begun) {
+    ++state.unclaimed;
+    return;
+  }
+  const bool at_rising = state.edge == protocol::DirSampleEdge::kRising;
+  const protocol::CapturedPulse captured = protocol::captured_from_ticks(
+      capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns), at_rising ? pulse.dir_at_rise : pulse.dir_at_fall,
+      protocol::CaptureClock{});
+  const InputMode mode = at_rising ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
+  state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
+  const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks,
+                                           captured.dir_high ? uint8_t{1} : uint8_t{0}, captured.extra_periods};
+  in_isr_ = true;
+  enter(SketchEntry::kCapture, [&] { return board_->deliver_pulse(scheduler_.now(), port, &delivered); });
+  in_isr_ = false;
+}
+
+// ---- encoders, ADC, pins ------------------------------------------------------------------------
+
+void SimBoard::connect_encoder(uint8_t index, Source<int64_t> counts) { encoders_.at(index) = std::move(counts); }
+
+int32_t SimBoard::read_quadrature(uint8_t index) {
+  const int64_t raw = encoders_[index] ? encoders_[index](scheduler_.now()) : 0;
+  return static_cast<int32_t>(raw + encoder_offsets_[index]);
+}
+
+void SimBoard::write_quadrature(uint8_t index, int32_t count) {
+  const int64_t raw = encoders_[index] ? encoders_[index](scheduler_.now()) : 0;
+  encoder_offsets_[index] = count - raw;
+}
+
+void SimBoard::connect_adc(uint8_t pin, Source<uint16_t> value) { adcs_.at(pin).value = std::move(value); }
+
+uint32_t SimBoard::adc_samples(uint8_t pin) const {
+  const AdcState& adc = adcs_[pin];
+  if (!adc.begun) return 0;
+  return static_cast<uint32_t>(1 + (scheduler_.now() - adc.begun_at) / kAdcConversionNs);
+}
+
+void SimBoard::connect_input_pin(uint8_t pin, Source<bool> level) { pins_.at(pin).source = std::move(level); }
+
+void SimBoard::on_pin_change(uint8_t pin, PinListener listener) { pins_.at(pin).listeners.push_back(std::move(listener)); }
+
+bool SimBoard::pin_level(uint8_t pin) const {
+  const PinState& state = pins_.at(pin);
+  if (state.mode == STEPDANCE_PIN_OUTPUT) return state.driven_level;
+  if (state.source) return state.source(scheduler_.now());
+  return state.mode == STEPDANCE_PIN_INPUT_PULLUP;
+}
+
+int SimBoard::set_pin_mode(uint8_t pin, int mode) {
+  if (pin >= kPins || mode < STEPDANCE_PIN_INPUT || mode > STEPDANCE_PIN_OUTPUT) {
+    return static_cast<int>(Status::kBadArgument);
+  }
+  const bool was_output = pins_[pin].mode == STEPDANCE_PIN_OUTPUT;
+  pins_[pin].mode = mode;
+  if (was_output != (mode == STEPDANCE_PIN_OUTPUT)) notify_pin(pin);
+  return static_cast<int>(Status::kOk);
+}
+
+void SimBoard::write_pin(uint8_t pin, bool high) {
+  if (pin >= kPins) return;
+  const bool changed = pins_[pin].driven_level != high;
+  pins_[pin].driven_level = high;
+  if (changed && pins_[pin].mode == STEPDANCE_PIN_OUTPUT) notify_pin(pin);
+}
+
+void SimBoard::notify_pin(uint8_t pin) {
+  const PinState& state = pins_[pin];
+  const bool driven = state.mode == STEPDANCE_PIN_OUTPUT;
+  for (const PinListener& listener : state.listeners) listener(scheduler_.now(), state.driven_level, driven);
+}
+
+// Safe state on the hardware: frames stop (the board already stopped its timers) and every
+// driver's ENABLE is driven high.
+void SimBoard::enter_safe_state() {
+  safe_state_ = true;
+  const BoardDefinition& board = definition();
+  for (uint8_t port = 0; port < board.output_port_count; ++port) {
+    const uint8_t enable = board.output_ports[port].enable;
+    if (enable == kNoPin) continue;
+    pins_[enable].mode = STEPDANCE_PIN_OUTPUT;
+    pins_[enable].driven_level = true;
+    notify_pin(enable);
+  }
+}
+
+// ---- console ------------------------------------------------------------------------------------
+
+void SimBoard::send_console(const std::string& bytes) { console_input_.insert(console_input_.end(), bytes.begin(), bytes.end()); }
+
+size_t SimBoard::console_input_room() const {
+  const size_t unread = console_input_.size() - console_read_position_;
+  return unread < kConsoleInputBytes ? kConsoleInputBytes - unread : 0;
+}
+
+void SimBoard::on_console_line(std::function<void(const std::string&)> listener) { console_listener_ = std::move(listener); }
+
+void SimBoard::on_console_bytes(std::function<void(const uint8_t*, size_t)> listener) {
+  console_bytes_listener_ = std::move(listener);
+}
+
+// Keeps the newest kConsoleTextBytes, trimming in halves so the copying stays amortised.
+void SimBoard::keep_console_text(const uint8_t* data, size_t length) {
+  console_text_.append(reinterpret_cast<const char*>(data), length);
+  if (console_text_.size() <= 2 * kConsoleTextBytes) return;
+  const size_t excess = console_text_.size() - kConsoleTextBytes;
+  console_text_.erase(0, excess);
+  console_text_dropped_ += excess;
+}
+
+size_t SimBoard::write_console(const uint8_t* data, size_t length) {
+  if (console_bytes_listener_) console_bytes_listener_(data, length);
+  keep_console_text(data, length);
+  for (size_t i = 0; i < length; ++i) {
+    const char c = static_cast<char>(data[i]);
+    if (c == '\r') continue;
+    if (c != '\n') {
+      console_line_ += c;
+      if (console_line_.size() >= kConsoleLineBytes) flush_console_line();
+      continue;
+    }
+    if (console_listener_) console_listener_(console_line_);
+    console_line_.clear();
+  }
+  if (!console_line_.empty()) scheduler_.schedule(console_quiet_event_, scheduler_.now() + kConsoleQuietNs);
+  return length;
+}
+
+void SimBoard::ConsoleQuietEvent::fire(Event& event, Scheduler&) {
+  static_cast<ConsoleQuietEvent&>(event).owner.flush_console_line();
+}
+
+void SimBoard::flush_console_line() {
+  if (console_line_.empty()) return;
+  if (console_listener_) console_listener_(console_line_);
+  console_line_.clear();
+}
+
+int SimBoard::read_console() {
+  if (console_read_position_ >= console_input_.size()) return -1;
+  const int byte = console_input_[console_read_position_++];
+  if (console_read_position_ == console_input_.size()) {
+    console_input_.clear();
+    console_read_position_ = 0;
+  }
+  return byte;
+}
+
+std::vector<SimBoard::BlockCounter> SimBoard::counters() const {
+  std::vector<BlockCounter> out;
+  if (board_ == nullptr) return out;
+  board_->read_counters(
+      [](void* context, const char* block, uint32_t instance, const char* name, uint64_t value) {
+        static_cast<std::vector<BlockCounter>*>(context)->push_back(
+            {std::string(block) + "#" + std::to_string(instance), name, value});
+      },
+      &out);
+  return out;
+}
+
+uint64_t SimBoard::port_counter(const std::string& block_class, uint8_t port, const std::string& name) const {
+  const std::vector<BlockCounter> all = counters();
+  const std::string prefix = block_class + "#";
+  for (const BlockCounter& candidate : all) {
+    if (candidate.block.rfind(prefix, 0) != 0 || candidate.name != "port" || candidate.value != port) continue;
+    for (const BlockCounter& counter : all) {
+      if (counter.block == candidate.block && counter.name == name) return counter.value;
+    }
+  }
+  return 0;
+}
+
+int SimBoard::i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
+                           size_t read_length, int64_t* wire_ns) {
+  *wire_ns = 0;
+  if (bus >= i2c_.size() || i2c_[bus].clock_hz == 0) return static_cast<int>(I2cOutcome::kBusError);
+  SimTime duration = 0;
+  const I2cOutcome outcome = i2c_[bus].model.transfer(scheduler_.now(), i2c_[bus].clock_hz, address, write, write_length,
+                                                      read, read_length, &duration);
+  *wire_ns = duration;
+  ++i2c_timing_.transfers;
+  i2c_timing_.total_ns += duration;
+  if (in_loop_pass_) {
+    i2c_ns_this_pass_ += duration;
+  } else {
+    i2c_timing_.setup_ns += duration;
+  }
+  return static_cast<int>(outcome);
+}
+
+StepdanceBoardStatsV1 SimBoard::stats() const {
+  StepdanceBoardStatsV1 stats{};
+  if (board_ != nullptr) board_->read_stats(&stats);
+  return stats;
+}
+
+}  // namespace stepdance::sim
