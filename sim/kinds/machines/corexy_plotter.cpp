@@ -3,7 +3,6 @@
 #include "kinds/machines/corexy_plotter.hpp"
 
 #include "kinds/machines/machine_keys.hpp"
-#include "models/corexy_plotter.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -44,10 +43,8 @@ std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const Soc
   StepperDriver* a = sockets.stepper(config.motor_a);
   StepperDriver* b = sockets.stepper(config.motor_b);
   if (a == nullptr || b == nullptr) return nullptr;
-  CorexySettings settings{config.steps_per_mm, config.pen_down_below_us, config.travel_x_mm, config.travel_y_mm,
-                          trace};
-  settings.start_x_mm = config.start_x_mm;
-  settings.start_y_mm = config.start_y_mm;
+  CorexySettings settings = config;
+  settings.trace = trace;
   return std::make_unique<CorexyPlotter>(*a, *b, sockets.servo(config.pen_servo), settings);
 }
 

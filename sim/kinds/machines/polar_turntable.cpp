@@ -3,7 +3,6 @@
 #include "kinds/machines/polar_turntable.hpp"
 
 #include "kinds/machines/machine_keys.hpp"
-#include "models/polar_turntable.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -27,7 +26,8 @@ std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const Soc
   StepperDriver* angle = sockets.stepper(config.angle);
   StepperDriver* radius = sockets.stepper(config.radius);
   if (angle == nullptr || radius == nullptr) return nullptr;
-  const PolarSettings settings{config.steps_per_rev, config.steps_per_mm, config.pen_down_below_us, trace};
+  PolarSettings settings = config;
+  settings.trace = trace;
   return std::make_unique<PolarTurntable>(*angle, *radius, config.pen_servo ? sockets.servo(*config.pen_servo) : nullptr,
                                           settings);
 }
