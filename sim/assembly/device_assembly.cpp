@@ -17,6 +17,11 @@ const SimDevice* Simulation::device(const std::string& name) const {
   return found == devices_.end() ? nullptr : found->second.get();
 }
 
+SimDevice* Simulation::device(const std::string& name) {
+  const auto found = devices_.find(name);
+  return found == devices_.end() ? nullptr : found->second.get();
+}
+
 void Simulation::write_device_outputs(SimulationReport& report) {
   const std::string directory = scenario_.output.directory;
   if (directory.empty() && !options_.output_directory) return;  // no output folder: no pictures

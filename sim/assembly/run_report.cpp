@@ -84,15 +84,28 @@ DrawingStyle page_for(const scenario::MachineConfig& machine, std::vector<Stroke
 
 }  // namespace
 
-void Simulation::write_drawings(SimulationReport& report) const {
-  const std::string svg = output_path(scenario_.output.svg);
-  const std::string png = options_.pictures ? output_path(scenario_.output.png) : std::string();
-  if (!machine_ || (svg.empty() && png.empty())) return;
-  std::vector<Stroke> strokes = strokes_of(*machine_);
+DrawingStyle Simulation::drawing_now(std::vector<Stroke>& strokes) const {
+  strokes = strokes_of(*machine_);
   DrawingStyle style = page_for(*scenario_.machine, strokes);
   style.pen_up_travel = scenario_.output.pen_up_travel;
   set_shade_scale(style, strokes);
   style.shade_name = machine_->shade_name();
+  return style;
+}
+
+std::string Simulation::drawing_svg() const {
+  if (!machine_) return {};
+  std::vector<Stroke> strokes;
+  const DrawingStyle style = drawing_now(strokes);
+  return svg_document(strokes, style);
+}
+
+void Simulation::write_drawings(SimulationReport& report) const {
+  const std::string svg = output_path(scenario_.output.svg);
+  const std::string png = options_.pictures ? output_path(scenario_.output.png) : std::string();
+  if (!machine_ || (svg.empty() && png.empty())) return;
+  std::vector<Stroke> strokes;
+  const DrawingStyle style = drawing_now(strokes);
   for (const std::string& path : {svg, png}) {
     if (!path.empty()) std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   }

@@ -140,6 +140,14 @@ class Simulation {
   const HostClient* host_client(const std::string& board) const;
   /// The [[device]] with this name (its model through model_of<T>()), or null.
   const SimDevice* device(const std::string& name) const;
+  /// The same device, to schedule actions on (SimDevice::schedule, as the timeline does): the
+  /// live view's inputs. Context: between run_until() calls.
+  SimDevice* device(const std::string& name);
+  /// The scenario being run (boards, devices, machine, output names).
+  const scenario::Scenario& scenario() const { return scenario_; }
+  /// The SVG document of the drawing as it stands now, on the page the run's SVG file would
+  /// use (the same bytes write_drawings() would write at this instant); "" without a machine.
+  std::string drawing_svg() const;
   /// The five-bar arm device with this name, or null.
   const FiveBarArm* five_bar_arm(const std::string& name) const;
   /// The JSON summary text as it would be written now (wall time left out).
@@ -207,6 +215,8 @@ class Simulation {
   void update_machine(SimTime time_ns);
 
   // Reporting (run_report.cpp).
+  /// The machine's strokes as drawn (shaded pieces, on the page's coordinates) and their style.
+  DrawingStyle drawing_now(std::vector<Stroke>& strokes) const;
   void write_drawings(SimulationReport& report) const;
   RunSummary run_summary() const;
   nlohmann::json summary_extra() const;

@@ -1,0 +1,48 @@
+// The drawing as a stream of incremental stroke updates, thinned to the page's display resolution.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "models/pen_trace.hpp"
+
+namespace stepdance::sim::view {
+
+/// Consecutive points of a stroke closer than this (mm) are merged for the page; a stroke's
+/// first and last points are always kept.
+constexpr double kDisplayResolutionMm = 0.05;
+
+/// One stroke's new part: the page keeps the first `from` points it has of stroke `index` and
+/// appends `points`. The last point of the last stroke may still move (the pen is drawing it);
+/// the next update then re-sends it.
+struct StrokePart {
+  size_t index = 0;
+  size_t from = 0;
+  std::vector<PenPoint> points;
+};
+
+/// Follows a machine's growing list of pen-down strokes (PenTrace: only a stroke's last point
+/// ever changes, and only the newest stroke grows) and hands out what is new since the last
+/// call. A point is left out only when it lies closer than kDisplayResolutionMm to the point
+/// kept before it; no stroke is ever left out, nor its first or last point.
+/// Context: the thread running the simulation, between run_until() calls.
+class StrokeStream {
+ public:
+  /// What changed in `strokes` since the last call: at most about `max_points` points (a
+  /// stroke's part is cut there and continued next call; at least one point is always sent).
+  std::vector<StrokePart> take(const std::vector<Polyline>& strokes, size_t max_points);
+  /// Strokes whose every point has been sent (their last point included).
+  size_t strokes_done() const { return done_; }
+
+ private:
+  /// Appends to `kept_` the final points of `stroke` from source index `source_` on (all of
+  /// them if the stroke is finished, all but its moving last point if not).
+  void keep_final_points(const Polyline& stroke, bool finished);
+
+  size_t done_ = 0;          ///< strokes complete on the page
+  std::vector<PenPoint> kept_;  ///< the current stroke's final kept points (decimated)
+  size_t source_ = 0;        ///< source points of the current stroke already looked at
+  size_t sent_ = 0;          ///< kept_ points the page has
+};
+
+}  // namespace stepdance::sim::view

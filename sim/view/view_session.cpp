@@ -1,0 +1,337 @@
+// ViewSession: the view protocol's messages (hello, update, error, drawing) and its inputs.
+#include "view/view_session.hpp"
+
+#include <cmath>
+
+#include "kinds/device_kind.hpp"
+#include "kinds/machine_kind.hpp"
+#include "models/quadrature_encoder.hpp"
+#include "models/ssd1306_display.hpp"
+#include "output/drawing.hpp"
+#include "scenario/names.hpp"
+#include "scenario/value_range.hpp"
+
+namespace stepdance::sim::view {
+namespace {
+
+using nlohmann::json;
+
+/// A Qwiic Twist's knob has 24 detents a turn (SparkFun's product page).
+constexpr int kTwistDetentsPerTurn = 24;
+/// The longest turn span and click hold a page may ask for (ms).
+constexpr double kMaxInputSpanMs = 60000;
+
+json error_message(const std::string& text) { return json{{"type", "error"}, {"message", text}}; }
+
+const char* control_name(PageControl::Type type) {
+  switch (type) {
+    case PageControl::Type::kKnob: return "knob";
+    case PageControl::Type::kSlider: return "slider";
+    case PageControl::Type::kButton: return "button";
+    case PageControl::Type::kKnobWithButton: return "knob_with_button";
+    case PageControl::Type::kScreen: return "screen";
+    case PageControl::Type::kNone: break;
+  }
+  return "none";
+}
+
+json point_json(const PenPoint& point) { return json::array({point.x_mm, point.y_mm}); }
+
+/// A row of an OLED picture as hex digits, 4 pixels a digit, leftmost pixel the high bit.
+std::vector<std::string> screen_rows(const OledImage& image) {
+  static const char kHex[] = "0123456789abcdef";
+  std::vector<std::string> rows;
+  for (int y = 0; y < OledImage::kHeight; ++y) {
+    std::string row;
+    for (int x = 0; x < OledImage::kWidth; x += 4) {
+      int nibble = 0;
+      for (int bit = 0; bit < 4; ++bit) nibble = nibble << 1 | (image.at(x + bit, y) ? 1 : 0);
+      row += kHex[nibble];
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+/// The number at `key` if it is one, else nothing.
+std::optional<double> number_at(const json& message, const char* key) {
+  const auto found = message.find(key);
+  if (found == message.end() || !found->is_number()) return std::nullopt;
+  return found->get<double>();
+}
+
+std::optional<std::string> string_at(const json& message, const char* key) {
+  const auto found = message.find(key);
+  if (found == message.end() || !found->is_string()) return std::nullopt;
+  return found->get<std::string>();
+}
+
+std::optional<scenario::ActionType> action_named(const std::string& name) {
+  using scenario::ActionType;
+  if (name == "turn") return ActionType::kTurn;
+  if (name == "press") return ActionType::kPress;
+  if (name == "release") return ActionType::kRelease;
+  if (name == "click") return ActionType::kClick;
+  if (name == "set") return ActionType::kSet;
+  return std::nullopt;
+}
+
+}  // namespace
+
+ViewSession::ViewSession(Simulation& simulation, RunControl& control) : simulation_(simulation), control_(control) {
+  for (const scenario::BoardConfig& board : simulation_.scenario().boards) {
+    for (const scenario::SocketConfig& socket : board.sockets) {
+      if (const StepperDriver* stepper = simulation_.stepper(board.name, socket.port)) {
+        motors_.push_back({board.name, socket.port, stepper->position_steps()});
+      }
+    }
+  }
+  last_update_sim_ = simulation_.now();
+}
+
+std::string ViewSession::hello() const {
+  const scenario::Scenario& scenario = simulation_.scenario();
+  json boards = json::array();
+  for (const scenario::BoardConfig& board : scenario.boards) {
+    json devices = json::array();
+    for (const scenario::DeviceConfig& device : scenario.devices) {
+      if (device.board != board.name) continue;
+      const PageControl& control = device.kind->control;
+      json entry = {{"name", device.name},
+                    {"kind", std::string(device.kind->name)},
+                    {"connector", scenario::connector_name(device.connector)},
+                    {"control", {{"type", control_name(control.type)}, {"low", control.low}, {"high", control.high},
+                                 {"step", control.step}, {"unit", control.unit}}}};
+      if (const auto* encoder = model_of<QuadratureEncoder>(simulation_.device(device.name))) {
+        entry["control"]["counts_per_turn"] = encoder->counts_per_revolution();
+      } else if (control.type == PageControl::Type::kKnobWithButton) {
+        entry["control"]["counts_per_turn"] = kTwistDetentsPerTurn;
+      }
+      devices.push_back(std::move(entry));
+    }
+    json motors = json::array();
+    for (const MotorState& motor : motors_) {
+      if (motor.board == board.name) motors.push_back(std::string(1, motor.port));
+    }
+    boards.push_back({{"name", board.name}, {"module", board.module->scenario_name}, {"motors", motors},
+                      {"devices", devices}});
+  }
+  json machine = nullptr;
+  if (scenario.machine && simulation_.machine() != nullptr) {
+    const DrawingStyle style;
+    machine = {{"kind", std::string(scenario.machine->kind->name)}, {"margin_mm", style.margin_mm},
+               {"pen_width_mm", style.pen_width_mm}, {"page_mm", nullptr}, {"travel_mm", nullptr}};
+    const MachineKind& kind = *scenario.machine->kind;
+    if (const auto page = kind.page ? kind.page(*scenario.machine) : std::nullopt) {
+      machine["page_mm"] = {page->x_min_mm, page->x_max_mm, page->y_min_mm, page->y_max_mm};
+    }
+    if (const TravelMonitor* travel = simulation_.machine()->travel()) {
+      const TravelArea& area = travel->area();
+      machine["travel_mm"] = {area.x_min_mm, area.x_max_mm, area.y_min_mm, area.y_max_mm};
+    }
+  }
+  return json{{"type", "hello"},
+              {"version", kProtocolVersion},
+              {"t_s", to_seconds(simulation_.now())},
+              {"duration_s", to_seconds(simulation_.duration())},
+              {"machine", machine},
+              {"boards", boards},
+              {"run", {{"paused", control_.paused}, {"speed", control_.speed}}},
+              {"limits", {{"max_input_bytes", kMaxInputBytes}, {"updates_per_s", kMaxUpdatesPerSecond},
+                          {"resolution_mm", kDisplayResolutionMm}}}}
+      .dump();
+}
+
+std::optional<std::string> ViewSession::update(double wall_s) {
+  if (last_update_wall_s_ && wall_s - *last_update_wall_s_ < 1.0 / kMaxUpdatesPerSecond) return std::nullopt;
+  last_update_wall_s_ = wall_s;
+  return update_now();
+}
+
+json ViewSession::motors_json(double dt_s) {
+  json motors = json::array();
+  for (MotorState& motor : motors_) {
+    const int64_t steps = simulation_.stepper(motor.board, motor.port)->position_steps();
+    const double rate = dt_s > 0 ? static_cast<double>(steps - motor.last_steps) / dt_s : 0.0;
+    motor.last_steps = steps;
+    motors.push_back({{"board", motor.board}, {"port", std::string(1, motor.port)}, {"steps", steps},
+                      {"rate_steps_per_s", rate}});
+  }
+  return motors;
+}
+
+json ViewSession::boards_state_json() const {
+  json boards = json::array();
+  for (const scenario::BoardConfig& config : simulation_.scenario().boards) {
+    const SimBoard* board = simulation_.board(config.name);
+    const StepdanceBoardStatsV1 stats = board->stats();
+    json entry = {{"name", config.name}, {"frames", stats.frames}, {"load_average_percent", nullptr},
+                  {"load_peak_percent", nullptr}, {"fault", nullptr}};
+    if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
+      const double budget = stats.load_budget_cycles;
+      entry["load_average_percent"] =
+          100.0 * static_cast<double>(stats.load_total_cycles) / static_cast<double>(stats.load_frames) / budget;
+      entry["load_peak_percent"] = 100.0 * stats.load_peak_cycles / budget;
+    }
+    if (stats.fault_reason != 0) {
+      entry["fault"] = {{"reason", stats.fault_name ? stats.fault_name : ""}, {"count", stats.fault_count},
+                        {"detail", stats.fault_detail ? stats.fault_detail : ""}};
+    }
+    boards.push_back(std::move(entry));
+  }
+  return boards;
+}
+
+std::string ViewSession::update_now() {
+  const SimTime now = simulation_.now();
+  json message = {{"type", "update"}, {"t_s", to_seconds(now)}};
+  message["run"] = {{"paused", control_.paused}, {"speed", control_.speed}, {"stopped", simulation_.stopped()}};
+  if (const Machine* machine = simulation_.machine()) {
+    message["pen"] = {{"x_mm", machine->pen_position().x_mm}, {"y_mm", machine->pen_position().y_mm},
+                      {"down", machine->pen_down()}};
+    json parts = json::array();
+    for (const StrokePart& part : strokes_.take(machine->strokes(), kMaxPointsPerUpdate)) {
+      json points = json::array();
+      for (const PenPoint& point : part.points) points.push_back(point_json(point));
+      parts.push_back({{"i", part.index}, {"from", part.from}, {"points", std::move(points)}});
+    }
+    message["strokes"] = std::move(parts);
+  }
+  message["motors"] = motors_json(to_seconds(now - last_update_sim_));
+  last_update_sim_ = now;
+  message["boards"] = boards_state_json();
+  json console = json::array();
+  for (auto& [board, text] : console_) {
+    if (text.empty()) continue;
+    console.push_back({{"board", board}, {"text", text}, {"dropped_bytes", console_dropped_[board]}});
+    text.clear();
+  }
+  message["console"] = std::move(console);
+  json screens = json::array();
+  for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
+    if (const auto* display = model_of<Ssd1306Display>(simulation_.device(device.name))) {
+      screens.push_back({{"device", device.name}, {"on", display->display_on()},
+                         {"rows", screen_rows(display->image())}});
+    }
+  }
+  if (!screens.empty()) message["screens"] = std::move(screens);
+  return message.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+void ViewSession::console_output(const std::string& board, const uint8_t* data, size_t length) {
+  std::string& text = console_[board];
+  text.append(reinterpret_cast<const char*>(data), length);
+  if (text.size() > kMaxConsoleBytesPerUpdate) {
+    console_dropped_[board] += text.size() - kMaxConsoleBytesPerUpdate;
+    text.erase(0, text.size() - kMaxConsoleBytesPerUpdate);
+  }
+}
+
+std::vector<std::string> ViewSession::receive(std::string_view text) {
+  if (text.size() > kMaxInputBytes) {
+    return {error_message("message of " + std::to_string(text.size()) + " bytes refused: at most " +
+                          std::to_string(kMaxInputBytes))
+                .dump()};
+  }
+  const json message = json::parse(text, nullptr, false);
+  if (message.is_discarded() || !message.is_object()) {
+    return {error_message("not a JSON object").dump()};
+  }
+  const std::optional<std::string> type = string_at(message, "type");
+  if (!type) return {error_message("no \"type\"").dump()};
+  if (*type == "save") {
+    return {json{{"type", "drawing"}, {"t_s", to_seconds(simulation_.now())}, {"svg", simulation_.drawing_svg()}}.dump()};
+  }
+  if (*type == "hello") return {hello()};
+  std::string problem;
+  if (*type == "input") {
+    problem = apply_input(message);
+  } else if (*type == "console") {
+    problem = apply_console(message);
+  } else if (*type == "run") {
+    problem = apply_run(message);
+  } else {
+    problem = "unknown message type \"" + *type + "\"";
+  }
+  if (problem.empty()) return {};
+  return {error_message(problem).dump(-1, ' ', false, json::error_handler_t::replace)};
+}
+
+std::string ViewSession::apply_input(const json& message) {
+  const auto name = string_at(message, "device");
+  const auto action_text = string_at(message, "action");
+  if (!name || !action_text) return "input: needs \"device\" and \"action\" strings";
+  const scenario::DeviceConfig* config = nullptr;
+  for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
+    if (device.name == *name) config = &device;
+  }
+  SimDevice* device = simulation_.device(*name);
+  if (config == nullptr || device == nullptr) return "input: no device named \"" + *name + "\"";
+  const auto type = action_named(*action_text);
+  if (!type || !config->kind->takes(*type)) {
+    return "input: " + std::string(config->kind->with_article) + " does not take \"" + *action_text + "\"";
+  }
+  scenario::Action action;
+  action.type = *type;
+  action.target = *name;
+  action.time = simulation_.now();
+  if (*type == scenario::ActionType::kTurn) {
+    const auto counts = number_at(message, "counts");
+    const double limit = static_cast<double>(scenario::ranges::kEncoderCounts.high);
+    if (!counts || *counts != std::floor(*counts) || std::fabs(*counts) > limit) {
+      return "input: turn needs \"counts\", a whole number in [-" + std::to_string(scenario::ranges::kEncoderCounts.high) +
+             ", " + std::to_string(scenario::ranges::kEncoderCounts.high) + "]";
+    }
+    action.counts = static_cast<int64_t>(*counts);
+    const double over_ms = number_at(message, "over_ms").value_or(0);
+    if (!(over_ms >= 0 && over_ms <= kMaxInputSpanMs)) return "input: \"over_ms\" must be in [0, 60000]";
+    action.over = static_cast<SimTime>(over_ms * 1e6 + 0.5);
+  } else if (*type == scenario::ActionType::kClick) {
+    const double hold_ms = number_at(message, "hold_ms").value_or(100);
+    if (!(hold_ms > 0 && hold_ms <= kMaxInputSpanMs)) return "input: \"hold_ms\" must be in (0, 60000]";
+    action.hold = static_cast<SimTime>(hold_ms * 1e6 + 0.5);
+  } else if (*type == scenario::ActionType::kSet) {
+    const auto position = number_at(message, "position");
+    const PageControl& control = config->kind->control;
+    if (!position || !(*position >= control.low && *position <= control.high)) {
+      return "input: set needs \"position\" in [" + std::to_string(control.low) + ", " + std::to_string(control.high) + "]";
+    }
+    action.position = *position;
+  }
+  device->schedule(action);
+  return {};
+}
+
+std::string ViewSession::apply_console(const json& message) {
+  const auto board_name = string_at(message, "board");
+  const auto text = string_at(message, "text");
+  if (!board_name || !text) return "console: needs \"board\" and \"text\" strings";
+  SimBoard* board = simulation_.board(*board_name);
+  if (board == nullptr) return "console: no board named \"" + *board_name + "\"";
+  if (text->size() > board->console_input_room()) return "console: the board's input buffer is full; try again";
+  board->send_console(*text);
+  return {};
+}
+
+std::string ViewSession::apply_run(const json& message) {
+  const auto action = string_at(message, "action");
+  if (action == std::optional<std::string>("pause")) {
+    control_.paused = true;
+  } else if (action == std::optional<std::string>("resume")) {
+    control_.paused = false;
+  } else if (action == std::optional<std::string>("speed")) {
+    const auto found = message.find("speed");
+    if (found != message.end() && found->is_string() && *found == "max") {
+      control_.speed = 0;
+    } else if (found != message.end() && found->is_number() && (*found == 1 || *found == 10)) {
+      control_.speed = found->get<double>();
+    } else {
+      return "run: \"speed\" must be 1, 10 or \"max\"";
+    }
+  } else {
+    return "run: \"action\" must be \"pause\", \"resume\" or \"speed\"";
+  }
+  return {};
+}
+
+}  // namespace stepdance::sim::view

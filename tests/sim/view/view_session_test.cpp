@@ -1,0 +1,210 @@
+// ViewSession on Step-A-Sketch: hello, updates, inputs equal to timeline actions, bad messages.
+#include <nlohmann/json.hpp>
+
+#include "../assembly/simulation_fixture.hpp"
+#include "view/view_session.hpp"
+
+namespace stepdance::sim::view {
+namespace {
+
+using nlohmann::json;
+using test::create;
+using test::parse;
+using test::source_path;
+
+/// Step-A-Sketch on a CoreXY AxiDraw (examples/StepASketch): knob 1 moves x, 100 counts = 1 mm,
+/// inverted (−counts → +x); the button on D1 toggles the pen. `timeline` is appended.
+std::string step_a_sketch(const std::string& timeline) {
+  return R"(duration_s = 3
+seed = 1
+[[board]]
+name = "driver"
+sketch = "StepASketch.ino"
+module = "driver"
+[board.sockets]
+A = { device = "stepper", microsteps = 16 }
+B = { device = "stepper", microsteps = 16 }
+C = { device = "servo" }
+[machine]
+type = "corexy_plotter"
+board = "driver"
+[[device]]
+name = "knob_x"
+type = "encoder"
+board = "driver"
+connector = "ENC1"
+[[device]]
+name = "knob_y"
+type = "encoder"
+board = "driver"
+connector = "ENC2"
+[[device]]
+name = "pen_button"
+type = "button"
+board = "driver"
+connector = "D1"
+bounce_ms = 2
+[output]
+svg = "drawing.svg"
+)" + timeline;
+}
+
+std::unique_ptr<Simulation> make(const std::string& timeline, const std::string& output) {
+  return create(parse(step_a_sketch(timeline), source_path("examples/StepASketch/scenario.toml")), output, false);
+}
+
+json only_message(const std::vector<std::string>& replies) {
+  EXPECT_EQ(replies.size(), 1u);
+  return replies.empty() ? json() : json::parse(replies.front());
+}
+
+TEST(ViewSession, HelloDescribesTheMachineBoardsAndControls) {
+  auto simulation = make("", "view_hello");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  const json hello = json::parse(session.hello());
+  EXPECT_EQ(hello["type"], "hello");
+  EXPECT_EQ(hello["version"], kProtocolVersion);
+  EXPECT_EQ(hello["machine"]["kind"], "corexy_plotter");
+  // The AxiDraw V3's travel, the page the SVG uses (docs/scenario-format.md: 300 × 218 mm).
+  EXPECT_EQ(hello["machine"]["page_mm"], json::array({0, 300, 0, 218}));
+  ASSERT_EQ(hello["boards"].size(), 1u);
+  const json& board = hello["boards"][0];
+  EXPECT_EQ(board["motors"], json::array({"A", "B"}));
+  ASSERT_EQ(board["devices"].size(), 3u);
+  EXPECT_EQ(board["devices"][0]["control"]["type"], "knob");
+  EXPECT_EQ(board["devices"][0]["control"]["counts_per_turn"], 2400);  // 600 pulses × 4
+  EXPECT_EQ(board["devices"][2]["control"]["type"], "button");
+  EXPECT_EQ(board["devices"][2]["connector"], "D1");
+}
+
+// The pen goes down at (0, 0) and knob 1 turns one whole turn the other way (−2400 counts):
+// the pen draws to (24, 0) mm, and the motors take a = −80 × (x + y) = −1920 and
+// b = −80 × (x − y) = −1920 microsteps (80 microsteps a mm).
+constexpr const char* kTimeline = R"(
+[[at]]
+time_s = 0.2
+click = "pen_button"
+[[at]]
+time_s = 1.0
+turn = "knob_x"
+counts = -2400
+over_s = 0.5
+)";
+
+TEST(ViewSession, InputsGiveExactlyTheStepsAndStrokeOfTheSameTimelineActions) {
+  auto scripted = make(kTimeline, "view_scripted");
+  scripted->run_until(3 * kSecond);
+  auto live = make("", "view_live");
+  RunControl control;
+  ViewSession session(*live, control);
+  live->run_until(200 * kMillisecond);
+  EXPECT_TRUE(session.receive(R"({"type":"input","device":"pen_button","action":"click"})").empty());
+  live->run_until(1000 * kMillisecond);
+  EXPECT_TRUE(session.receive(R"({"type":"input","device":"knob_x","action":"turn","counts":-2400,"over_ms":500})").empty());
+  live->run_until(3 * kSecond);
+  for (Simulation* simulation : {scripted.get(), live.get()}) {
+    EXPECT_EQ(simulation->stepper("driver", 'A')->position_steps(), -1920);
+    EXPECT_EQ(simulation->stepper("driver", 'B')->position_steps(), -1920);
+    ASSERT_EQ(simulation->machine()->strokes().size(), 1u);
+    EXPECT_EQ(simulation->machine()->strokes()[0].front(), (PenPoint{0, 0}));
+    EXPECT_EQ(simulation->machine()->strokes()[0].back(), (PenPoint{24, 0}));
+  }
+  EXPECT_EQ(live->stepper("driver", 'A')->forward_steps(), scripted->stepper("driver", 'A')->forward_steps());
+  EXPECT_EQ(live->stepper("driver", 'A')->reverse_steps(), scripted->stepper("driver", 'A')->reverse_steps());
+  EXPECT_EQ(live->machine()->strokes(), scripted->machine()->strokes());
+  EXPECT_EQ(live->drawing_svg(), scripted->drawing_svg());
+}
+
+TEST(ViewSession, UpdatesCarryTheDrawingAndComeAtMostSixtyTimesASecond) {
+  auto simulation = make(kTimeline, "view_updates");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  std::vector<Polyline> page;
+  int updates = 0;
+  double wall_s = 0;
+  for (SimTime t = 0; t < 3 * kSecond; t += kMillisecond) {
+    simulation->run_until(t + kMillisecond);
+    wall_s += 0.001;  // 1 ms of wall time a step: 3000 steps → at most 3 / (1/60) + 1 = 181 updates
+    if (const auto text = session.update(wall_s)) {
+      ++updates;
+      const json update = json::parse(*text);
+      for (const json& part : update["strokes"]) {
+        const size_t index = part["i"];
+        if (page.size() <= index) page.resize(index + 1);
+        page[index].resize(part["from"].get<size_t>());
+        for (const json& point : part["points"]) page[index].push_back({point[0], point[1]});
+      }
+    }
+  }
+  EXPECT_LE(updates, 181);
+  EXPECT_GE(updates, 170);
+  ASSERT_EQ(page.size(), 1u);
+  EXPECT_EQ(page[0].front(), (PenPoint{0, 0}));
+  EXPECT_EQ(page[0].back(), (PenPoint{24, 0}));
+  const json last = json::parse(session.update_now());
+  EXPECT_EQ(last["motors"][0]["steps"], -1920);
+  EXPECT_EQ(last["motors"][0]["rate_steps_per_s"], 0);  // at rest since the last update
+  EXPECT_TRUE(last["pen"]["down"]);  // one click: the pen stays down
+}
+
+TEST(ViewSession, SaveGivesTheSvgTheRunWritesAtThatInstant) {
+  auto simulation = make(kTimeline, "view_save");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  simulation->run_until(3 * kSecond);
+  const json drawing = only_message(session.receive(R"({"type":"save"})"));
+  EXPECT_EQ(drawing["type"], "drawing");
+  const SimulationReport report = simulation->finish();
+  std::ifstream file(test::test_output_dir("view_save") + "/drawing.svg");
+  std::stringstream bytes;
+  bytes << file.rdbuf();
+  EXPECT_EQ(drawing["svg"], bytes.str());
+}
+
+TEST(ViewSession, BadMessagesGetAClearErrorAndChangeNothing) {
+  auto simulation = make("", "view_bad");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  simulation->run_until(100 * kMillisecond);
+  const std::pair<std::string, std::string> cases[] = {
+      {"{not json", "not a JSON object"},
+      {"[1,2]", "not a JSON object"},
+      {R"({"kind":"input"})", "no \"type\""},
+      {R"({"type":"launch"})", "unknown message type \"launch\""},
+      {R"({"type":"input","device":"nothing","action":"turn","counts":1})", "input: no device named \"nothing\""},
+      {R"({"type":"input","device":"knob_x","action":"press"})", "input: an encoder does not take \"press\""},
+      {R"({"type":"input","device":"knob_x","action":"turn","counts":1.5})", "input: turn needs \"counts\""},
+      {R"({"type":"input","device":"pen_button","action":"click","hold_ms":-1})", "input: \"hold_ms\" must be"},
+      {R"({"type":"console","board":"nobody","text":"x"})", "console: no board named \"nobody\""},
+      {R"({"type":"run","action":"speed","speed":3})", "run: \"speed\" must be 1, 10 or \"max\""},
+      {std::string(kMaxInputBytes + 1, ' '), "message of 4097 bytes refused: at most 4096"},
+  };
+  for (const auto& [text, error] : cases) {
+    const json reply = only_message(session.receive(text));
+    EXPECT_EQ(reply["type"], "error") << text;
+    EXPECT_EQ(reply["message"].get<std::string>().rfind(error, 0), 0u) << reply["message"];
+  }
+  simulation->run_until(3 * kSecond);
+  EXPECT_EQ(simulation->stepper("driver", 'A')->position_steps(), 0);
+  EXPECT_TRUE(simulation->machine()->strokes().empty());
+  EXPECT_FALSE(control.paused);
+  EXPECT_EQ(control.speed, 1.0);
+}
+
+TEST(ViewSession, RunControlMessagesSetTheSharedControl) {
+  auto simulation = make("", "view_run");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  EXPECT_TRUE(session.receive(R"({"type":"run","action":"pause"})").empty());
+  EXPECT_TRUE(control.paused);
+  EXPECT_TRUE(session.receive(R"({"type":"run","action":"speed","speed":"max"})").empty());
+  EXPECT_EQ(control.speed, 0.0);
+  EXPECT_TRUE(session.receive(R"({"type":"run","action":"speed","speed":10})").empty());
+  EXPECT_EQ(control.speed, 10.0);
+  EXPECT_TRUE(session.receive(R"({"type":"run","action":"resume"})").empty());
+  EXPECT_FALSE(control.paused);
+}
+
+}  // namespace
+}  // namespace stepdance::sim::view
