@@ -24,15 +24,34 @@ constexpr auto kLongestSleep = std::chrono::milliseconds(20);
 bool stop_requested() { return sim::EntryMonitor::requested() != sim::EscapeCause::kNone; }
 
 // Sleeps until `due`, in short naps, while nobody asked the run to stop; returns the seconds
-// it slept.
-double sleep_until(std::chrono::steady_clock::time_point due) {
+// it slept. With a view, the view serves its pages instead of sleeping.
+double sleep_until(std::chrono::steady_clock::time_point due, LiveView* view) {
   const auto started = std::chrono::steady_clock::now();
   while (!stop_requested()) {
     const auto now = std::chrono::steady_clock::now();
     if (now >= due) break;
-    std::this_thread::sleep_for(std::min<std::chrono::steady_clock::duration>(due - now, kLongestSleep));
+    const auto nap = std::min<std::chrono::steady_clock::duration>(due - now, kLongestSleep);
+    if (view != nullptr) {
+      view->serve_for(nap);
+    } else {
+      std::this_thread::sleep_for(nap);
+    }
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+/// Where the wall clock and simulated time were last tied together, and at which speed.
+struct PacingAnchor {
+  std::chrono::steady_clock::time_point wall;
+  sim::SimTime simulated = 0;
+  double speed = 1.0;
+};
+
+// Waits while a page has the run paused (serving the pages); true if it waited.
+bool wait_while_paused(LiveView* view) {
+  if (view == nullptr || !view->control().paused) return false;
+  while (view->control().paused && !stop_requested()) view->serve_for(kLongestSleep);
+  return true;
 }
 
 struct BoardLink {
@@ -48,7 +67,11 @@ std::vector<BoardLink> open_terminals(sim::Simulation& simulation, const std::ve
     auto found = options.serial_links.find(name);
     if (found != options.serial_links.end()) link.port->link_as(found->second);
     PtyPort* port = link.port.get();
-    link.board->on_console_bytes([port](const uint8_t* data, size_t length) { port->write_to_client(data, length); });
+    LiveView* view = options.view;
+    link.board->on_console_bytes([port, view, name](const uint8_t* data, size_t length) {
+      port->write_to_client(data, length);
+      if (view != nullptr) view->console(name, data, length);
+    });
     links.push_back(std::move(link));
   }
   for (const auto& [name, path] : options.serial_links) {
@@ -72,17 +95,32 @@ void exchange(std::vector<BoardLink>& links) {
 LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options) {
   std::vector<BoardLink> links = open_terminals(simulation, boards, options);
   for (size_t i = 0; i < links.size(); ++i) std::printf("serial %s: %s\n", boards[i].c_str(), links[i].port->path().c_str());
+  LiveView* view = options.view;
+  if (view != nullptr) {
+    view->control().speed = options.speed;
+    std::printf("%s\n", view->announcement().c_str());
+  }
   std::fflush(stdout);
   const auto wall_start = std::chrono::steady_clock::now();
-  const sim::SimTime sim_start = simulation.now();
+  PacingAnchor anchor{wall_start, simulation.now(), options.speed};
   double slept_s = 0;
   // Every simulated millisecond, wherever the run is (a sketch waiting in delay() included).
   simulation.pace_every(kExchangeNs, [&](sim::SimTime now) {
     exchange(links);
-    if (options.speed <= 0.0) return;
-    const double due_s = sim::to_seconds(now - sim_start) / options.speed;
-    slept_s += sleep_until(wall_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                            std::chrono::duration<double>(due_s)));
+    if (view != nullptr) {
+      view->serve_now(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count());
+      const auto paused_at = std::chrono::steady_clock::now();
+      const bool paused = wait_while_paused(view);
+      const auto resumed_at = std::chrono::steady_clock::now();
+      if (paused) slept_s += std::chrono::duration<double>(resumed_at - paused_at).count();
+      // After a pause or at a new speed the run is paced from here on, not from the start.
+      if (paused || view->control().speed != anchor.speed) anchor = {resumed_at, now, view->control().speed};
+    }
+    if (anchor.speed <= 0.0) return;
+    const double due_s = sim::to_seconds(now - anchor.simulated) / anchor.speed;
+    slept_s += sleep_until(anchor.wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                             std::chrono::duration<double>(due_s)),
+                           view);
   });
   exchange(links);
   while (!stop_requested() && simulation.now() < simulation.duration() && !simulation.stopped()) {
@@ -98,6 +136,7 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
                   boards[i].c_str(), static_cast<unsigned long long>(dropped));
     }
   }
+  if (view != nullptr) view->finish();
   simulation.end_now();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   return {wall_s, std::max(0.0, wall_s - slept_s)};

@@ -1,13 +1,37 @@
 // The live simulator: a run paced to the wall clock, each board's USB serial on a pseudo-terminal.
 #pragma once
 
+#include <chrono>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "assembly/simulation.hpp"
+#include "view/run_control.hpp"
 
 namespace stepdance::cli {
+
+/// A page watching a live run (`--view`; cli/view/live_view_server.hpp): it is given every
+/// console byte, gets a turn at every exchange with the terminals, and waits in place of the
+/// pacing's sleeps so that it answers its pages while the run waits for the wall clock.
+class LiveView {
+ public:
+  virtual ~LiveView() = default;
+  /// The line announced on stdout beside the terminals: "view: http://127.0.0.1:PORT/?token=…".
+  virtual std::string announcement() const = 0;
+  /// Bytes board `board` printed on its USB serial.
+  virtual void console(const std::string& board, const uint8_t* data, size_t length) = 0;
+  /// Handles what the pages sent (inputs reach the simulation here) and sends the updates
+  /// due at wall time `wall_s`, without waiting.
+  virtual void serve_now(double wall_s) = 0;
+  /// The same, for up to `span` of wall time (the pacing's sleep).
+  virtual void serve_for(std::chrono::steady_clock::duration span) = 0;
+  /// Pause and speed, as the pages set them.
+  virtual sim::view::RunControl& control() = 0;
+  /// The run is over: a last update to every page, then the connections close.
+  virtual void finish() = 0;
+};
 
 /// How a live run is paced and where its ports appear.
 struct LiveOptions {
@@ -15,6 +39,8 @@ struct LiveOptions {
   double speed = 1.0;
   /// Board name → a symlink to create to that board's terminal.
   std::map<std::string, std::string> serial_links;
+  /// The page watching the run, if any (then its RunControl's speed paces the run).
+  LiveView* view = nullptr;
 };
 
 /// A live run's wall-clock time, and the part of it spent computing (not waiting for the clock).

@@ -6,6 +6,7 @@
 #include "serve/serve_command.hpp"
 #include "sim_command.hpp"
 #include "usage.hpp"
+#include "view/live_view_server.hpp"
 
 int main(int argc, char** argv) {
   using namespace stepdance::cli;
@@ -13,6 +14,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   add_version_flag(app);
   SimCommandOptions sim;
+  sim.make_view = [](stepdance::sim::Simulation& simulation, uint16_t port) -> std::unique_ptr<LiveView> {
+    return std::make_unique<LiveViewServer>(simulation, port);
+  };
   CLI::App& sim_command = add_sim_command(app, sim);
   DecodeCommandOptions decode;
   CLI::App& decode_command = add_decode_command(app, decode);

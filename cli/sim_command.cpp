@@ -60,7 +60,24 @@ bool check_live_only(const SimCommandOptions& options) {
   if (options.live) return true;
   if (!options.speed.empty()) std::cerr << "--speed: needs --live (it paces a live run)\n";
   if (!options.serial_links.empty()) std::cerr << "--serial-link: needs --live (it names a live run's terminal)\n";
-  return options.speed.empty() && options.serial_links.empty();
+  if (options.view) std::cerr << "--view: needs --live (it shows a live run)\n";
+  if (!options.view_port.empty()) std::cerr << "--view-port: needs --live --view\n";
+  return options.speed.empty() && options.serial_links.empty() && !options.view && options.view_port.empty();
+}
+
+/// Reads --view-port into `port` (0 when not given); false (message on stderr) when it is bad
+/// or given without --view.
+bool read_view_port(const SimCommandOptions& options, uint16_t& port) {
+  port = 0;
+  if (options.view_port.empty()) return true;
+  if (!options.view) {
+    std::cerr << "--view-port: needs --view\n";
+    return false;
+  }
+  const auto value = read_integer_option("--view-port", options.view_port, ranges::kTcpPort);
+  if (!value) return false;
+  port = static_cast<uint16_t>(*value);
+  return true;
 }
 
 /// A --serial-link path is replaced by a symlink and removed at the end: only a path that does
@@ -222,6 +239,11 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   sim.add_option("--serial-link", options.serial_links,
                  "live only: also make a symlink to a board's terminal (board=path; path must not exist, or be a "
                  "symlink)");
+  sim.add_flag("--view", options.view,
+               "live only: also serve a page showing the machine, the drawing, each board's devices as controls "
+               "and its console, on 127.0.0.1, announced as `view: http://127.0.0.1:PORT/?token=…`");
+  add_number_option(sim, "--view-port", options.view_port,
+                    "live view: the TCP port, in [0, 65,535] (default 0: any free port)");
   add_number_option(sim, "--watchdog-s", options.watchdog_s,
                     "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
                     "10, in " + describe(kWatchdogS) + ")");
@@ -232,7 +254,9 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
 int run_sim_command(const SimCommandOptions& options) {
   CheckedNumbers numbers;
   LiveOptions live;
-  if (!check_numbers(options, numbers) || !check_live_only(options) || !parse_live_options(options, live)) {
+  uint16_t view_port = 0;
+  if (!check_numbers(options, numbers) || !check_live_only(options) || !parse_live_options(options, live) ||
+      !read_view_port(options, view_port)) {
     return kExitBadInput;
   }
   const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
@@ -260,6 +284,12 @@ int run_sim_command(const SimCommandOptions& options) {
     if (options.live) {
       std::vector<std::string> boards;
       for (const auto& board : loaded.scenario.boards) boards.push_back(board.name);
+      std::unique_ptr<LiveView> view;
+      if (options.view) {
+        if (!options.make_view) throw std::runtime_error("--view: this build has no live view");
+        view = options.make_view(*simulation, view_port);
+        live.view = view.get();
+      }
       live_timing = run_live(*simulation, boards, live);
     }
     report = simulation->finish();

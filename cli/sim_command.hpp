@@ -1,13 +1,25 @@
 // `stepdance sim`: run a scenario (or an example folder's scenario.toml) and write its outputs.
 #pragma once
 
+#include <cstdint>
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+namespace stepdance::sim {
+class Simulation;
+}
+
 namespace stepdance::cli {
+
+class LiveView;
+
+/// Makes the live view's server on a port (0: any free one); throws std::runtime_error.
+using LiveViewFactory = std::function<std::unique_ptr<LiveView>(sim::Simulation&, uint16_t port)>;
 
 /// Options of `stepdance sim`.
 struct SimCommandOptions {
@@ -24,6 +36,11 @@ struct SimCommandOptions {
   std::string speed;                ///< live: simulated seconds per wall second, or "max" ("" = 1)
   std::vector<std::string> serial_links;  ///< live: `board=path` symlinks to the terminals
   std::string watchdog_s = "10";    ///< wall seconds a sketch may run with simulated time stuck
+  bool view = false;                ///< live: serve the view page (web/view/)
+  std::string view_port;            ///< live view: the TCP port ("" = any free one)
+  /// Builds the view's server (main.cpp plugs in cli/view's, which keeps Boost out of this
+  /// library); --view is refused without one.
+  LiveViewFactory make_view;
 };
 
 /// Adds the `sim` subcommand to `app`, filling `options` when it is parsed.

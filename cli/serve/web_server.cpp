@@ -11,8 +11,12 @@ namespace net = boost::asio;
 using tcp = net::ip::tcp;
 
 WebServer::WebServer(net::io_context& io, const std::string& address, uint16_t port,
-                     std::vector<std::string> allowed_origins, WebServerHooks hooks)
-    : acceptor_(io), retry_timer_(io), policy_(address, port, std::move(allowed_origins)), hooks_(std::move(hooks)) {
+                     std::vector<std::string> allowed_origins, WebServerHooks hooks, WebServerContent content)
+    : acceptor_(io),
+      retry_timer_(io),
+      policy_(address, port, std::move(allowed_origins)),
+      hooks_(std::move(hooks)),
+      content_(std::move(content)) {
   boost::system::error_code error;
   const net::ip::address ip = net::ip::make_address(address, error);
   if (error) throw std::runtime_error("--host: '" + address + "' is not an IP address");
@@ -28,6 +32,20 @@ WebServer::WebServer(net::io_context& io, const std::string& address, uint16_t p
 }
 
 WebServer::~WebServer() = default;
+
+bool WebServer::token_allowed(std::string_view target) const {
+  if (content_.token.empty()) return true;
+  const size_t query = target.find('?');
+  if (query == std::string_view::npos) return false;
+  std::string_view rest = target.substr(query + 1);
+  while (!rest.empty()) {
+    const size_t end = rest.find('&');
+    if (rest.substr(0, end) == "token=" + content_.token) return true;
+    if (end == std::string_view::npos) break;
+    rest = rest.substr(end + 1);
+  }
+  return false;
+}
 
 void WebServer::accept() {
   acceptor_.async_accept(

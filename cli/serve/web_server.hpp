@@ -17,6 +17,7 @@
 
 #include "origin_policy.hpp"
 #include "request_router.hpp"
+#include "web_assets.hpp"
 
 namespace stepdance::cli::serve {
 
@@ -41,6 +42,16 @@ struct WebServerHooks {
   std::function<void(ClientId)> connected;
   std::function<void(ClientId, std::string_view)> message;
   std::function<void(ClientId)> disconnected;
+};
+
+/// What a server serves, beyond its hooks: the page's files and the token its WebSocket needs.
+struct WebServerContent {
+  /// The file served at a path ("/" asks for "/index.html"), or null: the control page's files
+  /// unless another page's are given (the live view's).
+  const WebAsset* (*find_asset)(std::string_view path) = find_web_asset;
+  /// When not empty, a WebSocket upgrade must carry `?token=<this>` in its URL (a secret of the
+  /// run, handed out in the announced address), or it gets 403.
+  std::string token;
 };
 
 /// Serves the control page (GET /, /app.js, /style.css: files built into the program) and
@@ -68,7 +79,7 @@ class WebServer {
 
   /// Listens on address:port (port 0: any free port, see port()). Throws std::runtime_error.
   WebServer(boost::asio::io_context& io, const std::string& address, uint16_t port,
-            std::vector<std::string> allowed_origins, WebServerHooks hooks);
+            std::vector<std::string> allowed_origins, WebServerHooks hooks, WebServerContent content = {});
   ~WebServer();
 
   uint16_t port() const { return port_; }
@@ -86,6 +97,9 @@ class WebServer {
 
   // ---- for the sessions ----
   const OriginPolicy& policy() const { return policy_; }
+  const WebServerContent& content() const { return content_; }
+  /// Whether an upgrade's target ("/ws?token=…") carries the token (always, without one).
+  bool token_allowed(std::string_view target) const;
   bool has_room() const { return clients_.size() < kMaxClients; }
   ClientId add_client(const std::shared_ptr<WebSocketSession>& session);
   /// A place for one more connection, or null when kMaxConnections are open.
@@ -106,6 +120,7 @@ class WebServer {
   uint16_t port_ = 0;
   OriginPolicy policy_;
   WebServerHooks hooks_;
+  WebServerContent content_;
   std::map<ClientId, std::weak_ptr<WebSocketSession>> clients_;
   ClientId next_client_ = 1;
   uint64_t dropped_messages_ = 0;

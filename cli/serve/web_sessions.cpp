@@ -41,10 +41,17 @@ void HttpSession::read() {
 void HttpSession::on_request(Request request) {
   const std::string host(text_of(request[http::field::host]));
   if (websocket::is_upgrade(request)) {
-    if (request.target() != "/ws") return respond(request, http::status::not_found, "text/plain", "no such socket\n");
+    const std::string_view target = text_of(request.target());
+    if (target.substr(0, target.find('?')) != "/ws") {
+      return respond(request, http::status::not_found, "text/plain", "no such socket\n");
+    }
     if (!server_.policy().origin_allowed(text_of(request[http::field::origin]), host)) {
       server_.count_refused();
       return respond(request, http::status::forbidden, "text/plain", "origin not allowed\n");
+    }
+    if (!server_.token_allowed(target)) {
+      server_.count_refused();
+      return respond(request, http::status::forbidden, "text/plain", "missing or wrong token\n");
     }
     if (!server_.has_room()) {
       server_.count_refused();
@@ -62,7 +69,7 @@ void HttpSession::on_request(Request request) {
   }
   std::string_view target = text_of(request.target());
   target = target.substr(0, target.find('?'));
-  const WebAsset* asset = find_web_asset(target == "/" ? "/index.html" : target);
+  const WebAsset* asset = server_.content().find_asset(target == "/" ? "/index.html" : target);
   if (asset == nullptr) return respond(request, http::status::not_found, "text/plain", "not found\n");
   respond(request, http::status::ok, asset->content_type, std::string(asset->body));
 }

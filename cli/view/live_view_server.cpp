@@ -1,0 +1,97 @@
+// LiveViewServer: a WebServer with the view's page and token, one ViewSession per page.
+#include "view/live_view_server.hpp"
+
+#include <random>
+
+namespace stepdance::cli {
+namespace {
+
+/// How often serve_now() looks at the network at most (it is called every simulated ms, which
+/// at --speed max comes far more often than pages need).
+constexpr std::chrono::milliseconds kPollPeriod{1};
+
+/// 128 random bits as 32 hex digits: the run's token.
+std::string random_token() {
+  std::random_device source;
+  static const char kHex[] = "0123456789abcdef";
+  std::string token;
+  for (int i = 0; i < 8; ++i) {
+    uint32_t word = source();
+    for (int j = 0; j < 4; ++j, word >>= 4) token += kHex[word & 0xF];
+  }
+  return token;
+}
+
+}  // namespace
+
+LiveViewServer::LiveViewServer(sim::Simulation& simulation, uint16_t port)
+    : simulation_(simulation), token_(random_token()) {
+  serve::WebServerHooks hooks;
+  hooks.connected = [this](serve::ClientId client) {
+    auto session = std::make_unique<sim::view::ViewSession>(simulation_, control_);
+    server_->send(client, session->hello());
+    sessions_[client] = std::move(session);
+  };
+  hooks.message = [this](serve::ClientId client, std::string_view text) {
+    auto found = sessions_.find(client);
+    if (found == sessions_.end()) return;
+    for (const std::string& reply : found->second->receive(text)) server_->send(client, reply);
+  };
+  hooks.disconnected = [this](serve::ClientId client) { sessions_.erase(client); };
+  serve::WebServerContent content;
+  content.find_asset = serve::find_view_asset;
+  content.token = token_;
+  server_ = std::make_unique<serve::WebServer>(io_, "127.0.0.1", port, std::vector<std::string>{}, hooks, content);
+}
+
+LiveViewServer::~LiveViewServer() {
+  server_->stop();
+  io_.restart();
+  io_.poll();
+}
+
+std::string LiveViewServer::announcement() const {
+  return "view: http://127.0.0.1:" + std::to_string(server_->port()) + "/?token=" + token_;
+}
+
+void LiveViewServer::console(const std::string& board, const uint8_t* data, size_t length) {
+  for (auto& [client, session] : sessions_) session->console_output(board, data, length);
+}
+
+double LiveViewServer::wall_now_s() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
+
+void LiveViewServer::send_updates(double wall_s) {
+  for (auto& [client, session] : sessions_) {
+    if (auto update = session->update(wall_s)) server_->send(client, *update);
+  }
+}
+
+void LiveViewServer::serve_now(double wall_s) {
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_poll_ < kPollPeriod) return;
+  last_poll_ = now;
+  if (io_.stopped()) io_.restart();
+  io_.poll();
+  send_updates(wall_s);
+}
+
+void LiveViewServer::serve_for(std::chrono::steady_clock::duration span) {
+  if (io_.stopped()) io_.restart();
+  io_.run_for(span);
+  last_poll_ = std::chrono::steady_clock::now();
+  send_updates(wall_now_s());
+}
+
+void LiveViewServer::finish() {
+  for (auto& [client, session] : sessions_) server_->send(client, session->update_now());
+  // Lets the last updates go out (a page that does not read gets them dropped, not waited for).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (io_.stopped()) io_.restart();
+    io_.run_for(std::chrono::milliseconds(20));
+  }
+}
+
+}  // namespace stepdance::cli
