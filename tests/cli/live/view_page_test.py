@@ -1,0 +1,192 @@
+#!/usr/bin/python3
+"""The live view of `stepdance sim examples/StepASketch/live.toml --live --view` in headless
+Chromium (Debian's chromium, chromium-driver and python3-selenium).
+
+A person's hand on the page: the pen button clicked (pen down), knob 1 dragged one whole turn
+counter-clockwise around its centre, the pen button clicked again (pen up). Then Ctrl-C. The
+run's SVG must hold exactly the stroke a batch scenario with the same click, turn and click
+draws: one stroke, the same endpoints to 0.01 mm, and the same motor step counts in both runs'
+summary.json. Independently of either run, Step-A-Sketch's own numbers give that stroke: 2400
+counts a turn, 100 counts a mm, inverted, so −2400 counts draw from (0, 0) to (24, 0) mm, and
+the CoreXY motors take a = −80 × (x + y) = −1920 and b = −80 × (x − y) = −1920 microsteps.
+
+Also checked on the way: the page draws the stroke it received (its test hook), the announced
+address carries a token, and a WebSocket without it, or from a foreign origin, is refused.
+
+Usage: view_page_test.py STEPDANCE_BINARY SOURCE_DIR WORK_DIR
+"""
+import base64
+import json
+import math
+import os
+import re
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import unittest
+import xml.etree.ElementTree as ElementTree
+
+from selenium import webdriver
+from selenium.webdriver.chrome.options import Options
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.action_chains import ActionChains
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import WebDriverWait
+
+STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
+LIVE_OUT = os.path.join(WORK_DIR, "view-page-live")
+BATCH_OUT = os.path.join(WORK_DIR, "view-page-batch")
+EXAMPLE = os.path.join(SOURCE_DIR, "examples", "StepASketch")
+
+
+def batch_scenario():
+    """live.toml with the page's actions as a timeline: click, one turn of −2400 counts, click."""
+    with open(os.path.join(EXAMPLE, "live.toml")) as live:
+        text = live.read()
+    text = text.replace("duration_s = 86400", "duration_s = 5")
+    text = text.replace('sketch = "StepASketch.ino"', f'sketch = "{os.path.join(EXAMPLE, "StepASketch.ino")}"')
+    text += ('\n[[at]]\ntime_s = 0.5\nclick = "pen_button"\n'
+             '\n[[at]]\ntime_s = 1.5\nturn = "knob_x"\ncounts = -2400\nover_s = 1\n'
+             '\n[[at]]\ntime_s = 4\nclick = "pen_button"\n')
+    os.makedirs(WORK_DIR, exist_ok=True)
+    path = os.path.join(WORK_DIR, "view-page-batch.toml")
+    with open(path, "w") as out:
+        out.write(text)
+    return path
+
+
+def svg_strokes(path):
+    """The pen-down polylines of a run's SVG, as lists of (x, y) in mm."""
+    strokes = []
+    for element in ElementTree.parse(path).iter():
+        if element.tag.endswith("polyline"):
+            numbers = [float(n) for n in re.split(r"[ ,]+", element.get("points").strip())]
+            strokes.append(list(zip(numbers[0::2], numbers[1::2])))
+    return strokes
+
+
+def motor_steps(out_dir):
+    with open(os.path.join(out_dir, "summary.json")) as summary:
+        motors = json.load(summary)["motors"]
+    return {name: motor["steps"] for name, motor in motors.items()}
+
+
+def websocket_status(port, path, origin):
+    connection = socket.create_connection(("127.0.0.1", port), timeout=10)
+    key = base64.b64encode(os.urandom(16)).decode()
+    connection.sendall((f"GET {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n"
+                        f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
+                        f"Origin: {origin}\r\n\r\n").encode())
+    response = b""
+    while b"\r\n" not in response:
+        chunk = connection.recv(4096)
+        if not chunk:
+            break
+        response += chunk
+    connection.close()
+    return response.split(b"\r\n", 1)[0].decode()
+
+
+class ViewPageTest(unittest.TestCase):
+    def setUp(self):
+        shutil.rmtree(LIVE_OUT, ignore_errors=True)
+        shutil.rmtree(BATCH_OUT, ignore_errors=True)
+        self.run_live = subprocess.Popen(
+            [STEPDANCE, "sim", os.path.join(EXAMPLE, "live.toml"), "--live", "--view", "--out", LIVE_OUT],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.url = None
+        for _ in range(4):
+            line = self.run_live.stdout.readline()
+            match = re.fullmatch(r"view: (http://127\.0\.0\.1:(\d+)/\?token=([0-9a-f]{32}))\n", line)
+            if match:
+                self.url, self.port, self.token = match.group(1), int(match.group(2)), match.group(3)
+                break
+            self.assertRegex(line, r"^serial driver: /dev/pts/\d+\n$")
+        self.assertIsNotNone(self.url, self.run_live.stderr.read() if self.run_live.poll() is not None else "")
+        options = Options()
+        options.binary_location = "/usr/bin/chromium"
+        self.profile = tempfile.mkdtemp(prefix="stepdance-chromium-")
+        for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
+                         f"--user-data-dir={self.profile}", "--window-size=1400,1000"):
+            options.add_argument(argument)
+        self.browser = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+
+    def tearDown(self):
+        self.browser.quit()
+        shutil.rmtree(self.profile, ignore_errors=True)
+        if self.run_live.poll() is None:
+            self.run_live.kill()
+            self.run_live.communicate()
+
+    def view(self, key):
+        return self.browser.execute_script(f"return window.stepdanceView.{key};")
+
+    def wait_pen(self, down, x_mm=None):
+        def reached(_):
+            pen = self.view("pen")
+            return pen is not None and pen["down"] == down and (x_mm is None or abs(pen["x_mm"] - x_mm) < 1e-9)
+        WebDriverWait(self.browser, 60, poll_frequency=0.05).until(reached)
+
+    def click_pen_button(self, down):
+        self.browser.find_element(By.ID, "control-pen_button").click()
+        self.wait_pen(down)
+
+    def drag_knob_one_turn_counter_clockwise(self, name):
+        knob = self.browser.find_element(By.ID, f"control-{name}")
+        radius, steps = 24, 48
+        points = [(round(radius * math.cos(-2 * math.pi * k / steps)), round(radius * math.sin(-2 * math.pi * k / steps)))
+                  for k in range(steps + 1)]
+        actions = ActionChains(self.browser, duration=20)
+        actions.move_to_element_with_offset(knob, *points[0]).click_and_hold()
+        for (x0, y0), (x1, y1) in zip(points, points[1:]):
+            actions.move_by_offset(x1 - x0, y1 - y0)
+        actions.release().perform()
+
+    def test_a_turn_and_two_clicks_on_the_page_draw_the_timeline_s_stroke(self):
+        # Without the token, or from another origin, no WebSocket.
+        self.assertIn("403", websocket_status(self.port, "/ws", f"http://127.0.0.1:{self.port}"))
+        self.assertIn("403", websocket_status(self.port, f"/ws?token={self.token}", "http://evil.example"))
+        self.assertIn("101", websocket_status(self.port, f"/ws?token={self.token}", f"http://127.0.0.1:{self.port}"))
+
+        self.browser.get(self.url)
+        WebDriverWait(self.browser, 60).until(lambda b: self.view("hello") is not None and self.view("pen") is not None)
+        self.assertEqual(self.view("hello.machine.page_mm"), [0, 300, 0, 218])
+        self.click_pen_button(down=True)
+        self.drag_knob_one_turn_counter_clockwise("knob_x")
+        self.wait_pen(down=True, x_mm=24)
+        self.click_pen_button(down=False)
+        self.assertEqual(self.view("errors"), [])
+        page_strokes = self.view("strokes")
+        self.assertEqual(len(page_strokes), 1)
+        self.assertEqual(page_strokes[0][0], [0, 0])
+        self.assertEqual(page_strokes[0][-1], [24, 0])
+        self.assertEqual(len(self.browser.find_elements(By.CSS_SELECTOR, "#strokes polyline")), 1)
+
+        self.run_live.send_signal(signal.SIGINT)
+        output, errors = self.run_live.communicate(timeout=120)
+        self.assertEqual(self.run_live.returncode, 0, errors)
+        live_strokes = svg_strokes(os.path.join(LIVE_OUT, "drawing.svg"))
+
+        batch = subprocess.run([STEPDANCE, "sim", batch_scenario(), "--quiet", "--no-vcd", "--out", BATCH_OUT],
+                               capture_output=True, text=True)
+        self.assertEqual(batch.returncode, 0, batch.stderr)
+        batch_strokes = svg_strokes(os.path.join(BATCH_OUT, "drawing.svg"))
+
+        self.assertEqual(len(live_strokes), 1)
+        self.assertEqual(len(batch_strokes), 1)
+        # The SVG's points are machine mm (its margin is a translate() around them).
+        for live_end, batch_end, expected in ((live_strokes[0][0], batch_strokes[0][0], (0, 0)),
+                                              (live_strokes[0][-1], batch_strokes[0][-1], (24, 0))):
+            for axis in range(2):
+                self.assertAlmostEqual(live_end[axis], batch_end[axis], delta=0.01)
+                self.assertAlmostEqual(live_end[axis], expected[axis], delta=0.01)
+        steps = {"driver:A": -1920, "driver:B": -1920}
+        self.assertEqual(motor_steps(LIVE_OUT), steps)
+        self.assertEqual(motor_steps(BATCH_OUT), steps)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0]], verbosity=2)
