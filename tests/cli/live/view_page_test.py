@@ -13,6 +13,12 @@ the CoreXY motors take a = −80 × (x + y) = −1920 and b = −80 × (x − y)
 Also checked on the way: the page draws the stroke it received (its test hook), the announced
 address carries a token, and a WebSocket without it, or from a foreign origin, is refused.
 
+Bad input on the socket: no token, a wrong one, a foreign origin (403); malformed, unknown,
+out-of-range and oversized messages (an error message each, the socket stays); a message over
+the server's 64 KiB (that socket closed); 100 connections at once (at most 32 pages, the rest
+refused). Afterwards the same click, turn and click sent as raw messages still draw exactly the
+timeline's stroke: the run was not disturbed.
+
 Usage: view_page_test.py STEPDANCE_BINARY SOURCE_DIR WORK_DIR
 """
 import base64
@@ -23,6 +29,7 @@ import re
 import shutil
 import signal
 import socket
+import struct
 import subprocess
 import sys
 import tempfile
@@ -90,6 +97,75 @@ def websocket_status(port, path, origin):
     return response.split(b"\r\n", 1)[0].decode()
 
 
+class RawWebSocket:
+    """A WebSocket client on a plain socket (RFC 6455), to send what no browser would."""
+
+    def __init__(self, port, token, origin=None):
+        self.connection = socket.create_connection(("127.0.0.1", port), timeout=20)
+        key = base64.b64encode(os.urandom(16)).decode()
+        self.connection.sendall((f"GET /ws?token={token} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n"
+                                 f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
+                                 f"Origin: {origin or f'http://127.0.0.1:{port}'}\r\n\r\n").encode())
+        self.buffer = b""
+        while b"\r\n\r\n" not in self.buffer:
+            chunk = self.connection.recv(4096)
+            if not chunk:
+                break
+            self.buffer += chunk
+        head, _, self.buffer = self.buffer.partition(b"\r\n\r\n")
+        self.status = head.split(b"\r\n", 1)[0].decode()
+
+    def send(self, text):
+        payload = text.encode()
+        mask = os.urandom(4)
+        if len(payload) < 126:
+            header = bytes([0x81, 0x80 | len(payload)])
+        elif len(payload) < 65536:
+            header = bytes([0x81, 0x80 | 126]) + struct.pack(">H", len(payload))
+        else:
+            header = bytes([0x81, 0x80 | 127]) + struct.pack(">Q", len(payload))
+        self.connection.sendall(header + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(payload)))
+
+    def read_exactly(self, count):
+        while len(self.buffer) < count:
+            chunk = self.connection.recv(65536)
+            if not chunk:
+                raise EOFError("closed")
+            self.buffer += chunk
+        data, self.buffer = self.buffer[:count], self.buffer[count:]
+        return data
+
+    def receive(self):
+        """The next message as JSON; None for a close frame. Raises EOFError when the socket closes."""
+        first, second = self.read_exactly(2)
+        length = second & 0x7F
+        if length == 126:
+            length = struct.unpack(">H", self.read_exactly(2))[0]
+        elif length == 127:
+            length = struct.unpack(">Q", self.read_exactly(8))[0]
+        payload = self.read_exactly(length)
+        if first & 0x0F == 8:
+            return None
+        return json.loads(payload)
+
+    def receive_type(self, wanted):
+        while True:
+            message = self.receive()
+            if message is None or message["type"] == wanted:
+                return message
+
+    def wait_closed(self):
+        """Reads until the server closes: a close frame or the end of the stream."""
+        try:
+            while self.receive() is not None:
+                pass
+        except EOFError:
+            pass
+
+    def close(self):
+        self.connection.close()
+
+
 class ViewPageTest(unittest.TestCase):
     def setUp(self):
         shutil.rmtree(LIVE_OUT, ignore_errors=True)
@@ -106,6 +182,9 @@ class ViewPageTest(unittest.TestCase):
                 break
             self.assertRegex(line, r"^serial driver: /dev/pts/\d+\n$")
         self.assertIsNotNone(self.url, self.run_live.stderr.read() if self.run_live.poll() is not None else "")
+        self.browser = None
+
+    def open_browser(self):
         options = Options()
         options.binary_location = "/usr/bin/chromium"
         self.profile = tempfile.mkdtemp(prefix="stepdance-chromium-")
@@ -115,8 +194,9 @@ class ViewPageTest(unittest.TestCase):
         self.browser = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
 
     def tearDown(self):
-        self.browser.quit()
-        shutil.rmtree(self.profile, ignore_errors=True)
+        if self.browser is not None:
+            self.browser.quit()
+            shutil.rmtree(self.profile, ignore_errors=True)
         if self.run_live.poll() is None:
             self.run_live.kill()
             self.run_live.communicate()
@@ -151,6 +231,7 @@ class ViewPageTest(unittest.TestCase):
         self.assertIn("403", websocket_status(self.port, f"/ws?token={self.token}", "http://evil.example"))
         self.assertIn("101", websocket_status(self.port, f"/ws?token={self.token}", f"http://127.0.0.1:{self.port}"))
 
+        self.open_browser()
         self.browser.get(self.url)
         WebDriverWait(self.browser, 60).until(lambda b: self.view("hello") is not None and self.view("pen") is not None)
         self.assertEqual(self.view("hello.machine.page_mm"), [0, 300, 0, 218])
@@ -165,6 +246,10 @@ class ViewPageTest(unittest.TestCase):
         self.assertEqual(page_strokes[0][-1], [24, 0])
         self.assertEqual(len(self.browser.find_elements(By.CSS_SELECTOR, "#strokes polyline")), 1)
 
+        self.check_run_drew_the_timeline_stroke()
+
+    def check_run_drew_the_timeline_stroke(self):
+        """Ends the live run and compares its drawing and steps with the batch scenario's."""
         self.run_live.send_signal(signal.SIGINT)
         output, errors = self.run_live.communicate(timeout=120)
         self.assertEqual(self.run_live.returncode, 0, errors)
@@ -186,6 +271,49 @@ class ViewPageTest(unittest.TestCase):
         steps = {"driver:A": -1920, "driver:B": -1920}
         self.assertEqual(motor_steps(LIVE_OUT), steps)
         self.assertEqual(motor_steps(BATCH_OUT), steps)
+
+    def test_bad_input_on_the_socket_is_refused_and_the_run_goes_on(self):
+        # No token, a wrong one, a foreign origin: 403 before any WebSocket exists.
+        self.assertIn("403", websocket_status(self.port, "/ws", f"http://127.0.0.1:{self.port}"))
+        self.assertIn("403", websocket_status(self.port, "/ws?token=" + "0" * 32, f"http://127.0.0.1:{self.port}"))
+        foreign = RawWebSocket(self.port, self.token, origin="http://evil.example")
+        self.assertIn("403", foreign.status)
+        foreign.close()
+        page = RawWebSocket(self.port, self.token)
+        self.assertIn("101", page.status)
+        self.assertEqual(page.receive_type("hello")["version"], 1)
+        for text, error in (("{not json", "not a JSON object"),
+                            ('{"type":"teleport"}', 'unknown message type "teleport"'),
+                            ('{"type":"input","device":"knob_x","action":"press"}', 'input: an encoder does not take "press"'),
+                            ('{"type":"run","action":"speed","speed":2}', 'run: "speed" must be 1, 10 or "max"'),
+                            (" " * 5000, "message of 5000 bytes refused: at most 4096")):
+            page.send(text)
+            self.assertEqual(page.receive_type("error")["message"][:len(error)], error)
+        # Over the server's 64 KiB a message closes that socket; the others stay.
+        flood = RawWebSocket(self.port, self.token)
+        flood.send(" " * 70000)
+        flood.wait_closed()  # the socket's 20 s timeout here fails the test
+        flood.close()
+        # 100 connections at once: at most 32 pages; the rest refused (503) or closed.
+        crowd = [RawWebSocket(self.port, self.token) for _ in range(100)]
+        accepted = sum("101" in member.status for member in crowd)
+        self.assertLessEqual(accepted, 32)
+        self.assertGreaterEqual(accepted, 1)
+        for member in crowd:
+            member.close()
+        # The run was not disturbed: the page's actions still draw exactly the timeline's stroke.
+        page.send('{"type":"input","device":"pen_button","action":"click"}')
+        while not (page.receive_type("update")["pen"]["down"]):
+            pass
+        for _ in range(48):
+            page.send('{"type":"input","device":"knob_x","action":"turn","counts":-50}')
+        while page.receive_type("update")["pen"]["x_mm"] != 24:
+            pass
+        page.send('{"type":"input","device":"pen_button","action":"click"}')
+        while page.receive_type("update")["pen"]["down"]:
+            pass
+        page.close()
+        self.check_run_drew_the_timeline_stroke()
 
 
 if __name__ == "__main__":
