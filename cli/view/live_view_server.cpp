@@ -86,11 +86,12 @@ void LiveViewServer::serve_for(std::chrono::steady_clock::duration span) {
 
 void LiveViewServer::finish() {
   for (auto& [client, session] : sessions_) server_->send(client, session->update_now());
-  // Lets the last updates go out (a page that does not read gets them dropped, not waited for).
+  // Lets the last updates go out: until nothing happens for 5 ms, for 200 ms at most (a page
+  // that does not read is not waited for).
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
   while (std::chrono::steady_clock::now() < deadline) {
     if (io_.stopped()) io_.restart();
-    io_.run_for(std::chrono::milliseconds(20));
+    if (io_.run_for(std::chrono::milliseconds(5)) == 0) break;
   }
 }
 
