@@ -53,11 +53,9 @@ constexpr bool connectors_fit(const BoardDefinition& board, const TeensyPinout& 
 /// Whether the table is whole and fits every Teensy the board takes. Context: any (constant
 /// expression; boards/board_registry.hpp asserts it for every built-in board).
 constexpr bool board_is_valid(const BoardDefinition& board) {
-  if (board.teensy == nullptr || board.output_port_count > kMaxBoardPorts || board.input_port_count > kMaxBoardPorts) {
-    return false;
-  }
+  if (board.output_port_count > kMaxBoardPorts || board.input_port_count > kMaxBoardPorts) return false;
   if (!ports_fit(board, *board.teensy) || !connectors_fit(board, *board.teensy)) return false;
-  return board.other_teensy == nullptr || (ports_fit(board, *board.other_teensy) && connectors_fit(board, *board.other_teensy));
+  return ports_fit(board, *board.other_teensy) && connectors_fit(board, *board.other_teensy);
 }
 
 }  // namespace stepdance

@@ -33,7 +33,10 @@ struct BoardDefinition {
   const char* scenario_name;  ///< "driver": the scenario file's `module` value
   const char* sketch_macro;   ///< "module_driver": the #define a sketch selects it with
   const TeensyPinout* teensy;        ///< the Teensy it is built around; the simulator models this one
-  const TeensyPinout* other_teensy;  ///< a second Teensy it also takes, or nullptr
+  /// A second Teensy it also takes, or `teensy` again when it takes one. Never null: a constant
+  /// expression cannot compare an inline variable's address with null under GCC's sanitizers,
+  /// and the registry's static_assert checks both in every build.
+  const TeensyPinout* other_teensy;
   uint8_t output_port_count;
   OutputPortPins output_ports[kMaxBoardPorts];
   uint8_t input_port_count;

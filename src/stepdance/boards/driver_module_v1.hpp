@@ -12,7 +12,7 @@ inline constexpr BoardDefinition kDriverModuleV1 = {
     "driver",
     "module_driver",
     &kTeensy41,
-    nullptr,
+    &kTeensy41,  // the 4.1 only
     4,
     {{23, 22, 14, 15, 29}, {21, 20, 13, 41, 30}, {37, 36, 39, 40, 31}, {35, 34, 33, 38, 32}},
     4,

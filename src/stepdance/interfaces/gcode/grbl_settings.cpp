@@ -5,6 +5,16 @@
 
 namespace stepdance::gcode {
 
+namespace {
+// Grbl keeps its whole-number settings in one byte each (settings.c: `uint8_t int_value`).
+constexpr double kLargestByteSetting = 255.0;
+
+// A value the setting can hold: finite, not negative, and for a byte setting at most 255.
+bool fits(const GrblSetting& setting, double value) {
+  return isfinite(value) && value >= 0.0 && (!setting.integer || value <= kLargestByteSetting);
+}
+}  // namespace
+
 GrblSettings::GrblSettings()
     : settings_{
           {0, 10, true, true},      {1, 25, true, true},     {2, 0, true, true},
@@ -37,13 +47,15 @@ double GrblSettings::value(uint32_t number) const {
 
 // Grbl 1.1h's settings_store_global_setting: a negative value is error:4 before anything else;
 // integer settings take the value truncated; $0 (step pulse, µs) below 3 is error:6; $20 (soft
-// limits) on without $22 (homing) is error:10, and $22 off turns $20 off.
+// limits) on without $22 (homing) is error:10, and $22 off turns $20 off. A whole-number setting
+// above 255 is error:2 here, where Grbl's byte would wrap (docs/gcode.md, `byte-settings`).
 GrblError GrblSettings::write(uint32_t number, double value) {
   if (!isfinite(value)) return GrblError::kBadNumberFormat;
   if (value < 0.0) return GrblError::kNegativeValue;
   GrblSetting* setting = writable_setting(number);
   if (setting == nullptr) return GrblError::kInvalidDollarStatement;
   if (setting->integer) value = trunc(value);
+  if (!fits(*setting, value)) return GrblError::kBadNumberFormat;  // above 255: one byte cannot hold it
   if (number == 0 && value < 3.0) return GrblError::kStepPulseTooShort;
   if (number == 20 && value != 0.0 && !homing_enabled()) return GrblError::kSoftLimitNeedsHoming;
   setting->value = value;
@@ -59,7 +71,7 @@ GrblError GrblSettings::write(uint32_t number, double value) {
 GrblError GrblSettings::load(uint32_t number, double value) {
   GrblSetting* setting = writable_setting(number);
   if (setting == nullptr) return GrblError::kInvalidDollarStatement;
-  if (!isfinite(value) || value < 0.0 || (setting->integer && value != trunc(value))) return GrblError::kBadNumberFormat;
+  if (!fits(*setting, value) || (setting->integer && value != trunc(value))) return GrblError::kBadNumberFormat;
   setting->value = value;
   setting->host_set = true;
   return GrblError::kOk;
@@ -72,7 +84,7 @@ GrblSetting* GrblSettings::writable_setting(uint32_t number) {
 
 bool GrblSettings::set_from_sketch(uint32_t number, double value) {
   GrblSetting* setting = const_cast<GrblSetting*>(find(number));
-  if (setting == nullptr) return false;
+  if (setting == nullptr || !fits(*setting, value)) return false;
   setting->default_value = value;
   if (!setting->host_set) setting->value = value;
   return true;

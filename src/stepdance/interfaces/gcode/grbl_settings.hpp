@@ -37,7 +37,8 @@ class GrblSettings {
   /// A value the host wrote earlier, read back from the store: only the setting's own range is
   /// checked (the order between settings, as `$20` after `$22`, held when it was written).
   GrblError load(uint32_t number, double value);
-  /// Sets a value on behalf of the sketch (read-only ones included). False if unknown.
+  /// Sets a value on behalf of the sketch (read-only ones included). False if unknown, or if the
+  /// setting cannot hold it (negative, not finite, or above 255 for a whole-number setting).
   /// For a host-writable setting this is the default: a value the host wrote (and the board
   /// stored) wins over it, as a stored Grbl setting wins over the firmware's default.
   bool set_from_sketch(uint32_t number, double value);

@@ -15,7 +15,7 @@ inline constexpr BoardDefinition kTestModule = {
     "test",
     "STEPDANCE_BOARD stepdance::test::kTestModule",
     &kTeensy40,
-    nullptr,
+    &kTeensy40,  // the 4.0 only
     2,
     {{23, 22, 30, 24, 31}, {21, 20, 32, 25, 33}, {}, {}},
     1,
