@@ -96,6 +96,13 @@ void WebServer::send(ClientId client, const std::string& message) {
   if (auto session = found->second.lock()) session->send(message);
 }
 
+size_t WebServer::queued_messages(ClientId client) const {
+  auto found = clients_.find(client);
+  if (found == clients_.end()) return 0;
+  auto session = found->second.lock();
+  return session ? session->queued_messages() : 0;
+}
+
 void WebServer::broadcast(const std::string& message) {
   for (const auto& [client, weak] : clients_) {
     if (auto session = weak.lock()) session->send(message);
@@ -107,7 +114,9 @@ void WebServer::stop() {
   boost::system::error_code ignored;
   retry_timer_.cancel();
   acceptor_.close(ignored);
-  for (const auto& [client, weak] : clients_) {
+  // A session's close() removes it from clients_ (remove_client): walk a copy.
+  const auto clients = clients_;
+  for (const auto& [client, weak] : clients) {
     if (auto session = weak.lock()) session->close();
   }
 }
