@@ -89,11 +89,13 @@ function farthest(points, polyline) {
 }
 
 let plotDone = false;
-process.on('uncaughtException', (error) => {
-  if (plotDone && error.code === 'ERR_STREAM_PREMATURE_CLOSE') return;
-  console.error(error.stack || String(error));
-  process.exit(1);
-});
+function exitOnUncaught() {
+  process.on('uncaughtException', (error) => {
+    if (plotDone && error.code === 'ERR_STREAM_PREMATURE_CLOSE') return;
+    console.error(error.stack || String(error));
+    process.exit(1);
+  });
+}
 
 async function main() {
   const { sim, announced, finished } = startSimulator();
@@ -160,7 +162,12 @@ async function main() {
               `${pollsAfter} QM polls after the last move`);
 }
 
-main().then(() => process.exit(0), (error) => {
-  console.error(error.stack || String(error));
-  process.exit(1);
-});
+module.exports = { drawing };
+
+if (require.main === module) {
+  exitOnUncaught();
+  main().then(() => process.exit(0), (error) => {
+    console.error(error.stack || String(error));
+    process.exit(1);
+  });
+}

@@ -21,27 +21,22 @@ timeline's stroke: the run was not disturbed.
 
 Usage: view_page_test.py STEPDANCE_BINARY SOURCE_DIR WORK_DIR
 """
-import base64
 import json
 import math
 import os
 import re
 import shutil
 import signal
-import socket
-import struct
 import subprocess
 import sys
-import tempfile
 import unittest
-import xml.etree.ElementTree as ElementTree
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from view_client import RawWebSocket, headless_chromium, svg_strokes, websocket_status  # noqa: E402
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
 LIVE_OUT = os.path.join(WORK_DIR, "view-page-live")
@@ -65,105 +60,10 @@ def batch_scenario():
     return path
 
 
-def svg_strokes(path):
-    """The pen-down polylines of a run's SVG, as lists of (x, y) in mm."""
-    strokes = []
-    for element in ElementTree.parse(path).iter():
-        if element.tag.endswith("polyline"):
-            numbers = [float(n) for n in re.split(r"[ ,]+", element.get("points").strip())]
-            strokes.append(list(zip(numbers[0::2], numbers[1::2])))
-    return strokes
-
-
 def motor_steps(out_dir):
     with open(os.path.join(out_dir, "summary.json")) as summary:
         motors = json.load(summary)["motors"]
     return {name: motor["steps"] for name, motor in motors.items()}
-
-
-def websocket_status(port, path, origin):
-    connection = socket.create_connection(("127.0.0.1", port), timeout=10)
-    key = base64.b64encode(os.urandom(16)).decode()
-    connection.sendall((f"GET {path} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n"
-                        f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
-                        f"Origin: {origin}\r\n\r\n").encode())
-    response = b""
-    while b"\r\n" not in response:
-        chunk = connection.recv(4096)
-        if not chunk:
-            break
-        response += chunk
-    connection.close()
-    return response.split(b"\r\n", 1)[0].decode()
-
-
-class RawWebSocket:
-    """A WebSocket client on a plain socket (RFC 6455), to send what no browser would."""
-
-    def __init__(self, port, token, origin=None):
-        self.connection = socket.create_connection(("127.0.0.1", port), timeout=20)
-        key = base64.b64encode(os.urandom(16)).decode()
-        self.connection.sendall((f"GET /ws?token={token} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n"
-                                 f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
-                                 f"Origin: {origin or f'http://127.0.0.1:{port}'}\r\n\r\n").encode())
-        self.buffer = b""
-        while b"\r\n\r\n" not in self.buffer:
-            chunk = self.connection.recv(4096)
-            if not chunk:
-                break
-            self.buffer += chunk
-        head, _, self.buffer = self.buffer.partition(b"\r\n\r\n")
-        self.status = head.split(b"\r\n", 1)[0].decode()
-
-    def send(self, text):
-        payload = text.encode()
-        mask = os.urandom(4)
-        if len(payload) < 126:
-            header = bytes([0x81, 0x80 | len(payload)])
-        elif len(payload) < 65536:
-            header = bytes([0x81, 0x80 | 126]) + struct.pack(">H", len(payload))
-        else:
-            header = bytes([0x81, 0x80 | 127]) + struct.pack(">Q", len(payload))
-        self.connection.sendall(header + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(payload)))
-
-    def read_exactly(self, count):
-        while len(self.buffer) < count:
-            chunk = self.connection.recv(65536)
-            if not chunk:
-                raise EOFError("closed")
-            self.buffer += chunk
-        data, self.buffer = self.buffer[:count], self.buffer[count:]
-        return data
-
-    def receive(self):
-        """The next message as JSON; None for a close frame. Raises EOFError when the socket closes."""
-        first, second = self.read_exactly(2)
-        length = second & 0x7F
-        if length == 126:
-            length = struct.unpack(">H", self.read_exactly(2))[0]
-        elif length == 127:
-            length = struct.unpack(">Q", self.read_exactly(8))[0]
-        payload = self.read_exactly(length)
-        if first & 0x0F == 8:
-            return None
-        return json.loads(payload)
-
-    def receive_type(self, wanted):
-        while True:
-            message = self.receive()
-            if message is None or message["type"] == wanted:
-                return message
-
-    def wait_closed(self):
-        """Reads until the server closes: a close frame or the end of the stream."""
-        try:
-            while self.receive() is not None:
-                pass
-        except EOFError:
-            pass
-
-    def close(self):
-        self.connection.close()
 
 
 class ViewPageTest(unittest.TestCase):
@@ -185,13 +85,7 @@ class ViewPageTest(unittest.TestCase):
         self.browser = None
 
     def open_browser(self):
-        options = Options()
-        options.binary_location = "/usr/bin/chromium"
-        self.profile = tempfile.mkdtemp(prefix="stepdance-chromium-")
-        for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
-                         f"--user-data-dir={self.profile}", "--window-size=1400,1000"):
-            options.add_argument(argument)
-        self.browser = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+        self.browser, self.profile = headless_chromium()
 
     def tearDown(self):
         if self.browser is not None:
