@@ -85,6 +85,10 @@ class WebServer {
   uint16_t port() const { return port_; }
   /// Queues a text message for one client (ignored if it has gone).
   void send(ClientId client, const std::string& message);
+  /// Messages waiting to go to `client` (the one being written included; 0 if it has gone).
+  /// A sender that makes its next message only at 0 never loses one to kMaxQueuedMessages:
+  /// the page's socket holds it back (back-pressure).
+  size_t queued_messages(ClientId client) const;
   /// Queues a text message for every client.
   void broadcast(const std::string& message);
   /// Stops accepting and closes every connection.

@@ -42,6 +42,8 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   /// Completes the upgrade `request` asked for, then reads messages until the page goes.
   void accept(boost::beast::http::request<boost::beast::http::string_body> request);
   void send(const std::string& message);
+  /// Messages not yet handed to the socket whole (the one being written included).
+  size_t queued_messages() const { return outgoing_.size(); }
   void close();
 
  private:

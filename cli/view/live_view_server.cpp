@@ -64,6 +64,10 @@ double LiveViewServer::wall_now_s() const {
 
 void LiveViewServer::send_updates(double wall_s) {
   for (auto& [client, session] : sessions_) {
+    // Back-pressure: a page whose last messages are still queued gets no new update yet; its
+    // session keeps accumulating (the drawing in full, console text up to its cap), so the
+    // update it gets once its queue has drained carries everything since.
+    if (server_->queued_messages(client) > 0) continue;
     if (auto update = session->update(wall_s)) server_->send(client, *update);
   }
 }
@@ -85,13 +89,22 @@ void LiveViewServer::serve_for(std::chrono::steady_clock::duration span) {
 }
 
 void LiveViewServer::finish() {
-  for (auto& [client, session] : sessions_) server_->send(client, session->update_now());
-  // Lets the last updates go out: until nothing happens for 5 ms, for 200 ms at most (a page
-  // that does not read is not waited for).
+  // Every page gets the run's last state, the drawing in as many updates as it takes (each
+  // after the page's queue has drained, as during the run), then the sockets are served until
+  // nothing happens for 5 ms, for 200 ms at most (a page that does not read is not waited for).
+  std::map<serve::ClientId, bool> last_sent;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
   while (std::chrono::steady_clock::now() < deadline) {
+    bool all_sent = true;
+    for (auto& [client, session] : sessions_) {
+      if (last_sent[client] && !session->strokes_behind()) continue;
+      all_sent = false;
+      if (server_->queued_messages(client) > 0) continue;
+      server_->send(client, session->update_now());
+      last_sent[client] = true;
+    }
     if (io_.stopped()) io_.restart();
-    if (io_.run_for(std::chrono::milliseconds(5)) == 0) break;
+    if (io_.run_for(std::chrono::milliseconds(5)) == 0 && all_sent) break;
   }
 }
 

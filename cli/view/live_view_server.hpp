@@ -20,6 +20,8 @@ namespace stepdance::cli {
 /// client and message limits: WebServer) and a token of the run's own that the WebSocket's URL
 /// must carry. Runs on the simulation's thread: the network is served only from serve_now()
 /// and serve_for(), between simulated milliseconds, so pages act on the run only there.
+/// A page gets its next update only once its previous messages have gone (back-pressure): its
+/// session accumulates meanwhile, so a slow page gets fewer, larger updates and no lost stroke.
 class LiveViewServer : public LiveView {
  public:
   /// Listens on 127.0.0.1:`port` (0: any free port). Throws std::runtime_error.

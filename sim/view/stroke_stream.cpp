@@ -32,6 +32,7 @@ void StrokeStream::keep_final_points(const Polyline& stroke, bool finished) {
 
 std::vector<StrokePart> StrokeStream::take(const std::vector<Polyline>& strokes, size_t max_points) {
   std::vector<StrokePart> parts;
+  behind_ = false;
   size_t budget = std::max<size_t>(max_points, 1);
   while (done_ < strokes.size() && budget > 0) {
     const Polyline& stroke = strokes[done_];
@@ -48,6 +49,7 @@ std::vector<StrokePart> StrokeStream::take(const std::vector<Polyline>& strokes,
       budget -= std::min<size_t>(budget, 1);
     }
     if (!part.points.empty()) parts.push_back(std::move(part));
+    behind_ = !all_kept_sent || (budget == 0 && done_ + 1 < strokes.size());
     if (!finished || !all_kept_sent) break;
     ++done_;
     kept_.clear();

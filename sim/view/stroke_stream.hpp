@@ -33,6 +33,8 @@ class StrokeStream {
   std::vector<StrokePart> take(const std::vector<Polyline>& strokes, size_t max_points);
   /// Strokes whose every point has been sent (their last point included).
   size_t strokes_done() const { return done_; }
+  /// Whether the last take() stopped at `max_points` with points left to send.
+  bool behind() const { return behind_; }
 
  private:
   /// Appends to `kept_` the final points of `stroke` from source index `source_` on (all of
@@ -43,6 +45,7 @@ class StrokeStream {
   std::vector<PenPoint> kept_;  ///< the current stroke's final kept points (decimated)
   size_t source_ = 0;        ///< source points of the current stroke already looked at
   size_t sent_ = 0;          ///< kept_ points the page has
+  bool behind_ = false;      ///< the last take() ran out of budget
 };
 
 }  // namespace stepdance::sim::view

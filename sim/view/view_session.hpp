@@ -24,7 +24,10 @@ constexpr double kMaxUpdatesPerSecond = 60;
 constexpr size_t kMaxInputBytes = 4096;
 /// Points of the drawing per update at most; the rest follow in the next updates.
 constexpr size_t kMaxPointsPerUpdate = 4000;
-/// Console text kept per board between two updates; older bytes are dropped and counted.
+/// Console text kept per board between two updates; older bytes are dropped and counted (the
+/// update's "dropped_bytes"). The drawing has no such cap: its updates wait for a page that
+/// does not read (the front end makes the next update only when the last one has gone) and
+/// the next one carries every point since, so no stroke is ever dropped.
 constexpr size_t kMaxConsoleBytesPerUpdate = 16384;
 
 /// One page (a WebSocket client, a Web Worker's page) attached to a running simulation. It
@@ -46,6 +49,8 @@ class ViewSession {
   std::string update_now();
   /// The page's message `text`: applies it and returns the replies (an error, a drawing).
   std::vector<std::string> receive(std::string_view text);
+  /// Whether the last update left points of the drawing for the next (kMaxPointsPerUpdate).
+  bool strokes_behind() const { return strokes_.behind(); }
   /// Bytes board `board` printed on its console (the front end passes them on).
   void console_output(const std::string& board, const uint8_t* data, size_t length);
 

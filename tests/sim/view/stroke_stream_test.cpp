@@ -100,6 +100,26 @@ TEST(StrokeStream, AGrowingStrokeWithAMovingHeadEndsAsTheWholeStrokeWouldBeSent)
   EXPECT_EQ(page.strokes[1], (Polyline{{20, 20}}));
 }
 
+TEST(StrokeStream, SaysWhenAnUpdateLeftPointsForTheNext) {
+  // Three strokes of 2 points 1 mm apart (nothing merged), 6 points in all, and a budget of 3:
+  // the first take stops inside the second stroke (behind), the second sends the rest.
+  const std::vector<Polyline> strokes{{{0, 0}, {1, 0}}, {{0, 1}, {1, 1}}, {{0, 2}, {1, 2}}};
+  StrokeStream stream;
+  PageStrokes page;
+  page.apply(stream.take(strokes, 3));
+  EXPECT_TRUE(stream.behind());
+  page.apply(stream.take(strokes, 3));
+  EXPECT_FALSE(stream.behind());
+  EXPECT_EQ(page.strokes, strokes);
+  // A budget used up exactly at the end of a finished stroke, with another one after it: behind.
+  StrokeStream exact;
+  exact.take(strokes, 2);
+  EXPECT_TRUE(exact.behind());
+  // Everything sent: not behind, however often asked.
+  page.apply(stream.take(strokes, 3));
+  EXPECT_FALSE(stream.behind());
+}
+
 TEST(StrokeStream, NothingNewGivesNoParts) {
   const std::vector<Polyline> strokes{{{1, 1}, {2, 2}}, {{3, 3}}};
   StrokeStream stream;
