@@ -1,93 +1,92 @@
 #!/usr/bin/python3
 """Benchmark (not a test): what the live view costs a run at --speed max, and what it sends.
 
-Runs SCENARIO live at --speed max twice: alone, then with --view and one page (a plain
-WebSocket client that reads every message, as a browser tab would) connected as soon as the
-address is announced. Prints each run's computing time from its closing report, the view's
-share, and the messages and bytes the page received per simulated second.
+Runs SCENARIO live at --speed max alone, then with --view and one page (a plain WebSocket
+client that reads every message, as a browser tab would) connected as soon as the address is
+announced, REPEAT times each, alternating. Prints each run's computing time (from its closing
+report), the view's share (the medians' ratio), and what the page received.
 
-Usage: bench/view_cost.py [SCENARIO] [SECONDS] [STEPDANCE_BINARY]
-       (default examples/StepASketch/scenario.toml 42 build/stepdance; a live run lasts until
-       interrupted, so SECONDS is its --duration)
+With --callgrind each run is counted in instructions under valgrind's callgrind instead, which
+does not depend on the machine's load. Under callgrind the run is some 50 times slower in wall
+time, and the view updates up to 60 times per second of wall time, so it then sends some 50
+times more updates per simulated second than natively: the share it reports is an upper bound.
+
+Usage: bench/view_cost.py [SCENARIO] [--seconds S] [--repeat N] [--callgrind] [--stepdance BINARY]
+       (default examples/StepASketch/scenario.toml, 42 s of simulated time: a live run lasts
+       until interrupted, so S is its --duration)
 """
-import base64
+import argparse
 import os
 import re
-import socket
-import struct
+import statistics
 import subprocess
-import sys
-import threading
+import tempfile
+
+from view_stream import Page  # the page: a WebSocket client reading whole messages
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SCENARIO = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "examples", "StepASketch", "scenario.toml")
-DURATION_S = sys.argv[2] if len(sys.argv) > 2 else "42"
-STEPDANCE = sys.argv[3] if len(sys.argv) > 3 else os.path.join(ROOT, "build", "stepdance")
 REPORT = re.compile(r"simulated ([\d.]+) s in ([\d.]+) s of wall time \(live; ([\d.]+) s of it computing")
 
 
-def read_page(port, token, totals):
-    connection = socket.create_connection(("127.0.0.1", port))
-    key = base64.b64encode(os.urandom(16)).decode()
-    connection.sendall((f"GET /ws?token={token} HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\nUpgrade: websocket\r\n"
-                        f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
-                        f"Origin: http://127.0.0.1:{port}\r\n\r\n").encode())
-    data = b""
-    while b"\r\n\r\n" not in data:
-        data += connection.recv(4096)
-    data = data.split(b"\r\n\r\n", 1)[1]
-
-    def take(count):
-        nonlocal data
-        while len(data) < count:
-            chunk = connection.recv(1 << 16)
-            if not chunk:
-                raise EOFError
-            data += chunk
-        out, data = data[:count], data[count:]
-        return out
-    try:
-        while True:
-            first, second = take(2)
-            length = second & 0x7F
-            if length == 126:
-                length = struct.unpack(">H", take(2))[0]
-            elif length == 127:
-                length = struct.unpack(">Q", take(8))[0]
-            take(length)
-            if first & 0x0F == 8:
-                break
-            totals["messages"] += 1
-            totals["bytes"] += length
-    except (EOFError, OSError):
-        pass
+def callgrind_instructions(path):
+    with open(path) as counts:
+        for line in counts:
+            if line.startswith("summary:") or line.startswith("totals:"):
+                return int(line.split()[1])
+    raise RuntimeError("no instruction total in " + path)
 
 
-def run(view):
-    command = [STEPDANCE, "sim", SCENARIO, "--live", "--speed", "max", "--duration", DURATION_S, "--out", "/tmp/stepdance-view-cost", "--no-vcd"]
+def run(args, view):
+    """One live run: (simulated s, cost, messages, bytes); cost is s computing or instructions."""
+    out_dir = tempfile.mkdtemp(prefix="stepdance-view-cost-")
+    command = [args.stepdance, "sim", args.scenario, "--live", "--speed", "max", "--duration", args.seconds,
+               "--out", out_dir, "--no-vcd"]
     if view:
         command.append("--view")
+    counts = os.path.join(out_dir, "callgrind.out")
+    if args.callgrind:
+        command = ["valgrind", "--tool=callgrind", "--callgrind-out-file=" + counts] + command
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-    totals = {"messages": 0, "bytes": 0}
-    reader = None
+    page, simulated, computing = None, 0.0, 0.0
     for line in process.stdout:
         match = re.match(r"view: http://127\.0\.0\.1:(\d+)/\?token=(\w+)", line)
         if match:
-            reader = threading.Thread(target=read_page, args=(int(match.group(1)), match.group(2), totals))
-            reader.start()
+            page = Page(int(match.group(1)), match.group(2))
         report = REPORT.search(line)
         if report:
             simulated, computing = float(report.group(1)), float(report.group(3))
     process.wait()
-    if reader:
-        reader.join(timeout=10)
-    return simulated, computing, totals
+    messages, sent = 0, 0
+    if page:
+        page.thread.join(timeout=10)
+        messages, sent = len(page.records), sum(record[2] for record in page.records)
+    cost = callgrind_instructions(counts) if args.callgrind else computing
+    return simulated, cost, messages, sent
 
 
-alone_s, alone_computing, _ = run(False)
-viewed_s, viewed_computing, totals = run(True)
-print(f"alone:     {alone_s:.3f} s simulated, {alone_computing:.3f} s computing")
-print(f"with view: {viewed_s:.3f} s simulated, {viewed_computing:.3f} s computing "
-      f"(+{100 * (viewed_computing / alone_computing - 1):.1f} %)")
-print(f"page received {totals['messages']} messages, {totals['bytes']} bytes: "
-      f"{totals['messages'] / viewed_s:.1f} messages and {totals['bytes'] / viewed_s / 1024:.1f} KiB per simulated second")
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("scenario", nargs="?", default=os.path.join(ROOT, "examples", "StepASketch", "scenario.toml"))
+    parser.add_argument("--seconds", default="42")
+    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("--callgrind", action="store_true")
+    parser.add_argument("--stepdance", default=os.path.join(ROOT, "build", "stepdance"))
+    args = parser.parse_args()
+    alone, viewed = [], []
+    for _ in range(args.repeat):
+        alone.append(run(args, False))
+        viewed.append(run(args, True))
+    unit = "instructions" if args.callgrind else "s computing"
+    alone_cost = statistics.median(r[1] for r in alone)
+    viewed_cost = statistics.median(r[1] for r in viewed)
+    print(f"{args.scenario}, {args.seconds} s simulated at --speed max, {args.repeat} runs each")
+    print(f"  alone:     {', '.join(f'{r[1]:.6g}' for r in alone)} {unit}")
+    print(f"  with view: {', '.join(f'{r[1]:.6g}' for r in viewed)} {unit}")
+    print(f"  the view's cost (medians): +{100 * (viewed_cost / alone_cost - 1):.1f} %")
+    for simulated, _, messages, sent in viewed:
+        print(f"  page received {messages} messages, {sent} bytes "
+              f"({messages / simulated:.2f} messages, {sent / simulated / 1024:.2f} KiB per simulated second)")
+
+
+if __name__ == "__main__":
+    main()

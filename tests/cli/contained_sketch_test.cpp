@@ -107,8 +107,9 @@ TEST(ContainedSketch, TheOutputsAreWrittenWhenASketchIsStopped) {
 
 // SIGTERM (and Ctrl-C) end a batch run stuck in a sketch within a second, writing the outputs,
 // with 128 + the signal's number. A first run, ended by a short watchdog, compiles the sketch into
-// the cache, so the signal of the second reaches a run that is in loop() even on a loaded machine,
-// not one still compiling.
+// the cache; the signal goes to the second once it has spent 1 s of processor time (loading takes
+// far less; the busy loop() takes all it gets), so it reaches a run that is in loop() however
+// loaded the machine is, not one still loading.
 TEST(ContainedSketch, SigtermEndsAStuckBatchRunWithItsOutputs) {
   const std::string scratch = test_output_dir("contained_sigterm");
   std::filesystem::create_directories(scratch);
@@ -116,7 +117,9 @@ TEST(ContainedSketch, SigtermEndsAStuckBatchRunWithItsOutputs) {
                               "/warm-up --watchdog-s 0.2 >/dev/null 2>&1; ";
   const std::string command = warm_up + kStepdance + " sim " + fixture("BusyLoop") + " --out " + scratch +
                               "/out --watchdog-s 60 >" + scratch + "/stdout.txt 2>" + scratch +
-                              "/stderr.txt & pid=$!; sleep 1.5; kill -TERM $pid; start=$(date +%s%N); wait $pid; "
+                              "/stderr.txt & pid=$!; ticks=$(getconf CLK_TCK); for i in $(seq 600); do "
+                              "kill -0 $pid 2>/dev/null || break; [ $(cut -d\\) -f2 /proc/$pid/stat | cut -d\\  -f13) -ge $ticks ] && break; sleep 0.05; done; "
+                              "kill -TERM $pid; start=$(date +%s%N); wait $pid; "
                               "status=$?; echo $(( ($(date +%s%N) - start) / 1000000 )) >" + scratch +
                               "/ms.txt; exit $status";
   const int status = std::system(("bash -c '" + command + "'").c_str());

@@ -13,15 +13,15 @@ const view = (window.stepdanceView = { hello: null, strokes: [], pen: null, t_s:
 
 // ---- transport -------------------------------------------------------------------------------
 
-/// A WebSocket to the server that served this page (the token comes from the page's address), or
-/// the transport a host page installed as window.stepdanceTransport ({send, onmessage, onstate}).
-function openTransport(onMessage, onState) {
-  if (window.stepdanceTransport) {
-    const transport = window.stepdanceTransport;
-    transport.onmessage = onMessage;
-    transport.onstate = onState;
-    return transport;
-  }
+// The page reaches the simulator only through a transport: a function (onMessage, onState) that
+// returns {send(text)}, calls onMessage(text) for each view-protocol message and onState("open"
+// or "closed") when the link changes. A host page picks one by setting window.stepdanceTransport
+// before this script runs (the replay page's recording, the WebAssembly build's Web Worker);
+// otherwise it is a WebSocket to the server that served this page. connect() at the end of this
+// file starts it, once everything below is ready for its first message.
+
+/// A WebSocket to the server that served this page (the token comes from the page's address).
+function webSocketTransport(onMessage, onState) {
   const token = new URLSearchParams(location.search).get("token") || "";
   const socket = new WebSocket(`ws://${location.host}/ws?token=${encodeURIComponent(token)}`);
   socket.onopen = () => onState("open");
@@ -30,13 +30,20 @@ function openTransport(onMessage, onState) {
   return { send: (text) => socket.readyState === WebSocket.OPEN && socket.send(text) };
 }
 
-const transport = openTransport(receive, (state) => {
+let transport = null;
+
+function connect() {
+  const open = window.stepdanceTransport || webSocketTransport;
+  transport = open(receive, showConnection);
+}
+
+function send(message) { if (transport) transport.send(JSON.stringify(message)); }
+
+function showConnection(state) {
   const label = document.getElementById("connection");
   label.textContent = state === "open" ? "connected" : "disconnected";
   label.className = "state " + state;
-});
-
-function send(message) { transport.send(JSON.stringify(message)); }
+}
 
 // ---- messages in -----------------------------------------------------------------------------
 
@@ -337,3 +344,5 @@ function onUpdate(update) {
   showBoards(update);
   showRun(update.run);
 }
+
+connect();
