@@ -1,5 +1,5 @@
-// Device kind "limit_switch": LimitSwitch on LIMIT_A..LIMIT_D watching a machine axis; no page
-// control (the machine trips it).
+// Device kind "limit_switch": LimitSwitch on LIMIT_A..LIMIT_D watching a machine axis, and a hand
+// that may hold it (press/release/click, a page button).
 #include "kinds/devices/limit_switch.hpp"
 
 #include "kinds/device_keys.hpp"
@@ -39,6 +39,33 @@ void read_axis(DeviceReading& reading, LimitSwitchConfig& config) {
   }
 }
 
+/// A limit switch the machine trips, which a hand may also hold closed (the timeline's press,
+/// release and click; the page's button): the line is active while either closes it.
+class LimitSwitchDevice : public ModelDevice<LimitSwitch> {
+ public:
+  LimitSwitchDevice(std::unique_ptr<LimitSwitch> model, std::shared_ptr<BouncingButton> hand)
+      : ModelDevice(std::move(model)), hand_(std::move(hand)) {}
+  void schedule(const scenario::Action& action) override {
+    switch (action.type) {
+      case scenario::ActionType::kPress: hand_->press(action.time); break;
+      case scenario::ActionType::kRelease: hand_->release(action.time); break;
+      case scenario::ActionType::kClick: hand_->click(action.time, action.hold); break;
+      default: break;
+    }
+  }
+
+ private:
+  std::shared_ptr<BouncingButton> hand_;
+};
+
+/// The hand on the switch: presses and releases only (the switch's own bounce_ms applies to the
+/// line, for the hand as for the machine).
+std::shared_ptr<BouncingButton> make_hand() {
+  ButtonSettings settings;
+  settings.bounce = 0;
+  return std::make_shared<BouncingButton>(settings);
+}
+
 std::any read(DeviceReading& reading) {
   LimitSwitchConfig config;
   read_bounded(reading.reader, "bounce_ms", kBounceMs, config.bounce_ms);
@@ -49,14 +76,16 @@ std::any read(DeviceReading& reading) {
 std::unique_ptr<SimDevice> build(const scenario::DeviceConfig& device, DevicePlug& plug) {
   const auto& config = *device.settings_as<LimitSwitchConfig>();
   const LimitSide side = config.active_above ? LimitSide::kAbove : LimitSide::kBelow;
-  auto built = std::make_unique<ModelDevice<LimitSwitch>>(std::make_unique<LimitSwitch>(config.axis, config.at_mm, side));
+  auto hand = make_hand();
+  auto built = std::make_unique<LimitSwitchDevice>(std::make_unique<LimitSwitch>(config.axis, config.at_mm, side), hand);
   const LimitSwitch* model = &built->model();
   std::function<const Machine*()> machine = plug.machine();
   auto bounce = std::make_shared<SwitchBounce>(static_cast<SimTime>(config.bounce_ms * 1e6 + 0.5),
                                                mix_seed(plug.seed(), static_cast<uint64_t>(device.line)));
-  plug.connect_digital(device.connector, [model, machine, bounce](SimTime time) {
+  plug.connect_digital(device.connector, [model, machine, bounce, hand](SimTime time) {
     const Machine* watched = machine();
-    return bounce->level(time, watched != nullptr && model->active(*watched));
+    const bool tripped = watched != nullptr && model->active(*watched);
+    return bounce->level(time, tripped || hand->pressed_at(time));
   });
   return built;
 }
@@ -73,8 +102,8 @@ const DeviceKind& limit_switch_kind() {
        DeviceKey{"side", DeviceKey::Type::kString}, number_key("bounce_ms", kBounceMs)},
       read,
       build,
-      0,
-      PageControl{},
+      actions({scenario::ActionType::kPress, scenario::ActionType::kRelease, scenario::ActionType::kClick}),
+      PageControl{PageControl::Type::kButton},
   };
   return kind;
 }

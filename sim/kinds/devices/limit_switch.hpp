@@ -1,4 +1,4 @@
-// Device kind "limit_switch": a switch on LIMIT_A..LIMIT_D tripped by the machine.
+// Device kind "limit_switch": a switch on LIMIT_A..LIMIT_D tripped by the machine or held by a hand.
 #pragma once
 
 #include "kinds/device_kind.hpp"

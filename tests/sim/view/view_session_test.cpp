@@ -92,6 +92,33 @@ counts = -2400
 over_s = 0.5
 )";
 
+TEST(ViewSession, ALimitSwitchIsAButtonToClickOrHold) {
+  // A switch at x = 0 on LIMIT_A: the machine trips it, and a hand may hold it (a page button).
+  auto simulation = make(R"(
+[[device]]
+name = "home_x"
+type = "limit_switch"
+board = "driver"
+connector = "LIMIT_A"
+axis = "x"
+at_mm = -5
+)",
+                         "view_limit_switch");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  const json hello = json::parse(session.hello());
+  const json& device = hello["boards"][0]["devices"][3];
+  EXPECT_EQ(device["name"], "home_x");
+  EXPECT_EQ(device["kind"], "limit_switch");
+  EXPECT_EQ(device["control"]["type"], "button");
+  for (const char* action : {"press", "release", "click"}) {
+    EXPECT_TRUE(session.receive(std::string(R"({"type":"input","device":"home_x","action":")") + action + "\"}").empty())
+        << action;
+  }
+  EXPECT_EQ(only_message(session.receive(R"({"type":"input","device":"home_x","action":"turn","counts":1})"))["message"],
+            "input: a limit switch does not take \"turn\"");
+}
+
 TEST(ViewSession, InputsGiveExactlyTheStepsAndStrokeOfTheSameTimelineActions) {
   auto scripted = make(kTimeline, "view_scripted");
   scripted->run_until(3 * kSecond);
