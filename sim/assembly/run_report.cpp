@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <tuple>
 
 #include "kinds/machine_kind.hpp"
 #include "output/png_page.hpp"
@@ -51,10 +52,7 @@ void set_shade_scale(DrawingStyle& style, const std::vector<Stroke>& strokes) {
     if (stroke.shade) low = std::min(low, *stroke.shade), high = std::max(high, *stroke.shade);
   }
   if (low > high) return;
-  const double middle = (low + high) / 2;
-  const double half = std::max((high - low) / 2, 0.25 * std::fabs(middle));
-  style.shade_low = middle - half;
-  style.shade_high = middle + half;
+  std::tie(style.shade_low, style.shade_high) = shade_scale_for(low, high);
 }
 
 // A machine with a fixed page (a CoreXY plotter's travel area) draws on it. Other machines have

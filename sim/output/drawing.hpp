@@ -1,7 +1,10 @@
 // Pen strokes in machine millimetres and the page they are drawn on (shared by the SVG and PNG writers).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -32,6 +35,15 @@ struct Rgb {
 /// The colour a fraction u (0–1) of the way from a to b.
 inline Rgb mix(const Rgb& a, const Rgb& b, double u) {
   return Rgb{a.r + (b.r - a.r) * u, a.g + (b.g - a.g) * u, a.b + (b.b - a.b) * u};
+}
+
+/// The colour scale for shades spanning [low, high]: that range, widened to at least ±25 % of
+/// its middle so the measuring noise of an even extrusion stays one colour. {low, high} of the
+/// scale; DrawingStyle::shade_low and shade_high take them.
+inline std::pair<double, double> shade_scale_for(double low, double high) {
+  const double middle = (low + high) / 2;
+  const double half = std::max((high - low) / 2, 0.25 * std::fabs(middle));
+  return {middle - half, middle + half};
 }
 
 /// How a drawing is laid out and drawn.

@@ -12,13 +12,21 @@ namespace stepdance::sim::view {
 /// first and last points are always kept.
 constexpr double kDisplayResolutionMm = 0.05;
 
+/// From point `point` of a stroke (the page's numbering) on, the stroke has shade `shade`.
+struct ShadeStart {
+  size_t point = 0;
+  double shade = 0;
+};
+
 /// One stroke's new part: the page keeps the first `from` points it has of stroke `index` and
 /// appends `points`. The last point of the last stroke may still move (the pen is drawing it);
-/// the next update then re-sends it.
+/// the next update then re-sends it. `shades`: where the stroke's shade changes among the new
+/// points (a shaded machine's marks, ShadeMark, renumbered for the page's points).
 struct StrokePart {
   size_t index = 0;
   size_t from = 0;
   std::vector<PenPoint> points;
+  std::vector<ShadeStart> shades;
 };
 
 /// Follows a machine's growing list of pen-down strokes (PenTrace: only a stroke's last point
@@ -30,7 +38,14 @@ class StrokeStream {
  public:
   /// What changed in `strokes` since the last call: at most about `max_points` points (a
   /// stroke's part is cut there and continued next call; at least one point is always sent).
-  std::vector<StrokePart> take(const std::vector<Polyline>& strokes, size_t max_points);
+  std::vector<StrokePart> take(const std::vector<Polyline>& strokes, size_t max_points) {
+    return take(strokes, {}, max_points);
+  }
+  /// The same, for a machine that shades its strokes: `marks` parallel to `strokes` (PenTrace).
+  /// A marked point is always kept (it ends one shaded piece and starts the next, as in the
+  /// SVG) and its mark is sent with it in the part's `shades`.
+  std::vector<StrokePart> take(const std::vector<Polyline>& strokes, const std::vector<std::vector<ShadeMark>>& marks,
+                               size_t max_points);
   /// Strokes whose every point has been sent (their last point included).
   size_t strokes_done() const { return done_; }
   /// Whether the last take() stopped at `max_points` with points left to send.
@@ -39,13 +54,18 @@ class StrokeStream {
  private:
   /// Appends to `kept_` the final points of `stroke` from source index `source_` on (all of
   /// them if the stroke is finished, all but its moving last point if not).
-  void keep_final_points(const Polyline& stroke, bool finished);
+  void keep_final_points(const Polyline& stroke, const std::vector<ShadeMark>& marks, bool finished);
+  /// Whether kept_'s last point starts a shade (it is then never replaced).
+  bool last_kept_is_marked() const { return !kept_marks_.empty() && kept_marks_.back().point + 1 == kept_.size(); }
 
   size_t done_ = 0;          ///< strokes complete on the page
   std::vector<PenPoint> kept_;  ///< the current stroke's final kept points (decimated)
   size_t source_ = 0;        ///< source points of the current stroke already looked at
   size_t sent_ = 0;          ///< kept_ points the page has
   bool behind_ = false;      ///< the last take() ran out of budget
+  size_t mark_ = 0;          ///< the current stroke's marks already kept
+  std::vector<ShadeStart> kept_marks_;  ///< the current stroke's marks, on kept_ points
+  size_t marks_sent_ = 0;    ///< kept_marks_ the page has
 };
 
 }  // namespace stepdance::sim::view

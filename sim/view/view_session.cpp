@@ -1,7 +1,9 @@
 // ViewSession: the view protocol's messages (hello, update, error, drawing) and its inputs.
 #include "view/view_session.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
@@ -76,6 +78,17 @@ std::optional<scenario::ActionType> action_named(const std::string& name) {
   return std::nullopt;
 }
 
+/// The SVG's colour scale for the machine's shades so far, if it has any.
+std::optional<std::pair<double, double>> shade_scale(const Machine& machine) {
+  if (machine.shade_name()[0] == '\0') return std::nullopt;
+  double low = std::numeric_limits<double>::max(), high = -low;
+  for (const std::vector<ShadeMark>& marks : machine.shade_marks()) {
+    for (const ShadeMark& mark : marks) low = std::min(low, mark.shade), high = std::max(high, mark.shade);
+  }
+  if (low > high) return std::nullopt;
+  return shade_scale_for(low, high);
+}
+
 }  // namespace
 
 ViewSession::ViewSession(Simulation& simulation, RunControl& control) : simulation_(simulation), control_(control) {
@@ -120,7 +133,8 @@ std::string ViewSession::hello() const {
   if (scenario.machine && simulation_.machine() != nullptr) {
     const DrawingStyle style;
     machine = {{"kind", std::string(scenario.machine->kind->name)}, {"margin_mm", style.margin_mm},
-               {"pen_width_mm", style.pen_width_mm}, {"page_mm", nullptr}, {"travel_mm", nullptr}};
+               {"pen_width_mm", style.pen_width_mm}, {"page_mm", nullptr}, {"travel_mm", nullptr},
+               {"shade_name", simulation_.machine()->shade_name()}};
     const MachineKind& kind = *scenario.machine->kind;
     if (const auto page = kind.page ? kind.page(*scenario.machine) : std::nullopt) {
       machine["page_mm"] = {page->x_min_mm, page->x_max_mm, page->y_min_mm, page->y_max_mm};
@@ -190,12 +204,19 @@ std::string ViewSession::update_now() {
     message["pen"] = {{"x_mm", machine->pen_position().x_mm}, {"y_mm", machine->pen_position().y_mm},
                       {"down", machine->pen_down()}};
     json parts = json::array();
-    for (const StrokePart& part : strokes_.take(machine->strokes(), kMaxPointsPerUpdate)) {
+    for (const StrokePart& part : strokes_.take(machine->strokes(), machine->shade_marks(), kMaxPointsPerUpdate)) {
       json points = json::array();
       for (const PenPoint& point : part.points) points.push_back(point_json(point));
-      parts.push_back({{"i", part.index}, {"from", part.from}, {"points", std::move(points)}});
+      json entry = {{"i", part.index}, {"from", part.from}, {"points", std::move(points)}};
+      if (!part.shades.empty()) {
+        json shades = json::array();
+        for (const ShadeStart& start : part.shades) shades.push_back(json::array({start.point, start.shade}));
+        entry["shades"] = std::move(shades);
+      }
+      parts.push_back(std::move(entry));
     }
     message["strokes"] = std::move(parts);
+    if (const auto scale = shade_scale(*machine)) message["shade_scale"] = json::array({scale->first, scale->second});
   }
   message["motors"] = motors_json(to_seconds(now - last_update_sim_));
   last_update_sim_ = now;

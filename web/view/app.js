@@ -9,7 +9,7 @@ const SVG_NS = "http://www.w3.org/2000/svg";
 const SHORTEST_PRESS_MS = 100;
 
 // What tests read (and nothing else needs): the drawing and state as received.
-const view = (window.stepdanceView = { hello: null, strokes: [], pen: null, t_s: 0, errors: [], updates: 0, drawings: [] });
+const view = (window.stepdanceView = { hello: null, strokes: [], shades: [], shadeScale: null, pen: null, t_s: 0, errors: [], updates: 0, drawings: [] });
 
 // ---- transport -------------------------------------------------------------------------------
 
@@ -105,17 +105,56 @@ function pointsText(points) {
   return list.map(([x, y]) => `${x},${y}`).join(" ");
 }
 
-function applyStrokes(parts) {
+/// "#rrggbb" of a shade on the SVG's scale [low, high]: blue (0, 0, 0.8) at low, dark green
+/// (0, 0.6, 0) in the middle, red (0.8, 0, 0) at high, two straight ramps, clamped outside
+/// (docs/simulator.md, "The view protocol"; the same arithmetic as the SVG writer's).
+function shadeColour(shade, [low, high]) {
+  const span = high - low;
+  let t = span > 0 ? (shade - low) / span : 0.5;
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  const mix = (a, b, u) => a.map((value, k) => value + (b[k] - value) * u);
+  const rgb = t < 0.5 ? mix([0, 0, 0.8], [0, 0.6, 0], 2 * t) : mix([0, 0.6, 0], [0.8, 0, 0], 2 * t - 1);
+  return "#" + rgb.map((channel) => Math.floor(channel * 255 + 0.5).toString(16).padStart(2, "0")).join("");
+}
+
+/// Stroke i as the SVG draws it: one black polyline, or for a shaded stroke one polyline per
+/// shade, each from its shade's first point to the next one's, in its colour.
+function renderStroke(i) {
+  const group = drawing.lines[i];
+  const points = view.strokes[i];
+  const shades = view.shades[i];
+  const pieces = shades.length === 0 || !view.shadeScale ? [{ points, colour: null }]
+    : shades.map(([from, shade], j) => ({
+      points: points.slice(from, j + 1 < shades.length ? shades[j + 1][0] + 1 : points.length),
+      colour: shadeColour(shade, view.shadeScale),
+    }));
+  while (group.children.length > pieces.length) group.lastChild.remove();
+  while (group.children.length < pieces.length) svgElement("polyline", {}, group);
+  pieces.forEach((piece, j) => {
+    const line = group.children[j];
+    line.setAttribute("points", pointsText(piece.points));
+    if (piece.colour) line.setAttribute("stroke", piece.colour); else line.removeAttribute("stroke");
+  });
+}
+
+function applyStrokes(parts, shadeScale) {
+  const scaleChanged = JSON.stringify(shadeScale || null) !== JSON.stringify(view.shadeScale);
+  view.shadeScale = shadeScale || null;
+  const changed = new Set();
   for (const part of parts) {
     while (view.strokes.length <= part.i) {
       view.strokes.push([]);
-      drawing.lines.push(svgElement("polyline", {}, drawing.strokes));
+      view.shades.push([]);
+      drawing.lines.push(svgElement("g", { class: "stroke" }, drawing.strokes));
     }
     const stroke = view.strokes[part.i];
     stroke.length = part.from;
     for (const point of part.points) stroke.push(point);
-    drawing.lines[part.i].setAttribute("points", pointsText(stroke));
+    view.shades[part.i] = view.shades[part.i].filter(([from]) => from < part.from).concat(part.shades || []);
+    changed.add(part.i);
   }
+  if (scaleChanged) view.shades.forEach((shades, i) => { if (shades.length > 0) changed.add(i); });
+  for (const i of changed) renderStroke(i);
   if (!drawing.fixedPage && parts.length > 0) fitToDrawing();
 }
 
@@ -159,6 +198,8 @@ function onHello(hello) {
   if (hello.version !== PROTOCOL_VERSION) return showError(`the simulator speaks view protocol ${hello.version}, this page ${PROTOCOL_VERSION}`);
   view.hello = hello;
   view.strokes = [];
+  view.shades = [];
+  view.shadeScale = null;
   setUpDrawing(hello.machine);
   const container = document.getElementById("boards");
   container.replaceChildren();
@@ -338,7 +379,7 @@ function onUpdate(update) {
   view.updates += 1;
   view.t_s = update.t_s;
   document.getElementById("sim-time").textContent = `t = ${update.t_s.toFixed(3)} s`;
-  if (update.strokes) applyStrokes(update.strokes);
+  if (update.strokes) applyStrokes(update.strokes, update.shade_scale);
   if (update.pen) showPen(update.pen);
   view.motors = update.motors;
   showBoards(update);

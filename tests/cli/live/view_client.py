@@ -33,6 +33,31 @@ def svg_strokes(path):
     return strokes
 
 
+def svg_pieces(path):
+    """The pen-down polylines of a run's SVG with their colour: [(points, "#rrggbb" or None)]."""
+    pieces = []
+    for group in ElementTree.parse(path).iter():
+        if not group.tag.endswith("}g") or group.get("stroke-dasharray") is not None:
+            continue
+        for element in group:
+            if element.tag.endswith("polyline"):
+                numbers = [float(n) for n in re.split(r"[ ,]+", element.get("points").strip())]
+                pieces.append((list(zip(numbers[0::2], numbers[1::2])), element.get("stroke")))
+    return pieces
+
+
+def page_pieces_from_dom(browser):
+    """The page's polylines under #strokes with their own colour: [(points, "#rrggbb" or None)]."""
+    found = browser.execute_script(
+        "return Array.from(document.querySelectorAll('#strokes polyline'))"
+        ".map(p => [p.getAttribute('points') || '', p.getAttribute('stroke')]);")
+    pieces = []
+    for text, colour in found:
+        numbers = [float(n) for n in re.split(r"[ ,]+", text.strip())] if text.strip() else []
+        pieces.append((list(zip(numbers[0::2], numbers[1::2])), colour))
+    return pieces
+
+
 def page_strokes_from_dom(browser):
     """The strokes the page drew: the points of each polyline under #strokes, as (x, y) lists."""
     texts = browser.execute_script(

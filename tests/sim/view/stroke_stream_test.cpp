@@ -120,6 +120,41 @@ TEST(StrokeStream, SaysWhenAnUpdateLeftPointsForTheNext) {
   EXPECT_FALSE(stream.behind());
 }
 
+TEST(StrokeStream, AShadeStartIsNeverMergedAndArrivesWithItsPoint) {
+  // 0, 0.02, …, 0.2 mm (11 points): unshaded, every third is kept (0, 0.06, 0.12, 0.18) and the
+  // end 0.2 replaces 0.18. A shade starting at 0.02 mm (index 1) keeps that point however close.
+  const std::vector<Polyline> strokes{fine_line(11, 0), {{9, 9}}};
+  const std::vector<std::vector<ShadeMark>> marks{{{0, 1.5}, {1, 2.5}}, {}};
+  StrokeStream stream;
+  const std::vector<StrokePart> parts = stream.take(strokes, marks, 100000);
+  ASSERT_GE(parts.size(), 1u);
+  const StrokePart& first = parts[0];
+  ASSERT_EQ(first.shades.size(), 2u);
+  EXPECT_EQ(first.shades[0].point, 0u);
+  EXPECT_EQ(first.shades[0].shade, 1.5);
+  EXPECT_EQ(first.points[first.shades[1].point], (PenPoint{0.02, 0}));
+  EXPECT_EQ(first.shades[1].shade, 2.5);
+  EXPECT_EQ(first.points.back(), (PenPoint{0.2, 0}));
+}
+
+TEST(StrokeStream, AFirstShadeMeasuredLateStillStartsTheStroke) {
+  // PenTrace gives a stroke its first shade from point 0 once measured, after points were sent.
+  std::vector<Polyline> strokes{{{0, 0}, {1, 0}, {2, 0}}};
+  std::vector<std::vector<ShadeMark>> marks{{}};
+  StrokeStream stream;
+  PageStrokes page;
+  const std::vector<StrokePart> before = stream.take(strokes, marks, 100);
+  ASSERT_EQ(before.size(), 1u);
+  EXPECT_TRUE(before[0].shades.empty());
+  strokes[0].push_back({3, 0});
+  marks[0].push_back({0, 7});
+  const std::vector<StrokePart> after = stream.take(strokes, marks, 100);
+  ASSERT_EQ(after.size(), 1u);
+  ASSERT_EQ(after[0].shades.size(), 1u);
+  EXPECT_EQ(after[0].shades[0].point, 0u);
+  EXPECT_EQ(after[0].shades[0].shade, 7);
+}
+
 TEST(StrokeStream, NothingNewGivesNoParts) {
   const std::vector<Polyline> strokes{{{1, 1}, {2, 2}}, {{3, 3}}};
   StrokeStream stream;
