@@ -7,6 +7,7 @@
 
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
+#include "models/polar_turntable.hpp"
 #include "models/quadrature_encoder.hpp"
 #include "models/ssd1306_display.hpp"
 #include "output/drawing.hpp"
@@ -216,6 +217,9 @@ std::string ViewSession::update_now() {
       parts.push_back(std::move(entry));
     }
     message["strokes"] = std::move(parts);
+    if (const auto* table = dynamic_cast<const PolarTurntable*>(machine)) {
+      message["table"] = {{"angle_rad", table->angle_rad()}, {"radius_mm", table->radius_mm()}};
+    }
     if (const auto scale = shade_scale(*machine)) message["shade_scale"] = json::array({scale->first, scale->second});
   }
   message["motors"] = motors_json(to_seconds(now - last_update_sim_));

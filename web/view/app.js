@@ -67,7 +67,8 @@ function showError(text) {
 
 // ---- the machine from above ------------------------------------------------------------------
 
-const drawing = { svg: document.getElementById("drawing"), layer: null, pen: null, lines: [], fixedPage: false };
+const drawing = { svg: document.getElementById("drawing"), layer: null, pen: null, lines: [], fixedPage: false,
+  turntable: false, table: null, paper: null, arm: null, tableRadius: null };
 
 function svgElement(name, attributes, parent) {
   const element = document.createElementNS(SVG_NS, name);
@@ -82,6 +83,7 @@ function setUpDrawing(machine) {
   const svg = drawing.svg;
   svg.replaceChildren();
   drawing.lines = [];
+  drawing.tableRadius = null;
   if (!machine) { svg.setAttribute("viewBox", "0 0 100 20"); return; }
   const margin = machine.margin_mm;
   const page = machine.page_mm || machine.travel_mm;
@@ -96,8 +98,29 @@ function setUpDrawing(machine) {
     svgElement("rect", { x: tx0, y: ty0, width: tx1 - tx0, height: ty1 - ty0, stroke: "#bbb",
       "stroke-width": 0.3, "stroke-dasharray": "2 2", id: "travel-area" }, drawing.layer);
   }
-  drawing.strokes = svgElement("g", { stroke: "black", "stroke-width": machine.pen_width_mm, id: "strokes" }, drawing.layer);
-  drawing.pen = svgElement("circle", { r: 2, id: "pen", class: "up", "stroke-width": 0.4, stroke: "#c22", fill: "none" }, drawing.layer);
+  // A turntable: the table seen from above, the paper on it turned by the table's angle (the
+  // drawing in paper mm inside), the radial arm fixed along +x from the centre.
+  let paper = drawing.layer;
+  drawing.turntable = machine.kind === "polar";
+  if (drawing.turntable) {
+    drawing.table = svgElement("circle", { cx: 0, cy: 0, r: 10, fill: "#f4efe4", stroke: "#bbb", "stroke-width": 0.5, id: "turntable" }, drawing.layer);
+    paper = drawing.paper = svgElement("g", { id: "paper", transform: "rotate(0)" }, drawing.layer);
+    svgElement("line", { x1: -3, y1: 0, x2: 3, y2: 0, stroke: "#bbb", "stroke-width": 0.4 }, paper);  // the paper's own axes,
+    svgElement("line", { x1: 0, y1: -3, x2: 0, y2: 3, stroke: "#bbb", "stroke-width": 0.4 }, paper);  // to see it turn
+  }
+  drawing.strokes = svgElement("g", { stroke: "black", "stroke-width": machine.pen_width_mm, id: "strokes" }, paper);
+  if (drawing.turntable) drawing.arm = svgElement("line", { x1: 0, y1: 0, x2: 0, y2: 0, stroke: "#666", "stroke-width": 1.5, "stroke-linecap": "round", id: "arm" }, drawing.layer);
+  drawing.pen = svgElement("circle", { r: 2, id: "pen", class: "up", "stroke-width": 0.4, stroke: "#c22", fill: "none" }, paper);
+}
+
+/// The turntable's state: the paper turned by the table's angle (SVG's rotate() maps paper mm to
+/// the table's as the machine does: r(cos −θ, sin −θ) on the paper lies at (r, 0)), the arm out to
+/// the pen's radius, the table as large as the drawing and the arm need.
+function showTable(table) {
+  view.table = table;
+  drawing.paper.setAttribute("transform", `rotate(${(table.angle_rad * 180) / Math.PI})`);
+  drawing.arm.setAttribute("x2", table.radius_mm);
+  fitToDrawing();
 }
 
 function pointsText(points) {
@@ -158,8 +181,10 @@ function applyStrokes(parts, shadeScale) {
   if (!drawing.fixedPage && parts.length > 0) fitToDrawing();
 }
 
-/// A machine without a fixed page: the view follows the drawing's bounding box.
+/// A machine without a fixed page: the view follows the drawing's bounding box (a turntable's:
+/// the circle around the centre holding the drawing and the arm).
 function fitToDrawing() {
+  if (drawing.turntable) return fitTable();
   let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
   for (const stroke of view.strokes) for (const [x, y] of stroke) {
     x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
@@ -167,6 +192,17 @@ function fitToDrawing() {
   if (!(x0 <= x1)) return;
   const margin = view.hello.machine.margin_mm;
   drawing.svg.setAttribute("viewBox", `${x0 - margin} ${y0 - margin} ${Math.max(x1 - x0, 10) + 2 * margin} ${Math.max(y1 - y0, 10) + 2 * margin}`);
+  drawing.layer.setAttribute("transform", "");
+}
+
+function fitTable() {
+  let radius = Math.max(10, view.table ? Math.abs(view.table.radius_mm) : 0);
+  for (const stroke of view.strokes) for (const [x, y] of stroke) radius = Math.max(radius, Math.hypot(x, y));
+  if (radius === drawing.tableRadius) return;
+  drawing.tableRadius = radius;
+  const half = radius + view.hello.machine.margin_mm;
+  drawing.table.setAttribute("r", radius);
+  drawing.svg.setAttribute("viewBox", `${-half} ${-half} ${2 * half} ${2 * half}`);
   drawing.layer.setAttribute("transform", "");
 }
 
@@ -200,6 +236,7 @@ function onHello(hello) {
   view.strokes = [];
   view.shades = [];
   view.shadeScale = null;
+  view.table = null;
   setUpDrawing(hello.machine);
   const container = document.getElementById("boards");
   container.replaceChildren();
@@ -381,6 +418,7 @@ function onUpdate(update) {
   document.getElementById("sim-time").textContent = `t = ${update.t_s.toFixed(3)} s`;
   if (update.strokes) applyStrokes(update.strokes, update.shade_scale);
   if (update.pen) showPen(update.pen);
+  if (update.table && drawing.turntable) showTable(update.table);
   view.motors = update.motors;
   showBoards(update);
   showRun(update.run);
