@@ -82,6 +82,13 @@ FiveBarArm::FiveBarArm(const FiveBarArmSettings& settings) : settings_(settings)
 }
 
 bool FiveBarArm::stylus_for(double right_rad, double left_rad, PenPoint& stylus) const {
+  Linkage linkage;
+  if (!linkage_for(right_rad, left_rad, linkage)) return false;
+  stylus = linkage.t;
+  return true;
+}
+
+bool FiveBarArm::linkage_for(double right_rad, double left_rad, Linkage& linkage) const {
   const FiveBarArmSettings& g = settings_;
   const Vec c{g.s_mm / 2 + g.l1_mm * std::cos(right_rad), -g.l1_mm * std::sin(right_rad)};
   const Vec d{-g.s_mm / 2 + g.l2_mm * std::cos(left_rad), -g.l2_mm * std::sin(left_rad)};
@@ -93,7 +100,8 @@ bool FiveBarArm::stylus_for(double right_rad, double left_rad, PenPoint& stylus)
   const double cs = std::cos(-g.a6_rad), sn = std::sin(-g.a6_rad);
   const Vec offset{cs * toward_c.x - sn * toward_c.y, sn * toward_c.x + cs * toward_c.y};
   const Vec t = e + g.l5_mm * offset;
-  stylus = {t.x, -t.y};
+  const auto reported = [](Vec v) { return PenPoint{v.x, -v.y}; };  // y mirrored: drawing side positive
+  linkage = {reported({g.s_mm / 2, 0}), reported({-g.s_mm / 2, 0}), reported(c), reported(d), reported(e), reported(t)};
   return true;
 }
 

@@ -81,6 +81,17 @@ class FiveBarArm {
   /// The forward map (radians → mm, drawing side positive); false when the links cannot meet.
   bool stylus_for(double right_rad, double left_rad, PenPoint& stylus) const;
 
+  /// The linkage's joints (mm, drawing side positive, as the stylus): the pivots, the right and
+  /// left arms' ends C and D, the elbow E and the stylus T.
+  struct Linkage {
+    PenPoint right_pivot, left_pivot, c, d, e, t;
+  };
+  /// The linkage where the encoders were last read (the arm does not move for the asking);
+  /// false when its links cannot meet.
+  bool last_linkage(Linkage& linkage) const { return linkage_for(pose_.right, pose_.left, linkage); }
+  /// The linkage at joint angles (radians); false when the links cannot meet.
+  bool linkage_for(double right_rad, double left_rad, Linkage& linkage) const;
+
  private:
   struct Angles {
     double right = 0;

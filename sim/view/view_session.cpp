@@ -7,6 +7,7 @@
 
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
+#include "models/five_bar_arm.hpp"
 #include "models/polar_turntable.hpp"
 #include "models/quadrature_encoder.hpp"
 #include "models/ssd1306_display.hpp"
@@ -240,6 +241,16 @@ std::string ViewSession::update_now() {
     }
   }
   if (!screens.empty()) message["screens"] = std::move(screens);
+  json arms = json::array();
+  for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
+    FiveBarArm::Linkage linkage;
+    if (const auto* arm = model_of<FiveBarArm>(simulation_.device(device.name)); arm && arm->last_linkage(linkage)) {
+      arms.push_back({{"device", device.name}, {"right_pivot", point_json(linkage.right_pivot)},
+                      {"left_pivot", point_json(linkage.left_pivot)}, {"c", point_json(linkage.c)},
+                      {"d", point_json(linkage.d)}, {"e", point_json(linkage.e)}, {"t", point_json(linkage.t)}});
+    }
+  }
+  if (!arms.empty()) message["arms"] = std::move(arms);
   return message.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 

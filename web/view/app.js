@@ -257,6 +257,7 @@ function buildBoard(board, container) {
     if (control.type === "knob_with_button" || control.type === "button") addButton(holder, device);
     if (control.type === "slider") addSlider(holder, device);
     if (control.type === "screen") screens.set(device.name, element("canvas", { class: "screen", width: 128, height: 32, id: `screen-${device.name}` }, holder));
+    if (device.kind === "five_bar_arm") addArm(holder, device);
     element("label", {}, holder, `${device.name} · ${device.connector}`);
   }
   const figures = element("table", { class: "figures" }, box);
@@ -332,6 +333,34 @@ function addButton(holder, device) {
   });
   button.addEventListener("pointerup", release);
   button.addEventListener("pointercancel", release);
+}
+
+/// A five-bar arm (the pantograph): its linkage from above, as the updates' "arms" give it.
+function addArm(holder, device) {
+  const svg = svgElement("svg", { class: "arm", id: `arm-${device.name}`, width: 160, height: 160, viewBox: "-100 -20 200 260" }, holder);
+  const style = { fill: "none", stroke: "#555", "stroke-width": 3, "stroke-linejoin": "round", "stroke-linecap": "round" };
+  svgElement("polyline", { ...style, class: "right-side" }, svg);  // right pivot, C, E, stylus T
+  svgElement("polyline", { ...style, class: "left-side" }, svg);   // left pivot, D, E
+  svgElement("circle", { r: 4, fill: "#c22", class: "stylus" }, svg);
+}
+
+function showArms(arms) {
+  for (const arm of arms) {
+    const svg = document.getElementById(`arm-${arm.device}`);
+    if (!svg) continue;
+    const text = (points) => points.map(([x, y]) => `${x},${y}`).join(" ");
+    svg.querySelector(".right-side").setAttribute("points", text([arm.right_pivot, arm.c, arm.e, arm.t]));
+    svg.querySelector(".left-side").setAttribute("points", text([arm.left_pivot, arm.d, arm.e]));
+    const stylus = svg.querySelector(".stylus");
+    stylus.setAttribute("cx", arm.t[0]);
+    stylus.setAttribute("cy", arm.t[1]);
+    const all = [arm.right_pivot, arm.left_pivot, arm.c, arm.d, arm.e, arm.t];
+    const xs = all.map((p) => p[0]), ys = all.map((p) => p[1]);
+    const x0 = Math.min(...xs) - 10, y0 = Math.min(...ys) - 10;
+    const size = Math.max(Math.max(...xs) - x0, Math.max(...ys) - y0) + 10;
+    svg.setAttribute("viewBox", `${x0} ${y0} ${size} ${size}`);
+  }
+  view.arms = arms;
 }
 
 function addSlider(holder, device) {
@@ -419,6 +448,7 @@ function onUpdate(update) {
   if (update.strokes) applyStrokes(update.strokes, update.shade_scale);
   if (update.pen) showPen(update.pen);
   if (update.table && drawing.turntable) showTable(update.table);
+  if (update.arms) showArms(update.arms);
   view.motors = update.motors;
   showBoards(update);
   showRun(update.run);
