@@ -104,6 +104,8 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
   const auto wall_start = std::chrono::steady_clock::now();
   PacingAnchor anchor{wall_start, simulation.now(), options.speed};
   double slept_s = 0;
+  LiveTiming timing;
+  double lag_total_ms = 0;
   // Every simulated millisecond, wherever the run is (a sketch waiting in delay() included).
   simulation.pace_every(kExchangeNs, [&](sim::SimTime now) {
     exchange(links);
@@ -118,6 +120,11 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
     }
     if (anchor.speed <= 0.0) return;
     const double due_s = sim::to_seconds(now - anchor.simulated) / anchor.speed;
+    const double lag_ms =
+        1e3 * std::max(0.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - anchor.wall).count() - due_s);
+    ++timing.paced_ms;
+    lag_total_ms += lag_ms;
+    timing.lag_max_ms = std::max(timing.lag_max_ms, lag_ms);
     slept_s += sleep_until(anchor.wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                              std::chrono::duration<double>(due_s)),
                            view);
@@ -139,7 +146,10 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
   if (view != nullptr) view->finish();
   simulation.end_now();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  return {wall_s, std::max(0.0, wall_s - slept_s)};
+  timing.wall_s = wall_s;
+  timing.computing_s = std::max(0.0, wall_s - slept_s);
+  timing.lag_mean_ms = timing.paced_ms > 0 ? lag_total_ms / static_cast<double>(timing.paced_ms) : 0.0;
+  return timing;
 }
 
 }  // namespace stepdance::cli

@@ -47,6 +47,12 @@ struct LiveOptions {
 struct LiveTiming {
   double wall_s = 0;
   double computing_s = 0;
+  /// The pacing error: at each paced simulated millisecond (a speed other than max, not
+  /// paused), how far simulated time was behind the wall clock before the run waited for it
+  /// (ms of wall time; 0 when it was ahead). Their count, largest and mean.
+  uint64_t paced_ms = 0;
+  double lag_max_ms = 0;
+  double lag_mean_ms = 0;
 };
 
 /// Opens a terminal per board and announces each on stdout, exactly `serial <board>: <path>`,

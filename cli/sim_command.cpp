@@ -180,6 +180,13 @@ void print_report(const sim::SimulationReport& report, bool quiet, const LiveTim
                   report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
   }
   std::cout << line;
+  if (live.paced_ms > 0) {
+    std::snprintf(line, sizeof line,
+                  "pacing: simulated time behind the wall clock by %.3f ms at most, %.3f ms on average "
+                  "(%llu paced ms)\n",
+                  live.lag_max_ms, live.lag_mean_ms, static_cast<unsigned long long>(live.paced_ms));
+    std::cout << line;
+  }
   for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
 }
 

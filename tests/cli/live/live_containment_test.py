@@ -91,6 +91,14 @@ class LiveContainmentTest(unittest.TestCase):
         self.assertGreaterEqual(wall, 1.45)
         self.assertLessEqual(wall, elapsed)
         self.assertLess(computing, wall / 2)
+        # The pacing error, for benchmarks: one figure per paced simulated millisecond (1.5 s of them).
+        pacing = re.search(r"pacing: simulated time behind the wall clock by ([0-9.]+) ms at most, ([0-9.]+) ms on "
+                           r"average \((\d+) paced ms\)", result.stdout)
+        self.assertIsNotNone(pacing, result.stdout)
+        lag_max, lag_mean, paced = float(pacing.group(1)), float(pacing.group(2)), int(pacing.group(3))
+        self.assertGreaterEqual(lag_max, lag_mean)
+        self.assertGreaterEqual(lag_mean, 0)
+        self.assertIn(paced, range(1499, 1502))
 
     def test_a_client_writing_to_a_board_that_never_reads_is_held_back(self):
         process, _ = self.start("Deaf", "--speed", "max", folder=BOUNDED)
