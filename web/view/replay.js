@@ -143,7 +143,7 @@
 
   // ---- the logic-analyser strip ----------------------------------------------------------------
 
-  const STRIP = { left: 110, width: 800, row: 16, high: 10 };
+  const STRIP = { left: 110, width: 800, row: 20, high: 10 };
 
   /// Each port's STEP and DIR around the instant; each STEP pulse labelled with its signal.
   function drawWire(sample) {
@@ -184,9 +184,9 @@
         if (labelPulses) {
           const width = end - bit;
           const name = SIGNALS[width - 2] || "?";
-          const text = svgElement("text", { x: (x(rise) + x(fall)) / 2, y: high - 1, "font-size": 7, "text-anchor": "middle",
+          const text = svgElement("text", { x: x(rise), y: high - 1, "font-size": 8, "text-anchor": "start",
                                             class: "pulse", "data-width-us": width, "data-signal": name }, strip);
-          text.textContent = name;
+          text.textContent = `${name} ${width} µs`;
           svgElement("title", {}, text).textContent = `${width} µs: ${name}`;
         }
         bit = end;

@@ -205,7 +205,7 @@ class ReplayPageTest(unittest.TestCase):
         for label in labels:
             width = int(label.get_attribute("data-width-us"))
             self.assertIn(width, range(2, 8))
-            self.assertEqual(label.text, "XYRTZE"[width - 2])
+            self.assertEqual(label.text, f"{'XYRTZE'[width - 2]} {width} µs")
         self.move_slider_to_time(0.1)  # nothing has moved yet: a quiet wire
         self.assertEqual(self.browser.find_elements(By.CSS_SELECTOR, "#wire-strip text.pulse"), [])
 
