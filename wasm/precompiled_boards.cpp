@@ -26,9 +26,19 @@ sim::SketchBuild PrecompiledBoards::build(const std::string& sketch_path) const 
                    (known.empty() ? "none" : known) + "); a changed sketch needs a local `stepdance serve`";
     return result;
   }
+  // A fresh copy for every board of every run: emscripten's dlopen keeps a module once loaded
+  // (dlclose does not unload it), so opening the same path again would give the previous run's
+  // board with its globals as that run left them.
+  const std::string copy = found->second + ".run-" + std::to_string(++copies_) + ".wasm";
+  std::error_code error;
+  std::filesystem::copy_file(found->second, copy, std::filesystem::copy_options::overwrite_existing, error);
+  if (error) {
+    result.error = copy + ": cannot copy the board (" + error.message() + ")";
+    return result;
+  }
   result.ok = true;
   result.from_cache = true;
-  result.library_path = found->second;
+  result.library_path = copy;
   return result;
 }
 

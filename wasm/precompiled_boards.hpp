@@ -12,7 +12,9 @@ namespace stepdance::web {
 /// builds one side module per example folder). A sketch is looked up by its folder's name, so
 /// "…/StepASketch/StepASketch.ino" and "…/StepASketch" find the same board; a sketch with no
 /// board registered is refused with a message that names the known ones (the page cannot
-/// compile). Context: loop.
+/// compile). Each call hands out a new copy of the module, so every board of every run starts
+/// from fresh globals (the memory of a finished run's boards is not given back: WebAssembly
+/// cannot unload a module). Context: loop.
 class PrecompiledBoards : public sim::BoardSource {
  public:
   /// Registers the board library at `library_path` (in the module's file system) for sketch
@@ -22,6 +24,7 @@ class PrecompiledBoards : public sim::BoardSource {
 
  private:
   std::map<std::string, std::string> libraries_;  ///< folder name → library path
+  mutable unsigned copies_ = 0;                   ///< copies handed out so far (for unique names)
 };
 
 /// The name of the folder a sketch lives in: the path's last part for a folder, its parent's
