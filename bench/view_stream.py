@@ -82,18 +82,31 @@ class Page:
             length = struct.unpack(">Q", self.take(8))[0]
         return first & 0x80, first & 0x0F, self.take(length)
 
+    def pong(self, payload):
+        """Answers a ping as a browser does (a client's frames are masked; a zero mask here)."""
+        self.connection.sendall(bytes([0x8A, 0x80 | len(payload), 0, 0, 0, 0]) + payload)
+
     def read(self):
         """Whole messages (a long one may come in fragments), until the close frame."""
         try:
+            payload = b""
             while True:
-                final, opcode, payload = self.frame()
+                final, opcode, data = self.frame()
                 if opcode == 8:
                     break
-                while not final:
-                    final, _, more = self.frame()
-                    payload += more
-                message = json.loads(payload)
+                if opcode == 9:
+                    self.pong(data)
+                if opcode >= 8:
+                    continue  # control frames may come between a message's fragments
+                payload += data
+                if not final:
+                    continue
+                try:
+                    message = json.loads(payload)
+                except ValueError as error:
+                    raise RuntimeError(f"a message that is not JSON: {payload[:80]!r}") from error
                 self.records.append((time.monotonic(), message.get("t_s"), len(payload), message.get("type")))
+                payload = b""
         except (EOFError, OSError):
             pass
 
@@ -180,7 +193,8 @@ def main():
         offsets = [wall - t / speed for wall, t, _, _ in updates]
         lateness_ms = [1000 * (o - min(offsets)) for o in offsets]
         print(f"  pacing error seen by the page: mean {statistics.mean(lateness_ms):.2f} ms, "
-              f"median {statistics.median(lateness_ms):.2f} ms, max {max(lateness_ms):.2f} ms "
+              f"median {statistics.median(lateness_ms):.2f} ms, 99th percentile "
+              f"{statistics.quantiles(lateness_ms, n=100)[98]:.2f} ms, max {max(lateness_ms):.2f} ms "
               f"over {len(updates)} updates")
     closing = re.search(r"simulated [\d.]+ s in [^\n]*", report)
     if closing:

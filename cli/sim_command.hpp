@@ -28,6 +28,7 @@ struct SimCommandOptions {
   std::string duration_s;           ///< replaces duration_s ("" = the file's); checked like it
   std::string vcd_file;             ///< write a VCD here ("" = the scenario's)
   std::string csv_file;             ///< write a CSV here ("" = the scenario's)
+  std::string html_file;            ///< write the replay page here ("" = the scenario's)
   std::string csv_interval_ms;      ///< replaces csv_interval_ms ("" = the file's); checked like it
   bool no_vcd = false;
   bool quiet = false;
@@ -38,6 +39,7 @@ struct SimCommandOptions {
   std::string watchdog_s = "10";    ///< wall seconds a sketch may run with simulated time stuck
   bool view = false;                ///< live: serve the view page (web/view/)
   std::string view_port;            ///< live view: the TCP port ("" = any free one)
+  std::string result_json;          ///< write the run's result here (sim/assembly/run_result.hpp); "" = none
   /// Builds the view's server (main.cpp plugs in cli/view's, which keeps Boost out of this
   /// library); --view is refused without one.
   LiveViewFactory make_view;

@@ -9,7 +9,6 @@ import os
 import re
 import socket
 import struct
-import tempfile
 import xml.etree.ElementTree as ElementTree
 
 # The protocol's display resolution (docs/simulator.md, "The view protocol"): a stroke's points
@@ -122,17 +121,10 @@ def strokes_mismatch(page, svg):
 
 
 def headless_chromium():
-    """Debian's chromium through chromedriver, headless: (browser, profile directory to remove)."""
-    from selenium import webdriver
-    from selenium.webdriver.chrome.options import Options
-    from selenium.webdriver.chrome.service import Service
-    options = Options()
-    options.binary_location = "/usr/bin/chromium"
-    profile = tempfile.mkdtemp(prefix="stepdance-chromium-")
-    for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
-                     f"--user-data-dir={profile}", "--window-size=1400,1000"):
-        options.add_argument(argument)
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options), profile
+    """Headless Chromium (headless_chromium.Chromium): (browser, profile directory to remove)."""
+    from headless_chromium import Chromium
+    chromium = Chromium()
+    return chromium.driver, chromium.profile
 
 
 def read_announcements(process, count):

@@ -36,7 +36,8 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from view_client import RawWebSocket, headless_chromium, svg_strokes, websocket_status  # noqa: E402
+from headless_chromium import Chromium  # noqa: E402
+from view_client import RawWebSocket, svg_strokes, websocket_status  # noqa: E402
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
 LIVE_OUT = os.path.join(WORK_DIR, "view-page-live")
@@ -85,12 +86,12 @@ class ViewPageTest(unittest.TestCase):
         self.browser = None
 
     def open_browser(self):
-        self.browser, self.profile = headless_chromium()
+        self.chromium = Chromium()
+        self.browser = self.chromium.driver
 
     def tearDown(self):
         if self.browser is not None:
-            self.browser.quit()
-            shutil.rmtree(self.profile, ignore_errors=True)
+            self.chromium.quit()
         if self.run_live.poll() is None:
             self.run_live.kill()
             self.run_live.communicate()
