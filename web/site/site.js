@@ -20,7 +20,7 @@ function status(text) { $("status").textContent = text; }
 // ---- the example and its sources --------------------------------------------------------------
 
 function currentExample() { return site.examples.find((example) => example.name === $("example").value); }
-function scenarioPath(example) { return `/examples/${example.name}/scenario.toml`; }
+function scenarioPath(example) { return `/examples/${example.name}/${$("scenario-file").value}`; }
 
 async function showExample() {
   const example = currentExample();
@@ -28,9 +28,24 @@ async function showExample() {
   const sketchFile = example.files.find((file) => file === `${example.name}.ino`) ||
     example.files.find((file) => file.endsWith(".ino"));
   $("sketch-name").textContent = sketchFile;
-  $("scenario-name").textContent = "scenario.toml";
   highlightCpp($("sketch"), await fetchText(`examples/${example.name}/${sketchFile}`));
-  $("scenario").value = await fetchText(`examples/${example.name}/scenario.toml`);
+  // The example's scenarios: its TOML files that declare a board (scenario.toml first; live.toml
+  // has no timeline, for the knobs).
+  const picker = $("scenario-file");
+  picker.textContent = "";
+  site.scenarios = {};
+  for (const file of example.files.filter((name) => name.endsWith(".toml"))) {
+    const text = await fetchText(`examples/${example.name}/${file}`);
+    if (!/^\[\[board\]\]/m.test(text)) continue;
+    site.scenarios[file] = text;
+    picker.add(new Option(file, file), file === "scenario.toml" ? 0 : undefined);
+  }
+  picker.value = "scenario.toml";
+  showScenario();
+}
+
+function showScenario() {
+  $("scenario").value = site.scenarios[$("scenario-file").value];
   showProblems("");
   $("result").hidden = true;
   status("ready: Run starts the scenario");
@@ -160,6 +175,7 @@ async function startPage() {
   const wanted = decodeURIComponent(location.hash.slice(1));
   if (site.examples.some((example) => example.name === wanted)) picker.value = wanted;
   picker.onchange = showExample;
+  $("scenario-file").onchange = showScenario;
   $("scenario").oninput = () => numberLines();
   $("run").onclick = run;
   $("reset").onclick = run;
