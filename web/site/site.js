@@ -156,9 +156,12 @@ function showResult(result) {
   if (result.stopped) row(table, ["stopped", result.stopped], "failed");
   const expectations = $("expectations");
   expectations.textContent = "";
+  const path = scenarioPath(currentExample());
   for (const expectation of result.expectations) {
     const verdict = !expectation.checked ? "not run" : expectation.met ? "ok" : "FAILED";
-    row(expectations, [verdict, expectation.message], expectation.checked && expectation.met ? "ok" : "failed");
+    const message = expectation.message.startsWith(path + ":")
+      ? expectation.message.slice(path.length + 1).replace(/^(\d+): /, "line $1: ") : expectation.message;
+    row(expectations, [verdict, message], expectation.checked && expectation.met ? "ok" : "failed");
   }
   $("result").hidden = false;
   const failed = result.expectations.filter((expectation) => !(expectation.checked && expectation.met)).length;
