@@ -1,9 +1,16 @@
-// The Stepdance page: pick an example, read its sketch, edit its scenario, run it in a Web Worker
-// (worker.js) and watch it in the live view (view/, the page `stepdance sim --live --view`
-// serves, unchanged: it gets this page's Worker as its transport), then read the run's summary.
+// The Stepdance page: pick an example, read its sketch, edit its scenario, run it and watch it in
+// the live view (view/, the page `stepdance sim --live --view` serves, unchanged: this page hands
+// it a transport), then read the run's summary. A run goes to one of two runners, which speak the
+// same view protocol: the WebAssembly simulator in a Web Worker (worker.js), or, when a local
+// `stepdance serve` answers, that server, which compiles an edited sketch with the host's
+// toolchain and runs it (docs/web.md, "Editing a sketch").
 "use strict";
 
-const site = (window.stepdanceSite = { examples: [], result: null, problems: [], worker: null });
+/// Where the page looks for `stepdance serve` (its default port), unless ?serve=PORT says otherwise.
+const DEFAULT_SERVE_PORT = 8001;
+
+const site = (window.stepdanceSite = { examples: [], scenarios: {}, result: null, problems: [], runner: null,
+                                       server: null });
 
 const $ = (id) => document.getElementById(id);
 let viewInbox = [];      // view messages that came before the view attached
@@ -20,15 +27,17 @@ function status(text) { $("status").textContent = text; }
 // ---- the example and its sources --------------------------------------------------------------
 
 function currentExample() { return site.examples.find((example) => example.name === $("example").value); }
-function scenarioPath(example) { return `/examples/${example.name}/${$("scenario-file").value}`; }
+function exampleFolder(example) { return `/examples/${example.name}/`; }
+function sketchFile(example) {
+  return example.files.find((file) => file === `${example.name}.ino`) || example.files.find((file) => file.endsWith(".ino"));
+}
 
 async function showExample() {
   const example = currentExample();
   location.hash = example.name;
-  const sketchFile = example.files.find((file) => file === `${example.name}.ino`) ||
-    example.files.find((file) => file.endsWith(".ino"));
-  $("sketch-name").textContent = sketchFile;
-  highlightCpp($("sketch"), await fetchText(`examples/${example.name}/${sketchFile}`));
+  $("sketch-name").textContent = sketchFile(example);
+  site.sketchText = await fetchText(`examples/${example.name}/${sketchFile(example)}`);
+  showSketch();
   // The example's scenarios: its TOML files that declare a board (scenario.toml first; live.toml
   // has no timeline, for the knobs).
   const picker = $("scenario-file");
@@ -42,6 +51,16 @@ async function showExample() {
   }
   picker.value = "scenario.toml";
   showScenario();
+}
+
+// The sketch: highlighted and read-only, or, with a server to compile it, in an editor.
+function showSketch() {
+  const editable = !!site.server;
+  $("sketch").hidden = editable;
+  $("sketch-editor").hidden = !editable;
+  $("sketch-mode").textContent = editable ? "(edit: stepdance serve compiles it)" : "(read-only)";
+  if (editable) $("sketch-editor").value = site.sketchText;
+  else highlightCpp($("sketch"), site.sketchText);
 }
 
 function showScenario() {
@@ -65,40 +84,48 @@ function numberLines(badLines = new Set()) {
   $("scenario").style.height = `${count * 1.4 + 1.2}em`;
 }
 
-// The reader's or the simulation's errors (`file:line: message` lines), each at its line.
+// The reader's, the compiler's or the simulation's errors, each `file:line[:column]: message` one
+// shown at its line (the run's folder left out of the file's name); text without such lines as it is.
 function showProblems(text) {
   const list = $("problems");
   list.textContent = "";
   site.problems = [];
-  const path = scenarioPath(currentExample());
-  for (const line of text.split("\n").filter(Boolean)) {
-    const match = line.startsWith(path + ":") && line.slice(path.length).match(/^:(\d+)(?::\d+)?: ?(.*)$/);
-    const problem = match ? { line: Number(match[1]), message: match[2] } : { line: null, message: line };
+  const folder = exampleFolder(currentExample());
+  const lines = text.split("\n").filter(Boolean).map((line) => (line.startsWith(folder) ? line.slice(folder.length) : line));
+  const located = lines.map((line) => line.match(/^([\w.-]+):(\d+)(?::\d+)?: ?(.*)$/));
+  const anyLocated = located.some(Boolean);
+  lines.forEach((line, index) => {
+    const match = located[index];
+    if (anyLocated && !match) return; // the compiler's excerpts and carets
+    const problem = match ? { file: match[1], line: Number(match[2]), message: match[3] } : { file: null, line: null, message: line };
     site.problems.push(problem);
     const item = document.createElement("li");
-    item.textContent = problem.line ? `line ${problem.line}: ${problem.message}` : problem.message;
-    if (problem.line) item.onclick = () => selectLine(problem.line);
+    item.textContent = problem.line ? `${problem.file} line ${problem.line}: ${problem.message}` : problem.message;
+    if (problem.line) item.onclick = () => selectLine(problem.file, problem.line);
     list.appendChild(item);
-  }
-  numberLines(new Set(site.problems.map((problem) => problem.line).filter(Boolean)));
+  });
+  const scenario = $("scenario-file").value;
+  numberLines(new Set(site.problems.filter((problem) => problem.file === scenario).map((problem) => problem.line)));
 }
 
-function selectLine(line) {
-  const lines = $("scenario").value.split("\n");
+function selectLine(file, line) {
+  const box = file === $("scenario-file").value ? $("scenario") : site.server ? $("sketch-editor") : null;
+  if (!box) return;
+  const lines = box.value.split("\n");
   const start = lines.slice(0, line - 1).reduce((sum, text) => sum + text.length + 1, 0);
-  $("scenario").focus();
-  $("scenario").setSelectionRange(start, start + lines[line - 1].length);
+  box.focus();
+  box.setSelectionRange(start, start + (lines[line - 1] || "").length);
 }
 
-// ---- the run ---------------------------------------------------------------------------------
+// ---- the runners -----------------------------------------------------------------------------
 
-// The view (in the frame) asks its parent for a transport: this page's Worker.
+// The view (in the frame) asks its parent for a transport: the current runner.
 window.stepdanceTransport = (onMessage, onState) => {
   viewReceiver = onMessage;
-  onState(site.worker ? "open" : "closed");
+  onState(site.runner ? "open" : "closed");
   for (const text of viewInbox) onMessage(text);
   viewInbox = [];
-  return { send: (text) => site.worker && site.worker.postMessage({ kind: "view", text }) };
+  return { send: (text) => site.runner && site.runner.send(text) };
 };
 
 function toView(text) {
@@ -106,28 +133,92 @@ function toView(text) {
   else viewInbox.push(text);
 }
 
-function run() {
-  if (site.worker) site.worker.terminate();
+// What both runners report besides the view's messages.
+const runEvents = {
+  failed(text) { showProblems(text); status("the run did not start: see the problems under the scenario"); },
+  result(result) { showResult(result); },
+  crashed(text) { status(`the simulator failed: ${text}`); },
+};
+
+/// The WebAssembly simulator in a Web Worker: {send(text), stop()}.
+function workerRunner(example, scenarioFile, scenarioText) {
+  const worker = new Worker("worker.js");
+  worker.onmessage = (event) => {
+    const message = event.data;
+    if (message.kind === "view") toView(message.text);
+    else if (runEvents[message.kind]) runEvents[message.kind](message.kind === "result" ? message.result : message.text);
+  };
+  worker.onerror = (event) => runEvents.crashed(event.message);
+  worker.postMessage({ kind: "start", example: example.name, files: example.files,
+                       path: exampleFolder(example) + scenarioFile, text: scenarioText });
+  return { send: (text) => worker.postMessage({ kind: "view", text }), stop: () => worker.terminate() };
+}
+
+/// The run on the local `stepdance serve`, over its socket: {send(text), stop()}.
+async function serverRunner(example, scenarioFile, scenarioText) {
+  const files = {};
+  for (const file of example.files) files[file] = await fetchText(`examples/${example.name}/${file}`);
+  files[sketchFile(example)] = $("sketch-editor").value;
+  files[scenarioFile] = scenarioText;
+  const socket = site.server;
+  socket.onmessage = (event) => {
+    const message = JSON.parse(event.data);
+    if (message.type === "building") status(`compiling ${sketchFile(example)} on stepdance serve…`);
+    else if (message.type === "started") status(`running ${example.name} on stepdance serve`);
+    else if (message.type === "failed") runEvents.failed(message.text);
+    else if (message.type === "result") runEvents.result(message.result);
+    else toView(event.data); // the view protocol
+  };
+  socket.send(JSON.stringify({ type: "run", example: example.name, files, scenario: scenarioFile }));
+  return { send: (text) => socket.send(text), stop: () => {} };
+}
+
+async function run() {
+  if (site.runner) site.runner.stop();
+  site.runner = null;
   viewInbox = [];
   viewReceiver = null;
   site.result = null;
   showProblems("");
   $("result").hidden = true;
   const example = currentExample();
-  const worker = (site.worker = new Worker("worker.js"));
-  worker.onmessage = (event) => {
-    const message = event.data;
-    if (message.kind === "view") toView(message.text);
-    else if (message.kind === "failed") { showProblems(message.text); status("the scenario did not load"); }
-    else if (message.kind === "result") showResult(message.result);
-    else if (message.kind === "crashed") status(`the simulator failed: ${message.text}`);
-  };
-  worker.onerror = (event) => status(`the simulator failed: ${event.message}`);
-  worker.postMessage({ kind: "start", example: example.name, files: example.files,
-                       path: scenarioPath(example), text: $("scenario").value });
+  const scenarioFile = $("scenario-file").value;
+  const text = $("scenario").value;
+  site.runner = site.server ? await serverRunner(example, scenarioFile, text) : workerRunner(example, scenarioFile, text);
   $("view").src = `view/index.html?run=${Date.now()}`;
   $("reset").disabled = false;
   status(`running ${example.name}`);
+}
+
+// ---- a local stepdance serve -----------------------------------------------------------------
+
+// Looks for `stepdance serve` on 127.0.0.1 (its edit protocol's serve_hello); says how to start
+// one when nobody answers.
+function findServer() {
+  const port = Number(new URLSearchParams(location.search).get("serve")) || DEFAULT_SERVE_PORT;
+  const origin = location.origin;
+  const howTo = `To edit the sketch, run \`stepdance serve --allow-origin ${origin}\` on this computer and reload (docs/web.md).`;
+  let socket;
+  try {
+    socket = new WebSocket(`ws://127.0.0.1:${port}/ws`);
+  } catch (error) {
+    $("serve-state").textContent = howTo;
+    return;
+  }
+  socket.onmessage = (event) => {
+    const message = JSON.parse(event.data);
+    if (message.type !== "serve_hello" || message.version !== 1) return;
+    site.server = socket;
+    $("serve-state").textContent = `Sketch edits compile on stepdance serve at 127.0.0.1:${port}.`;
+    if (site.sketchText !== undefined) showSketch();
+  };
+  socket.onclose = () => {
+    if (site.server === socket) {
+      site.server = null;
+      showSketch();
+    }
+    $("serve-state").textContent = howTo;
+  };
 }
 
 // ---- the summary -----------------------------------------------------------------------------
@@ -156,11 +247,10 @@ function showResult(result) {
   if (result.stopped) row(table, ["stopped", result.stopped], "failed");
   const expectations = $("expectations");
   expectations.textContent = "";
-  const path = scenarioPath(currentExample());
+  const folder = exampleFolder(currentExample());
   for (const expectation of result.expectations) {
     const verdict = !expectation.checked ? "not run" : expectation.met ? "ok" : "FAILED";
-    const message = expectation.message.startsWith(path + ":")
-      ? expectation.message.slice(path.length + 1).replace(/^(\d+): /, "line $1: ") : expectation.message;
+    const message = expectation.message.replace(/^.*?([\w.-]+\.toml):(\d+): /, "$1 line $2: ").replace(folder, "");
     row(expectations, [verdict, message], expectation.checked && expectation.met ? "ok" : "failed");
   }
   $("result").hidden = false;
@@ -171,6 +261,7 @@ function showResult(result) {
 // ---- start -----------------------------------------------------------------------------------
 
 async function startPage() {
+  findServer();
   const listing = JSON.parse(await fetchText("examples.json"));
   site.examples = listing.examples;
   const picker = $("example");
