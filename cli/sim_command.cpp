@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "command_help.hpp"
@@ -19,6 +20,7 @@
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "simulator_hooks.hpp"
+#include "assembly/run_result.hpp"
 #include "assembly/simulation.hpp"
 
 namespace stepdance::cli {
@@ -157,6 +159,13 @@ void print_stop(const sim::SimulationReport& report) {
   }
 }
 
+// --result-json: the run's result document; throws std::runtime_error("path: …") when it cannot.
+void write_result_json(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out.flush()) throw std::runtime_error(path + ": cannot write the run's result");
+}
+
 const char* result_label(const sim::ExpectationResult& result) {
   if (!result.checked) return "NOT RUN ";
   return result.met ? "ok      " : "FAILED  ";
@@ -247,6 +256,9 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   add_number_option(sim, "--watchdog-s", options.watchdog_s,
                     "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
                     "10, in " + describe(kWatchdogS) + ")");
+  sim.add_option("--result-json", options.result_json,
+                 "also write the run's result as JSON to this file: the summary without wall time and every "
+                 "expectation's outcome (the WebAssembly build prints the same document)");
   add_cache_folder_option(sim, options.cache_directory, "");
   return sim;
 }
@@ -293,6 +305,7 @@ int run_sim_command(const SimCommandOptions& options) {
       live_timing = run_live(*simulation, boards, live);
     }
     report = simulation->finish();
+    if (!options.result_json.empty()) write_result_json(options.result_json, sim::run_result_json(*simulation, report));
   } catch (const std::exception& failure) {
     progress.clear();
     std::cerr << failure.what() << "\n";

@@ -38,6 +38,7 @@ struct SimCommandOptions {
   std::string watchdog_s = "10";    ///< wall seconds a sketch may run with simulated time stuck
   bool view = false;                ///< live: serve the view page (web/view/)
   std::string view_port;            ///< live view: the TCP port ("" = any free one)
+  std::string result_json;          ///< write the run's result here (sim/assembly/run_result.hpp); "" = none
   /// Builds the view's server (main.cpp plugs in cli/view's, which keeps Boost out of this
   /// library); --view is refused without one.
   LiveViewFactory make_view;

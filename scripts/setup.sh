@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package the build, the tests and the tools need (idempotent).
+# --web adds emscripten, for the WebAssembly build and its tests (scripts/test.sh passes it;
+# scripts/main.sh does not, so the main command installs no emscripten).
 set -euo pipefail
 
 packages=(
@@ -18,6 +20,9 @@ packages=(
   libboost-dev  # Boost.Beast and Asio (header-only): HTTP and WebSocket for `stepdance serve`
   chromium chromium-driver python3-selenium  # the web control page tested in headless Chromium
 )
+if [ "${1:-}" = "--web" ]; then
+  packages+=(emscripten)  # the WebAssembly build (scripts/build-web.sh) and the web tests
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -11,7 +11,7 @@ stage() {
   echo "== [${SECONDS} s] $*"
   "$@"
 }
-stage scripts/setup.sh
+stage scripts/setup.sh --web
 stage scripts/setup-npm-clients.sh
 stage scripts/check-core-portability.sh
 stage scripts/check-interfaces-structure.sh

@@ -6,7 +6,7 @@ find_program(SERVO_AVR_GCC avr-gcc)
 find_program(SERVO_AVR_OBJCOPY avr-objcopy)
 find_program(SERVO_AVR_SIZE avr-size)
 find_path(SERVO_AVR_LIBC_INCLUDE avr/io.h PATHS /usr/lib/avr/include /usr/avr/include NO_DEFAULT_PATH)
-if(NOT SERVO_AVR_GCC OR NOT SERVO_AVR_OBJCOPY OR NOT SERVO_AVR_SIZE OR NOT SERVO_AVR_LIBC_INCLUDE)
+if(STEPDANCE_SERVO_FIRMWARE AND (NOT SERVO_AVR_GCC OR NOT SERVO_AVR_OBJCOPY OR NOT SERVO_AVR_SIZE OR NOT SERVO_AVR_LIBC_INCLUDE))
   message(FATAL_ERROR
     "The servo driver firmware needs the AVR toolchain (avr-gcc, avr-objcopy, avr-size, avr-libc).\n"
     "On Debian/Ubuntu: sudo apt-get install gcc-avr avr-libc binutils-avr\n"

@@ -22,6 +22,12 @@ std::string with_thousands(std::size_t value) {
 
 }  // namespace
 
+struct LinePattern::Compiled {
+  explicit Compiled(std::string_view pattern)
+      : regex(re2::StringPiece(pattern.data(), pattern.size()), pattern_options()) {}
+  RE2 regex;
+};
+
 std::string pattern_problem(std::string_view pattern) {
   if (pattern.size() > kMaxPatternLength) {
     return "is longer than " + with_thousands(kMaxPatternLength) + " characters (a reply check is a short pattern)";
@@ -38,11 +44,11 @@ std::string pattern_problem(std::string_view pattern) {
 LinePattern::LinePattern() = default;
 
 LinePattern::LinePattern(std::string_view pattern)
-    : regex_(std::make_shared<const RE2>(re2::StringPiece(pattern.data(), pattern.size()), pattern_options())) {}
+    : regex_(std::make_shared<const Compiled>(pattern)) {}
 
 bool LinePattern::found_in(std::string_view line) const {
-  if (!regex_ || !regex_->ok()) return false;
-  return RE2::PartialMatch(re2::StringPiece(line.data(), line.size()), *regex_);
+  if (!regex_ || !regex_->regex.ok()) return false;
+  return RE2::PartialMatch(re2::StringPiece(line.data(), line.size()), regex_->regex);
 }
 
 }  // namespace stepdance::sim::scenario

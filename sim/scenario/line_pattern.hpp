@@ -7,10 +7,6 @@
 #include <string>
 #include <string_view>
 
-namespace re2 {
-class RE2;
-}
-
 namespace stepdance::sim::scenario {
 
 /// The longest pattern, in bytes (a reply check is a short pattern).
@@ -41,7 +37,8 @@ class LinePattern {
   bool found_in(std::string_view line) const;
 
  private:
-  std::shared_ptr<const re2::RE2> regex_;
+  struct Compiled;  ///< the engine's compiled program (RE2; the WebAssembly build's own, see its .cpp)
+  std::shared_ptr<const Compiled> regex_;
 };
 
 }  // namespace stepdance::sim::scenario

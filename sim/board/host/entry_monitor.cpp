@@ -1,8 +1,6 @@
 // EntryMonitor: the running entries, stop requests and escape records.
 #include "board/host/entry_monitor.hpp"
 
-#include <execinfo.h>
-
 namespace stepdance::sim {
 
 EntryMonitor::Running EntryMonitor::running_[kMaxDepth];
@@ -79,16 +77,6 @@ bool EntryMonitor::try_escape_from_signal(uintptr_t pc, EscapeCause cause, int s
   record_.detail = signal;
   escape(cause);
   return true;
-}
-
-void EntryMonitor::prepare_backtrace() {
-  void* frame[1];
-  backtrace(frame, 1);  // the first call loads the unwinder; later ones allocate nothing
-}
-
-void EntryMonitor::capture_backtrace(uintptr_t pc) {
-  record_.pc = pc;
-  record_.frame_count = backtrace(record_.frames, EscapeRecord::kMaxFrames);
 }
 
 EscapeRecord EntryMonitor::take_record() {

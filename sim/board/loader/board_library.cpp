@@ -2,11 +2,12 @@
 #include "board/loader/board_library.hpp"
 
 #include <dlfcn.h>
-#include <link.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <map>
+
+#include "board/loader/board_code_ranges.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -42,34 +43,11 @@ void* open_private_copy(const std::string& path, int copy_index, std::string& er
   return handle;
 }
 
-// The executable segments of the object loaded at `base`.
-struct CodeSearch {
-  uintptr_t base;
-  CodeRanges* ranges;
-};
-
-int find_code(dl_phdr_info* info, size_t, void* data) {
-  auto& search = *static_cast<CodeSearch*>(data);
-  if (info->dlpi_addr != search.base) return 0;
-  for (int i = 0; i < info->dlpi_phnum && search.ranges->count < CodeRanges::kMax; ++i) {
-    const ElfW(Phdr)& segment = info->dlpi_phdr[i];
-    if (segment.p_type != PT_LOAD || (segment.p_flags & PF_X) == 0) continue;
-    const int n = search.ranges->count++;
-    search.ranges->begin[n] = info->dlpi_addr + segment.p_vaddr;
-    search.ranges->end[n] = search.ranges->begin[n] + segment.p_memsz;
-  }
-  return 1;
-}
-
 }  // namespace
 
 BoardLibrary::BoardLibrary(void* handle, StepdanceBoardAttachFn attach_fn, std::string key)
     : handle_(handle), attach_(attach_fn), key_(std::move(key)) {
-  link_map* map = nullptr;
-  if (dlinfo(handle_, RTLD_DI_LINKMAP, &map) != 0 || map == nullptr) return;
-  load_base_ = map->l_addr;
-  CodeSearch search{load_base_, &code_};
-  dl_iterate_phdr(&find_code, &search);
+  find_board_code(handle_, load_base_, code_);
 }
 
 std::unique_ptr<BoardLibrary> BoardLibrary::load(const std::string& library_path, std::string& error) {
