@@ -68,9 +68,11 @@ std::vector<BoardLink> open_terminals(sim::Simulation& simulation, const std::ve
     if (found != options.serial_links.end()) link.port->link_as(found->second);
     PtyPort* port = link.port.get();
     LiveView* view = options.view;
-    link.board->on_console_bytes([port, view, name](const uint8_t* data, size_t length) {
+    const auto* also = &options.on_console;
+    link.board->on_console_bytes([port, view, also, name](const uint8_t* data, size_t length) {
       port->write_to_client(data, length);
       if (view != nullptr) view->console(name, data, length);
+      if (*also) (*also)(name, data, length);
     });
     links.push_back(std::move(link));
   }
@@ -107,6 +109,7 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
   // Every simulated millisecond, wherever the run is (a sketch waiting in delay() included).
   simulation.pace_every(kExchangeNs, [&](sim::SimTime now) {
     exchange(links);
+    if (options.on_tick) options.on_tick(now);
     if (view != nullptr) {
       view->serve_now(std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count());
       const auto paused_at = std::chrono::steady_clock::now();

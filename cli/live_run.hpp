@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -41,6 +42,10 @@ struct LiveOptions {
   std::map<std::string, std::string> serial_links;
   /// The page watching the run, if any (then its RunControl's speed paces the run).
   LiveView* view = nullptr;
+  /// Also called at every exchange with the terminals (the replay recorder), if set.
+  std::function<void(sim::SimTime)> on_tick;
+  /// Also given every console byte (the replay recorder), if set.
+  std::function<void(const std::string& board, const uint8_t* data, size_t length)> on_console;
 };
 
 /// A live run's wall-clock time, and the part of it spent computing (not waiting for the clock).

@@ -16,12 +16,15 @@
 #include "exit_codes.hpp"
 #include "live_run.hpp"
 #include "option_kinds.hpp"
+#include "output/text_file.hpp"
 #include "progress_bar.hpp"
+#include "replay_page.hpp"
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "simulator_hooks.hpp"
 #include "assembly/run_result.hpp"
 #include "assembly/simulation.hpp"
+#include "view/replay_recorder.hpp"
 
 namespace stepdance::cli {
 namespace {
@@ -132,6 +135,7 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, cons
   sim_options.write_vcd = !options.no_vcd;
   if (!options.vcd_file.empty()) sim_options.vcd_file = absolute_path(options.vcd_file);
   if (!options.csv_file.empty()) sim_options.csv_file = absolute_path(options.csv_file);
+  if (!options.html_file.empty()) sim_options.html_file = absolute_path(options.html_file);
   sim_options.csv_interval_ms = numbers.csv_interval_ms;
   sim_options.live = options.live;
   if (options.live) {
@@ -192,6 +196,26 @@ void print_report(const sim::SimulationReport& report, bool quiet, const LiveTim
   for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
 }
 
+/// The replay page's recorder when the run writes one (--html or the scenario's html): sampled
+/// by the simulation's pacer in a batch run, by the live run's ticks in a live one.
+std::unique_ptr<sim::view::ReplayRecorder> make_replay(sim::Simulation& simulation, bool is_live, LiveOptions& live) {
+  if (simulation.html_path().empty()) return nullptr;
+  const sim::view::ReplayLimits limits;
+  // A live run's end is not known: its instants are as close as they may be.
+  const sim::SimTime interval = sim::view::replay_interval_ns(is_live ? 0 : simulation.duration(), limits);
+  auto replay = std::make_unique<sim::view::ReplayRecorder>(simulation, interval, limits);
+  if (!is_live) {
+    replay->attach_pacer();
+    return replay;
+  }
+  sim::view::ReplayRecorder* recorder = replay.get();
+  live.on_tick = [recorder](sim::SimTime now) { recorder->sample(now); };
+  live.on_console = [recorder](const std::string& board, const uint8_t* data, size_t length) {
+    recorder->console(board, data, length);
+  };
+  return replay;
+}
+
 int exit_status(const sim::SimulationReport& report) {
   if (report.sketch_stop) {
     switch (report.sketch_stop->cause) {
@@ -235,6 +259,9 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   add_path_option(sim, "--vcd", options.vcd_file,
                   "write a VCD here (every output port and cabled input port unless the scenario lists vcd_ports)");
   add_path_option(sim, "--csv", options.csv_file, "write the CSV of positions over time here");
+  add_path_option(sim, "--html", options.html_file,
+                  "write the replay page here: one self-contained HTML file replaying the run with a time slider "
+                  "(drawing, pen, inputs, console, the output ports' wire)");
   add_number_option(sim, "--csv-interval-ms", options.csv_interval_ms,
                     "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs));
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
@@ -293,6 +320,7 @@ int run_sim_command(const SimCommandOptions& options) {
   Containment containment(numbers.watchdog_s.value_or(kDefaultWatchdogS));
   LiveTiming live_timing;
   try {
+    std::unique_ptr<sim::view::ReplayRecorder> replay = make_replay(*simulation, options.live, live);
     if (options.live) {
       std::vector<std::string> boards;
       for (const auto& board : loaded.scenario.boards) boards.push_back(board.name);
@@ -305,6 +333,10 @@ int run_sim_command(const SimCommandOptions& options) {
       live_timing = run_live(*simulation, boards, live);
     }
     report = simulation->finish();
+    if (replay) {
+      sim::write_text_file(simulation->html_path(), replay_page_html(replay->recording()));
+      report.files.push_back(simulation->html_path());
+    }
     if (!options.result_json.empty()) write_result_json(options.result_json, sim::run_result_json(*simulation, report));
   } catch (const std::exception& failure) {
     progress.clear();

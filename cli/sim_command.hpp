@@ -28,6 +28,7 @@ struct SimCommandOptions {
   std::string duration_s;           ///< replaces duration_s ("" = the file's); checked like it
   std::string vcd_file;             ///< write a VCD here ("" = the scenario's)
   std::string csv_file;             ///< write a CSV here ("" = the scenario's)
+  std::string html_file;            ///< write the replay page here ("" = the scenario's)
   std::string csv_interval_ms;      ///< replaces csv_interval_ms ("" = the file's); checked like it
   bool no_vcd = false;
   bool quiet = false;

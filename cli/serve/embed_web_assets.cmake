@@ -1,12 +1,13 @@
-# Writes OUTPUT, a C++ file holding the page's files (INPUT_DIR/index.html, app.js, style.css) as
-# byte arrays and FUNCTION() over them (find_web_asset unless given; web_assets.hpp declares each).
+# Writes OUTPUT, a C++ file holding the page's files (INPUT_DIR/index.html, app.js, style.css and
+# any EXTRA_FILES) as byte arrays and FUNCTION() over them (find_web_asset unless given;
+# web_assets.hpp declares each).
 # Run by CMake at build time; no other tool needed.
 if(NOT FUNCTION)
   set(FUNCTION find_web_asset)
 endif()
 set(arrays "")
 set(table "")
-foreach(name index.html app.js style.css)
+foreach(name index.html app.js style.css ${EXTRA_FILES})
   if(name MATCHES "[.]html$")
     set(type "text/html; charset=utf-8")
   elseif(name MATCHES "[.]js$")

@@ -97,6 +97,7 @@ std::vector<PlannedOutput> Simulation::output_files() const {
   }
   add(vcd_path_, options_.vcd_file ? OutputOrigin{"--vcd", "--vcd"} : key("vcd"));
   add(csv_path_, options_.csv_file ? OutputOrigin{"--csv", "--csv"} : key("csv"));
+  add(html_path_, options_.html_file ? OutputOrigin{"--html", "--html"} : key("html"));
   if (scenario_.machine) {
     add(output_path(scenario_.output.svg), key("svg"));
     if (options_.pictures) add(output_path(scenario_.output.png), key("png"));

@@ -30,6 +30,7 @@ Simulation::Simulation(const scenario::Scenario& scenario, const SimulationOptio
   vcd_path_ = options.vcd_file.value_or(output_path(scenario.output.vcd));
   if (!options.write_vcd) vcd_path_.clear();
   csv_path_ = options.csv_file.value_or(output_path(scenario.output.csv));
+  html_path_ = options.html_file.value_or(output_path(scenario.output.html));
   if (options.csv_interval_ms) scenario_.output.csv_interval_ms = *options.csv_interval_ms;
 }
 

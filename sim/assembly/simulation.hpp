@@ -54,6 +54,9 @@ struct SimulationOptions {
   /// input port when the scenario names no vcd_ports.
   std::optional<std::string> vcd_file;
   std::optional<std::string> csv_file;
+  /// The replay page's path instead of the scenario's html (an exact path, like vcd_file). The
+  /// simulation checks it with the other outputs before the run; the front end writes it.
+  std::optional<std::string> html_file;
   /// Replaces the scenario's csv_interval_ms (checked by the caller against ranges::kCsvIntervalMs).
   std::optional<double> csv_interval_ms;
   /// Called now and then with (simulated time so far, total), for a progress bar.
@@ -152,6 +155,9 @@ class Simulation {
   const FiveBarArm* five_bar_arm(const std::string& name) const;
   /// The JSON summary text as it would be written now (wall time left out).
   std::string summary_text() const;
+  /// Where the replay page goes ("" = none): checked with the other outputs by create(), written
+  /// by the front end after finish().
+  const std::string& html_path() const { return html_path_; }
 
  private:
   struct Socket {
@@ -232,6 +238,7 @@ class Simulation {
   int interrupted_by_ = 0;
   std::string output_directory_;
   std::string vcd_path_;  ///< "" = no VCD
+  std::string html_path_;  ///< "" = no replay page
   std::string csv_path_;  ///< "" = no CSV
 
   Scheduler scheduler_;

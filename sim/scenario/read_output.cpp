@@ -24,6 +24,7 @@ void read_output(TableReader& top, ParseContext& context) {
   std::string png = "drawing.png";
   std::string vcd;
   std::string csv;
+  std::string html;
   std::string summary = "summary.json";
   if (const toml::table* table = top.table("output")) {
     TableReader reader(*table, "[output]", context.reporter);
@@ -38,6 +39,7 @@ void read_output(TableReader& top, ParseContext& context) {
                                 {"png", &png},
                                 {"vcd", &vcd},
                                 {"csv", &csv},
+                                {"html", &html},
                                 {"summary", &summary}}) {
       const auto value = reader.string(key);
       if (!value) continue;
@@ -72,6 +74,7 @@ void read_output(TableReader& top, ParseContext& context) {
   output.png = output_file(output.directory, png);
   output.vcd = output_file(output.directory, vcd);
   output.csv = output_file(output.directory, csv);
+  output.html = output_file(output.directory, html);
   output.summary = output_file(output.directory, summary);
 }
 

@@ -211,8 +211,11 @@ struct OutputConfig {
   std::vector<PortLineRef> vcd_ports;
   std::string csv;
   double csv_interval_ms = 10;
+  /// The replay page (one self-contained HTML file; "" = none). The simulator library only
+  /// plans it; the front end records and writes it (sim/view/replay_recorder.hpp).
+  std::string html;
   std::string summary;
-  /// Line of each file key ("svg", "png", "vcd", "csv", "summary") given in [output]; a name left
+  /// Line of each file key ("svg", "png", "vcd", "csv", "html", "summary") given in [output]; a name left
   /// at its default has none.
   std::map<std::string, int> lines;
 };

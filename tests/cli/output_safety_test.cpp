@@ -114,6 +114,40 @@ TEST(OutputSafetyTest, NamesThatWouldLeaveTheOutputFolderAreRefusedWhenTheScenar
   EXPECT_FALSE(fs::exists(fs::path(copy).parent_path() / "x.sd"));
 }
 
+// The replay page (--html, [output] html) is checked and replaced as the other outputs are.
+TEST(OutputSafetyTest, TheReplayPageIsAnOutputLikeTheOthers) {
+  const std::string copy = copy_fixture("html");
+  const std::string scenario_text = read_file(copy + "/scenario.toml");
+  expect_refused(run_sim("--html " + copy + "/scenario.toml " + copy, copy), copy,
+                 "--html: would overwrite the scenario " + copy + "/scenario.toml (an output never replaces an input)");
+  EXPECT_EQ(read_file(copy + "/scenario.toml"), scenario_text);
+  const std::string named = copy_fixture("html_names", "csv = \"r.html\"\nhtml = \"r.html\"\n");
+  const std::string file = named + "/scenario.toml";
+  expect_refused(run_sim(named, named), named,
+                 file + ":15: 'html' would write " + named + "/out/r.html, which 'csv' (" + file + ":14) also writes");
+  fs::create_directories(copy + "/folder.html");
+  expect_refused(run_sim("--html " + copy + "/folder.html " + copy, copy), copy,
+                 "cannot write " + copy + "/folder.html: it is a folder");
+  const CommandResult under_a_file = run_sim("--html " + copy + "/scenario.toml/x.html " + copy, copy);
+  EXPECT_EQ(under_a_file.exit_code, 2);
+  EXPECT_EQ(under_a_file.err.rfind("cannot create the output folder " + copy + "/scenario.toml: ", 0), 0u) << under_a_file.err;
+  EXPECT_EQ(read_file(copy + "/scenario.toml"), scenario_text);
+}
+
+TEST(OutputSafetyTest, AnExistingReplayPageIsReplacedAndNothingBesideIt) {
+  const std::string copy = copy_fixture("html_replaced");
+  fs::create_directories(copy + "/out");
+  std::ofstream(copy + "/out/run.html") << "an older page";
+  std::ofstream(copy + "/out/notes.txt") << "mine";
+  const CommandResult result = run_sim("--html " + copy + "/out/run.html " + copy, copy);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  const std::string page = read_file(copy + "/out/run.html");
+  EXPECT_EQ(page.rfind("<!doctype html>", 0), 0u);
+  EXPECT_NE(page.find("id=\"stepdance-replay\""), std::string::npos);
+  EXPECT_EQ(page.find("<script src"), std::string::npos);
+  EXPECT_EQ(read_file(copy + "/out/notes.txt"), "mine");
+}
+
 TEST(OutputSafetyTest, TheFixtureRunsWhenNothingCollides) {
   const std::string copy = copy_fixture("fine");
   const CommandResult result = run_sim(copy, copy);

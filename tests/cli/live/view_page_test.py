@@ -32,16 +32,13 @@ import socket
 import struct
 import subprocess
 import sys
-import tempfile
 import unittest
-import xml.etree.ElementTree as ElementTree
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
+
+from headless_chromium import Chromium, svg_strokes
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
 LIVE_OUT = os.path.join(WORK_DIR, "view-page-live")
@@ -63,16 +60,6 @@ def batch_scenario():
     with open(path, "w") as out:
         out.write(text)
     return path
-
-
-def svg_strokes(path):
-    """The pen-down polylines of a run's SVG, as lists of (x, y) in mm."""
-    strokes = []
-    for element in ElementTree.parse(path).iter():
-        if element.tag.endswith("polyline"):
-            numbers = [float(n) for n in re.split(r"[ ,]+", element.get("points").strip())]
-            strokes.append(list(zip(numbers[0::2], numbers[1::2])))
-    return strokes
 
 
 def motor_steps(out_dir):
@@ -185,18 +172,12 @@ class ViewPageTest(unittest.TestCase):
         self.browser = None
 
     def open_browser(self):
-        options = Options()
-        options.binary_location = "/usr/bin/chromium"
-        self.profile = tempfile.mkdtemp(prefix="stepdance-chromium-")
-        for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
-                         f"--user-data-dir={self.profile}", "--window-size=1400,1000"):
-            options.add_argument(argument)
-        self.browser = webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
+        self.chromium = Chromium()
+        self.browser = self.chromium.driver
 
     def tearDown(self):
         if self.browser is not None:
-            self.browser.quit()
-            shutil.rmtree(self.profile, ignore_errors=True)
+            self.chromium.quit()
         if self.run_live.poll() is None:
             self.run_live.kill()
             self.run_live.communicate()
