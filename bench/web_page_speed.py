@@ -14,7 +14,6 @@ import argparse
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
 import tempfile
@@ -25,7 +24,7 @@ from selenium.webdriver.support.ui import WebDriverWait
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests", "cli", "live"))
-from view_client import headless_chromium  # noqa: E402
+from headless_chromium import Chromium  # noqa: E402
 
 
 def with_duration(text, seconds):
@@ -55,7 +54,8 @@ args = parser.parse_args()
 server = subprocess.Popen([sys.executable, "-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory",
                            args.site], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
 port = int(re.search(r"port (\d+)", server.stdout.readline()).group(1))
-browser, profile = headless_chromium()
+chromium = Chromium()
+browser = chromium.driver
 try:
     wait = WebDriverWait(browser, 600, poll_frequency=0.005)
     browser.get(f"http://127.0.0.1:{port}/#{args.example}")
@@ -73,8 +73,7 @@ try:
     wait.until(lambda b: b.execute_script("return window.stepdanceSite.result !== null;"))
     page_speed = (args.seconds - started_t) / (time.monotonic() - started)
 finally:
-    browser.quit()
-    shutil.rmtree(profile, ignore_errors=True)
+    chromium.quit()
     server.kill()
 native = native_speed(args.example, text)
 print(f"{args.example}, {args.seconds:g} s simulated, headless Chromium")

@@ -17,7 +17,6 @@ import json
 import math
 import os
 import re
-import shutil
 import subprocess
 import sys
 import unittest
@@ -28,7 +27,7 @@ from selenium.webdriver.support.ui import Select, WebDriverWait
 
 STEPDANCE, SITE_DIR, SOURCE_DIR, WORK_DIR = sys.argv[1:5]
 sys.path.insert(0, os.path.join(SOURCE_DIR, "tests", "cli", "live"))
-from view_client import headless_chromium  # noqa: E402  (the live view tests' browser)
+from headless_chromium import Chromium  # noqa: E402  (the page tests' browser)
 
 
 def native_summary(example):
@@ -53,14 +52,14 @@ class SitePage(unittest.TestCase):
         cls.server.communicate()
 
     def setUp(self):
-        self.browser, self.profile = headless_chromium()
+        self.chromium = Chromium()
+        self.browser = self.chromium.driver
 
     def tearDown(self):
-        self.browser.quit()
-        shutil.rmtree(self.profile, ignore_errors=True)
+        self.chromium.quit()
 
-    def open_example(self, name, scenario="scenario.toml"):
-        self.browser.get(f"http://127.0.0.1:{self.port}/#{name}")
+    def open_example(self, name, scenario="scenario.toml", query=""):
+        self.browser.get(f"http://127.0.0.1:{self.port}/{query}#{name}")
         self.wait_for(lambda: self.browser.find_element(By.ID, "status").text.startswith("ready"), 60)
         Select(self.browser.find_element(By.ID, "scenario-file")).select_by_value(scenario)
 
