@@ -10,6 +10,12 @@ static file server, as a person uses it:
   own numbers, not from either build: 2400 counts a turn, 100 counts a mm, inverted.
 - Step-A-Sketch's scenario edited into a syntax error: the page shows the scenario reader's
   message at its line, the same message and line the native command prints for that text.
+- With `stepdance serve` (no target: the sketch server) on loopback, allowing the page's origin:
+  the sketch becomes editable; an edit that does not compile shows the compiler's error at the
+  edited line; an edit that prints a line compiles, runs there with the page as its view (the
+  line on the view's console), and ends with every expectation met. Without a server the page
+  says how to start one. The server refuses a foreign origin, file names with folders in them,
+  and messages that are not run requests.
 
 Usage: site_page_test.py STEPDANCE_BINARY SITE_DIR SOURCE_DIR WORK_DIR
 """
@@ -28,6 +34,7 @@ from selenium.webdriver.support.ui import Select, WebDriverWait
 STEPDANCE, SITE_DIR, SOURCE_DIR, WORK_DIR = sys.argv[1:5]
 sys.path.insert(0, os.path.join(SOURCE_DIR, "tests", "cli", "live"))
 from headless_chromium import Chromium  # noqa: E402  (the page tests' browser)
+from view_client import RawWebSocket, websocket_status  # noqa: E402
 
 
 def native_summary(example):
@@ -160,6 +167,88 @@ class SitePage(unittest.TestCase):
         marked = self.browser.execute_script(
             "return Array.from(document.querySelectorAll('#scenario-lines .bad')).map(s => s.textContent.trim());")
         self.assertEqual(marked, [str(bad_line)])
+
+
+class SketchServer(SitePage):
+    """The edit path: the page with a local `stepdance serve` compiling its sketch."""
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        cls.serve = subprocess.Popen([STEPDANCE, "serve", "--port", "0", "--allow-origin", f"http://127.0.0.1:{cls.port}",
+                                      "--cache", os.path.join(WORK_DIR, "serve-cache")],
+                                     stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+        cls.serve_port = int(re.search(r"serving sketches on http://127\.0\.0\.1:(\d+)/", cls.serve.stdout.readline()).group(1))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.serve.terminate()
+        cls.serve.communicate(timeout=60)
+        super().tearDownClass()
+
+    # The page tests above run here too, with the server: they need not.
+    test_harmonograph_at_max_speed_ends_as_the_native_run = None
+    test_a_knob_turned_on_the_page_draws_a_stroke = None
+    test_a_syntax_error_is_shown_at_its_line = None
+
+    def edited_sketch(self, edit):
+        self.open_example("StepASketch", query=f"?serve={self.serve_port}")
+        self.wait_for(lambda: self.site("server") is not None and
+                      self.browser.find_element(By.ID, "sketch-editor").is_displayed(), 60)
+        lines = self.browser.find_element(By.ID, "sketch-editor").get_attribute("value").split("\n")
+        at = next(i for i, line in enumerate(lines) if line.startswith("void setup()"))
+        edit(lines, at)
+        self.browser.execute_script("document.getElementById('sketch-editor').value = arguments[0];", "\n".join(lines))
+        self.browser.find_element(By.ID, "run").click()
+        return at
+
+    def test_an_edit_that_does_not_compile_shows_the_error_at_its_line(self):
+        at = self.edited_sketch(lambda lines, at: lines.insert(at, "int broken = ;"))
+        self.wait_for(lambda: any(p["file"] == "StepASketch.ino" for p in self.site("problems")), 300)
+        problem = next(p for p in self.site("problems") if p["file"] == "StepASketch.ino")
+        self.assertEqual(problem["line"], at + 1)
+        self.assertTrue(problem["message"].startswith("error:"), problem)
+
+    def test_an_edited_sketch_runs_on_the_server_with_the_page_as_its_view(self):
+        self.edited_sketch(lambda lines, at: lines.insert(at + 1, '  Serial.println("edited on the page");'))
+        self.wait_view("true", 300)
+        self.browser.switch_to.frame(self.browser.find_element(By.ID, "view"))
+        self.browser.find_element(By.CSS_SELECTOR, "button[data-speed='max']").click()
+        self.browser.switch_to.default_content()
+        self.wait_for(lambda: self.site("result") is not None, 300)
+        console = self.in_view("return Array.from(document.querySelectorAll('[id^=console-]')).map(e => e.textContent).join('');")
+        self.assertIn("edited on the page", console)
+        expectations = self.site("result.expectations")
+        self.assertEqual(len(expectations), 4)
+        self.assertTrue(all(e["checked"] and e["met"] for e in expectations), expectations)
+        self.assertEqual(self.in_view("return window.stepdanceView.strokes.length;"), 4)
+
+    def test_the_server_refuses_foreign_origins_and_bad_requests(self):
+        self.assertIn("403", websocket_status(self.serve_port, "/ws", "http://evil.example"))
+        client = RawWebSocket(self.serve_port, "", origin=f"http://127.0.0.1:{self.port}")
+        self.assertIn("101", client.status)
+        self.assertEqual(client.receive()["type"], "serve_hello")
+        for bad in ({"type": "run", "example": "StepASketch", "files": {"../x.ino": ""}, "scenario": "../x.ino"},
+                    {"type": "run", "example": "../up", "files": {}, "scenario": "scenario.toml"},
+                    {"type": "run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "b.toml"},
+                    {"type": "input", "device": "knob_x", "action": "turn", "counts": 1}):
+            client.send(json.dumps(bad))
+            self.assertEqual(client.receive()["type"], "error", bad)
+        client.close()
+
+
+class WithoutAServer(SitePage):
+    test_harmonograph_at_max_speed_ends_as_the_native_run = None
+    test_a_knob_turned_on_the_page_draws_a_stroke = None
+    test_a_syntax_error_is_shown_at_its_line = None
+
+    def test_the_page_says_how_to_start_a_server(self):
+        # A port nobody listens on (the static server's, once it is gone, is not safe: this one is ours and closed).
+        self.open_example("StepASketch", query="?serve=9")
+        self.wait_for(lambda: "stepdance serve --allow-origin" in self.browser.find_element(By.ID, "serve-state").text, 30)
+        self.assertIn(f"stepdance serve --allow-origin http://127.0.0.1:{self.port}",
+                      self.browser.find_element(By.ID, "serve-state").text)
+        self.assertFalse(self.browser.find_element(By.ID, "sketch-editor").is_displayed())
 
 
 if __name__ == "__main__":
