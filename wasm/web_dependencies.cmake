@@ -16,4 +16,9 @@ target_include_directories(nlohmann_json::nlohmann_json SYSTEM INTERFACE ${web_i
 add_library(tomlplusplus::tomlplusplus INTERFACE IMPORTED)
 target_include_directories(tomlplusplus::tomlplusplus SYSTEM INTERFACE ${web_include_dir})
 target_compile_definitions(tomlplusplus::tomlplusplus INTERFACE TOML_HEADER_ONLY=1)
+# toml++ reports parse errors by exception, caught in the scenario reader: that library alone is
+# compiled with exceptions. Elsewhere emscripten's JavaScript-based exceptions would put a
+# trampoline through JavaScript around every call that may unwind, the simulation's hot path
+# included.
+target_compile_options(tomlplusplus::tomlplusplus INTERFACE -fexceptions)
 add_library(PkgConfig::RE2 INTERFACE IMPORTED)
