@@ -17,6 +17,7 @@
 #include "serve/request_router.hpp"
 #include "serve/serial_device_link.hpp"
 #include "serve/simulated_board_link.hpp"
+#include "serve/sketch_server.hpp"
 #include "serve/web_server.hpp"
 #include "simulator_hooks.hpp"
 
@@ -156,6 +157,22 @@ int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::Simu
   return kExitOk;
 }
 
+/// `stepdance serve` without a target: the Stepdance page's sketch server.
+int run_sketch_server_command(const ServeCommandOptions& options) {
+  if (!options.board.empty() || !options.speed.empty() || !options.output_directory.empty() || options.baud != "115200") {
+    std::cerr << "serve: --board, --speed, --out and --baud need a target; the sketch server takes the page's runs\n";
+    return kExitBadInput;
+  }
+  const auto port = read_integer_option("--port", options.port, ranges::kTcpPort);
+  if (!port) return kExitBadInput;
+  serve::SketchServerOptions server;
+  server.host = options.host;
+  server.port = static_cast<uint16_t>(*port);
+  server.allowed_origins = options.allowed_origins;
+  server.cache_directory = options.cache_directory;
+  return serve::run_sketch_server(server);
+}
+
 }  // namespace
 
 CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
@@ -166,7 +183,9 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
       "folder, run live with a view of its drawing). Listens on 127.0.0.1 only unless --host says otherwise; "
       "only the page's own origin may connect unless --allow-origin adds others. Stop with Ctrl-C; a "
       "simulation then writes its output files.");
-  serve.add_option("target", options.target, "a serial device, or a scenario .toml / example folder")->required();
+  serve.add_option("target", options.target,
+                   "a serial device, or a scenario .toml / example folder; without one, compile and run the "
+                   "sketches the Stepdance page (docs/web.md) sends from an --allow-origin origin");
   serve.add_option("--host", options.host, "address to listen on (default 127.0.0.1)");
   add_number_option(serve, "--port", options.port, "TCP port, in [0, 65,535] (default 8001; 0 picks a free one)");
   serve.add_option("--allow-origin", options.allowed_origins,
@@ -183,6 +202,7 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
 }
 
 int run_serve_command(const ServeCommandOptions& options) {
+  if (options.target.empty()) return run_sketch_server_command(options);
   const bool serial_device = std::filesystem::is_character_file(options.target);
   ServeNumbers numbers;
   if (!read_numbers(options, serial_device, numbers)) return kExitBadInput;

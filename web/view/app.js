@@ -32,8 +32,18 @@ function webSocketTransport(onMessage, onState) {
 
 let transport = null;
 
+/// The transport of a page that shows this one in a frame (the WebAssembly build's page runs the
+/// simulator in its Web Worker), if it offers one; a frame of another origin cannot be asked.
+function embeddingTransport() {
+  try {
+    return window.parent !== window ? window.parent.stepdanceTransport : undefined;
+  } catch (error) {
+    return undefined;
+  }
+}
+
 function connect() {
-  const open = window.stepdanceTransport || webSocketTransport;
+  const open = window.stepdanceTransport || embeddingTransport() || webSocketTransport;
   transport = open(receive, showConnection);
 }
 

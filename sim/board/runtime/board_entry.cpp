@@ -61,21 +61,22 @@ void read_counters(StepdanceCounterFnV1 emit, void* context) {
                           &forwarder);
 }
 
-// Each entry runs guarded, so the simulator can leave it early (see EntryGuard).
+// Each entry runs guarded, so the simulator can leave it early (see EntryGuard; the frequent
+// ones as kGuardFrequentEntries says).
 int run_setup(int64_t now) {
   set_now_ns(now);
   return EntryGuard::run([] { ::setup(); });
 }
 int run_frame_tick(int64_t now) {
   set_now_ns(now);
-  return EntryGuard::run([] {
+  return EntryGuard::run_frequent([] {
     run_frame_isr();
     arduino::run_interval_timers();
   });
 }
 int run_khz_tick(int64_t now) {
   set_now_ns(now);
-  return EntryGuard::run([] {
+  return EntryGuard::run_frequent([] {
     run_khz_isr();
     arduino::run_interval_timers();
   });
@@ -89,7 +90,7 @@ int run_loop(int64_t now) {
 }
 int deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pulse) {
   set_now_ns(now);
-  return EntryGuard::run([port, pulse] { deliver_captured_pulse(port, *pulse); });
+  return EntryGuard::run_frequent([port, pulse] { deliver_captured_pulse(port, *pulse); });
 }
 
 StepdanceBoardV1 board_table = {
