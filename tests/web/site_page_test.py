@@ -32,6 +32,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
 STEPDANCE, SITE_DIR, SOURCE_DIR, WORK_DIR = sys.argv[1:5]
+os.makedirs(WORK_DIR, exist_ok=True)
 sys.path.insert(0, os.path.join(SOURCE_DIR, "tests", "cli", "live"))
 from headless_chromium import Chromium  # noqa: E402  (the page tests' browser)
 from view_client import RawWebSocket, websocket_status  # noqa: E402
