@@ -118,6 +118,9 @@ async function main() {
   const paths = drawing();
   const plan = planning.plan(paths, planning.AxidrawFast);
   await ebb.executePlan(plan);  // EM,2,2 … motions … QM until idle, EM,0,0
+  // EM,0,0 is answered when queued: polled until the FIFO has taken it too, so the interrupt
+  // below cannot come before its frame (it did on a loaded machine).
+  await ebb.waitUntilMotorsIdle();
   plotDone = true;  // from here, the serial stream closing under saxi is expected
   // saxi sends each command as soon as the last one is answered; QM polls after its last motion
   // command (reported, not checked: how many depends on the host's speed) mean moves still ran.
