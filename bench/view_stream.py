@@ -196,9 +196,8 @@ def main():
               f"median {statistics.median(lateness_ms):.2f} ms, 99th percentile "
               f"{statistics.quantiles(lateness_ms, n=100)[98]:.2f} ms, max {max(lateness_ms):.2f} ms "
               f"over {len(updates)} updates")
-    closing = re.search(r"simulated [\d.]+ s in [^\n]*", report)
-    if closing:
-        print("  " + closing.group(0))
+    for line in re.findall(r"(?m)^(?:simulated [\d.]+ s in |pacing: ).*$", report):
+        print("  " + line)  # the run's closing report, and its own pacing figure
 
 
 if __name__ == "__main__":

@@ -198,7 +198,12 @@ class SketchServer {
     building_ = true;
     server_->send(client, json{{"type", "building"}}.dump());
     builder_ = std::thread([this, client, request = std::move(*request), folder = folder_]() {
-      auto built = std::make_shared<Built>(build(request, folder, options_.cache_directory));
+      auto built = std::make_shared<Built>();
+      try {
+        *built = build(request, folder, options_.cache_directory);
+      } catch (const std::exception& failure) {  // a file that cannot be written, say
+        built->errors = failure.what();
+      }
       net::post(io_, [this, client, built]() { built_one(client, std::move(*built)); });
     });
   }
