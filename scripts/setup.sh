@@ -10,6 +10,7 @@ packages=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib qemu-system-arm
   gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev
   libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libcairo2-dev sigrok-cli
+  libunicorn-dev  # unicorn: the Cortex-M7 that runs firmware images in the simulator (sim/image)
   libre2-dev  # RE2: scenario reply patterns matched in time linear in the line
   clang  # libFuzzer targets (scripts/fuzz.sh)
   universal-ctags  # function lengths for the structure check (scripts/check-function-length.sh)
