@@ -4,6 +4,8 @@
 
 #include <cstdio>
 
+#include "kernel/scheduler/scheduler.hpp"
+
 #include "image/cpu/block_cache.hpp"
 #include "image/cpu/image_chip.hpp"
 
@@ -97,6 +99,7 @@ void ImageChip::access(bool system, uint32_t address, unsigned size, bool is_wri
   const auto bytes = static_cast<uint8_t>(size);
   const bool done = is_write ? bus.write(address, bytes, value, refusal) : bus.read(address, bytes, value, refusal);
   in_access_ = false;
+  shorten_run();
   if (done) return;
   value = 0;
   if (refusal.kind == BusRefusal::Kind::kGateOff || refusal.kind == BusRefusal::Kind::kBusError) {
@@ -106,6 +109,12 @@ void ImageChip::access(bool system, uint32_t address, unsigned size, bool is_wri
     return;
   }
   raise_fault(ImageStop::Kind::kUnmodelledAccess, "unmodelled register: " + refusal.describe(), pc);
+}
+
+// A register access may have queued an event (a timer started): the run must not pass it.
+void ImageChip::shorten_run() {
+  const uint64_t limit = cycles_at(scheduler_.next_time(time_of_cycle(run_limit_)));
+  if (limit < run_limit_) run_limit_ = limit;
 }
 
 // Which instruction of the running block makes this access: the next load or store through a

@@ -6,6 +6,8 @@
 #include "image/cpu/image_chip.hpp"
 #include "image/cpu/system_blocks.hpp"
 #include "kernel/scheduler/scheduler.hpp"
+#include <cstdio>
+#include <cstdlib>
 
 namespace stepdance::sim::image {
 namespace {
@@ -38,15 +40,16 @@ Masks ImageChip::masks() const {
 void ImageChip::run() {
   if (stopped_) return;
   const SimTime now = scheduler_.now();
-  SimTime end = scheduler_.next_time(now + kMaxSliceNs);
-  if (end > now + kMaxSliceNs) end = now + kMaxSliceNs;
-  const uint64_t limit = cycles_at(end);
+  // Park this event at the slice's end first: while it fires it still heads the queue.
+  scheduler_.schedule(event_, now + kMaxSliceNs);
+  const uint64_t limit = cycles_at(scheduler_.next_time(now + kMaxSliceNs));
   end_run_ = false;
-  while (!stopped_ && stop_ == nullptr && retired_ < limit && !end_run_) {
+  run_limit_ = limit;
+  while (!stopped_ && stop_ == nullptr && retired_ < run_limit_ && !end_run_) {
     recheck_ = false;
     take_pending_exception();
     if (stop_ != nullptr) break;
-    run_slice(limit);
+    run_slice();
   }
   if (stop_ != nullptr) finish_stop();
   if (stopped_) return;
@@ -55,12 +58,12 @@ void ImageChip::run() {
 }
 
 // Runs the emulator until the block hook ends it (limit, a pend, a stop) or a fault does.
-void ImageChip::run_slice(uint64_t limit) {
-  run_limit_ = limit;
+void ImageChip::run_slice() {
   in_run_ = true;
   we_stopped_ = false;
   const uint32_t pc = read_register(UC_ARM_REG_PC) | 1u;
   const uc_err error = uc_emu_start(uc_, pc, kNoUntil, 0, 0);
+  if (getenv("IMGCPU_DEBUG")) fprintf(stderr, "slice pc=%x err=%d retired=%lu limit=%lu stopped=%d stop=%p\n", pc, error, (unsigned long)retired_, (unsigned long)run_limit_, we_stopped_, (void*)stop_.get());
   in_run_ = false;
   block_ = nullptr;
   if (stop_ != nullptr || we_stopped_) return;
@@ -69,19 +72,19 @@ void ImageChip::run_slice(uint64_t limit) {
                 read_register(UC_ARM_REG_PC));
     return;
   }
-  sleep_until_interrupt(limit);  // the emulator returned by itself: WFI/WFE
+  sleep_until_interrupt();  // the emulator returned by itself: WFI/WFE
 }
 
 // WFI or WFE: the core sleeps until an interrupt; nothing to run until the limit. If nothing can
 // ever interrupt it, that is no progress.
-void ImageChip::sleep_until_interrupt(uint64_t limit) {
+void ImageChip::sleep_until_interrupt() {
   if (!exceptions_.can_be_interrupted(masks(), system_blocks_->systick().ticking()) && !exceptions_.any_pending()) {
     raise_fault(ImageStop::Kind::kNoProgress,
                 "no progress: the core sleeps (WFI/WFE) with no interrupt enabled that could wake it",
                 read_register(UC_ARM_REG_PC));
     return;
   }
-  if (retired_ < limit) retired_ = limit;
+  if (retired_ < run_limit_) retired_ = run_limit_;
   recheck_ = true;
 }
 

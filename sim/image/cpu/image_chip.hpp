@@ -142,12 +142,13 @@ class ImageChip : public ChipContext {
 
   // running (cpu_run.cpp)
   void run();
-  void run_slice(uint64_t limit);
+  void run_slice();
   void install_hooks();
   static void on_block(uc_struct* uc, uint64_t address, uint32_t size, void* user);
   bool block_must_stop(const ThumbBlock& block, uint32_t address);
   bool spin(uint32_t address);
-  void sleep_until_interrupt(uint64_t limit);
+  void sleep_until_interrupt();
+  void shorten_run();
   uint64_t cycles_at(SimTime time_ns) const;
   Masks masks() const;
 
