@@ -6,8 +6,6 @@
 #include "image/cpu/image_chip.hpp"
 #include "image/cpu/system_blocks.hpp"
 #include "kernel/scheduler/scheduler.hpp"
-#include <cstdio>
-#include <cstdlib>
 
 namespace stepdance::sim::image {
 namespace {
@@ -63,7 +61,6 @@ void ImageChip::run_slice() {
   we_stopped_ = false;
   const uint32_t pc = read_register(UC_ARM_REG_PC) | 1u;
   const uc_err error = uc_emu_start(uc_, pc, kNoUntil, 0, 0);
-  if (getenv("IMGCPU_DEBUG")) fprintf(stderr, "slice pc=%x err=%d retired=%lu limit=%lu stopped=%d stop=%p\n", pc, error, (unsigned long)retired_, (unsigned long)run_limit_, we_stopped_, (void*)stop_.get());
   in_run_ = false;
   block_ = nullptr;
   if (stop_ != nullptr || we_stopped_) return;
