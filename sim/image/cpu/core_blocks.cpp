@@ -35,6 +35,7 @@ Access MpuBlock::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
 
 Access MpuBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
   if (bytes != 4) return Access::kUnmodelled;
+  ++core_.mpu_generation;
   switch (offset) {
     case 0x4: core_.mpu_ctrl = value & 0x7; return Access::kOk;
     case 0x8: core_.mpu_rnr = value & 0xFF; return Access::kOk;
@@ -56,7 +57,9 @@ Access DebugBlock::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
 
 Access DebugBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
   if (bytes != 4 || offset != 0xC) return Access::kUnmodelled;
+  const uint32_t count = dwt_.cyccnt();  // TRCENA gates CYCCNT: keep its value across the change
   core_.demcr = value & 0x010F07F1;
+  dwt_.restart_count(count);
   return Access::kOk;
 }
 
@@ -128,7 +131,7 @@ Access DwtBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
 }
 
 SystemBlocks::SystemBlocks(ImageChip& chip, ExceptionState& state, CoreRegisters& core)
-    : scs_(core), systick_(chip), nvic_(chip, state), scb_(chip, state, core), mpu_(core), debug_(core),
+    : scs_(core), systick_(chip), nvic_(chip, state), scb_(chip, state, core), mpu_(core), debug_(core, dwt_),
       extra_(chip, core), dwt_(chip, core) {}
 
 void SystemBlocks::add_to(PeripheralBus& bus) {

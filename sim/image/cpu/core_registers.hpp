@@ -32,6 +32,7 @@ struct CoreRegisters {
   uint32_t mpu_rnr = 0;         ///< B3.5.8
   std::array<uint32_t, 16> mpu_rbar{};  ///< B3.5.9 (Cortex-M7 has 16 regions: TRM 6.1)
   std::array<uint32_t, 16> mpu_rasr{};  ///< B3.5.10
+  uint32_t mpu_generation = 0;  ///< bumped by every MPU register write (the CPU re-applies them)
   uint32_t csselr = 0;          ///< B4.8.3 cache size selection
   uint64_t cache_operations = 0;  ///< writes to the cache maintenance registers, counted
 

@@ -80,7 +80,11 @@ bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
 bool ImageChip::on_unmapped(uc_struct*, int type, uint64_t address, int size, int64_t, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
   const auto where = static_cast<uint32_t>(address);
-  const bool fetch = type == UC_MEM_FETCH_UNMAPPED || type == UC_MEM_FETCH_PROT;
+  if (type == UC_MEM_READ_PROT || type == UC_MEM_WRITE_PROT || type == UC_MEM_FETCH_PROT) {
+    chip.protection_fault(type, where, size);
+    return false;
+  }
+  const bool fetch = type == UC_MEM_FETCH_UNMAPPED;
   if (fetch) {
     chip.core_.cfsr |= 1u << 8;  // BFSR.IBUSERR
     chip.fault(kBusFault, "BusFault: instruction fetch from " + hex(where) + ", where no memory is", where);
@@ -88,10 +92,15 @@ bool ImageChip::on_unmapped(uc_struct*, int type, uint64_t address, int size, in
   }
   const bool write = type == UC_MEM_WRITE_UNMAPPED || type == UC_MEM_WRITE_PROT;
   const uint32_t pc = chip.note_access_position(where);
+  const uint32_t sp = chip.read_register(UC_ARM_REG_SP);
+  if (chip.stack_overflows(sp) && where < sp + 256 && where + 256 > sp) {
+    chip.stack_fault(sp, pc);  // a push past the bottom into unmapped memory
+    return false;
+  }
   chip.core_.cfsr |= (1u << 9) | (1u << 15);  // BFSR.PRECISERR, BFARVALID
   chip.core_.bfar = where;
   const std::string access = std::string(write ? "write" : "read") + " of " + std::to_string(size) + " bytes at " + hex(where);
-  chip.fault(kBusFault, "BusFault: " + access + (type == UC_MEM_WRITE_PROT ? " (flash is read-only)" : ", where no memory is"), pc);
+  chip.fault(kBusFault, "BusFault: " + access + ", where no memory is", pc);
   return false;
 }
 

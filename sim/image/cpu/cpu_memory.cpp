@@ -47,6 +47,13 @@ void ImageChip::map_memory() {
   }
 }
 
+std::vector<ImageChip::MemoryWindow> ImageChip::memories() const {
+  std::vector<MemoryWindow> list;
+  for (const Memory& ram : kRam) list.push_back({ram.base, ram.size_bytes, UC_PROT_ALL});
+  list.push_back({kFlashBase, flash_bytes_, UC_PROT_READ | UC_PROT_EXEC});
+  return list;
+}
+
 bool ImageChip::place_segment(const ElfSegment& segment, std::string& error) {
   const uint64_t begin = segment.physical_address;
   const uint64_t end = begin + segment.memory_bytes;

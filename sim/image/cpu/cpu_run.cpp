@@ -20,8 +20,7 @@ void ImageChip::install_hooks() {
   uc_hook_add(uc_, &hook, UC_HOOK_BLOCK, reinterpret_cast<void*>(&on_block), this, 1, 0);
   uc_hook_add(uc_, &hook, UC_HOOK_INTR, reinterpret_cast<void*>(&on_interrupt), this, 1, 0);
   uc_hook_add(uc_, &hook, UC_HOOK_INSN_INVALID, reinterpret_cast<void*>(&on_invalid_instruction), this, 1, 0);
-  uc_hook_add(uc_, &hook, UC_HOOK_MEM_UNMAPPED | UC_HOOK_MEM_WRITE_PROT | UC_HOOK_MEM_FETCH_PROT,
-              reinterpret_cast<void*>(&on_unmapped), this, 1, 0);
+  uc_hook_add(uc_, &hook, UC_HOOK_MEM_UNMAPPED | UC_HOOK_MEM_PROT, reinterpret_cast<void*>(&on_unmapped), this, 1, 0);
 }
 
 void ImageChip::CpuEvent::fire(Event& event, Scheduler&) { static_cast<CpuEvent&>(event).chip->run(); }
@@ -44,9 +43,14 @@ void ImageChip::run() {
   end_run_ = false;
   run_limit_ = limit;
   while (!stopped_ && stop_ == nullptr && retired_ < run_limit_ && !end_run_) {
+    if (mpu_applied_ != core_.mpu_generation) apply_mpu();
     recheck_ = false;
     take_pending_exception();
     if (stop_ != nullptr) break;
+    if (step_block_ != nullptr) {
+      step_through_block();
+      continue;
+    }
     run_slice();
   }
   if (stop_ != nullptr) finish_stop();
@@ -87,6 +91,7 @@ void ImageChip::sleep_until_interrupt() {
 
 void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
+  if (chip.stepping_) return;  // counted one by one by step_through_block
   const ThumbBlock& block = chip.blocks_->get(static_cast<uint32_t>(address), size);
   if (chip.block_must_stop(block, static_cast<uint32_t>(address))) {
     chip.we_stopped_ = true;
@@ -104,13 +109,47 @@ void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* u
 // True if the run must end before `block`: the limit is reached, the run was ended, an exception
 // has become takeable, or the block is a spin nothing can interrupt (a stop).
 bool ImageChip::block_must_stop(const ThumbBlock& block, uint32_t address) {
-  if (stop_ != nullptr || end_run_ || retired_ >= run_limit_) return true;
+  if (stop_ != nullptr || end_run_ || retired_ >= run_limit_ || mpu_applied_ != core_.mpu_generation) return true;
+  if (check_sp_ && stack_pointer_overflowed(address)) return true;
+  check_sp_ = block.lowers_sp;
   if (recheck_ || check_masks_) {
     recheck_ = false;
     if (exceptions_.any_pending() && exceptions_.next_to_take(masks()) != 0) return true;
   }
   if (block.branches_to_itself) return spin(address);
+  if (!block.divides.empty() && (core_.ccr & CoreRegisters::kCcrDiv0Trp) != 0) {
+    step_block_ = &block;  // run it one instruction at a time to check each divisor
+    step_address_ = address;
+    return true;
+  }
   return false;
+}
+
+// CCR.DIV_0_TRP with a divide in the block: the emulator does not trap a divide by zero, so the
+// block runs one instruction at a time and each divide's divisor is read before it runs.
+void ImageChip::step_through_block() {
+  const ThumbBlock& block = *step_block_;
+  const uint32_t start = step_address_;
+  step_block_ = nullptr;
+  stepping_ = true;
+  // The cached translation has no per-instruction stop: drop it so the step count applies.
+  uc_ctl_remove_cache(uc_, start, start + block.bytes);
+  for (uint32_t n = 0; n < block.instructions && stop_ == nullptr; ++n) {
+    const uint32_t pc = read_register(UC_ARM_REG_PC);
+    if (pc < start || pc - start >= 0x10000) break;  // left the block (a branch, an exception)
+    for (const BlockDivide& divide : block.divides) {
+      if (pc - start != divide.offset || read_register(UC_ARM_REG_R0 + divide.rm) != 0) continue;
+      core_.cfsr |= 1u << 25;  // UFSR.DIVBYZERO
+      fault(kUsageFault, "UsageFault: divide by zero (CCR.DIV_0_TRP is set)", pc);
+    }
+    if (stop_ != nullptr) break;
+    in_run_ = true;
+    uc_emu_start(uc_, pc | 1u, kNoUntil, 0, 1);
+    in_run_ = false;
+    ++retired_;
+    handler_costs_[current_exception_].instructions += 1;
+  }
+  stepping_ = false;
 }
 
 // A branch to itself: if some interrupt can still come, the core idles to the run's limit (the

@@ -52,6 +52,13 @@ std::vector<std::string> ImageChip::backtrace(uint32_t pc, uint32_t lr, uint32_t
 // puts a 32-byte no-access region at _ebss), else `_ebss` (the stack grows down toward .bss in
 // DTCM: Teensyduino's imxrt1062*.ld), else nothing (0: not checked).
 uint32_t ImageChip::stack_limit() const {
+  if (stack_limit_generation_ == core_.mpu_generation) return stack_limit_;
+  stack_limit_generation_ = core_.mpu_generation;
+  stack_limit_ = compute_stack_limit();
+  return stack_limit_;
+}
+
+uint32_t ImageChip::compute_stack_limit() const {
   uint32_t limit = 0;
   image_.symbols.find("_ebss", limit);
   if ((core_.mpu_ctrl & 1) == 0) return limit;
@@ -67,9 +74,22 @@ uint32_t ImageChip::stack_limit() const {
   return limit;
 }
 
+// SP below the bottom (by less than 1 MB: a wild SP elsewhere is a different fault).
 bool ImageChip::stack_overflows(uint32_t sp) const {
   const uint32_t limit = stack_limit();
-  return limit != 0 && sp < limit && sp >= 0x20000000 && sp < 0x20080000;
+  return limit != 0 && sp < limit && limit - sp <= (1u << 20);
+}
+
+// At a block after one that lowered SP: has SP gone below the stack's bottom? (Checked after
+// every block that pushes or allocates a frame: the overflowing frame's own stores may already
+// have reached the data below, as on a chip without a guard region that catches them.)
+bool ImageChip::stack_pointer_overflowed(uint32_t address) {
+  check_sp_ = false;
+  const uint32_t sp = read_register(UC_ARM_REG_SP);
+  if (!stack_overflows(sp)) return false;
+  block_address_ = address;
+  stack_fault(sp, address);
+  return true;
 }
 
 void ImageChip::stack_fault(uint32_t sp, uint32_t pc) {

@@ -135,6 +135,18 @@ class ImageChip : public ChipContext {
     bool system = false;
   };
   bool in_memory(uint32_t address, size_t bytes) const;
+  /// RAM and flash: base, size and protection without an MPU (UC_PROT_*).
+  struct MemoryWindow {
+    uint32_t base;
+    uint32_t size_bytes;
+    uint32_t natural;
+  };
+  std::vector<MemoryWindow> memories() const;
+
+  // MPU (cpu_mpu.cpp)
+  uint32_t page_protection(uint64_t page, uint64_t page_bytes, uint32_t natural) const;
+  void apply_mpu();
+  void protection_fault(int type, uint32_t address, int size);
   static uint64_t mmio_read(uc_struct* uc, uint64_t offset, unsigned size, void* user);
   static void mmio_write(uc_struct* uc, uint64_t offset, unsigned size, uint64_t value, void* user);
   void access(bool system, uint32_t address, unsigned size, bool is_write, uint32_t& value);
@@ -171,6 +183,9 @@ class ImageChip : public ChipContext {
   void finish_stop();
   std::vector<std::string> backtrace(uint32_t pc, uint32_t lr, uint32_t sp) const;
   uint32_t stack_limit() const;
+  uint32_t compute_stack_limit() const;
+  bool stack_pointer_overflowed(uint32_t address);
+  void step_through_block();
 
   Scheduler& scheduler_;
   TeensyModel model_;
@@ -211,6 +226,13 @@ class ImageChip : public ChipContext {
   bool powered_ = false;
   std::unique_ptr<ImageStop> stop_;  ///< a stop found inside a run, reported when it ends
   unsigned current_exception_ = 0;
+  uint32_t mpu_applied_ = 0;            ///< core_.mpu_generation last applied to the pages
+  mutable uint32_t stack_limit_generation_ = ~0u;
+  mutable uint32_t stack_limit_ = 0;    ///< cached stack_limit() for that MPU generation
+  bool check_sp_ = false;               ///< the previous block lowered SP: check it at this one
+  const ThumbBlock* step_block_ = nullptr;  ///< a block with a divide to run one instruction at a time
+  uint32_t step_address_ = 0;
+  bool stepping_ = false;
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
 };
 

@@ -130,9 +130,10 @@ class MpuBlock : public Peripheral {
 };
 
 /// Core debug (0xE000EDF0; C1.6): DEMCR only (TRCENA gates the DWT).
+class DwtBlock;
 class DebugBlock : public Peripheral {
  public:
-  explicit DebugBlock(CoreRegisters& core) : core_(core) {}
+  DebugBlock(CoreRegisters& core, DwtBlock& dwt) : core_(core), dwt_(dwt) {}
   const char* name() const override { return "CoreDebug"; }
   uint32_t base() const override { return 0xE000EDF0; }
   uint32_t size_bytes() const override { return 0x10; }
@@ -141,6 +142,7 @@ class DebugBlock : public Peripheral {
 
  private:
   CoreRegisters& core_;
+  DwtBlock& dwt_;
 };
 
 /// STIR, the FPU's FPCCR/FPCAR/FPDSCR/MVFR0-2 and cache maintenance (0xE000EF00..0xE000EF7F;
@@ -171,9 +173,10 @@ class DwtBlock : public Peripheral {
   Access write(uint32_t offset, uint8_t bytes, uint32_t value) override;
   /// CYCCNT now.
   uint32_t cyccnt() const;
+  /// CYCCNT holds `value` now and counts on from here if CYCCNTENA and TRCENA are on.
+  void restart_count(uint32_t value);
 
  private:
-  void restart_count(uint32_t value);
   ImageChip& chip_;
   CoreRegisters& core_;
 };

@@ -37,6 +37,20 @@ Class classify32(uint16_t hw1) {
   return {};
 }
 
+// Instructions that lower SP (A6.7): PUSH, SUB SP,#imm, MOV SP,Rm; PUSH.W (STMDB SP!), STR
+// Rt,[SP,#-imm]!, SUB.W/SUBW SP,SP,#imm, SUB SP,SP,Rm (32-bit), VPUSH.
+bool lowers_sp(uint16_t hw1, uint16_t hw2, unsigned length) {
+  if (length == 2) return (hw1 & 0xFE00) == 0xB400 || (hw1 & 0xFF80) == 0xB080 || (hw1 & 0xFF87) == 0x4685;
+  const bool rd_sp = (hw2 & 0x0F00) == 0x0D00;
+  return hw1 == 0xE92D || (hw1 == 0xF84D && rd_sp) || ((hw1 & 0xFBEF) == 0xF1AD && rd_sp) ||
+         ((hw1 & 0xFBFF) == 0xF2AD && rd_sp) || ((hw1 & 0xFFEF) == 0xEBAD && rd_sp) || (hw1 & 0xFFBF) == 0xED2D;
+}
+
+// SDIV (0xFB9x) and UDIV (0xFBBx) with hw2 bits [7:4] = 1111 (A6.7.111, A6.7.145).
+bool is_divide(uint16_t hw1, uint16_t hw2) {
+  return ((hw1 & 0xFFF0) == 0xFB90 || (hw1 & 0xFFF0) == 0xFBB0) && (hw2 & 0x00F0) == 0x00F0;
+}
+
 // `b .` (16-bit 0xE7FE) or `b.w .` (0xF7FF 0xBFFE).
 bool branches_to_itself(const uint8_t* code, unsigned length) {
   const auto hw1 = static_cast<uint16_t>(code[0] | code[1] << 8);
@@ -49,11 +63,15 @@ bool branches_to_itself(const uint8_t* code, unsigned length) {
 
 ThumbBlock decode_thumb_block(uint32_t address, const uint8_t* code, size_t bytes) {
   ThumbBlock block;
+  block.bytes = static_cast<uint32_t>(bytes);
   size_t offset = 0;
   while (offset + 2 <= bytes) {
     const auto hw = static_cast<uint16_t>(code[offset] | code[offset + 1] << 8);
     const unsigned length = thumb_instruction_bytes(hw);
     const Class kind = length == 2 ? classify16(hw) : classify32(hw);
+    const auto hw2 = static_cast<uint16_t>(offset + 4 <= bytes && length == 4 ? code[offset + 2] | code[offset + 3] << 8 : 0);
+    if (lowers_sp(hw, hw2, length)) block.lowers_sp = true;
+    if (length == 4 && is_divide(hw, hw2)) block.divides.push_back({static_cast<uint16_t>(offset), static_cast<uint8_t>(hw2 & 0xF)});
     if (kind.base != kNone && kind.base != kSp && kind.base != kPc) {
       block.accesses.push_back(
           {static_cast<uint16_t>(block.instructions), static_cast<uint16_t>(offset), kind.base, kind.multiple});

@@ -21,10 +21,20 @@ struct BlockAccess {
   bool multiple = false;  ///< LDM/STM/LDRD/STRD/VLDM/VSTM: more than one access
 };
 
+/// An SDIV or UDIV in a block (its divisor register Rm), for CCR.DIV_0_TRP.
+struct BlockDivide {
+  uint16_t offset = 0;  ///< byte offset in the block
+  uint8_t rm = 0;
+};
+
 /// One decoded block: the instruction count and the peripheral-capable accesses, in order.
 struct ThumbBlock {
+  uint32_t bytes = 0;
   uint32_t instructions = 0;
   std::vector<BlockAccess> accesses;
+  std::vector<BlockDivide> divides;
+  /// True if an instruction lowers SP (PUSH, SUB SP, STR/STMDB/VPUSH with SP writeback, MOV SP).
+  bool lowers_sp = false;
   /// True if the block is one instruction that branches to itself (`b .`).
   bool branches_to_itself = false;
 };

@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <unicorn/unicorn.h>
+
+#include <cstdio>
+
 #include "image/cpu/image_chip.hpp"
 #include "kernel/scheduler/scheduler.hpp"
 
