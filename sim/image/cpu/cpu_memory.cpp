@@ -124,19 +124,41 @@ void ImageChip::shorten_run() {
   if (limit < run_limit_) run_limit_ = limit;
 }
 
-// Which instruction of the running block makes this access: the next load or store through a
-// general register after the previous access's (a multiple-access one keeps its place). Sets the
-// access's cycle count and returns the instruction's address.
-uint32_t ImageChip::note_access_position(uint32_t) {
+// Could `access` make an access at `address`, with the registers as they are now? (The base
+// register is written back after the access, so it still holds the instruction's own value.)
+bool ImageChip::could_access(const BlockAccess& access, uint32_t address) const {
+  const uint32_t base = read_register(UC_ARM_REG_R0 + access.base);
+  switch (access.mode) {
+    case AddressMode::kOffset: return address - base == static_cast<uint32_t>(access.displacement);
+    case AddressMode::kBase: return address == base;
+    case AddressMode::kRegister: return address == base + (read_register(UC_ARM_REG_R0 + access.rm) << access.shift);
+    case AddressMode::kRange: return address - (base + static_cast<uint32_t>(access.displacement)) < access.span;
+    case AddressMode::kAny: return true;
+  }
+  return true;
+}
+
+// Which instruction of the running block makes this register access: the first load or store
+// through a general register, from the one after the previous access's, whose address (worked
+// out from the registers now) is this one; else the first candidate. Sets the access's cycle
+// count and returns the instruction's address. (Exact unless an earlier load or store of the same
+// block, recomputed with today's registers, also gives this address.)
+uint32_t ImageChip::note_access_position(uint32_t address) {
   access_cycles_ = retired_;
   if (block_ == nullptr) return block_address_;
   const std::vector<BlockAccess>& list = block_->accesses;
-  if (list.empty()) {
-    access_cycles_ = block_start_;
-    return block_address_;
+  if (list.empty() || access_cursor_ >= list.size()) {
+    access_cycles_ = list.empty() ? block_start_ : block_start_ + list.back().index;
+    return block_address_ + (list.empty() ? 0 : list.back().offset);
   }
-  const size_t at = access_cursor_ < list.size() ? access_cursor_ : list.size() - 1;
-  if (!list[at].multiple && access_cursor_ < list.size()) ++access_cursor_;
+  size_t at = access_cursor_;
+  for (size_t i = access_cursor_; i < list.size(); ++i) {
+    if (could_access(list[i], address)) {
+      at = i;
+      break;
+    }
+  }
+  access_cursor_ = list[at].multiple ? at : at + 1;
   access_cycles_ = block_start_ + list[at].index;
   return block_address_ + list[at].offset;
 }

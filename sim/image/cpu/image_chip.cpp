@@ -83,8 +83,9 @@ void ImageChip::power_on(SimTime time_ns) {
 
 void ImageChip::set_core_clock_hz(uint32_t hz) {
   if (hz == 0 || hz == core_hz_) return;
-  base_cycle_ = cycles();
-  base_ns_ = time_of_cycle(base_cycle_);
+  const uint64_t cycle = cycles();
+  base_ns_ = time_of_cycle(cycle);  // at the old clock
+  base_cycle_ = cycle;
   core_hz_ = hz;
   system_blocks_->systick().clock_changed();
   end_run_ = true;  // the run's limit was in cycles of the old clock

@@ -25,6 +25,7 @@ namespace stepdance::sim::image {
 class BlockCache;
 class SystemBlocks;
 struct ThumbBlock;
+struct BlockAccess;
 
 enum class TeensyModel { kTeensy40, kTeensy41 };
 
@@ -151,6 +152,7 @@ class ImageChip : public ChipContext {
   static void mmio_write(uc_struct* uc, uint64_t offset, unsigned size, uint64_t value, void* user);
   void access(bool system, uint32_t address, unsigned size, bool is_write, uint32_t& value);
   uint32_t note_access_position(uint32_t address);
+  bool could_access(const BlockAccess& access, uint32_t address) const;
 
   // running (cpu_run.cpp)
   void run();

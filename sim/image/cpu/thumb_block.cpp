@@ -13,6 +13,53 @@ struct Class {
   bool multiple = false;
 };
 
+// Address forms of the 16-bit loads and stores (A6.2.4): register offset (0101), word/byte
+// immediate (011B), halfword immediate (1000), LDM/STM (1100).
+void address16(uint16_t hw, BlockAccess& access) {
+  if ((hw >> 12) == 0x5) {
+    access.mode = AddressMode::kRegister;
+    access.rm = (hw >> 6) & 7;
+  } else if ((hw >> 13) == 0x3) {
+    access.mode = AddressMode::kOffset;
+    access.displacement = static_cast<int32_t>((hw >> 6) & 0x1F) * ((hw & 0x1000) ? 1 : 4);
+  } else if ((hw >> 12) == 0x8) {
+    access.mode = AddressMode::kOffset;
+    access.displacement = static_cast<int32_t>((hw >> 6) & 0x1F) * 2;
+  } else if ((hw >> 12) == 0xC) {
+    access.mode = AddressMode::kRange;
+    access.span = 4u * static_cast<uint32_t>(__builtin_popcount(hw & 0xFF));
+  }
+}
+
+// Address forms of the 32-bit single loads and stores (A6.3.7-10: imm12, imm8 with P/U/W,
+// register), LDRD/STRD (A6.3.6) and LDM/STM (A6.3.5).
+void address32(uint16_t hw1, uint16_t hw2, BlockAccess& access) {
+  if ((hw1 & 0xFE00) == 0xF800) {
+    if (hw1 & 0x0080) {
+      access.mode = AddressMode::kOffset;
+      access.displacement = hw2 & 0xFFF;
+    } else if ((hw2 & 0x0FC0) == 0) {
+      access.mode = AddressMode::kRegister;
+      access.rm = hw2 & 0xF;
+      access.shift = (hw2 >> 4) & 3;
+    } else if (hw2 & 0x0800) {
+      const bool pre = (hw2 & 0x0400) != 0, up = (hw2 & 0x0200) != 0;
+      access.mode = pre ? AddressMode::kOffset : AddressMode::kBase;
+      access.displacement = pre ? (up ? 1 : -1) * static_cast<int32_t>(hw2 & 0xFF) : 0;
+    }
+  } else if ((hw1 & 0xFE40) == 0xE840 && (hw1 & 0x0120) != 0) {  // LDRD/STRD
+    const bool pre = (hw1 & 0x0100) != 0, up = (hw1 & 0x0080) != 0;
+    access.mode = AddressMode::kRange;
+    access.displacement = pre ? (up ? 4 : -4) * static_cast<int32_t>(hw2 & 0xFF) : 0;
+    access.span = 8;
+  } else if ((hw1 & 0xFE40) == 0xE800) {  // LDM/STM: IA (01) or DB (10)
+    const uint32_t bytes = 4u * static_cast<uint32_t>(__builtin_popcount(hw2));
+    access.mode = AddressMode::kRange;
+    access.displacement = (hw1 & 0x0180) == 0x0100 ? -static_cast<int32_t>(bytes) : 0;
+    access.span = bytes;
+  }
+}
+
 // 16-bit encodings (A5.2): load/store single (0101, 011x, 1000), SP-relative (1001), literal
 // (01001), PUSH/POP (1011 x10x), LDM/STM (1100).
 Class classify16(uint16_t hw) {
@@ -68,13 +115,18 @@ ThumbBlock decode_thumb_block(uint32_t address, const uint8_t* code, size_t byte
   while (offset + 2 <= bytes) {
     const auto hw = static_cast<uint16_t>(code[offset] | code[offset + 1] << 8);
     const unsigned length = thumb_instruction_bytes(hw);
-    const Class kind = length == 2 ? classify16(hw) : classify32(hw);
     const auto hw2 = static_cast<uint16_t>(offset + 4 <= bytes && length == 4 ? code[offset + 2] | code[offset + 3] << 8 : 0);
+    const Class kind = length == 2 ? classify16(hw) : classify32(hw);
     if (lowers_sp(hw, hw2, length)) block.lowers_sp = true;
     if (length == 4 && is_divide(hw, hw2)) block.divides.push_back({static_cast<uint16_t>(offset), static_cast<uint8_t>(hw2 & 0xF)});
     if (kind.base != kNone && kind.base != kSp && kind.base != kPc) {
-      block.accesses.push_back(
-          {static_cast<uint16_t>(block.instructions), static_cast<uint16_t>(offset), kind.base, kind.multiple});
+      BlockAccess access;
+      access.index = static_cast<uint16_t>(block.instructions);
+      access.offset = static_cast<uint16_t>(offset);
+      access.base = kind.base;
+      access.multiple = kind.multiple;
+      if (length == 2) address16(hw, access); else address32(hw, hw2, access);
+      block.accesses.push_back(access);
     }
     if (block.instructions == 0 && offset + length == bytes) block.branches_to_itself = branches_to_itself(code, length);
     ++block.instructions;

@@ -46,6 +46,9 @@ struct Fixture {
     chip->power_on(0);
     return true;
   }
+  /// Runs the CPU to exactly `time_ns`: an event queued there ends its run, and the scheduler
+  /// stops just before handling it (the CPU's next run, which would start a new slice there).
+  void run_to(SimTime time_ns);
   /// The address of symbol `name` (fails the test if absent).
   uint32_t address_of(const std::string& name) const {
     uint32_t address = 0;
@@ -72,4 +75,12 @@ class At : public Event {
   std::function<void()> action_;
 };
 
+}  // namespace stepdance::sim::image::testing
+
+namespace stepdance::sim::image::testing {
+inline void Fixture::run_to(SimTime time_ns) {
+  At end(scheduler, time_ns, [] {});
+  scheduler.run_until(time_ns - 1);
+  scheduler.cancel(end);
+}
 }  // namespace stepdance::sim::image::testing
