@@ -160,10 +160,9 @@ uint32_t Ccm::flexio2_clock_hz() const {
   return source / (field(cs1cdr, 9, 7) + 1u) / (field(cs1cdr, 25, 7) + 1u);
 }
 
-void Ccm::set_rates_listener(std::function<void(const ClockRates&)> listener) {
-  listener_ = std::move(listener);
-  last_rates_ = rates();
-  if (listener_) listener_(last_rates_);
+void Ccm::add_rates_listener(std::function<void(const ClockRates&)> listener) {
+  listeners_.push_back(std::move(listener));
+  listeners_.back()(rates());
 }
 
 void Ccm::recompute() {
@@ -171,7 +170,8 @@ void Ccm::recompute() {
   const bool same = now.core_hz == last_rates_.core_hz && now.ipg_hz == last_rates_.ipg_hz &&
                     now.perclk_hz == last_rates_.perclk_hz;
   last_rates_ = now;
-  if (!same && listener_) listener_(now);
+  if (same) return;
+  for (const auto& listener : listeners_) listener(now);
 }
 
 }  // namespace stepdance::sim::image::rt1062

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "image/chip/chip_context.hpp"
 #include "image/chip/peripheral.hpp"
@@ -46,9 +47,10 @@ class Ccm : public Peripheral {
   /// FLEXIO2_CLK_ROOT (which also clocks FlexIO3): CSCMR2 FLEXIO2_CLK_SEL through CS1CDR
   /// FLEXIO2_CLK_PRED and _PODF (RM §14.7.9, §14.7.11), Hz.
   uint32_t flexio2_clock_hz() const;
-  /// Called with the new rates whenever any of them changes (the lead passes core_hz to
-  /// ImageChip::set_core_clock_hz). Called at once with the reset rates when set.
-  void set_rates_listener(std::function<void(const ClockRates&)> listener);
+  /// Adds a function called with the new rates whenever any of them changes (the lead passes
+  /// core_hz to ImageChip::set_core_clock_hz; the timers follow PERCLK). Called at once with the
+  /// rates now when added.
+  void add_rates_listener(std::function<void(const ClockRates&)> listener);
   /// The register at `offset` (word aligned) as stored.
   uint32_t register_value(uint32_t offset) const;
 
@@ -61,7 +63,7 @@ class Ccm : public Peripheral {
   CcmAnalog& analog_;
   std::array<uint32_t, 36> values_{};
   ClockRates last_rates_;
-  std::function<void(const ClockRates&)> listener_;
+  std::vector<std::function<void(const ClockRates&)>> listeners_;
 };
 
 }  // namespace stepdance::sim::image::rt1062

@@ -28,7 +28,7 @@ class ClockChip : public ::testing::Test {
     EXPECT_TRUE(bus.add(window));
     EXPECT_TRUE(bus.add(dcdc));
     bus.set_gate_query([this](ClockGate gate) { return ccm.gate_on(gate); });
-    ccm.set_rates_listener([this](const ClockRates& rates) { reported.push_back(rates); });
+    ccm.add_rates_listener([this](const ClockRates& rates) { reported.push_back(rates); });
   }
   uint32_t rd(uint32_t address) {
     uint32_t value = 0;

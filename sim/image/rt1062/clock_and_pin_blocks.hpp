@@ -1,0 +1,43 @@
+// One call that builds the RT1062's clock, pin and time blocks and adds them to the bus.
+#pragma once
+
+#include <memory>
+
+#include "image/chip/board_io.hpp"
+#include "image/chip/chip_context.hpp"
+#include "image/chip/peripheral_bus.hpp"
+#include "image/rt1062/analog_window.hpp"
+#include "image/rt1062/ccm.hpp"
+#include "image/rt1062/ccm_analog.hpp"
+#include "image/rt1062/dcdc.hpp"
+#include "image/rt1062/gpio_pads.hpp"
+#include "image/rt1062/iomuxc.hpp"
+#include "image/rt1062/iomuxc_gpr.hpp"
+#include "image/rt1062/teensy_pins.hpp"
+
+namespace stepdance::sim::image::rt1062 {
+
+/// The blocks, owned together; they must outlive the bus's use of them. Members are public so
+/// the image board can wire them (ccm.add_rates_listener → the CPU's core clock,
+/// gpio.world_changed() when the world moves a pin, gpr for FlexRAM).
+struct ClockAndPinBlocks {
+  ClockAndPinBlocks(ChipContext& context, BoardIo& world, TeensyModel model);
+
+  CcmAnalog ccm_analog;
+  Pmu pmu;
+  AnalogWindow analog_window;  ///< 0x400D8000: CCM_ANALOG + PMU (+ TEMPMON); add USB_ANALOG here
+  Ccm ccm;
+  Dcdc dcdc;
+  Iomuxc iomuxc;
+  IomuxcGpr gpr;
+  GpioPads gpio;
+};
+
+/// Creates the clock, pin and time blocks for a Teensy `model`, adds each to `bus`, and makes
+/// the CCM the bus's gate query. Returns them (the caller keeps them alive), or null, with the
+/// bus untouched, if any of them would overlap a block already on the bus. Call once, before
+/// the image runs, on the simulator thread.
+std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, ChipContext& context,
+                                                            BoardIo& world, TeensyModel model);
+
+}  // namespace stepdance::sim::image::rt1062
