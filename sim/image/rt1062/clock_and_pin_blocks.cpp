@@ -6,7 +6,10 @@
 namespace stepdance::sim::image::rt1062 {
 
 ClockAndPinBlocks::ClockAndPinBlocks(ChipContext& context, BoardIo& world, TeensyModel model)
-    : ccm_analog(context), ccm(context, ccm_analog), gpio(context, world, model, iomuxc, gpr) {
+    : ccm_analog(context), ccm(context, ccm_analog), gpio(context, world, model, iomuxc, gpr),
+      gpt1(1, context, ccm),
+      gpt2(2, context, ccm),
+      pit(context, ccm) {
   analog_window.add(ccm_analog);
   analog_window.add(pmu);
 }
@@ -27,7 +30,7 @@ std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, 
                                                             BoardIo& world, TeensyModel model) {
   auto blocks = std::make_unique<ClockAndPinBlocks>(context, world, model);
   std::vector<Peripheral*> all = {&blocks->ccm, &blocks->analog_window, &blocks->dcdc, &blocks->iomuxc,
-                                  &blocks->gpr};
+                                  &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit};
   for (unsigned n = 1; n <= 9; ++n) all.push_back(&blocks->gpio.port(n));
   for (const Peripheral* block : all) {
     if (overlaps_any(bus, *block)) return nullptr;  // checked first: the bus is left as it was

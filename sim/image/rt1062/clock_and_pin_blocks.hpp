@@ -11,8 +11,10 @@
 #include "image/rt1062/ccm_analog.hpp"
 #include "image/rt1062/dcdc.hpp"
 #include "image/rt1062/gpio_pads.hpp"
+#include "image/rt1062/gpt.hpp"
 #include "image/rt1062/iomuxc.hpp"
 #include "image/rt1062/iomuxc_gpr.hpp"
+#include "image/rt1062/pit.hpp"
 #include "image/rt1062/teensy_pins.hpp"
 
 namespace stepdance::sim::image::rt1062 {
@@ -31,6 +33,9 @@ struct ClockAndPinBlocks {
   Iomuxc iomuxc;
   IomuxcGpr gpr;
   GpioPads gpio;
+  Gpt gpt1;
+  Gpt gpt2;
+  Pit pit;
 };
 
 /// Creates the clock, pin and time blocks for a Teensy `model`, adds each to `bus`, and makes
