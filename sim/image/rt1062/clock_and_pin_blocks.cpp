@@ -9,7 +9,9 @@ ClockAndPinBlocks::ClockAndPinBlocks(ChipContext& context, BoardIo& world, Teens
     : ccm_analog(context), ccm(context, ccm_analog), gpio(context, world, model, iomuxc, gpr),
       gpt1(1, context, ccm),
       gpt2(2, context, ccm),
-      pit(context, ccm) {
+      pit(context, ccm),
+      adc1(0, context, ccm, world, model),
+      adc2(1, context, ccm, world, model) {
   analog_window.add(ccm_analog);
   analog_window.add(pmu);
 }
@@ -30,7 +32,8 @@ std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, 
                                                             BoardIo& world, TeensyModel model) {
   auto blocks = std::make_unique<ClockAndPinBlocks>(context, world, model);
   std::vector<Peripheral*> all = {&blocks->ccm, &blocks->analog_window, &blocks->dcdc, &blocks->iomuxc,
-                                  &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit};
+                                  &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit,
+                                  &blocks->adc1, &blocks->adc2};
   for (unsigned n = 1; n <= 9; ++n) all.push_back(&blocks->gpio.port(n));
   for (const Peripheral* block : all) {
     if (overlaps_any(bus, *block)) return nullptr;  // checked first: the bus is left as it was

@@ -6,6 +6,7 @@
 #include "image/chip/board_io.hpp"
 #include "image/chip/chip_context.hpp"
 #include "image/chip/peripheral_bus.hpp"
+#include "image/rt1062/adc.hpp"
 #include "image/rt1062/analog_window.hpp"
 #include "image/rt1062/ccm.hpp"
 #include "image/rt1062/ccm_analog.hpp"
@@ -36,6 +37,8 @@ struct ClockAndPinBlocks {
   Gpt gpt1;
   Gpt gpt2;
   Pit pit;
+  Adc adc1;
+  Adc adc2;
 };
 
 /// Creates the clock, pin and time blocks for a Teensy `model`, adds each to `bus`, and makes
