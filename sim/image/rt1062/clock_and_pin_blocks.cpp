@@ -6,7 +6,9 @@
 namespace stepdance::sim::image::rt1062 {
 
 ClockAndPinBlocks::ClockAndPinBlocks(ChipContext& context, BoardIo& world, TeensyModel model)
-    : ccm_analog(context), ccm(context, ccm_analog), gpio(context, world, model, iomuxc, gpr),
+    : ccm_analog(context),
+      tempmon(Ocotp::kAna1),
+      ccm(context, ccm_analog), gpio(context, world, model, iomuxc, gpr),
       gpt1(1, context, ccm),
       gpt2(2, context, ccm),
       pit(context, ccm),
@@ -14,6 +16,7 @@ ClockAndPinBlocks::ClockAndPinBlocks(ChipContext& context, BoardIo& world, Teens
       adc2(1, context, ccm, world, model) {
   analog_window.add(ccm_analog);
   analog_window.add(pmu);
+  analog_window.add(tempmon);
 }
 
 namespace {
@@ -33,7 +36,7 @@ std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, 
   auto blocks = std::make_unique<ClockAndPinBlocks>(context, world, model);
   std::vector<Peripheral*> all = {&blocks->ccm, &blocks->analog_window, &blocks->dcdc, &blocks->iomuxc,
                                   &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit,
-                                  &blocks->adc1, &blocks->adc2};
+                                  &blocks->adc1, &blocks->adc2, &blocks->ocotp};
   for (unsigned n = 1; n <= 9; ++n) all.push_back(&blocks->gpio.port(n));
   for (const Peripheral* block : all) {
     if (overlaps_any(bus, *block)) return nullptr;  // checked first: the bus is left as it was

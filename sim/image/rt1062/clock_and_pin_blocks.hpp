@@ -15,8 +15,10 @@
 #include "image/rt1062/gpt.hpp"
 #include "image/rt1062/iomuxc.hpp"
 #include "image/rt1062/iomuxc_gpr.hpp"
+#include "image/rt1062/ocotp.hpp"
 #include "image/rt1062/pit.hpp"
 #include "image/rt1062/teensy_pins.hpp"
+#include "image/rt1062/tempmon.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 
@@ -28,7 +30,9 @@ struct ClockAndPinBlocks {
 
   CcmAnalog ccm_analog;
   Pmu pmu;
-  AnalogWindow analog_window;  ///< 0x400D8000: CCM_ANALOG + PMU (+ TEMPMON); add USB_ANALOG here
+  Ocotp ocotp;
+  Tempmon tempmon;
+  AnalogWindow analog_window;  ///< 0x400D8000: CCM_ANALOG, PMU, TEMPMON; add USB_ANALOG here
   Ccm ccm;
   Dcdc dcdc;
   Iomuxc iomuxc;
