@@ -13,7 +13,8 @@ ClockAndPinBlocks::ClockAndPinBlocks(ChipContext& context, BoardIo& world, Teens
       gpt2(2, context, ccm),
       pit(context, ccm),
       adc1(0, context, ccm, world, model),
-      adc2(1, context, ccm, world, model) {
+      adc2(1, context, ccm, world, model),
+      snvs(context) {
   analog_window.add(ccm_analog);
   analog_window.add(pmu);
   analog_window.add(tempmon);
@@ -36,7 +37,8 @@ std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, 
   auto blocks = std::make_unique<ClockAndPinBlocks>(context, world, model);
   std::vector<Peripheral*> all = {&blocks->ccm, &blocks->analog_window, &blocks->dcdc, &blocks->iomuxc,
                                   &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit,
-                                  &blocks->adc1, &blocks->adc2, &blocks->ocotp};
+                                  &blocks->adc1, &blocks->adc2, &blocks->ocotp,
+                                  &blocks->snvs};
   for (unsigned n = 1; n <= 9; ++n) all.push_back(&blocks->gpio.port(n));
   for (const Peripheral* block : all) {
     if (overlaps_any(bus, *block)) return nullptr;  // checked first: the bus is left as it was

@@ -17,6 +17,7 @@
 #include "image/rt1062/iomuxc_gpr.hpp"
 #include "image/rt1062/ocotp.hpp"
 #include "image/rt1062/pit.hpp"
+#include "image/rt1062/snvs.hpp"
 #include "image/rt1062/teensy_pins.hpp"
 #include "image/rt1062/tempmon.hpp"
 
@@ -43,6 +44,7 @@ struct ClockAndPinBlocks {
   Pit pit;
   Adc adc1;
   Adc adc2;
+  Snvs snvs;
 };
 
 /// Creates the clock, pin and time blocks for a Teensy `model`, adds each to `bus`, and makes
