@@ -38,7 +38,8 @@ std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, 
   std::vector<Peripheral*> all = {&blocks->ccm, &blocks->analog_window, &blocks->dcdc, &blocks->iomuxc,
                                   &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit,
                                   &blocks->adc1, &blocks->adc2, &blocks->ocotp,
-                                  &blocks->snvs};
+                                  &blocks->snvs, &blocks->flexspi1, &blocks->flexspi2};
+  for (QuadTimer& timer : blocks->quad_timers) all.push_back(&timer);
   for (unsigned n = 1; n <= 9; ++n) all.push_back(&blocks->gpio.port(n));
   for (const Peripheral* block : all) {
     if (overlaps_any(bus, *block)) return nullptr;  // checked first: the bus is left as it was

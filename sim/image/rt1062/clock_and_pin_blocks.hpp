@@ -1,6 +1,7 @@
 // One call that builds the RT1062's clock, pin and time blocks and adds them to the bus.
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "image/chip/board_io.hpp"
@@ -11,12 +12,14 @@
 #include "image/rt1062/ccm.hpp"
 #include "image/rt1062/ccm_analog.hpp"
 #include "image/rt1062/dcdc.hpp"
+#include "image/rt1062/flexspi.hpp"
 #include "image/rt1062/gpio_pads.hpp"
 #include "image/rt1062/gpt.hpp"
 #include "image/rt1062/iomuxc.hpp"
 #include "image/rt1062/iomuxc_gpr.hpp"
 #include "image/rt1062/ocotp.hpp"
 #include "image/rt1062/pit.hpp"
+#include "image/rt1062/quad_timer.hpp"
 #include "image/rt1062/snvs.hpp"
 #include "image/rt1062/teensy_pins.hpp"
 #include "image/rt1062/tempmon.hpp"
@@ -45,6 +48,9 @@ struct ClockAndPinBlocks {
   Adc adc1;
   Adc adc2;
   Snvs snvs;
+  std::array<QuadTimer, 4> quad_timers{QuadTimer(1), QuadTimer(2), QuadTimer(3), QuadTimer(4)};
+  FlexSpi flexspi1{1};
+  FlexSpi flexspi2{2};
 };
 
 /// Creates the clock, pin and time blocks for a Teensy `model`, adds each to `bus`, and makes
