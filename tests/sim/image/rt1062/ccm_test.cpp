@@ -164,6 +164,30 @@ TEST_F(ClockChip, SetArmClock600MHzGivesThe600MHzCoreAnd150MHzIpg) {
   EXPECT_EQ(reported.back().core_hz, 600000000u);
 }
 
+// The CI stand-in core's clock start (targets/teensy/stand-in/clocks.cpp): the switch-over runs
+// from the 24 MHz oscillator (PERIPH_CLK2_SEL 1) instead of PLL3.
+TEST_F(ClockChip, StandInClockStartGives600MHzThroughTheOscillator) {
+  wr(kCscmr1, (rd(kCscmr1) & ~0x3Fu) | (1u << 6));
+  wr(kCcgr6, rd(kCcgr6) | (3u << 6));
+  wr(kDcdc + 0x0C, (rd(kDcdc + 0x0C) & ~0x1Fu) | 18u);
+  ASSERT_TRUE(rd(kDcdc) & (1u << 31));
+  wr(kCbcdr, rd(kCbcdr) & ~(7u << 27));
+  wr(kCbcmr, (rd(kCbcmr) & ~(3u << 12)) | (1u << 12));
+  wr(kCbcdr, rd(kCbcdr) | (1u << 25));
+  EXPECT_EQ(ccm.core_clock_hz(), 24000000u);  // oscillator ÷ 1 ÷ AHB 1
+  wr(kPllArm, 1u << 12);
+  wr(kPllArm, (1u << 13) | 100u);
+  while (!(rd(kPllArm) & kLock)) spin();
+  wr(kCacrr, 1);
+  wr(kCbcdr, rd(kCbcdr) & ~(7u << 10));
+  wr(kCbcdr, (rd(kCbcdr) & ~(3u << 8)) | (3u << 8));
+  wr(kCbcmr, rd(kCbcmr) | (3u << 18));
+  wr(kCbcdr, rd(kCbcdr) & ~(1u << 25));
+  EXPECT_EQ(ccm.core_clock_hz(), 600000000u);
+  EXPECT_EQ(ccm.ipg_clock_hz(), 150000000u);
+  EXPECT_EQ(ccm.perclk_hz(), 24000000u);
+}
+
 TEST_F(ClockChip, ABlockWhoseGateIsOffIsRefused) {
   uint32_t value = 0;
   BusRefusal refusal;
