@@ -29,7 +29,8 @@ class Gpt : public Peripheral {
   const char* name() const override { return number_ == 1 ? "GPT1" : "GPT2"; }
   uint32_t base() const override { return number_ == 1 ? 0x401EC000u : 0x401F0000u; }  // RM table 2-2
   uint32_t size_bytes() const override { return 0x4000u; }
-  /// GPT1: CCGR1 CG10 (bus) — CG11 (serial) is checked too; GPT2: CCGR0 CG12/CG13 (RM §14.7.21/22).
+  /// The bus gate: GPT1 CCGR1 CG10, GPT2 CCGR0 CG12 (RM §14.7.21/22). The serial gates (CCGR1
+  /// CG11, CCGR0 CG13) are not checked: the bus takes one gate per block.
   ClockGate gate() const override { return number_ == 1 ? ClockGate{1, 10} : ClockGate{0, 12}; }
   Access read(uint32_t offset, uint8_t bytes, uint32_t& value) override;
   Access write(uint32_t offset, uint8_t bytes, uint32_t value) override;
