@@ -5,10 +5,9 @@
 
 #include <cstdint>
 
-namespace stepdance::sim::image::rt1062 {
+#include "image/rt1062/teensy_model.hpp"
 
-/// Which Teensy the chip sits on.
-enum class TeensyModel : uint8_t { kTeensy40, kTeensy41 };
+namespace stepdance::sim::image::rt1062 {
 
 /// The highest pin number of a model (4.0: 39, 4.1: 54).
 uint8_t highest_pin(TeensyModel model);
