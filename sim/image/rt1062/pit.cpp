@@ -29,31 +29,39 @@ Pit::~Pit() {
 
 uint32_t Pit::current_value(const Channel& channel) const {
   if (!counting(channel)) return channel.period_ldval;
-  const uint64_t ticks = channel.clock.ticks_at(context_.now_ns());
+  const uint64_t ticks = channel.clock.ticks_at(context_.now_ns()) - channel.period_start;
   const uint64_t period = uint64_t{channel.period_ldval} + 1u;
   return static_cast<uint32_t>(channel.period_ldval - ticks % period);
 }
 
-// A period of LDVAL + 1 ticks begins at `start_ns`; its expiry is scheduled.
-void Pit::start_period(Channel& channel, SimTime start_ns) {
-  context_.scheduler().cancel(*channel.expiry);
+// The channel starts counting now, from LDVAL (or stops, if it no longer counts).
+void Pit::start_counting(Channel& channel) {
   channel.period_ldval = channel.ldval;
-  if (!counting(channel)) return;
-  channel.clock = TickClock(start_ns, ccm_.perclk_hz(), 1);
-  if (!channel.clock.running()) return;
-  context_.scheduler().schedule(*channel.expiry, channel.clock.time_of(uint64_t{channel.period_ldval} + 1u));
+  channel.clock = TickClock(context_.now_ns(), ccm_.perclk_hz(), 1);
+  channel.period_start = 0;
+  schedule_expiry(channel);
+}
+
+// The running period's expiry, LDVAL + 1 ticks after it began.
+void Pit::schedule_expiry(Channel& channel) {
+  context_.scheduler().cancel(*channel.expiry);
+  if (!counting(channel) || !channel.clock.running()) return;
+  const uint64_t end = channel.period_start + channel.period_ldval + 1u;
+  context_.scheduler().schedule(*channel.expiry, channel.clock.time_of(end));
 }
 
 void Pit::expire(size_t index) {
   Channel& channel = channels_[index];
   channel.tflg = 1;
-  start_period(channel, channel.expiry->time());  // reload with the LDVAL written by now
+  channel.period_start += uint64_t{channel.period_ldval} + 1u;
+  channel.period_ldval = channel.ldval;  // reload with the LDVAL written by now
+  schedule_expiry(channel);
   update_irq();
 }
 
-// PERCLK changed or MDIS flipped: every running channel starts a fresh period now.
+// PERCLK changed or MDIS flipped: every running channel starts afresh from LDVAL now.
 void Pit::restart_all() {
-  for (Channel& channel : channels_) start_period(channel, context_.now_ns());
+  for (Channel& channel : channels_) start_counting(channel);
 }
 
 void Pit::update_irq() {
@@ -93,7 +101,7 @@ Access Pit::write_channel(size_t index, uint32_t reg, uint32_t value) {
       if (value & kTctrlChain) return Access::kUnmodelled;
       const bool was_enabled = (channel.tctrl & kTctrlEnable) != 0;
       channel.tctrl = value & (kTctrlEnable | kTctrlInterrupt);
-      if (((channel.tctrl & kTctrlEnable) != 0) != was_enabled) start_period(channel, context_.now_ns());
+      if (((channel.tctrl & kTctrlEnable) != 0) != was_enabled) start_counting(channel);
       break;
     }
     default: channel.tflg &= ~(value & 1u); break;  // TIF: write 1 to clear

@@ -36,12 +36,14 @@ class Pit : public Peripheral {
   struct Channel {
     uint32_t ldval = 0, tctrl = 0, tflg = 0;
     uint32_t period_ldval = 0;  ///< the LDVAL of the period running now
-    TickClock clock;            ///< ticks since the running period began
+    TickClock clock;            ///< ticks since the channel started (a fixed origin: no drift)
+    uint64_t period_start = 0;  ///< the tick the running period began at
     std::unique_ptr<ModelEvent> expiry;
   };
   bool counting(const Channel& channel) const { return !(mcr_ & 2u) && (channel.tctrl & 1u); }
   uint32_t current_value(const Channel& channel) const;
-  void start_period(Channel& channel, SimTime start_ns);
+  void start_counting(Channel& channel);
+  void schedule_expiry(Channel& channel);
   void expire(size_t index);
   void restart_all();
   Access write_channel(size_t index, uint32_t reg, uint32_t value);

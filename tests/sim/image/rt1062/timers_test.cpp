@@ -120,6 +120,18 @@ TEST_F(TimerChip, PitChannelExpiresEveryLdvalPlusOneTicks) {
   EXPECT_EQ(chip.irq_log.back().time, start + 2 * kMillisecond + 500 * kMicrosecond);
 }
 
+TEST_F(TimerChip, PitPeriodsOfFractionalNanosecondsDoNotDrift) {
+  wr(kPit + 0x000, 0);
+  const SimTime start = chip.now_ns();
+  wr(kPit + 0x100, 6);  // 7 ticks of 1/24 µs = 291.67 ns per period
+  wr(kPit + 0x108, 1);  // TEN, no interrupt
+  // 24000 periods = 168000 ticks = exactly 7 ms: the 24000th reload happens then, CVAL = LDVAL.
+  chip.advance_to(start + 7 * kMillisecond);
+  EXPECT_EQ(rd(kPit + 0x104), 6u);
+  chip.advance_to(start + 7 * kMillisecond + 42);  // 42 ns = 1.008 ticks later
+  EXPECT_EQ(rd(kPit + 0x104), 5u);
+}
+
 TEST_F(TimerChip, PitStaysStillWhileTheModuleIsDisabled) {
   wr(kPit + 0x100, 99);
   wr(kPit + 0x108, 3);  // MDIS is still set from reset
