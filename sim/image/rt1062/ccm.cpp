@@ -160,6 +160,11 @@ uint32_t Ccm::flexio2_clock_hz() const {
   return source / (field(cs1cdr, 9, 7) + 1u) / (field(cs1cdr, 25, 7) + 1u);
 }
 
+void Ccm::apply_boot_rom_state() {
+  values_[static_cast<size_t>(find(kCbcdr))] = (register_value(kCbcdr) & ~(3u << 8)) | (2u << 8);
+  recompute();
+}
+
 void Ccm::add_rates_listener(std::function<void(const ClockRates&)> listener) {
   listeners_.push_back(std::move(listener));
   listeners_.back()(rates());

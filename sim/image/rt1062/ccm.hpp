@@ -51,6 +51,9 @@ class Ccm : public Peripheral {
   /// core_hz to ImageChip::set_core_clock_hz; the timers follow PERCLK). Called at once with the
   /// rates now when added.
   void add_rates_listener(std::function<void(const ClockRates&)> listener);
+  /// Sets CBCDR IPG_PODF = 2 (÷3), the IPG divider the boot ROM leaves (see
+  /// ClockAndPinBlocks::apply_boot_rom_clocks); the core's path keeps its reset selection.
+  void apply_boot_rom_state();
   /// The register at `offset` (word aligned) as stored.
   uint32_t register_value(uint32_t offset) const;
 

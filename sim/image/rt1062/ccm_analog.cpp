@@ -140,6 +140,16 @@ void CcmAnalog::changed() {
   if (on_change_) on_change_();
 }
 
+void CcmAnalog::apply_boot_rom_state() {
+  const size_t arm = static_cast<size_t>(find(kPllOffset[static_cast<size_t>(Pll::kArm)]));
+  const size_t sys = static_cast<size_t>(find(kPllOffset[static_cast<size_t>(Pll::kSys)]));
+  values_[arm] = kEnable | 66u;            // 24 MHz × 66 / 2 = 792 MHz, POWERDOWN and BYPASS clear
+  values_[sys] = kEnable | kSysDivSelect;  // 528 MHz
+  lock_at_ns_[static_cast<size_t>(Pll::kArm)] = 0;
+  lock_at_ns_[static_cast<size_t>(Pll::kSys)] = 0;
+  if (on_change_) on_change_();
+}
+
 uint32_t CcmAnalog::pll_hz(Pll pll) const {
   const uint32_t value = pll_register(pll);
   if ((value & kEnable) == 0) return 0;

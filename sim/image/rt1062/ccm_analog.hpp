@@ -46,6 +46,10 @@ class CcmAnalog : public WindowPart {
   uint32_t pfd_hz(Pll pll, unsigned index) const;
   /// The register's value now (as a read at `offset` from the window base returns it).
   uint32_t value_at(uint32_t offset) const;
+  /// Puts PLL1 (ARM) at 792 MHz (DIV_SELECT 66) and PLL2 (SYS) at 528 MHz, both powered, enabled,
+  /// not bypassed and locked since time 0, as the boot ROM leaves them (see
+  /// ClockAndPinBlocks::apply_boot_rom_clocks).
+  void apply_boot_rom_state();
   /// The time LOCK sets (or set) for `pll`, ns; -1 while it is powered down.
   SimTime lock_time_ns(Pll pll) const { return lock_at_ns_[static_cast<size_t>(pll)]; }
 

@@ -32,6 +32,18 @@ namespace stepdance::sim::image::rt1062 {
 struct ClockAndPinBlocks {
   ClockAndPinBlocks(ChipContext& context, BoardIo& world, TeensyModel model);
 
+  /// Optional, before the image runs: the clocks as the boot ROM leaves them instead of the
+  /// manual's reset values — PLL1 (ARM) locked at 792 MHz ÷ ARM_PODF 2 (its reset value) =
+  /// 396 MHz core, IPG ÷3 = 132 MHz, PLL2 locked at 528 MHz. Inferred, not from ROM
+  /// documentation: Teensyduino's clockspeed.c starts F_CPU_ACTUAL at 396 MHz and F_BUS_ACTUAL at
+  /// 132 MHz, and its set_arm_clock never writes PRE_PERIPH_CLK_SEL, so the ROM must leave the
+  /// reset selection (PLL1 ÷ ARM_PODF) for the 600 MHz it sets to reach the core. Without this
+  /// call the core starts at the manual's reset state: 12 MHz.
+  void apply_boot_rom_clocks() {
+    ccm_analog.apply_boot_rom_state();
+    ccm.apply_boot_rom_state();
+  }
+
   CcmAnalog ccm_analog;
   Pmu pmu;
   Ocotp ocotp;

@@ -210,5 +210,17 @@ TEST_F(Startup, EveryAccessOfTeensyduinosStartUpIsAnsweredAndTheClocksEndRight) 
   EXPECT_LT(chip.now_ns(), kMillisecond);
 }
 
+TEST_F(Startup, TheBootRomsClocksStartTheCoreAt396MHz) {
+  blocks->apply_boot_rom_clocks();
+  EXPECT_EQ(blocks->ccm.core_clock_hz(), 396000000u);  // PLL1 792 MHz ÷ ARM_PODF 2
+  EXPECT_EQ(blocks->ccm.ipg_clock_hz(), 132000000u);   // ÷ 3: Teensyduino's F_BUS_ACTUAL at start
+  EXPECT_TRUE(rd(kAnalog + 0x30) & (1u << 31));       // PLL_SYS locked
+  EXPECT_EQ(rd(kAnalog) & ((1u << 31) | 0x7Fu), (1u << 31) | 66u);  // PLL_ARM locked, DIV_SELECT 66
+  // set_arm_clock takes the same path from here (PERIPH_CLK_SEL is 0) and ends at 600 MHz.
+  usb_pll_start();
+  set_arm_clock_600mhz();
+  EXPECT_EQ(blocks->ccm.core_clock_hz(), 600000000u);
+}
+
 }  // namespace
 }  // namespace stepdance::sim::image::rt1062
