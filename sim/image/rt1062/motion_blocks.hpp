@@ -1,0 +1,30 @@
+// Registration of the RT1062 blocks that carry motion and inputs: FLEXIO3 (output ports), and
+// (as they land) FlexPWM input capture, ENC1/ENC2, XBAR1 and LPI2C1/LPI2C3.
+#pragma once
+
+#include <memory>
+
+#include "image/chip/board_io.hpp"
+#include "image/chip/chip_context.hpp"
+#include "image/chip/peripheral_bus.hpp"
+#include "image/rt1062/flexio3.hpp"
+#include "image/rt1062/teensy_model.hpp"
+
+namespace stepdance::sim::image {
+
+/// Owns the motion blocks of one chip. The bus refers to them, so this must outlive the bus's use.
+class MotionBlocks {
+ public:
+  MotionBlocks(const PeripheralBus& bus, ChipContext& chip, BoardIo& io, TeensyModel model);
+  Flexio3& flexio3() { return flexio3_; }
+
+ private:
+  Flexio3 flexio3_;
+};
+
+/// Creates the motion blocks and adds them to `bus`. Returns their owner (null if a block's window
+/// overlaps one already on the bus). Context: board construction, before the image runs.
+std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io,
+                                                TeensyModel model);
+
+}  // namespace stepdance::sim::image
