@@ -4,12 +4,17 @@
 namespace stepdance::sim::image {
 
 MotionBlocks::MotionBlocks(const PeripheralBus& bus, ChipContext& chip, BoardIo& io, TeensyModel model)
-    : flexio3_(bus, chip, io, model) {}
+    : flexio3_(bus, chip, io, model),
+      pwm_{{1, bus, chip}, {2, bus, chip}, {3, bus, chip}, {4, bus, chip}},
+      capture_(bus, chip, pwm_[0], pwm_[1]) {}
 
 std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io,
                                                 TeensyModel model) {
   auto blocks = std::make_unique<MotionBlocks>(bus, chip, io, model);
   if (!bus.add(blocks->flexio3())) return nullptr;
+  for (unsigned index = 0; index < 4; ++index) {
+    if (!bus.add(blocks->flexpwm(index))) return nullptr;
+  }
   return blocks;
 }
 

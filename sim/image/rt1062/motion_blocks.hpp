@@ -8,6 +8,8 @@
 #include "image/chip/chip_context.hpp"
 #include "image/chip/peripheral_bus.hpp"
 #include "image/rt1062/flexio3.hpp"
+#include "image/rt1062/flexpwm.hpp"
+#include "image/rt1062/input_capture.hpp"
 #include "image/rt1062/teensy_model.hpp"
 
 namespace stepdance::sim::image {
@@ -17,13 +19,20 @@ class MotionBlocks {
  public:
   MotionBlocks(const PeripheralBus& bus, ChipContext& chip, BoardIo& io, TeensyModel model);
   Flexio3& flexio3() { return flexio3_; }
+  /// PWM1..PWM4 by index 0..3.
+  FlexPwm& flexpwm(unsigned index) { return pwm_[index]; }
+  /// Where the lead delivers input-port pulses (InputCapture::pulse_arrived).
+  InputCapture& capture() { return capture_; }
 
  private:
   Flexio3 flexio3_;
+  FlexPwm pwm_[4];
+  InputCapture capture_;
 };
 
-/// Creates the motion blocks and adds them to `bus`. Returns their owner (null if a block's window
-/// overlaps one already on the bus). Context: board construction, before the image runs.
+/// Creates the motion blocks and adds them to `bus`. Returns their owner, whose capture() takes
+/// the input ports' pulses (null if a block's window overlaps one already on the bus).
+/// Context: board construction, before the image runs.
 std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io,
                                                 TeensyModel model);
 
