@@ -7,10 +7,12 @@
 #include "image/chip/board_io.hpp"
 #include "image/chip/chip_context.hpp"
 #include "image/chip/peripheral_bus.hpp"
+#include "image/rt1062/enc.hpp"
 #include "image/rt1062/flexio3.hpp"
 #include "image/rt1062/flexpwm.hpp"
 #include "image/rt1062/input_capture.hpp"
 #include "image/rt1062/teensy_model.hpp"
+#include "image/rt1062/xbar1.hpp"
 
 namespace stepdance::sim::image {
 
@@ -23,11 +25,16 @@ class MotionBlocks {
   FlexPwm& flexpwm(unsigned index) { return pwm_[index]; }
   /// Where the lead delivers input-port pulses (InputCapture::pulse_arrived).
   InputCapture& capture() { return capture_; }
+  Xbar1& xbar1() { return xbar1_; }
+  /// ENC1, ENC2 by index 0, 1.
+  Enc& enc(unsigned index) { return enc_[index]; }
 
  private:
   Flexio3 flexio3_;
   FlexPwm pwm_[4];
   InputCapture capture_;
+  Xbar1 xbar1_;
+  Enc enc_[2];
 };
 
 /// Creates the motion blocks and adds them to `bus`. Returns their owner, whose capture() takes
