@@ -7,6 +7,7 @@ namespace {
 constexpr uint32_t kCcmCbcdr = 0x400FC014u;       // RM §14.7.4, CCM_CBCDR
 constexpr uint32_t kCcmCscmr2 = 0x400FC020u;      // RM §14.7.7, CCM_CSCMR2
 constexpr uint32_t kCcmCs1cdr = 0x400FC028u;      // RM §14.7.9, CCM_CS1CDR
+constexpr uint32_t kCcmCscdr2 = 0x400FC038u;      // RM §14.7.11, CCM_CSCDR2
 constexpr uint32_t kAnalogPllUsb1 = 0x400D8010u;  // RM §14.8.3, CCM_ANALOG_PLL_USB1
 constexpr uint32_t kOscillatorHz = 24000000u;     // the 24 MHz crystal (RM §14.3)
 
@@ -47,6 +48,14 @@ bool ipg_root_hz(const PeripheralBus& bus, uint32_t core_hz, uint32_t& hz) {
   uint32_t cbcdr = 0;
   if (!read_word(bus, kCcmCbcdr, cbcdr)) return false;
   hz = core_hz / (((cbcdr >> 8) & 3u) + 1u);  // IPG_PODF, bits 9:8
+  return true;
+}
+
+bool lpi2c_root_hz(const PeripheralBus& bus, uint32_t& hz) {
+  uint32_t cscdr2 = 0;
+  if (!read_word(bus, kCcmCscdr2, cscdr2)) return false;
+  const uint32_t source = (cscdr2 & (1u << 18)) ? kOscillatorHz : 480000000u / 8u;
+  hz = source / (((cscdr2 >> 19) & 0x3Fu) + 1u);
   return true;
 }
 

@@ -18,4 +18,9 @@ bool flexio2_root_hz(const PeripheralBus& bus, uint32_t& hz);
 /// (RM §14.4, §14.7.4 CBCDR). False if CBCDR cannot be read. Context: a register access or event.
 bool ipg_root_hz(const PeripheralBus& bus, uint32_t core_hz, uint32_t& hz);
 
+/// LPI2C_CLK_ROOT in Hz: CCM_CSCDR2 LPI2C_CLK_SEL (bit 18: 1 = the 24 MHz oscillator, 0 = PLL3
+/// / 8 = 60 MHz) divided by LPI2C_CLK_PODF + 1 (bits 24:19) (RM §14.4, §14.7.11 CSCDR2). False if
+/// CSCDR2 cannot be read. Context: a register access or event.
+bool lpi2c_root_hz(const PeripheralBus& bus, uint32_t& hz);
+
 }  // namespace stepdance::sim::image

@@ -11,6 +11,7 @@
 #include "image/rt1062/flexio3.hpp"
 #include "image/rt1062/flexpwm.hpp"
 #include "image/rt1062/input_capture.hpp"
+#include "image/rt1062/lpi2c.hpp"
 #include "image/rt1062/teensy_model.hpp"
 #include "image/rt1062/xbar1.hpp"
 
@@ -28,6 +29,8 @@ class MotionBlocks {
   Xbar1& xbar1() { return xbar1_; }
   /// ENC1, ENC2 by index 0, 1.
   Enc& enc(unsigned index) { return enc_[index]; }
+  /// LPI2C1 (QWIIC0, index 0) and LPI2C3 (QWIIC1, index 1).
+  Lpi2c& lpi2c(unsigned index) { return lpi2c_[index]; }
 
  private:
   Flexio3 flexio3_;
@@ -35,10 +38,12 @@ class MotionBlocks {
   InputCapture capture_;
   Xbar1 xbar1_;
   Enc enc_[2];
+  Lpi2c lpi2c_[2];
 };
 
-/// Creates the motion blocks and adds them to `bus`. Returns their owner, whose capture() takes
-/// the input ports' pulses (null if a block's window overlaps one already on the bus).
+/// Creates the motion blocks (FLEXIO3, PWM1..4, XBARA1, ENC1/2, LPI2C1/3) and adds them to `bus`.
+/// Returns their owner, whose capture() takes the input ports' pulses; null, with nothing added,
+/// if a block's window overlaps one already on the bus.
 /// Context: board construction, before the image runs.
 std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io,
                                                 TeensyModel model);
