@@ -4,11 +4,11 @@
 namespace stepdance::sim::image {
 namespace {
 
-constexpr uint32_t kCcmCbcdr = 0x400FC014u;       // RM §14.7.4, CCM_CBCDR
-constexpr uint32_t kCcmCscmr2 = 0x400FC020u;      // RM §14.7.7, CCM_CSCMR2
-constexpr uint32_t kCcmCs1cdr = 0x400FC028u;      // RM §14.7.9, CCM_CS1CDR
-constexpr uint32_t kCcmCscdr2 = 0x400FC038u;      // RM §14.7.11, CCM_CSCDR2
-constexpr uint32_t kAnalogPllUsb1 = 0x400D8010u;  // RM §14.8.3, CCM_ANALOG_PLL_USB1
+constexpr uint32_t kCcmCbcdr = 0x400FC014u;       // RM §14.7.5, CCM_CBCDR
+constexpr uint32_t kCcmCscmr2 = 0x400FC020u;      // RM §14.7.8, CCM_CSCMR2
+constexpr uint32_t kCcmCs1cdr = 0x400FC028u;      // RM §14.7.10, CCM_CS1CDR
+constexpr uint32_t kCcmCscdr2 = 0x400FC038u;      // RM §14.7.13, CCM_CSCDR2
+constexpr uint32_t kAnalogPllUsb1 = 0x400D8010u;  // RM §14.8.2, CCM_ANALOG_PLL_USB1
 constexpr uint32_t kOscillatorHz = 24000000u;     // the 24 MHz crystal (RM §14.3)
 
 bool read_word(const PeripheralBus& bus, uint32_t address, uint32_t& value) {

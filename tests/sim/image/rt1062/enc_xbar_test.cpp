@@ -4,7 +4,7 @@
 // counts the fake world reports.
 #include <gtest/gtest.h>
 
-#include "fake_chip.hpp"
+#include "motion_fakes.hpp"
 #include "image/rt1062/enc.hpp"
 #include "image/rt1062/xbar1.hpp"
 

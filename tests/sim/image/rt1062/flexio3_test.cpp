@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fake_chip.hpp"
+#include "motion_fakes.hpp"
 #include "stepdance/protocol/frame_encoder.hpp"
 
 namespace stepdance::sim::image {
@@ -140,7 +140,7 @@ TEST_F(Flexio3Test, FrameInterruptEvery40MicrosecondsAt120MHz) {
 
 TEST_F(Flexio3Test, PeriodFollowsTheClockRoot) {
   // CS1CDR at its reset value 0x0EC102C1: PRED 1, PODF 7 → 480 MHz / 2 / 8 = 30 MHz, so the same
-  // TIMCMP gives a 4 × longer period (RM §14.7.9 reset value).
+  // TIMCMP gives a 4 × longer period (RM §14.7.10 reset value).
   rig.ccm.registers[0x28] = 0x0EC102C1u;
   power_up();
   start_frame_clock();

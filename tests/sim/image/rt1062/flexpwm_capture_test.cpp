@@ -4,7 +4,7 @@
 // period 65536 / 150 MHz.
 #include <gtest/gtest.h>
 
-#include "fake_chip.hpp"
+#include "motion_fakes.hpp"
 #include "image/rt1062/flexpwm.hpp"
 #include "image/rt1062/input_capture.hpp"
 

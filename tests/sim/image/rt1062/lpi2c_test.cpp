@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "fake_chip.hpp"
+#include "motion_fakes.hpp"
 
 namespace stepdance::sim::image {
 namespace {
@@ -113,7 +113,7 @@ struct WireLike {
 
 struct Lpi2cTest : ::testing::Test {
   Lpi2cTest() {
-    // Wire's begin(): LPI2C_CLK_SEL = oscillator, PODF 0 (CCM_CSCDR2, RM §14.7.11).
+    // Wire's begin(): LPI2C_CLK_SEL = oscillator, PODF 0 (CCM_CSCDR2, RM §14.7.13).
     rig.ccm.registers[0x38] = 1u << 18;
     rig.bus.add(lpi2c1);
     rig.bus.add(lpi2c3);

@@ -127,7 +127,7 @@ void core_write(uint32_t address, uint32_t value) {
 }  // namespace
 
 World::World() {
-  // Teensyduino's clocks at 600 MHz: IPG ÷4, PLL3 locked at 480 MHz (values as in fake_chip.hpp).
+  // Teensyduino's clocks at 600 MHz: IPG ÷4, PLL3 locked at 480 MHz (values as in motion_fakes.hpp).
   ccm.registers[0x14] = 0x000A8300u;
   ccm.registers[0x20] = 0x13192F06u;
   ccm.registers[0x28] = 0x0EC102C1u;  // CS1CDR reset value; the backend's power_up() sets its own

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "fake_chip.hpp"
+#include "motion_fakes.hpp"
 #include "image/rt1062/motion_blocks.hpp"
 
 namespace backend_rig {
