@@ -79,6 +79,9 @@ class UsbHost {
   const std::string& failure() const { return failure_; }
   /// Called once with failure() when enumeration fails.
   void set_failure_listener(std::function<void(const std::string&)> listener) { on_failure_ = std::move(listener); }
+  /// Where the host is, in one line: not attached (and why), enumerating (which request, which
+  /// stage), configured (speed, VID:PID, product), or the failure.
+  std::string describe() const;
   /// Bytes the host holds for the device that the device has not accepted yet (it NAKs).
   size_t out_pending() const { return out_.size(); }
 

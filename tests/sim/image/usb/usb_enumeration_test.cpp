@@ -83,6 +83,8 @@ TEST(UsbEnumeration, TakesTheSpecsWaitsAndNoMore) {
   EXPECT_GE(r.configured_ns, 122 * kMillisecond);
   EXPECT_LT(r.configured_ns, 125 * kMillisecond);
   EXPECT_EQ(bench.stack.bus_resets, 1);
+  EXPECT_EQ(bench.host().describe(),
+            "usb host: configured at 0.124750 s, high speed, 16C0:0483 \"Maker\" \"Serial\", CDC bulk IN 0x84 OUT 0x03");
 }
 
 TEST(UsbEnumeration, ADeviceThatNeverAnswersIsReportedInOneLine) {
@@ -108,6 +110,8 @@ TEST(UsbEnumeration, APoweredDownPhyKeepsTheDeviceOffTheBus) {
   EXPECT_EQ(bench.host().record().attached_ns, -1);
   EXPECT_NE(bench.usb().detached_reason().find("USBPHY1_CTRL.SFTRST"), std::string::npos)
       << bench.usb().detached_reason();
+  EXPECT_EQ(bench.host().describe(),
+            "usb host: no device attached (USBPHY1_CTRL.SFTRST is 1 (the PHY is held in reset))");
 }
 
 TEST(UsbEnumeration, AStalledRequiredRequestFails) {
