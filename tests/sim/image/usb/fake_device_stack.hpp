@@ -111,6 +111,7 @@ class FakeDeviceStack {
   bool high_speed = false;
   bool configured = false;
   bool answer_device_descriptor = true;
+  bool full_speed_configuration = false;  ///< answer with 64-byte bulk endpoints
   uint16_t line_state = 0xFFFF;
   std::vector<uint8_t> line_coding;
   std::vector<std::vector<uint8_t>> setups;
@@ -183,7 +184,14 @@ inline void FakeDeviceStack::descriptor(uint16_t value, uint16_t length) {
     case 0x0100:
       if (answer_device_descriptor) transmit(kDeviceDescriptor, length);
       return;
-    case 0x0200: return transmit(kConfiguration, length);
+    case 0x0200: {
+      std::vector<uint8_t> configuration = kConfiguration;
+      if (full_speed_configuration) {  // wMaxPacketSize of 0x03 (bytes 65-66) and 0x84 (72-73): 64
+        configuration[65] = configuration[72] = 64;
+        configuration[66] = configuration[73] = 0;
+      }
+      return transmit(configuration, length);
+    }
     case 0x0300: return transmit(kLanguages, length);
     case 0x0301: return transmit(kManufacturer, length);
     case 0x0302: return transmit(kProduct, length);

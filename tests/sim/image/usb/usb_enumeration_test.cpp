@@ -127,3 +127,53 @@ TEST(UsbEnumeration, AStalledRequiredRequestFails) {
 
 }  // namespace
 }  // namespace stepdance::sim::image::usb::testing
+
+namespace stepdance::sim::image::usb::testing {
+namespace {
+
+TEST(UsbEnumeration, AtFullSpeedHighSpeedPacketSizesAreRefused) {
+  UsbBench bench;
+  bench.stack.init();
+  bench.stack.set(kPortSc1, kPortPfsc);  // force full speed: the 512-byte bulk endpoints are wrong
+  bench.stack.run_until(300 * kMillisecond);
+  EXPECT_EQ(bench.host().record().speed, BusSpeed::kFull);
+  EXPECT_NE(bench.host().failure().find("wMaxPacketSize 512/512 (USB 2.0 §5.8.3: at most 64 at full speed)"),
+            std::string::npos)
+      << bench.host().failure();
+}
+
+TEST(UsbEnumeration, FullSpeedWorksInOneMillisecondFrames) {
+  UsbBench bench;
+  bench.stack.init();
+  bench.stack.set(kPortSc1, kPortPfsc);
+  bench.stack.full_speed_configuration = true;
+  bench.stack.run_until(300 * kMillisecond);
+  ASSERT_EQ(bench.host().failure(), "");
+  ASSERT_TRUE(bench.host().enumerated());
+  // Each request needs at least one more 1 ms frame than at high speed: 12 requests after 122 ms.
+  EXPECT_GE(bench.host().record().configured_ns, 134 * kMillisecond);
+  EXPECT_EQ(bench.host().record().cdc.bulk_in_max_packet, 64);
+  // Host activity sits on frame boundaries: 1 ms after the end of reset at 110 ms.
+  EXPECT_EQ((bench.host().record().configured_ns - 110 * kMillisecond) % kMillisecond, 0);
+}
+
+TEST(UsbEnumeration, SofInterruptsComeEachMicroframeWhileEnabled) {
+  UsbBench bench;
+  bench.enumerate();
+  FakeDeviceStack& s = bench.stack;
+  s.set(kUsbSts, kStsSri);
+  s.set(kUsbIntr, s.reg(kUsbIntr) | kStsSri);
+  const SimTime start = bench.chip.now_ns();
+  int sofs = 0;
+  for (SimTime t = start + 5 * kMicrosecond; t <= start + 1 * kMillisecond; t += 5 * kMicrosecond) {
+    bench.chip.scheduler().run_until(t);
+    if (s.reg(kUsbSts) & kStsSri) {
+      ++sofs;
+      s.set(kUsbSts, kStsSri);
+    }
+  }
+  EXPECT_EQ(sofs, 8);  // 1 ms of 125 µs microframes
+}
+
+}  // namespace
+}  // namespace stepdance::sim::image::usb::testing
