@@ -199,7 +199,7 @@ void set_line_state(uint16_t state) { line_state = state; }
 
 using namespace stand_in_usb;
 
-void stand_in_usb_serial_start() {
+extern "C" void stand_in_usb_serial_start(void) {
   if (started) return;
   started = true;
   start_clocks();
