@@ -33,14 +33,7 @@ size_t Print::print(long, int) { return 0; }
 size_t Print::print(unsigned long, int) { return 0; }
 size_t Print::print(double, int) { return 0; }
 
-void usb_serial_class::begin(long) {}
-int usb_serial_class::available() { return 0; }
-int usb_serial_class::read() { return -1; }
-int usb_serial_class::peek() { return -1; }
-size_t usb_serial_class::write(uint8_t) { return 1; }
-size_t usb_serial_class::write(const uint8_t*, size_t length) { return length; }
-int usb_serial_class::availableForWrite() { return 0; }
-usb_serial_class::operator bool() const { return true; }
+// usb_serial_class's methods: usb_serial.cpp (a CDC-ACM device on USB1).
 
 TwoWire Wire;
 TwoWire Wire1;
