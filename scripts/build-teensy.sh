@@ -6,8 +6,9 @@
 # the host. The compile-only sketch fixtures under tests/sim/assembly/fixtures are compiled too.
 #
 # Usage: scripts/build-teensy.sh      (output in build-teensy/, or $STEPDANCE_TEENSY_BUILD_DIR)
-# The images link against do-nothing stand-ins for Teensyduino's core (targets/teensy/stand-in):
-# they prove the code compiles and links for the target and give its size; they are not flashable.
+# The images link against our stand-in for Teensyduino's core (targets/teensy/stand-in): it starts
+# the chip as a Teensy does (docs/hardware-backend.md, "The CI stand-in core boots") so the simulator
+# can run the images; they prove the code compiles and links and give its size. Untested on a board.
 #
 # Developer check against the real core (not in CI; scripts/check-teensyduino.sh wraps it):
 #   STEPDANCE_TEENSYDUINO=DIR scripts/build-teensy.sh
@@ -546,7 +547,7 @@ step_a_sketch="$out/teensy41-serial/StepASketch.elf"
 if [ -f "$step_a_sketch" ]; then
   arm-none-eabi-objcopy -O ihex -R .bss -R .bss.dma "$step_a_sketch" "${step_a_sketch%.elf}.hex"
   echo
-  echo "Step-A-Sketch for Teensy 4.1 (${step_a_sketch%.elf}.hex; stand-in core, not flashable):"
+  echo "Step-A-Sketch for Teensy 4.1 (${step_a_sketch%.elf}.hex; stand-in core, untested on a board):"
   arm-none-eabi-size "$step_a_sketch"
   report_size "$step_a_sketch" $((7936 * 1024))
   echo

@@ -7,8 +7,8 @@
 // IPG_PODF ÷4 = 150 MHz (IPG). While PLL1 is reprogrammed the core runs from periph_clk2 = the
 // oscillator. PERCLK (PIT, GPT) = oscillator ÷ 1 = 24 MHz.
 //
-// Clock gates (CCM_CCGR0..7): their reset value in the RM is all ones (every gate on), and the
-// boot ROM leaves on what it found on; the stand-in switches on explicitly only the gates of what
+// Clock gates (CCM_CCGR0..7): at reset almost all are on (RM §14.7.21-28: all ones but CCGR2
+// CG11-12 and CCGR3 CG2), and none is switched off here; the stand-in switches on explicitly the gates of what
 // it programs itself (DCDC here; ADC1/2 in analog.cpp, LPI2C1/3 in wire.cpp, IOMUXC and GPIO1..4
 // in pins.cpp). The backend switches its own (regs_ccm.hpp).
 #include <Arduino.h>
