@@ -7,13 +7,24 @@
 
 #include <stdint.h>
 
+#include "stepdance/platform/teensy/regs_common.hpp"
+
 namespace stand_in {
 
-/// A 32-bit memory-mapped register at `address`.
-inline volatile uint32_t& reg32(uint32_t address) { return *reinterpret_cast<volatile uint32_t*>(address); }
+/// A 32-bit memory-mapped register, as the backend's register headers access them: a volatile
+/// reference on the target, the host register model in tests (STEPDANCE_TEENSY_REGISTER_MODEL).
+using Reg32 = stepdance::platform::teensy::regs::Reg32;
+/// The 32-bit register at `address`.
+inline Reg32 reg32(uint32_t address) { return stepdance::platform::teensy::regs::reg32(address); }
 
 /// Waits for every earlier memory access, then refetches the pipeline (ARMv7-M ARM §A3.8.3).
-inline void barrier() { __asm__ volatile("dsb\n\tisb" ::: "memory"); }
+inline void barrier() {
+#if defined(STEPDANCE_TEENSY_REGISTER_MODEL)
+  stepdance::platform::teensy::regs::data_sync_barrier();
+#else
+  __asm__ volatile("dsb\n\tisb" ::: "memory");
+#endif
+}
 
 // ---- System control block, ARMv7-M ARM §B3.2 ---------------------------------------------------
 namespace scb {

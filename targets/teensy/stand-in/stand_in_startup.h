@@ -9,7 +9,11 @@
 #include <stdint.h>
 
 /// Start-up code that runs once: kept in flash, out of the 32 KB ITCM banks (as Teensy's FLASHMEM).
+#if defined(STEPDANCE_TEENSY_REGISTER_MODEL)
+#define STAND_IN_FLASH  // host tests of the stand-in (tests/platform/teensy/stand_in/)
+#else
 #define STAND_IN_FLASH __attribute__((section(".flashmem.stand_in"), noinline))
+#endif
 
 extern "C" {
 

@@ -51,7 +51,7 @@ constexpr uint32_t kPadI2c = iomuxc::kPadOpenDrain | iomuxc::kPadKeeperEnable | 
                              iomuxc::pad_pull(iomuxc::kPull22kUp) | iomuxc::pad_drive(4) | iomuxc::pad_speed(1) |
                              iomuxc::kPadHysteresis;
 
-volatile uint32_t& reg(const Controller& c, uint32_t offset) { return stand_in::reg32(c.base + offset); }
+stand_in::Reg32 reg(const Controller& c, uint32_t offset) { return stand_in::reg32(c.base + offset); }
 
 uint32_t tx_fifo_count(const Controller& c) { return reg(c, lpi2c::kMfsr) & 7u; }
 
@@ -153,7 +153,7 @@ void TwoWire::setClock(uint32_t frequency) {
   const uint32_t filter = frequency > 400000 ? 1 : 2;
   const uint32_t period = kFunctionalClockHz / (frequency << prescale);
   const uint32_t clocks = period - 2 - (2 + filter) / (1u << prescale);
-  uint32_t low = (clocks * 52 + 99) / 100;  // SCL low a little longer than high, as I2C asks
+  uint32_t low = (clocks * 60 + 99) / 100;  // 60 % low: I2C's minimum low time is twice its high
   if (low > 63) low = 63;
   uint32_t high = clocks - low > 63 ? 63 : clocks - low;
   const uint32_t sethold = high;
