@@ -79,7 +79,8 @@ extern "C" __attribute__((naked, section(".startup"))) void stand_in_reset_handl
       "isb\n\t"
       "ldr r0, =_stack_top\n\t"
       "mov sp, r0\n\t"
-      "b stand_in_start");
+      "b stand_in_start\n\t"
+      ".ltorg");  // the constants right here: ldr reaches only 4 KB, and LTO may put more code after
 }
 
 namespace {
