@@ -66,14 +66,18 @@ void pinMode(uint8_t pin, uint8_t mode) {
   iomuxc::pad_mux(info->mux) = iomuxc::kAltGpio | iomuxc::kMuxSion;
 }
 
-// Context: any. DR_SET/DR_CLEAR change only this pin's bit.
+// Context: any. On an output, DR_SET/DR_CLEAR change only this pin's bit. On an input, as in
+// Teensyduino (and Arduino's older convention), HIGH switches the pull-up on and LOW the pull-down.
 void digitalWrite(uint8_t pin, uint8_t value) {
   const teensy::PinInfo* info = teensy::pin_info(pin);
   if (info == nullptr) return;
-  if (value) {
-    gpio::dr_set(info->port) = 1u << info->bit;
+  const uint32_t mask = 1u << info->bit;
+  if ((gpio::gdir(info->port) & mask) == 0) {
+    iomuxc::pad_ctl(info->mux) = pad_for(value ? INPUT_PULLUP : INPUT_PULLDOWN);
+  } else if (value) {
+    gpio::dr_set(info->port) = mask;
   } else {
-    gpio::dr_clear(info->port) = 1u << info->bit;
+    gpio::dr_clear(info->port) = mask;
   }
 }
 

@@ -165,6 +165,9 @@ TEST(StandInPins, PinModeMuxesThePadToGpioAndSetsTheDirection) {
   pinMode(2, INPUT_PULLUP);  // pin 2 = GPIO_EMC_04 = GPIO4/GPIO9 bit 4
   EXPECT_EQ(teensy_model::peek(0x401F8014 + 0x1F0 + 16), 0x1F000u) << "PKE | PUE | PUS 22k up | HYS";
   EXPECT_EQ(teensy_model::peek(0x4200C004) & (1u << 4), 0u) << "GPIO9_GDIR bit 4 = input";
+  digitalWrite(2, LOW);  // on an input: the 100 kΩ pull-down instead, and DR untouched
+  EXPECT_EQ(teensy_model::peek(0x401F8014 + 0x1F0 + 16), 0x13000u) << "PKE | PUE | PUS 100k down | HYS";
+  EXPECT_EQ(teensy_model::peek(0x4200C088), 0u) << "GPIO9_DR_CLEAR not written";
   teensy_model::poke(0x4200C008, 1u << 4);  // GPIO9_PSR
   EXPECT_EQ(digitalRead(2), HIGH);
   teensy_model::poke(0x4200C008, 0);
