@@ -535,6 +535,12 @@ check_boot_layout() {
   expect "FlexSPI tag" "$(word_at "$bin" 0)" 0x42464346
   expect "FlexSPI version" "$(word_at "$bin" 4)" 0x56010000
   expect "FlexSPI sflashA1Size" "$(word_at "$bin" 0x50)" "$(hex $flash_bytes)"
+  # Read sequence (LUT instructions: opcode 15:10, pads 9:8, operand 7:0): CMD_SDR 1 pad 0xEB,
+  # RADDR_SDR 4 pads 24 bits; DUMMY_SDR 4 pads 6 cycles, READ_SDR 4 pads. Then pageSize, sectorSize.
+  expect "FlexSPI LUT read word 0" "$(word_at "$bin" 0x80)" 0x0a1804eb
+  expect "FlexSPI LUT read word 1" "$(word_at "$bin" 0x84)" 0x26043206
+  expect "serial NOR pageSize" "$(word_at "$bin" 0x1c0)" 0x00000100
+  expect "serial NOR sectorSize" "$(word_at "$bin" 0x1c4)" 0x00001000
   expect "IVT header" "$(word_at "$bin" 0x1000)" 0x412000d1
   expect "IVT entry" "$(word_at "$bin" 0x1004)" "$(hex $(($(symbol_of "$elf" stand_in_reset_handler) | 1)))"
   expect "IVT boot data" "$(word_at "$bin" 0x1010)" "$(symbol_of "$elf" stand_in_boot_data)"
