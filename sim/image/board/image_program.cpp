@@ -23,6 +23,9 @@ bool ImageProgram::load(std::string& error) { return chip_.load(image_path_, err
 bool ImageProgram::start(SimBoard& board, std::string& error) {
   board_ = &board;
   if (!add_blocks(error)) return false;
+  // The boot ROM hands a FlexSPI image over with the core on a PLL, not at the reset state's
+  // 12 MHz (ClockAndPinBlocks::apply_boot_rom_clocks says what it sets and why).
+  clocks_->apply_boot_rom_clocks();
   clocks_->ccm.add_rates_listener([this](const rt1062::ClockRates& rates) {
     if (rates.core_hz != 0) chip_.set_core_clock_hz(rates.core_hz);
   });
