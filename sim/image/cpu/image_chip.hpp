@@ -97,6 +97,9 @@ class ImageChip : public ChipContext {
   const ElfSymbols& symbols() const { return image_.symbols; }
   /// The exception the core is handling (IPSR), 0 in thread mode.
   unsigned current_exception() const { return current_exception_; }
+  /// The core's own registers (0xE0000000–0xE00FFFFF): the CPU's accesses go here; tests
+  /// drive them directly.
+  PeripheralBus& system_bus() { return system_bus_; }
   /// The system-space state (for tests and reports).
   const CoreRegisters& core_registers() const { return core_; }
   ExceptionState& exceptions() { return exceptions_; }
