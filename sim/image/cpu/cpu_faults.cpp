@@ -68,10 +68,22 @@ void ImageChip::on_interrupt(uc_struct*, uint32_t intno, void* user) {
   }
 }
 
+// Unicorn 2.0.1 sends WFE and YIELD here too (QEMU's EXCP_YIELD), with the PC after them; an
+// undefined instruction comes with the PC on it.
 bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
+  const uint32_t pc = chip.read_register(UC_ARM_REG_PC);
+  uint16_t before[2] = {0, 0};
+  if (chip.read_memory(pc - 4, before, 4)) {
+    const bool wfe = before[1] == 0xBF20 || (before[0] == 0xF3AF && before[1] == 0x8002);
+    const bool yield = before[1] == 0xBF10 || (before[0] == 0xF3AF && before[1] == 0x8001);
+    if (wfe || yield) {
+      chip.yielded_ = yield;  // the run goes on at pc (YIELD) or sleeps first (WFE)
+      return true;
+    }
+  }
   chip.core_.cfsr |= 1u << 16;  // UFSR.UNDEFINSTR
-  chip.fault(kUsageFault, "UsageFault: undefined instruction", chip.read_register(UC_ARM_REG_PC));
+  chip.fault(kUsageFault, "UsageFault: undefined instruction", pc);
   chip.we_stopped_ = true;
   uc_emu_stop(uc);
   return true;

@@ -84,8 +84,8 @@ class ImageChip : public ChipContext {
   const ImageStop* stop_report() const { return stopped_ ? stop_.get() : nullptr; }
   /// The CCM model calls this when ARM_PLL or the dividers change; time from now on runs at it.
   void set_core_clock_hz(uint32_t hz);
-  /// Instructions retired since power_on.
-  uint64_t instructions() const { return retired_; }
+  /// Instructions retired since power_on (core cycles less those slept in WFI/WFE).
+  uint64_t instructions() const { return retired_ - slept_; }
 
   /// Instructions spent in one exception's handler, nested ones excluded (each instruction
   /// counts for the exception whose handler was running it), and how often it was entered.
@@ -165,6 +165,7 @@ class ImageChip : public ChipContext {
   bool block_must_stop(const ThumbBlock& block, uint32_t address);
   bool spin(uint32_t address);
   void sleep_until_interrupt();
+  void wake();
   void shorten_run();
   uint64_t cycles_at(SimTime time_ns) const;
   Masks masks() const;
@@ -212,7 +213,7 @@ class ImageChip : public ChipContext {
   uint32_t core_hz_ = kBootCoreClockHz;
   uint64_t base_cycle_ = 0;  ///< cycle count at which the current clock began
   SimTime base_ns_ = 0;      ///< … and its time
-  uint64_t retired_ = 0;     ///< instructions retired (counted at each block's start)
+  uint64_t retired_ = 0;     ///< core cycles: instructions retired (counted at each block's start) and slept
   uint64_t block_start_ = 0; ///< retired_ before the block running now
   uint64_t run_limit_ = 0;   ///< the run ends at the first block boundary at or past this
   const ThumbBlock* block_ = nullptr;  ///< the block running now
@@ -226,6 +227,9 @@ class ImageChip : public ChipContext {
   bool end_run_ = false;       ///< stop_cpu_run() or a clock change: back to the scheduler at the next block
   bool recheck_ = false;       ///< something was pended or unmasked: take it at the next block
   bool we_stopped_ = false;    ///< the last emulator return was our own uc_emu_stop
+  bool yielded_ = false;       ///< … or a YIELD hint: run on
+  uint64_t slept_ = 0;         ///< cycles spent asleep (WFI, WFE)
+  bool asleep_ = false;        ///< in WFI/WFE: no event queued until something pends
   bool check_masks_ = false;   ///< something pending is masked: re-check at every block
   bool stopped_ = false;
   bool powered_ = false;

@@ -100,6 +100,15 @@ TEST(ImageChipFault, ASpinWithInterruptsMaskedIsNoProgress) {
   EXPECT_LT(stop.time_ns, 1 * kMillisecond);  // found at once, not at the end of the run
 }
 
+TEST(ImageChipFault, SleepingWithNothingToWakeTheCoreIsNoProgress) {
+  Fixture f;
+  const ImageStop stop = run_to_stop(f, "fault_sleep");
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kNoProgress);
+  EXPECT_NE(stop.what.find("WFI"), std::string::npos) << stop.what;
+  EXPECT_EQ(stop.symbol, "sleep_forever");
+  EXPECT_EQ(stop.exit_code, 6);
+}
+
 TEST(ImageChipFault, AnUnmodelledRegisterStopsTheRunNamingIt) {
   Fixture f;
   const ImageStop stop = run_to_stop(f, "fault_unmodelled");

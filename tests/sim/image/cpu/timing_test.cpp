@@ -47,6 +47,22 @@ TEST(ImageChipTiming, TimeFollowsTheCoreClock) {
   EXPECT_EQ(f.chip->time_of_cycle(f.chip->instructions()), 2 * kMicrosecond);
 }
 
+// tests/sim/image/fixtures/sleep.S: WFI and WFE sleep to the next SysTick; YIELD runs on.
+TEST(ImageChipTiming, WfiAndWfeSleepUntilAnInterrupt) {
+  Fixture f;
+  ASSERT_TRUE(f.boot("sleep"));
+  f.run_to(10 * kMillisecond + 5 * kMicrosecond);
+  ASSERT_TRUE(f.stops.empty()) << f.stops[0].what << " at " << f.stops[0].symbol;
+  EXPECT_EQ(f.word("ticks"), 10u);
+  // Each SysTick wakes the WFI (then the loop runs to the WFE) or the WFE (then it loops to the
+  // WFI): two ticks per turn of the loop.
+  EXPECT_EQ(f.word("wakes"), 5u);
+  // Instructions: the 25-instruction start, yield and wfi; then per two ticks two handlers of 5,
+  // ldr, adds, str, wfe after the first and b, yield, wfi after the second — asleep in between.
+  EXPECT_EQ(f.chip->instructions(), 25u + 2 + 5 * (10 + 4 + 3));
+  EXPECT_EQ(f.chip->handler_cost(15).entries, 10u);
+}
+
 // Everything a run leaves: the marks, the handler costs, the instruction count.
 std::vector<uint64_t> trace_of(const std::string& name) {
   DeviceFixture f;
