@@ -78,6 +78,14 @@ TEST(ImageChipIrq, AMaskedInterruptIsTakenRightAfterTheMaskDrops) {
   EXPECT_EQ(f.device->cycle_of(60), first + 1);
 }
 
+TEST(ImageChipIrq, AnInterruptTheFirmwarePendsIsTakenAtTheNextBlock) {
+  IrqFixture f;
+  ASSERT_TRUE(f.boot_with_device("irq_software"));
+  f.run_until(10 * kMicrosecond);
+  const std::vector<TestDevice::Mark> expected{{1, 23}, {2, 26}, {30, 29}, {3, 34}};
+  EXPECT_EQ(f.device->marks, expected);
+}
+
 TEST(ImageChipIrq, TheThreadsFloatsSurviveAHandlerThatUsesTheFpu) {
   IrqFixture f;
   ASSERT_TRUE(f.boot_with_device("fpu_isr"));
