@@ -48,10 +48,17 @@ enum class TeensyModel { kTeensy40, kTeensy41 };
 /// the block's start plus the instructions before it in the block (see docs/simulator.md for
 /// how the instruction is found).
 ///
+/// With nothing else queued, one run covers at most kMaxSliceNs: the core may then be up to that
+/// far ahead of a scheduler that stops with nothing queued.
+///
 /// Exceptions are taken at block boundaries: an interrupt pended during a block (by an event
 /// between runs, or by a register access) is entered before the next block runs. Nested ones
 /// preempt by group priority; PRIMASK, FAULTMASK and BASEPRI mask; a pending interrupt that a
-/// mask holds off is taken at the first block boundary after the mask drops.
+/// mask holds off is taken at the first block boundary after the mask drops. Entry and return
+/// take no cycles. WFI/WFE sleep until something pends an exception.
+///
+/// Faults (ImageStop) stop the image at the moment its fault handler would be entered; the
+/// handler does not run. on_stop listeners hear it once, after the run ends.
 ///
 /// Context: the simulator's thread only.
 class ImageChip : public ChipContext {

@@ -48,6 +48,16 @@ TEST(ImageChipFault, AnUndefinedInstructionIsAUsageFault) {
   EXPECT_EQ(f.chip->core_registers().cfsr & (1u << 16), 1u << 16);  // UFSR.UNDEFINSTR
 }
 
+TEST(ImageChipFault, AFaultWhoseHandlerIsDisabledEscalatesToHardFault) {
+  Fixture f;
+  const ImageStop stop = run_to_stop(f, "fault_escalated");
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kHardFault);
+  EXPECT_NE(stop.what.find("escalated"), std::string::npos) << stop.what;
+  EXPECT_NE(stop.what.find("undefined instruction"), std::string::npos) << stop.what;
+  expect_in(f, stop, "undefined_here");
+  EXPECT_EQ(f.chip->core_registers().hfsr & (1u << 30), 1u << 30);  // HFSR.FORCED
+}
+
 TEST(ImageChipFault, ADivideByZeroWithDiv0TrpIsAUsageFault) {
   Fixture f;
   const ImageStop stop = run_to_stop(f, "fault_divide");
@@ -89,6 +99,16 @@ TEST(ImageChipFault, EndlessRecursionOverflowsTheStack) {
   const uint32_t sp = f.chip->read_register(UC_ARM_REG_SP);
   EXPECT_LT(sp, f.address_of("_ebss"));
   EXPECT_GT(sp + 128, f.address_of("_ebss"));
+}
+
+TEST(ImageChipFault, TheStackGuardRegionIsTheStacksBottom) {
+  Fixture f;
+  const ImageStop stop = run_to_stop(f, "fault_stack_guard");
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kStackOverflow) << stop.what;
+  EXPECT_EQ(stop.symbol, "recurse");
+  char bottom[16];
+  std::snprintf(bottom, sizeof bottom, "0x%08X", f.address_of("_ebss") + 32);  // the guard's top
+  EXPECT_NE(stop.what.find(std::string("bottom ") + bottom), std::string::npos) << stop.what;
 }
 
 TEST(ImageChipFault, ASpinWithInterruptsMaskedIsNoProgress) {
