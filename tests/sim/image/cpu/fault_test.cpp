@@ -2,6 +2,7 @@
 // backtrace; exit status 5, or 6 for no progress (docs/simulator.md). One fixture per kind
 // (tests/sim/image/fixtures/fault_*.c).
 #include "fixture.hpp"
+#include "test_device.hpp"
 
 namespace stepdance::sim::image::testing {
 namespace {
@@ -77,6 +78,23 @@ TEST(ImageChipFault, AReadWhereNoMemoryIsIsABusFault) {
   EXPECT_NE(stop.what.find("read of 4 bytes at 0x30000000"), std::string::npos) << stop.what;
   expect_in(f, stop, "read_unmapped");
   EXPECT_EQ(f.chip->core_registers().bfar, 0x30000000u);
+}
+
+TEST(ImageChipFault, ABlockAnsweringWithABusErrorIsABusFault) {
+  Fixture f;
+  std::unique_ptr<TestDevice> device;
+  ASSERT_TRUE(f.boot("fault_device", [&device](ImageChip& chip) {
+    device = std::make_unique<TestDevice>(chip);
+    chip.bus().add(*device);
+  }));
+  f.scheduler.run_until(1 * kMillisecond);
+  ASSERT_EQ(f.stops.size(), 1u);
+  const ImageStop& stop = f.stops[0];
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kBusFault);
+  EXPECT_NE(stop.what.find("0x40100014 (TESTDEV+0x14): the block answers with a bus error"), std::string::npos)
+      << stop.what;
+  expect_in(f, stop, "read_device");
+  EXPECT_EQ(f.chip->core_registers().bfar, 0x40100014u);
 }
 
 TEST(ImageChipFault, AnAccessTheMpuForbidsIsAMemManageFault) {

@@ -24,8 +24,9 @@ class TestDevice : public Peripheral {
   const char* name() const override { return "TESTDEV"; }
   uint32_t base() const override { return 0x40100000; }
   uint32_t size_bytes() const override { return 0x100; }
-  /// 0x0C reads 0x5A; everything else unmodelled.
+  /// 0x0C reads 0x5A; 0x14 answers with a bus error; everything else unmodelled.
   Access read(uint32_t offset, uint8_t, uint32_t& value) override {
+    if (offset == 0x14) return Access::kBusError;
     if (offset != 0x0C) return Access::kUnmodelled;
     value = 0x5A;
     return Access::kOk;
