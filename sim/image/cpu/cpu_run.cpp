@@ -111,6 +111,11 @@ void ImageChip::wake() {
 void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
   if (chip.stepping_) return;  // counted one by one by step_through_block
+  for (Watch& watch : chip.watches_) {
+    if (watch.address != address || watch.fired_at == chip.retired_) continue;
+    watch.fired_at = chip.retired_;  // once per arrival, though a stop may make the block start twice
+    watch.listener(chip.instructions(), chip.time_of_cycle(chip.retired_));
+  }
   const ThumbBlock& block = chip.blocks_->get(static_cast<uint32_t>(address), size);
   if (chip.block_must_stop(block, static_cast<uint32_t>(address))) {
     chip.we_stopped_ = true;

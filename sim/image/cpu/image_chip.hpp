@@ -89,6 +89,11 @@ class ImageChip : public ChipContext {
   bool stopped() const { return stopped_; }
   /// The stop's report, or null while the image runs.
   const ImageStop* stop_report() const { return stopped_ ? stop_.get() : nullptr; }
+  /// Calls `listener` each time the core starts a block at `address` (a function's entry, e.g.
+  /// `setup`), with the instructions retired before it and the time. Costs one comparison per
+  /// block per watch. Before or after power_on.
+  using ReachListener = std::function<void(uint64_t instructions, SimTime time_ns)>;
+  void on_reach(uint32_t address, ReachListener listener) { watches_.push_back({address & ~1u, std::move(listener), ~uint64_t{0}}); }
   /// The CCM model calls this when ARM_PLL or the dividers change; time from now on runs at it.
   void set_core_clock_hz(uint32_t hz);
   /// Instructions retired since power_on (core cycles less those slept in WFI/WFE).
@@ -215,6 +220,12 @@ class ImageChip : public ChipContext {
   ExceptionState exceptions_;
   CpuEvent event_{this};
   std::vector<std::function<void(const ImageStop&)>> stop_listeners_;
+  struct Watch {
+    uint32_t address;
+    ReachListener listener;
+    uint64_t fired_at = ~uint64_t{0};  ///< retired_ at the last call
+  };
+  std::vector<Watch> watches_;
 
   // time
   uint32_t core_hz_ = kBootCoreClockHz;

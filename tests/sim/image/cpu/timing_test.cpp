@@ -47,6 +47,19 @@ TEST(ImageChipTiming, TimeFollowsTheCoreClock) {
   EXPECT_EQ(f.chip->time_of_cycle(f.chip->instructions()), 2 * kMicrosecond);
 }
 
+TEST(ImageChipTiming, ReachingAnAddressReportsTheInstructionsBeforeIt) {
+  DeviceFixture f;
+  std::vector<std::pair<uint64_t, SimTime>> reached;
+  ASSERT_TRUE(f.boot_with_device("irq_basic"));
+  f.chip->on_reach(f.address_of("irq3_handler"),
+                   [&reached](uint64_t instructions, SimTime time) { reached.emplace_back(instructions, time); });
+  At pend(f.scheduler, 10 * kMicrosecond, [&f] { f.chip->set_irq_level(3, true); });
+  f.run_to(20 * kMicrosecond);
+  ASSERT_EQ(reached.size(), 1u);
+  EXPECT_EQ(reached[0].first, 3960u);  // entered at 10 µs: 3960 cycles at 396 MHz, all instructions
+  EXPECT_EQ(reached[0].second, 10 * kMicrosecond);
+}
+
 // tests/sim/image/fixtures/sleep.S: WFI and WFE sleep to the next SysTick; YIELD runs on.
 TEST(ImageChipTiming, WfiAndWfeSleepUntilAnInterrupt) {
   Fixture f;
