@@ -13,7 +13,6 @@ namespace {
 // QEMU's exception numbers as unicorn passes them to the interrupt hook (target/arm/cpu.h).
 constexpr uint32_t kExcpUdef = 1, kExcpSwi = 2, kExcpPrefetchAbort = 3, kExcpDataAbort = 4, kExcpBkpt = 7;
 constexpr uint32_t kExcpExceptionExit = 8, kExcpNocp = 17, kExcpInvstate = 18, kExcpUnaligned = 22;
-constexpr size_t kMaxFrames = 16;
 
 std::string hex(uint32_t value) {
   char text[16];
@@ -142,7 +141,8 @@ void ImageChip::raise_fault(ImageStop::Kind kind, const std::string& what, uint3
   stop_->symbol = image_.symbols.function_name(stop_->pc);
   stop_->backtrace = backtrace(stop_->pc, read_register(UC_ARM_REG_LR), read_register(UC_ARM_REG_SP));
   stop_->exit_code = kind == ImageStop::Kind::kNoProgress ? kExitNoProgress : kExitCrash;
-  stop_->time_ns = in_run_ ? time_of_cycle(in_access_ ? access_cycles_ : block_start_) : scheduler_.now();
+  // The access's time, or the block boundary reached (a fault inside a block: the block's end).
+  stop_->time_ns = in_run_ ? time_of_cycle(in_access_ ? access_cycles_ : retired_) : scheduler_.now();
   end_run_ = true;
 }
 
