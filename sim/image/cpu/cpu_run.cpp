@@ -167,6 +167,7 @@ void ImageChip::step_through_block() {
       fault(kUsageFault, "UsageFault: divide by zero (CCR.DIV_0_TRP is set)", pc);
     }
     if (stop_ != nullptr) break;
+    block_address_ = pc;  // a register access or fault in this step is at pc
     in_run_ = true;
     uc_emu_start(uc_, pc | 1u, kNoUntil, 0, 1);
     in_run_ = false;
