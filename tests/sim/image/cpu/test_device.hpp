@@ -31,9 +31,13 @@ class TestDevice : public Peripheral {
     value = 0x5A;
     return Access::kOk;
   }
-  /// 0x00: lower IRQ line `value`; 0x04: log a mark; 0x08: raise IRQ line `value`.
+  /// 0x00: lower IRQ line `value`; 0x04: log a mark; 0x08: raise IRQ line `value`; 0x10: end the
+  /// CPU's run (if stop_on_write).
   Access write(uint32_t offset, uint8_t, uint32_t value) override {
     switch (offset) {
+      case 0x10:
+        if (stop_on_write) chip_.stop_cpu_run();
+        return Access::kOk;
       case 0x00: chip_.set_irq_level(value, false); return Access::kOk;
       case 0x04: marks.push_back({value, chip_.cycles()}); return Access::kOk;
       case 0x08: chip_.set_irq_level(value, true); return Access::kOk;
@@ -65,6 +69,7 @@ class TestDevice : public Peripheral {
   }
 
   std::vector<Mark> marks;
+  bool stop_on_write = false;
 
  private:
   ChipContext& chip_;

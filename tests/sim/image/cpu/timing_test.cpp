@@ -36,6 +36,22 @@ TEST(ImageChipTiming, TheCycleCounterIsTheInstructionCount) {
   EXPECT_EQ(f.chip->instructions(), 3960u);
 }
 
+// stop_cpu_run() ends the run after the access's block; the core then resumes where it was.
+TEST(ImageChipTiming, StopCpuRunEndsTheRunAndTheCoreResumes) {
+  uint64_t handled[2], instructions[2];
+  for (int stop = 0; stop < 2; ++stop) {
+    DeviceFixture f;
+    ASSERT_TRUE(f.boot_with_device("access_timing"));
+    f.device->stop_on_write = stop == 1;
+    f.run_to(10 * kMicrosecond);
+    handled[stop] = f.scheduler.handled();
+    instructions[stop] = f.chip->instructions();
+  }
+  EXPECT_EQ(handled[1], handled[0] + 1);  // one more firing of the CPU's event
+  EXPECT_EQ(instructions[1], instructions[0]);
+  EXPECT_EQ(instructions[0], 3960u);
+}
+
 TEST(ImageChipTiming, TimeFollowsTheCoreClock) {
   DeviceFixture f;
   ASSERT_TRUE(f.boot_with_device("access_timing"));
