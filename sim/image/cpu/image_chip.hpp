@@ -65,8 +65,9 @@ class ImageChip : public ChipContext {
  public:
   /// Longest single CPU run without an event in the queue, ns.
   static constexpr SimTime kMaxSliceNs = 100 * kMicrosecond;
-  /// Core clock the boot ROM leaves for a FlexSPI boot: ARM_PLL off, the core on the 396 MHz
-  /// PLL2 PFD3 (IMXRT1060RM rev 3, 10.5 "boot clocks": "ARM core 396 MHz").
+  /// Core clock the boot ROM leaves for a FlexSPI boot: 396 MHz (IMXRT1060RM rev 3, 9.5.2, the
+  /// clocks the boot ROM sets; Teensyduino 1.59's teensy4/clockspeed.c starts F_CPU_ACTUAL at
+  /// 396000000 for the same reason). The CCM model sets the clock the image then chooses.
   static constexpr uint32_t kBootCoreClockHz = 396000000;
 
   ImageChip(Scheduler& scheduler, TeensyModel model);
@@ -80,9 +81,10 @@ class ImageChip : public ChipContext {
   bool load(const std::string& elf_path, std::string& error);
   /// The peripheral space: the board and the RT1062 models add their blocks before power_on.
   PeripheralBus& bus() { return bus_; }
-  /// Boots as the ROM does a FlexSPI image (IMXRT1060RM 9.7.1: the IVT's entry): SP from the
-  /// image's vector table where its entry's table says, PC = the ELF entry; then the CPU runs as
-  /// a scheduler event from `time_ns`. A stop (kBadImage) if the entry is outside memory.
+  /// Boots as the ROM does a FlexSPI image (IMXRT1060RM rev 3, 9.7: it jumps to the IVT's entry,
+  /// which is the ELF's entry): PC = the ELF entry, SP = the top of DTCM (images set SP first
+  /// thing, as Teensyduino's ResetHandler does); then the CPU runs as a scheduler event from
+  /// `time_ns`. A stop (kBadImage) if nothing is loaded or the entry is outside memory.
   void power_on(SimTime time_ns);
   /// Called once when the image stops (fault, stall, unmodelled register). Several may listen.
   void on_stop(std::function<void(const ImageStop&)> listener) { stop_listeners_.push_back(std::move(listener)); }
