@@ -57,11 +57,11 @@ INSTANTIATE_TEST_SUITE_P(
     Images, FaultSketches,
     ::testing::Values(FaultCase{"BusFault", "BusFault", "read_gated_timer()", EscapeCause::kCrashed},
                       FaultCase{"UsageFault", "UsageFault", "divide_by_zero()", EscapeCause::kCrashed},
-                      FaultCase{"MemManage", "MemManage", "read_through_null()", EscapeCause::kCrashed},
+                      FaultCase{"MemManage", "MemManage", "write_to_flash()", EscapeCause::kCrashed},
                       FaultCase{"HardFault", "HardFault", "hit_breakpoint()", EscapeCause::kCrashed},
                       FaultCase{"StackOverflow", "stack", "recurse(unsigned long)", EscapeCause::kCrashed},
                       FaultCase{"NoProgress", "progress", "wait_forever()", EscapeCause::kHung}),
-    [](const ::testing::TestParamInfo<FaultCase>& info) { return info.param.sketch; });
+    [](const ::testing::TestParamInfo<FaultCase>& param) { return param.param.sketch; });
 
 }  // namespace
 }  // namespace stepdance::sim::test

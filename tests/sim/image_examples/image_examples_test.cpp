@@ -34,7 +34,7 @@ class FrameLog : public WireListener {
   std::vector<protocol::FrameWords> frames;
 };
 
-struct Run {
+struct ExampleRun {
   std::unique_ptr<Simulation> simulation;
   SimulationReport report;
   std::map<std::string, FrameLog> wires;  ///< by "board:port"
@@ -42,7 +42,7 @@ struct Run {
 };
 
 /// Runs `scenario` with the boards named in `images` on their images (the rest host-compiled).
-Run run(const scenario::Scenario& scenario, const std::map<std::string, std::string>& images, const std::string& name) {
+ExampleRun run_example(const scenario::Scenario& scenario, const std::map<std::string, std::string>& images, const std::string& name) {
   SimulationOptions options;
   plug_test_hooks(options);
   options.firmware = std::make_shared<image::ImageSource>();
@@ -50,7 +50,7 @@ Run run(const scenario::Scenario& scenario, const std::map<std::string, std::str
   options.output_directory = test_output_dir(name);
   options.write_vcd = false;
   std::filesystem::remove_all(*options.output_directory);
-  Run result;
+  ExampleRun result;
   SimulationError error;
   result.simulation = Simulation::create(scenario, options, error);
   EXPECT_NE(result.simulation, nullptr) << error.message;
@@ -85,8 +85,8 @@ TEST_P(ImageExamples, RunLikeTheHostCompiledSketch) {
         << images[board] << " is missing: scripts/build-teensy.sh builds it (the ctest fixture runs it)";
   }
   const scenario::Scenario scenario = load(source_path("examples/" + example.folder + "/scenario.toml"));
-  const Run host = run(scenario, {}, example.folder + ".host");
-  const Run image = run(scenario, images, example.folder + ".image");
+  const ExampleRun host = run_example(scenario, {}, example.folder + ".host");
+  const ExampleRun image = run_example(scenario, images, example.folder + ".image");
   ASSERT_TRUE(host.simulation && image.simulation);
   ASSERT_FALSE(image.report.sketch_stop) << image.report.sketch_stop->message();
   ASSERT_TRUE(host.report.all_expectations_met());
@@ -119,7 +119,7 @@ TEST_P(ImageExamples, RunLikeTheHostCompiledSketch) {
 
 INSTANTIATE_TEST_SUITE_P(Examples, ImageExamples,
                          ::testing::Values(ImageExample{"StepASketch", {{"driver", "teensy41/StepASketch"}}}),
-                         [](const ::testing::TestParamInfo<ImageExample>& info) { return info.param.folder; });
+                         [](const ::testing::TestParamInfo<ImageExample>& param) { return param.param.folder; });
 
 }  // namespace
 }  // namespace stepdance::sim::test

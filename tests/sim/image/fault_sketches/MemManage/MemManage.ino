@@ -1,11 +1,8 @@
-// Fault fixture for image boards: a read through a null pointer, which the Teensy's MPU traps
-// (a 32-byte no-access region at address 0, as Teensyduino sets it): a MemManage fault.
+// Fault fixture for image boards: a write into the program flash, which the Teensy's MPU maps
+// read-only (as Teensyduino's startup does): a MemManage fault.
 #include <stdint.h>
 
-volatile uint32_t sink;
-uint32_t* volatile nowhere = nullptr;
+__attribute__((noinline)) void write_to_flash() { *reinterpret_cast<volatile uint32_t*>(0x60010000u) = 1; }
 
-__attribute__((noinline)) void read_through_null() { sink = *nowhere; }
-
-void setup() { read_through_null(); }
+void setup() { write_to_flash(); }
 void loop() {}
