@@ -70,6 +70,10 @@ void ImageChip::on_interrupt(uc_struct*, uint32_t intno, void* user) {
 
 bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
+  if (chip.emulate_double_at_fault(chip.read_register(UC_ARM_REG_PC))) {  // vfp_hooks.cpp
+    chip.we_stopped_ = true;
+    return true;
+  }
   chip.core_.cfsr |= 1u << 16;  // UFSR.UNDEFINSTR
   chip.fault(kUsageFault, "UsageFault: undefined instruction", chip.read_register(UC_ARM_REG_PC));
   chip.we_stopped_ = true;

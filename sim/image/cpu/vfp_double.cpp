@@ -81,6 +81,19 @@ uint64_t double_result(const Decoded& x, const VfpRegisters& regs, Context& c) {
 
 bool is_vfp_double_data_op(uint32_t instruction) { return vfp::decode(instruction).op != Op::kNone; }
 
+VfpOperands vfp_operands(uint32_t instruction) {
+  const Decoded x = vfp::decode(instruction);
+  VfpOperands operands;
+  if (x.op == Op::kNone) return operands;
+  const auto bit = [](unsigned index) { return static_cast<uint16_t>(1u << index); };
+  // Reading every named register is harmless: the unused fields decode to some register.
+  operands.reads = bit(x.d) | bit(x.n) | bit(x.m) | bit(x.sd >> 1) | bit(x.sm >> 1);
+  const bool single_result = x.op == Op::kVcvtF32F64 || x.op == Op::kVcvtF64Int;
+  const bool no_result = x.op == Op::kVcmp || x.op == Op::kVcmpe || x.op == Op::kVcmpZero || x.op == Op::kVcmpeZero;
+  operands.writes = no_result ? 0 : single_result ? bit(x.sd >> 1) : bit(x.d);
+  return operands;
+}
+
 bool vfp_reads_apsr(uint32_t instruction) { return vfp::decode(instruction).op == Op::kVsel; }
 
 bool vfp_is_conditional(uint32_t instruction) { return (instruction >> 24) == 0xEE; }

@@ -54,6 +54,14 @@ bool vfp_reads_apsr(uint32_t instruction);
 /// FPv5 0xFE forms are always unconditional).
 bool vfp_is_conditional(uint32_t instruction);
 
+/// The D registers an instruction reads and writes (bit n = Dn; a single register Sk counts as
+/// D(k/2)), so a caller need move only those. Both zero for an instruction that is not ours.
+struct VfpOperands {
+  uint16_t reads = 0;
+  uint16_t writes = 0;
+};
+VfpOperands vfp_operands(uint32_t instruction);
+
 /// Executes `instruction` on `regs` with the ARM semantics (FPSCR rounding mode, FZ, DN, NaN
 /// propagation, cumulative exception flags) — or returns kNotMine and changes nothing.
 /// Context: any; the host's floating-point environment is restored before it returns.
