@@ -108,6 +108,15 @@ TEST_F(Flexio3Test, ResetValuesAndReservedBitsFollowTheManual) {
   EXPECT_EQ(rig.read32(kCtrl), 0u);
 }
 
+TEST_F(Flexio3Test, ShifterPinSelectHasFiveBits) {
+  // SHIFTCTL PINSEL is bits 12:8 (RM §50.5.1.19): FlexIO3 pin 19 (Teensy 4.1 pin 37, port C's
+  // STEP on a Driver Module) reads back whole. A 4-bit mask once sent port C's STEP to pin 3.
+  const uint32_t step_c = transmitter(2, 19);
+  ASSERT_EQ((step_c >> 8) & 0x1Fu, 19u);
+  ASSERT_TRUE(rig.write(shiftctl(2), step_c));
+  EXPECT_EQ(rig.read32(shiftctl(2)), step_c);
+}
+
 TEST_F(Flexio3Test, SoftwareResetClearsEverythingButCtrl) {
   power_up();
   ASSERT_TRUE(rig.write(timcmp(1), 77));
