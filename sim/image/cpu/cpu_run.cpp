@@ -68,6 +68,7 @@ void ImageChip::run_slice() {
   in_run_ = true;
   we_stopped_ = false;
   yielded_ = false;
+  install_double_sites();  // vfp_hooks.cpp: only between runs
   const uint32_t pc = read_register(UC_ARM_REG_PC) | 1u;
   const uc_err error = uc_emu_start(uc_, pc, kNoUntil, 0, 0);
   in_run_ = false;

@@ -228,6 +228,9 @@ class ImageChip : public ChipContext {
   bool emulate_double_at_fault(uint32_t pc);
   bool execute_double(const DoubleSite& site);
   void hook_double_site(const DoubleSite& site);
+  /// Hooks the sites found during the last run (between runs: adding a hook or dropping a
+  /// translation while the emulator runs breaks its chained blocks).
+  void install_double_sites();
   void advance_it_state();
   static void on_double_site(uc_struct* uc, uint64_t address, uint32_t size, void* user);
 
@@ -288,6 +291,7 @@ class ImageChip : public ChipContext {
   bool stepping_ = false;
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
   std::deque<DoubleSite> double_sites_;  ///< hooked sites (stable addresses: the hooks point at them)
+  std::vector<DoubleSite> new_double_sites_;  ///< found during the current run, hooked after it
   DoubleOps double_ops_;
 };
 
