@@ -16,6 +16,7 @@
 #include "image/cpu/elf_image.hpp"
 #include "image/cpu/exception_state.hpp"
 #include "image/cpu/image_stop.hpp"
+#include "image/rt1062/teensy_model.hpp"
 #include "kernel/scheduler/event.hpp"
 
 struct uc_struct;
@@ -26,8 +27,6 @@ class BlockCache;
 class SystemBlocks;
 struct ThumbBlock;
 struct BlockAccess;
-
-enum class TeensyModel { kTeensy40, kTeensy41 };
 
 /// One i.MX RT1062 core running one firmware image.
 ///
