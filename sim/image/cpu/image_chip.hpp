@@ -32,7 +32,8 @@ struct BlockAccess;
 /// One i.MX RT1062 core running one firmware image.
 ///
 /// Memory map (IMXRT1060RM rev 3, 2.2 "memory map"): FlexSPI flash at 0x60000000 (2 MB on a
-/// Teensy 4.0, 8 MB on a 4.1; read and execute only), ITCM at 0x00000000 (512 KB), DTCM at
+/// Teensy 4.0, 8 MB on a 4.1; read and execute only; erased, 0xFF, where the image does not
+/// fill it), ITCM at 0x00000000 (512 KB), DTCM at
 /// 0x20000000 (512 KB), OCRAM at 0x20200000 (1 MB: OCRAM2 and the FlexRAM's OCRAM banks) — the
 /// FlexRAM's largest sizes, whatever IOMUXC_GPR14/16/17 say. Peripherals (0x40000000–0x7FFFFFFF
 /// outside the flash) reach bus(); the Cortex-M7's system space (0xE0000000–0xE00FFFFF) reaches
