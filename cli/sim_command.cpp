@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 
 #include "command_help.hpp"
 #include "console_echo.hpp"
@@ -124,6 +125,30 @@ bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
 
 std::string absolute_path(const std::string& path) {
   return std::filesystem::absolute(path).lexically_normal().string();
+}
+
+/// Reads --image board=path.elf into `images`; false (message on stderr) when one is malformed,
+/// names a board twice, or names a file that does not exist.
+bool parse_images(const SimCommandOptions& options, std::map<std::string, std::string>& images) {
+  for (const std::string& entry : options.images) {
+    const size_t equals = entry.find('=');
+    if (equals == std::string::npos || equals == 0 || equals + 1 == entry.size()) {
+      std::cerr << "--image: '" << entry << "' is not board=path.elf\n";
+      return false;
+    }
+    const std::string board = entry.substr(0, equals);
+    const std::string path = absolute_path(entry.substr(equals + 1));
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) {
+      std::cerr << "--image: firmware image not found: " << path << "\n";
+      return false;
+    }
+    if (!images.emplace(board, path).second) {
+      std::cerr << "--image: board '" << board << "' is given twice\n";
+      return false;
+    }
+  }
+  return true;
 }
 
 sim::SimulationOptions simulation_options(const SimCommandOptions& options, const CheckedNumbers& numbers,
@@ -279,6 +304,9 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   add_number_option(sim, "--speed", options.speed,
                     "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) +
                         ", or 'max' (default 1)");
+  sim.add_option("--image", options.images,
+                 "run a board on its firmware image instead of its host-compiled sketch (board=path.elf: a Teensy 4.x "
+                 "ELF as the Arduino IDE or scripts/build-teensy.sh links it, run on an emulated i.MX RT1062)");
   sim.add_option("--serial-link", options.serial_links,
                  "live only: also make a symlink to a board's terminal (board=path; path must not exist, or be a "
                  "symlink)");
@@ -301,8 +329,9 @@ int run_sim_command(const SimCommandOptions& options) {
   CheckedNumbers numbers;
   LiveOptions live;
   uint16_t view_port = 0;
+  std::map<std::string, std::string> images;
   if (!check_numbers(options, numbers) || !check_live_only(options) || !parse_live_options(options, live) ||
-      !read_view_port(options, view_port)) {
+      !read_view_port(options, view_port) || !parse_images(options, images)) {
     return kExitBadInput;
   }
   const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
@@ -318,7 +347,9 @@ int run_sim_command(const SimCommandOptions& options) {
   ProgressBar progress(!options.quiet && !options.live);
   ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;
-  auto simulation = sim::Simulation::create(loaded.scenario, simulation_options(options, numbers, progress, echo), error);
+  sim::SimulationOptions sim_options = simulation_options(options, numbers, progress, echo);
+  sim_options.images = std::move(images);
+  auto simulation = sim::Simulation::create(loaded.scenario, sim_options, error);
   if (!simulation) {
     std::cerr << error.message << (error.message.empty() || error.message.back() != '\n' ? "\n" : "");
     return error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;

@@ -36,6 +36,7 @@ struct SimCommandOptions {
   bool live = false;                ///< pace to the wall clock, serial ports on terminals
   std::string speed;                ///< live: simulated seconds per wall second, or "max" ("" = 1)
   std::vector<std::string> serial_links;  ///< live: `board=path` symlinks to the terminals
+  std::vector<std::string> images;  ///< `board=path.elf`: the board runs this firmware image
   std::string watchdog_s = "10";    ///< wall seconds a sketch may run with simulated time stuck
   bool view = false;                ///< live: serve the view page (web/view/)
   std::string view_port;            ///< live view: the TCP port ("" = any free one)

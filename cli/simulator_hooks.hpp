@@ -1,5 +1,5 @@
-// What the command line plugs into the simulator library: the compiling board source and the
-// PNG module.
+// What the command line plugs into the simulator library: the compiling board source, image
+// boards and the PNG module.
 #pragma once
 
 #include <string>
@@ -9,7 +9,8 @@
 namespace stepdance::cli {
 
 /// Sets `options`' board source to a SketchBuilder caching in `cache_directory` ("" = its
-/// default) and its picture writer to the PNG module. Context: before Simulation::create.
+/// default), its firmware source to image boards (sim/image) and its picture writer to the PNG
+/// module. Context: before Simulation::create.
 void plug_front_end(sim::SimulationOptions& options, const std::string& cache_directory);
 
 }  // namespace stepdance::cli

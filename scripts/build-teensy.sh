@@ -6,8 +6,9 @@
 # the host. The compile-only sketch fixtures under tests/sim/assembly/fixtures are compiled too.
 #
 # Usage: scripts/build-teensy.sh      (output in build-teensy/, or $STEPDANCE_TEENSY_BUILD_DIR)
-# The images link against do-nothing stand-ins for Teensyduino's core (targets/teensy/stand-in):
-# they prove the code compiles and links for the target and give its size; they are not flashable.
+# The images link against our stand-in for Teensyduino's core (targets/teensy/stand-in): it starts
+# the chip as a Teensy does (docs/hardware-backend.md, "The CI stand-in core boots") so the simulator
+# can run the images; they prove the code compiles and links and give its size. Untested on a board.
 #
 # Developer check against the real core (not in CI; scripts/check-teensyduino.sh wraps it):
 #   STEPDANCE_TEENSYDUINO=DIR scripts/build-teensy.sh
@@ -321,12 +322,14 @@ link_elf() {
   fi
 }
 
+# link_example NAME BOARD USB [FOLDER [ELF]]: the sketch in FOLDER (examples/NAME) linked into ELF
+# ($out/BOARD-USB/NAME.elf); only examples join the image list the checks below go through.
 link_example() {
-  local name=$1 board=$2 usb=$3 dir="$out/$2-$3"
+  local name=$1 board=$2 usb=$3 dir="$out/$2-$3" folder=${4:-examples/$1}
   local flags=("-D${board_macro[$board]}" "-D${usb_macro[$usb]}")
-  local sketch_object="$dir/examples/$name/$name.ino.o" extra_sources=() source
-  mapfile -t extra_sources < <(prepare_sketch "examples/$name" "$dir/examples/$name/$name.ino.cpp")
-  compile "$dir/examples/$name/$name.ino.cpp" "$sketch_object" "${flags[@]}" -iquote "examples/$name"
+  local sketch_object="$dir/$folder/$name.ino.o" extra_sources=() source
+  mapfile -t extra_sources < <(prepare_sketch "$folder" "$dir/$folder/$name.ino.cpp")
+  compile "$dir/$folder/$name.ino.cpp" "$sketch_object" "${flags[@]}" -iquote "$folder"
   local objects=("$sketch_object")
   for source in "${extra_sources[@]}"; do
     compile "$source" "$dir/${source%.*}.o" "${flags[@]}"
@@ -338,7 +341,7 @@ link_example() {
   if ! backend_present "${library_objects[@]}"; then
     link_flags=(-Wl,--unresolved-symbols=ignore-all)
   fi
-  local elf="$dir/$name.elf" inputs
+  local elf=${5:-$dir/$name.elf} inputs
   mapfile -t inputs < <(image_inputs "$board-$usb" "${objects[@]}" "${library_objects[@]}")
   link_elf "$elf" "$board" "${link_flags[@]}" "${inputs[@]}" || fail "linking $name for $board"
   if [ ${#link_flags[@]} -gt 0 ]; then
@@ -347,6 +350,7 @@ link_example() {
     [ -z "$missing" ] || fail "$name ($board) leaves symbols undefined: $missing"
     unlinked_hal+=("$name/$board")
   fi
+  [ -n "${4:-}" ] && return 0
   images+=("$elf")
   all_objects+=("${objects[@]}")
 }
@@ -355,6 +359,14 @@ for build in "${builds[@]}"; do
   read -r name board usb <<<"$build"
   [ -n "${config_objects[$board-$usb]+set}" ] || build_configuration "$board" "$usb"
   link_example "$name" "$board" "$usb"
+done
+# The image boards' fault fixtures (tests/sim/image/fault_sketches): one sketch per fault kind the
+# simulator must report, for the Teensy 4.1, in $out/teensy41-serial/faults/.
+for dir in tests/sim/image/fault_sketches/*/; do
+  name=$(basename "$dir")
+  [ -f "$dir/$name.ino" ] || continue
+  mkdir -p "$out/teensy41-serial/faults"
+  link_example "$name" teensy41 serial "${dir%/}" "$out/teensy41-serial/faults/$name.elf"
 done
 # The library builds for both boards even when no example needs the Teensy 4.0.
 [ -n "${config_objects[teensy40-serial]+set}" ] || build_configuration teensy40 serial
@@ -511,6 +523,63 @@ if [ -n "$teensyduino" ]; then
   exit 0
 fi
 
+# ---- The stand-in's boot layout: what the boot ROM and the start-up rely on, in every image -----
+# Expected values from the reference manual (IMXRT1060RM rev 3): the FlexSPI NOR configuration
+# block's tag "FCFB" and version at 0x60000000 (Table 9-15), the IVT header (tag 0xD1, length 32,
+# version 0x41) at 0x60001000 (§9.7.1.1) pointing at the entry, the boot data and itself, the boot
+# data's start and length (§9.7.1.2); the FlexRAM bank roles of IOMUXC_GPR17 (§11.4: 11 ITCM for
+# the banks the code needs, 10 DTCM for the rest), the stack top at the end of those DTCM banks,
+# the 32-byte stack guard above .bss, and the vector table alignment VTOR needs (ARMv7-M §B3.2.5).
+
+# word_at BIN OFFSET: the little-endian 32-bit word at OFFSET of a flash image, as 0x%08x.
+word_at() { printf '0x%08x' "0x$(od -An -tx4 -j "$2" -N 4 "$1" | tr -d ' ')"; }
+# symbol_of ELF NAME: a symbol's value as 0x%08x.
+symbol_of() { printf '0x%08x' "0x$(arm-none-eabi-nm "$1" | awk -v s="$2" '$3 == s {print $1; exit}')"; }
+hex() { printf '0x%08x' "$1"; }
+
+check_boot_layout() {
+  local elf=$1 board=$2 bin=${1%.elf}.bin problems=()
+  arm-none-eabi-objcopy -O binary -R .bss -R .bss.dma "$elf" "$bin"
+  local flash_bytes=$((8 * 1024 * 1024))
+  [ "$board" = teensy40 ] && flash_bytes=$((2 * 1024 * 1024))
+  expect() { [ "$2" = "$3" ] || problems+=("$1 is $2, expected $3"); }
+  expect "FlexSPI tag" "$(word_at "$bin" 0)" 0x42464346
+  expect "FlexSPI version" "$(word_at "$bin" 4)" 0x56010000
+  expect "FlexSPI sflashA1Size" "$(word_at "$bin" 0x50)" "$(hex $flash_bytes)"
+  # Read sequence (LUT instructions: opcode 15:10, pads 9:8, operand 7:0): CMD_SDR 1 pad 0xEB,
+  # RADDR_SDR 4 pads 24 bits; DUMMY_SDR 4 pads 6 cycles, READ_SDR 4 pads. Then pageSize, sectorSize.
+  expect "FlexSPI LUT read word 0" "$(word_at "$bin" 0x80)" 0x0a1804eb
+  expect "FlexSPI LUT read word 1" "$(word_at "$bin" 0x84)" 0x26043206
+  expect "serial NOR pageSize" "$(word_at "$bin" 0x1c0)" 0x00000100
+  expect "serial NOR sectorSize" "$(word_at "$bin" 0x1c4)" 0x00001000
+  expect "IVT header" "$(word_at "$bin" 0x1000)" 0x412000d1
+  expect "IVT entry" "$(word_at "$bin" 0x1004)" "$(hex $(($(symbol_of "$elf" stand_in_reset_handler) | 1)))"
+  expect "IVT boot data" "$(word_at "$bin" 0x1010)" "$(symbol_of "$elf" stand_in_boot_data)"
+  expect "IVT self" "$(word_at "$bin" 0x1014)" 0x60001000
+  local boot_data=$(($(symbol_of "$elf" stand_in_boot_data) - 0x60000000))
+  expect "boot data start" "$(word_at "$bin" $boot_data)" 0x60000000
+  expect "boot data length" "$(word_at "$bin" $((boot_data + 4)))" "$(hex "$(stat -c %s "$bin")")"
+  local itcm banks
+  itcm=$(section_size "$(arm-none-eabi-size -A -d "$elf")" .text.itcm)
+  banks=$(((itcm + 32767) / 32768))
+  expect "_flexram_bank_config" "$(symbol_of "$elf" _flexram_bank_config)" "$(hex $((0xAAAAAAAA | ((1 << (2 * banks)) - 1))))"
+  expect "_stack_top" "$(symbol_of "$elf" _stack_top)" "$(hex $((0x20000000 + (16 - banks) * 32768)))"
+  local guard bss_end
+  guard=$(($(symbol_of "$elf" _stack_guard))) bss_end=$(($(symbol_of "$elf" _bss_end)))
+  [ $((guard % 32)) -eq 0 ] && [ "$guard" -ge "$bss_end" ] && [ $((guard - bss_end)) -lt 32 ] ||
+    problems+=("_stack_guard $(hex $guard) is not the first 32-byte boundary at or after _bss_end $(hex $bss_end)")
+  [ $((guard + 32)) -le $(($(symbol_of "$elf" _stack_top))) ] || problems+=("no room for the stack guard")
+  [ $(($(symbol_of "$elf" stand_in_vectors_ram) % 1024)) -eq 0 ] || problems+=("the RAM vector table is not 1 KB aligned")
+  rm -f "$bin"
+  [ ${#problems[@]} -eq 0 ] || fail "$(basename "$elf") ($board): boot layout: ${problems[*]}"
+}
+
+for build in "${builds[@]}"; do
+  read -r name board usb <<<"$build"
+  check_boot_layout "$out/$board-$usb/$name.elf" "$board"
+done
+echo "build-teensy: boot layout (FlexSPI block, IVT, boot data, FlexRAM banks, stack guard) valid in all ${#builds[@]} images"
+
 # ---- The Step-A-Sketch firmware: hex and size report -----------------------------------------
 
 report_size() {
@@ -546,7 +615,7 @@ step_a_sketch="$out/teensy41-serial/StepASketch.elf"
 if [ -f "$step_a_sketch" ]; then
   arm-none-eabi-objcopy -O ihex -R .bss -R .bss.dma "$step_a_sketch" "${step_a_sketch%.elf}.hex"
   echo
-  echo "Step-A-Sketch for Teensy 4.1 (${step_a_sketch%.elf}.hex; stand-in core, not flashable):"
+  echo "Step-A-Sketch for Teensy 4.1 (${step_a_sketch%.elf}.hex; stand-in core, untested on a board):"
   arm-none-eabi-size "$step_a_sketch"
   report_size "$step_a_sketch" $((7936 * 1024))
   echo

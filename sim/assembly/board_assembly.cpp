@@ -29,7 +29,7 @@ SdCardSettings sd_card_settings(const scenario::SdCardConfig& config) {
 std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const std::vector<SketchBuild>& builds) {
   std::vector<RunInput> inputs;
   for (size_t i = 0; i < builds.size(); ++i) {
-    const std::string what = "a file the sketch of board '" + scenario.boards[i].name + "' includes";
+    const std::string what = "a file the sketch of board '" + scenario.boards[i].name + "' includes (or its image)";
     for (const std::string& file : builds[i].inputs) inputs.push_back({file, what});
   }
   return inputs;
@@ -38,14 +38,27 @@ std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const 
 }  // namespace
 
 // Every sketch is built first, and the outputs checked against every file the compilers read,
-// before any board library is loaded (loading runs the sketch's global constructors).
+// before any board library is loaded (loading runs the sketch's global constructors). A board
+// that runs a firmware image compiles nothing.
 bool Simulation::build_boards(SimulationError& error) {
-  if (!options_.boards) {
-    error = {SimulationError::kFailure, "no board source: this simulation cannot compile or load sketches"};
-    return false;
+  for (const auto& [name, image] : options_.images) {
+    if (scenario_.board(name) == nullptr) {
+      error = {SimulationError::kBadInput, "--image " + name + "=" + image + ": the scenario has no board '" + name + "'"};
+      return false;
+    }
   }
   std::vector<SketchBuild> builds;
   for (const scenario::BoardConfig& config : scenario_.boards) {
+    if (const std::string image = image_of(config); !image.empty()) {
+      SketchBuild nothing_compiled;
+      nothing_compiled.inputs.push_back(std::filesystem::absolute(image).lexically_normal().string());
+      builds.push_back(std::move(nothing_compiled));
+      continue;
+    }
+    if (!options_.boards) {
+      error = {SimulationError::kFailure, "no board source: this simulation cannot compile or load sketches"};
+      return false;
+    }
     builds.push_back(options_.boards->build(config.sketch));
     const SketchBuild& build = builds.back();
     if (!build.ok) {
@@ -61,24 +74,13 @@ bool Simulation::build_boards(SimulationError& error) {
   boards_.reserve(scenario_.boards.size());
   for (size_t index = 0; index < scenario_.boards.size(); ++index) {
     const scenario::BoardConfig& config = scenario_.boards[index];
-    const SketchBuild& build = builds[index];
-    std::string load_error;
-    auto library = BoardLibrary::load(build.library_path, load_error);
-    if (!library) {
-      error = {SimulationError::kFailure, load_error};
-      return false;
-    }
-    BoardOptions board_options;
-    board_options.name = config.name;
-    board_options.frame_phase_ns = SimTime{config.frame_phase_us} * kMicrosecond;
-    board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
-    board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
-    board_options.sd_card = sd_card_settings(config.sd_card);
-    board_options.board_source = options_.boards.get();
-    boards_.push_back(BoardSlot{&config, std::make_unique<SimBoard>(scheduler_, board_options, std::move(library)), {}});
+    std::unique_ptr<SimBoard> board = make_board(config, builds[index], error);
+    if (!board) return false;
+    boards_.push_back(BoardSlot{&config, std::move(board), {}});
     BoardSlot& slot = boards_.back();
-    if (!slot.board->attach(load_error)) {
-      error = {SimulationError::kFailure, load_error};
+    std::string attach_error;
+    if (!slot.board->attach(attach_error)) {
+      error = {SimulationError::kFailure, attach_error};
       return false;
     }
     if (!check_module(slot, error)) return false;
@@ -89,6 +91,42 @@ bool Simulation::build_boards(SimulationError& error) {
     build_sockets(slot);
   }
   return true;
+}
+
+std::string Simulation::image_of(const scenario::BoardConfig& config) const {
+  const auto named = options_.images.find(config.name);
+  return named != options_.images.end() ? named->second : config.image;
+}
+
+std::unique_ptr<SimBoard> Simulation::make_board(const scenario::BoardConfig& config, const SketchBuild& build,
+                                                 SimulationError& error) {
+  BoardOptions board_options;
+  board_options.name = config.name;
+  board_options.frame_phase_ns = SimTime{config.frame_phase_us} * kMicrosecond;
+  board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
+  board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
+  board_options.sd_card = sd_card_settings(config.sd_card);
+  board_options.board_source = options_.boards.get();
+  std::string load_error;
+  if (const std::string image = image_of(config); !image.empty()) {
+    if (!options_.firmware) {
+      error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name +
+                                               "': this simulator cannot run firmware images (built without sim/image)"};
+      return nullptr;
+    }
+    auto firmware = options_.firmware->load(image, *config.module, scheduler_, load_error);
+    if (!firmware) {
+      error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name + "': " + load_error};
+      return nullptr;
+    }
+    return std::make_unique<SimBoard>(scheduler_, board_options, std::move(firmware), *config.module);
+  }
+  auto library = BoardLibrary::load(build.library_path, load_error);
+  if (!library) {
+    error = {SimulationError::kFailure, load_error};
+    return nullptr;
+  }
+  return std::make_unique<SimBoard>(scheduler_, board_options, std::move(library));
 }
 
 // The scenario's `module` must be the board the sketch selects with its #define.

@@ -37,6 +37,12 @@ struct SimulationOptions {
   /// Gives each board's library for its sketch: SketchBuilder compiles them (the command line,
   /// the tests); a build without a compiler hands precompiled ones. Null: no board can be built.
   std::shared_ptr<const BoardSource> boards;
+  /// Loads the firmware images boards run instead of their sketches (sim/image's ImageSource).
+  /// Null: a scenario or option that names an image is refused.
+  std::shared_ptr<const FirmwareSource> firmware;
+  /// Firmware images by board name (`stepdance sim --image BOARD=PATH.elf`), replacing the
+  /// scenario's `image` keys. A name no board has is refused.
+  std::map<std::string, std::string> images;
   /// Writes the drawing's and the devices' pictures (png_picture_writer.hpp, the PNG module).
   /// Null: no picture is planned or written, whatever the scenario names.
   std::shared_ptr<const PictureWriter> pictures;
@@ -178,6 +184,11 @@ class Simulation {
   // output_files.cpp (the files a run writes, checked before it), run_report.cpp (drawings,
   // summary); expectations.cpp checks the [[expect]] entries.
   bool build_boards(SimulationError& error);
+  /// The firmware image `config`'s board runs ("" for its host-compiled sketch).
+  std::string image_of(const scenario::BoardConfig& config) const;
+  /// The board for `config`: its sketch's library (`build`) or its firmware image loaded.
+  std::unique_ptr<SimBoard> make_board(const scenario::BoardConfig& config, const SketchBuild& build,
+                                       SimulationError& error);
   void add_storage_violations(SimulationReport& report) const;
   bool check_module(const BoardSlot& slot, SimulationError& error) const;
   void build_sockets(BoardSlot& slot);
@@ -227,6 +238,7 @@ class Simulation {
   RunSummary run_summary() const;
   nlohmann::json summary_extra() const;
   void add_board_extras(nlohmann::json& extra) const;
+  void add_firmware_extras(nlohmann::json& extra) const;
   nlohmann::json cable_extras() const;
   nlohmann::json machine_extra() const;
   void write_summary_file(const SimulationReport& report) const;

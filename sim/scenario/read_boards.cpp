@@ -100,6 +100,24 @@ void read_sockets(TableReader& board_reader, BoardConfig& board, ParseContext& c
   }
 }
 
+// `sketch` (required) and `image` (a firmware ELF, optional): each resolved against the scenario's
+// folder and checked to exist. A board with an image may leave out its sketch.
+void read_program(TableReader& reader, BoardConfig& board, ParseContext& context) {
+  if (const auto image = reader.string("image")) {
+    board.image = context.resolve(*image);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(board.image, error)) reader.error("image", "firmware image not found: " + board.image);
+  }
+  const Need need = board.image.empty() ? Need::kRequired : Need::kOptional;
+  if (const auto sketch = reader.string("sketch", need)) {
+    board.sketch = context.resolve(*sketch);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(board.sketch, error)) {
+      reader.error("sketch", "sketch not found: " + board.sketch);
+    }
+  }
+}
+
 void read_board(const toml::table& table, ParseContext& context, std::map<std::string, int>& first_lines) {
   TableReader reader(table, "[[board]]", context.reporter);
   BoardConfig board;
@@ -121,13 +139,7 @@ void read_board(const toml::table& table, ParseContext& context, std::map<std::s
       named = true;
     }
   }
-  if (const auto sketch = reader.string("sketch", Need::kRequired)) {
-    board.sketch = context.resolve(*sketch);
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(board.sketch, error)) {
-      reader.error("sketch", "sketch not found: " + board.sketch);
-    }
-  }
+  read_program(reader, board, context);
   if (const auto module = reader.string("module")) {
     if (const BoardDefinition* found = find_board(*module)) {
       board.module = found;

@@ -53,8 +53,12 @@ struct SdCardConfig {
 
 struct BoardConfig {
   std::string name;
-  /// Absolute path of the `.ino` (checked to exist).
+  /// Absolute path of the `.ino` (checked to exist); "" for a board that runs an image and
+  /// names no sketch.
   std::string sketch;
+  /// Absolute path of a Teensy 4.x firmware ELF the board runs on an emulated chip instead of
+  /// its host-compiled sketch ("" = none; checked to exist). `stepdance sim --image` replaces it.
+  std::string image;
   /// The module it is: a table of the board registry (kinds/board_registry.hpp), found by its
   /// scenario name (`module = "basic"`); the Driver Module unless the file says otherwise.
   const BoardDefinition* module = &kDriverModuleV1;

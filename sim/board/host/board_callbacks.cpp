@@ -81,10 +81,7 @@ void BoardCallbacks::add_input_callbacks(StepdanceHostV1& host) {
     adc.begun = true;
     return ok();
   };
-  host.adc_read = [](void* c, uint8_t pin) -> uint16_t {
-    if (pin >= SimBoard::kPins || !of(c).adcs_[pin].value) return 0;
-    return of(c).adcs_[pin].value(of(c).scheduler_.now());
-  };
+  host.adc_read = [](void* c, uint8_t pin) -> uint16_t { return of(c).analog_level(pin); };
   host.adc_sample_count = [](void* c, uint8_t pin) { return pin < SimBoard::kPins ? of(c).adc_samples(pin) : 0u; };
   host.gpio_mode = [](void* c, uint8_t pin, int mode) { return of(c).set_pin_mode(pin, mode); };
   host.gpio_read = [](void* c, uint8_t pin) { return pin < SimBoard::kPins && of(c).pin_level(pin) ? 1 : 0; };
@@ -102,9 +99,7 @@ void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
     }
   };
   host.console_write = [](void* c, const uint8_t* data, size_t length) { return of(c).write_console(data, length); };
-  host.console_available = [](void* c) -> size_t {
-    return of(c).console_input_.size() - of(c).console_read_position_;
-  };
+  host.console_available = [](void* c) -> size_t { return of(c).console_available(); };
   host.console_read = [](void* c) { return of(c).read_console(); };
 
   host.file_open = [](void* c, const char* name, int mode, int* handle) {

@@ -22,6 +22,8 @@ const char* describe(SketchEntry entry) {
       return "the kilohertz timer interrupt (the engine and IntervalTimer callbacks)";
     case SketchEntry::kCapture:
       return "an input port's capture interrupt";
+    case SketchEntry::kFirmware:
+      return "the firmware image";
   }
   return "?";
 }

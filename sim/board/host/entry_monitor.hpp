@@ -13,7 +13,14 @@ namespace stepdance::sim {
 class SimBoard;
 
 /// The board entry point a sketch's code runs in.
-enum class SketchEntry : uint8_t { kSetup, kLoop, kFrameTick, kKhzTick, kCapture };
+enum class SketchEntry : uint8_t {
+  kSetup,
+  kLoop,
+  kFrameTick,
+  kKhzTick,
+  kCapture,
+  kFirmware,  ///< a firmware image on an emulated chip (its own entries are its exceptions)
+};
 /// "setup()", "loop()", "the frame timer interrupt", …
 const char* describe(SketchEntry entry);
 

@@ -38,6 +38,13 @@ SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<B
       storage_(options_.storage_dir),
       sd_timing_(options_.sd_card) {}
 
+SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardFirmware> firmware,
+                   const BoardDefinition& module)
+    : SimBoard(scheduler, std::move(options), std::unique_ptr<BoardLibrary>()) {
+  firmware_ = std::move(firmware);
+  definition_ = &module;
+}
+
 SimBoard::~SimBoard() {
   scheduler_.cancel(loop_event_);
   scheduler_.cancel(setup_event_);
@@ -45,9 +52,16 @@ SimBoard::~SimBoard() {
   frame_timer_.stop();
   khz_timer_.stop();
   library_.reset();  // the sketch's destructors may still call back: everything else is alive
+  firmware_.reset();
 }
 
 bool SimBoard::attach(std::string& error) {
+  if (firmware_) {
+    // A firmware's ports are all wired: it drives and captures through its own peripherals.
+    for (PortState& port : ports_) port.input_begun = true;
+    firmware_->on_stop([this](const SketchStop& stop) { firmware_stopped(stop); });
+    return firmware_->start(*this, error);
+  }
   board_ = library_ ? library_->attach()(host_table_.get(), this) : nullptr;
   if (board_ == nullptr) {
     error = options_.name + ": the board library speaks another ABI version; rebuild the sketch";
@@ -63,7 +77,20 @@ bool SimBoard::attach(std::string& error) {
   return true;
 }
 
-void SimBoard::power_on(SimTime time_ns) { scheduler_.schedule(setup_event_, time_ns); }
+void SimBoard::power_on(SimTime time_ns) {
+  if (firmware_) {
+    firmware_->power_on(time_ns);
+    return;
+  }
+  scheduler_.schedule(setup_event_, time_ns);
+}
+
+// A firmware stopped for good (a fault, no progress): as a sketch's escape, the run ends here.
+void SimBoard::firmware_stopped(const SketchStop& stop) {
+  frozen_ = true;
+  scheduler_.stop();
+  if (stop_listener_) stop_listener_(stop);
+}
 
 // ---- entering the sketch ----------------------------------------------------------------------
 
@@ -162,15 +189,31 @@ void SimBoard::play_pending_frames(SimTime start_ns) {
       continue;
     }
     port.frame_pending = false;
-    const SimTime frame_end_ns = start_ns + SimTime{protocol::kFrameBitsUs} * kMicrosecond;
-    if (frame_end_ns <= end_ns_) {
-      count_frame_pulses(port.pending, port.sent);
-    } else {
-      count_frame_pulses(port.pending, port.sent, (end_ns_ - start_ns) / kMicrosecond);
-    }
-    for (WireListener* listener : port.listeners) listener->on_frame(start_ns, port.pending, frame_timer_.period_ns());
+    play_words(port, start_ns, port.pending, frame_timer_.period_ns());
   }
   pending_ports_ = 0;
+}
+
+void SimBoard::play_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
+  PortState& state = ports_.at(port);
+  state.output_claimed = true;
+  if ((words.step_bits | words.dir_bits) == 0) {
+    for (WireListener* listener : state.idle_listeners) listener->on_frame(start_ns, words, frame_ns);
+    return;
+  }
+  play_words(state, start_ns, words, frame_ns);
+}
+
+// Counts the frame's pulses as sent (those ending after the run's end are cut off) and hands the
+// frame to every listener of the port.
+void SimBoard::play_words(PortState& port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
+  const SimTime frame_end_ns = start_ns + SimTime{protocol::kFrameBitsUs} * kMicrosecond;
+  if (frame_end_ns <= end_ns_) {
+    count_frame_pulses(words, port.sent);
+  } else {
+    count_frame_pulses(words, port.sent, (end_ns_ - start_ns) / kMicrosecond);
+  }
+  for (WireListener* listener : port.listeners) listener->on_frame(start_ns, words, frame_ns);
 }
 
 // The rest of the world runs for the delay, but never past the run's end: a sketch waiting
@@ -232,6 +275,10 @@ void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
       protocol::CaptureClock{});
   const InputMode mode = at_rising ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
   state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
+  if (firmware_) {
+    firmware_->pulse_arrived(port, pulse);
+    return;
+  }
   const StepdanceCapturedPulseV1 delivered{captured.rise_ticks, captured.fall_ticks,
                                            captured.dir_high ? uint8_t{1} : uint8_t{0}, captured.extra_periods};
   in_isr_ = true;
@@ -243,14 +290,17 @@ void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
 
 void SimBoard::connect_encoder(uint8_t index, Source<int64_t> counts) { encoders_.at(index) = std::move(counts); }
 
+int64_t SimBoard::encoder_counts(uint8_t index) const { return encoders_.at(index) ? encoders_[index](now()) : 0; }
+
 int32_t SimBoard::read_quadrature(uint8_t index) {
-  const int64_t raw = encoders_[index] ? encoders_[index](scheduler_.now()) : 0;
-  return static_cast<int32_t>(raw + encoder_offsets_[index]);
+  return static_cast<int32_t>(encoder_counts(index) + encoder_offsets_[index]);
 }
 
-void SimBoard::write_quadrature(uint8_t index, int32_t count) {
-  const int64_t raw = encoders_[index] ? encoders_[index](scheduler_.now()) : 0;
-  encoder_offsets_[index] = count - raw;
+void SimBoard::write_quadrature(uint8_t index, int32_t count) { encoder_offsets_[index] = count - encoder_counts(index); }
+
+uint16_t SimBoard::analog_level(uint8_t pin) const {
+  if (pin >= kPins || !adcs_[pin].value) return 0;
+  return adcs_[pin].value(now());
 }
 
 void SimBoard::connect_adc(uint8_t pin, Source<uint16_t> value) { adcs_.at(pin).value = std::move(value); }
@@ -268,7 +318,7 @@ void SimBoard::on_pin_change(uint8_t pin, PinListener listener) { pins_.at(pin).
 bool SimBoard::pin_level(uint8_t pin) const {
   const PinState& state = pins_.at(pin);
   if (state.mode == STEPDANCE_PIN_OUTPUT) return state.driven_level;
-  if (state.source) return state.source(scheduler_.now());
+  if (state.source) return state.source(now());
   return state.mode == STEPDANCE_PIN_INPUT_PULLUP;
 }
 
@@ -292,7 +342,7 @@ void SimBoard::write_pin(uint8_t pin, bool high) {
 void SimBoard::notify_pin(uint8_t pin) {
   const PinState& state = pins_[pin];
   const bool driven = state.mode == STEPDANCE_PIN_OUTPUT;
-  for (const PinListener& listener : state.listeners) listener(scheduler_.now(), state.driven_level, driven);
+  for (const PinListener& listener : state.listeners) listener(now(), state.driven_level, driven);
 }
 
 // Safe state on the hardware: frames stop (the board already stopped its timers) and every
@@ -347,7 +397,7 @@ size_t SimBoard::write_console(const uint8_t* data, size_t length) {
     if (console_listener_) console_listener_(console_line_);
     console_line_.clear();
   }
-  if (!console_line_.empty()) scheduler_.schedule(console_quiet_event_, scheduler_.now() + kConsoleQuietNs);
+  if (!console_line_.empty()) scheduler_.schedule(console_quiet_event_, now() + kConsoleQuietNs);
   return length;
 }
 
@@ -400,7 +450,7 @@ int SimBoard::i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, s
   *wire_ns = 0;
   if (bus >= i2c_.size() || i2c_[bus].clock_hz == 0) return static_cast<int>(I2cOutcome::kBusError);
   SimTime duration = 0;
-  const I2cOutcome outcome = i2c_[bus].model.transfer(scheduler_.now(), i2c_[bus].clock_hz, address, write, write_length,
+  const I2cOutcome outcome = i2c_[bus].model.transfer(now(), i2c_[bus].clock_hz, address, write, write_length,
                                                       read, read_length, &duration);
   *wire_ns = duration;
   ++i2c_timing_.transfers;
@@ -415,6 +465,7 @@ int SimBoard::i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, s
 
 StepdanceBoardStatsV1 SimBoard::stats() const {
   StepdanceBoardStatsV1 stats{};
+  if (firmware_) return firmware_->stats();
   if (board_ != nullptr) board_->read_stats(&stats);
   return stats;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "board/abi/board_abi.h"
+#include "board/host/board_firmware.hpp"
 #include "board/host/board_storage.hpp"
 #include "board/host/frame_pulses.hpp"
 #include "board/host/wire.hpp"
@@ -66,12 +67,22 @@ class SimBoard {
   using PinListener = std::function<void(SimTime, bool level, bool driven)>;
 
   SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardLibrary> library);
+  /// A board whose program is `firmware` (a firmware image on an emulated chip) on the module
+  /// `module`: the firmware runs by its own clock and reaches the world through the program side
+  /// below.
+  SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardFirmware> firmware,
+           const BoardDefinition& module);
   ~SimBoard();
   SimBoard(const SimBoard&) = delete;
   SimBoard& operator=(const SimBoard&) = delete;
 
-  /// Binds the library to this board. False (with `error`) if the ABI versions differ.
+  /// Binds the library (or the firmware) to this board. False (with `error`) if the ABI versions
+  /// differ or the firmware cannot run here.
   bool attach(std::string& error);
+  /// The board's time (ns): the scheduler's, or inside a firmware's execution the firmware's.
+  SimTime now() const { return firmware_ ? firmware_->now_ns() : scheduler_.now(); }
+  /// The firmware this board runs, or null for a host-compiled sketch.
+  const BoardFirmware* firmware() const { return firmware_.get(); }
   /// The board the sketch selected (`#define module_basic`, …), as the board registry
   /// (kinds/board_registry.hpp) has it; the Driver Module until attach().
   const BoardDefinition& definition() const { return *definition_; }
@@ -189,6 +200,30 @@ class SimBoard {
   /// The card's timing model (bytes written, stalls).
   const SdCardTiming& sd_card() const { return sd_timing_; }
 
+  // ---- program side: what the sketch's HAL calls (through the board ABI) and a firmware's
+  // peripherals reach. Times are now(). ----
+  /// Configures `pin` (a StepdancePinMode); kBadArgument for a pin the board lacks.
+  int set_pin_mode(uint8_t pin, int mode);
+  void write_pin(uint8_t pin, bool high);
+  /// The encoder's raw quadrature count (no offset) on ENC `index` (0 or 1).
+  int64_t encoder_counts(uint8_t index) const;
+  /// The analog level on `pin`, 0..1023 (0 with nothing connected).
+  uint16_t analog_level(uint8_t pin) const;
+  /// Sets the clock of QWIIC bus `bus` (0 or 1) in Hz; 0 = not begun.
+  void set_i2c_clock(uint8_t bus, uint32_t clock_hz) { i2c_[bus].clock_hz = clock_hz; }
+  int i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
+                   size_t read_length, int64_t* wire_ns);
+  /// The sketch writes `length` bytes to its console (the USB serial); all are taken.
+  size_t write_console(const uint8_t* data, size_t length);
+  /// Bytes the host has sent that the sketch has not read.
+  size_t console_available() const { return console_input_.size() - console_read_position_; }
+  /// The next byte the host sent, or -1.
+  int read_console();
+  /// Output port `port` plays `words` from `start_ns`; its next frame starts `frame_ns` later
+  /// (a firmware's frame clock: a host-compiled sketch's frames are played by the board's own
+  /// frame timer). Idle words reach only the listeners that want idle frames.
+  void play_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns);
+
  private:
   friend struct BoardCallbacks;
   static constexpr uint8_t kPorts = 4;
@@ -250,6 +285,8 @@ class SimBoard {
   static void frame_tick(void* context, SimTime time);
   static void khz_tick(void* context, SimTime time);
   void play_pending_frames(SimTime start_ns);
+  void play_words(PortState& port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns);
+  void firmware_stopped(const SketchStop& stop);
   SimTime next_aligned(SimTime offset_ns, SimTime period_ns) const;
 
   // HAL answers (called through BoardCallbacks).
@@ -262,21 +299,16 @@ class SimBoard {
   int32_t read_quadrature(uint8_t index);
   void write_quadrature(uint8_t index, int32_t count);
   uint32_t adc_samples(uint8_t pin) const;
-  int set_pin_mode(uint8_t pin, int mode);
-  void write_pin(uint8_t pin, bool high);
   void notify_pin(uint8_t pin);
   void enter_safe_state();
   int storage_write(int handle, const uint8_t* data, size_t length);
   int storage_read(int handle, uint8_t* data, size_t length, size_t* read);
   bool storage_refused_in_isr();
-  size_t write_console(const uint8_t* data, size_t length);
-  int read_console();
-  int i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
-                   size_t read_length, int64_t* wire_ns);
 
   Scheduler& scheduler_;
   BoardOptions options_;
   std::unique_ptr<BoardLibrary> library_;
+  std::unique_ptr<BoardFirmware> firmware_;  ///< set instead of library_ for a firmware board
   const StepdanceBoardV1* board_ = nullptr;
   const BoardDefinition* definition_ = &kDriverModuleV1;
   std::unique_ptr<StepdanceHostV1> host_table_;

@@ -34,6 +34,8 @@ std::vector<BadCase> cases() {
       {"wrong_type", {{7, "'loop_period_us' must be an integer, not a string"}}},
       {"missing_key", {{4, "[[board]] is missing required key 'sketch'"}}},
       {"missing_sketch", {{6, "sketch not found: " + kFixtures + "/sketches/nowhere.ino"}}},
+      // An image board may leave out its sketch, but its image must be there.
+      {"missing_image", {{6, "firmware image not found: " + kFixtures + "/images/nowhere.elf"}}},
       {"duplicate_board", {{9, "duplicate board name 'driver' (first defined on line 5)"}}},
       {"unknown_board", {{9, "unknown board 'drvier'"}}},
       {"missing_port", {{14, "board 'basic' (basic module) has no output port B"}}},

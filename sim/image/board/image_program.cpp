@@ -1,0 +1,128 @@
+// An image board's program: the emulated chip wired to its SimBoard.
+#include "image/board/image_program.hpp"
+
+#include <cstdio>
+
+#include "board/host/sim_board.hpp"
+
+namespace stepdance::sim::image {
+namespace {
+
+/// Exception number of an interrupt (ARMv7-M B1.5.2: 16 + IRQ).
+constexpr unsigned exception_of_irq(unsigned irq) { return 16 + irq; }
+
+}  // namespace
+
+ImageProgram::ImageProgram(Scheduler& scheduler, TeensyModel model, std::string image_path)
+    : model_(model), image_path_(std::move(image_path)), chip_(scheduler, model) {}
+
+ImageProgram::~ImageProgram() = default;
+
+bool ImageProgram::load(std::string& error) { return chip_.load(image_path_, error); }
+
+bool ImageProgram::start(SimBoard& board, std::string& error) {
+  board_ = &board;
+  if (!add_blocks(error)) return false;
+  // The boot ROM hands a FlexSPI image over with the core on a PLL, not at the reset state's
+  // 12 MHz (ClockAndPinBlocks::apply_boot_rom_clocks says what it sets and why).
+  clocks_->apply_boot_rom_clocks();
+  clocks_->ccm.add_rates_listener([this](const rt1062::ClockRates& rates) {
+    if (rates.core_hz != 0) chip_.set_core_clock_hz(rates.core_hz);
+  });
+  chip_.on_stop([this](const ImageStop& stop) { stopped(stop); });
+  return true;
+}
+
+// The chip's blocks, each group added whole or not at all; an overlap is a bug of the models.
+bool ImageProgram::add_blocks(std::string& error) {
+  BoardIo& world = *this;
+  clocks_ = rt1062::add_clock_and_pin_blocks(chip_.bus(), chip_, world, model_);
+  motion_ = clocks_ ? add_motion_blocks(chip_.bus(), chip_, world, model_) : nullptr;
+  usb_ = motion_ ? usb::add_usb_blocks(chip_.bus(), chip_, world) : nullptr;
+  if (usb_) return true;
+  error = "the RT1062 model's peripheral windows overlap (a simulator bug)";
+  return false;
+}
+
+void ImageProgram::power_on(SimTime time_ns) { chip_.power_on(time_ns); }
+
+void ImageProgram::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) { motion_->capture().pulse_arrived(port, pulse); }
+
+// A stop ends the run as a host-compiled sketch's crash or hang does: exit status 5 or 6.
+void ImageProgram::stopped(const ImageStop& stop) {
+  SketchStop report;
+  report.cause = stop.kind == ImageStop::Kind::kNoProgress ? EscapeCause::kHung : EscapeCause::kCrashed;
+  report.board = board_ != nullptr ? board_->name() : std::string();
+  report.entry = SketchEntry::kFirmware;
+  report.time_ns = stop.time_ns;
+  report.what = stop.what;
+  char pc[16];
+  std::snprintf(pc, sizeof pc, "0x%08X", stop.pc);
+  report.what += std::string(" (PC ") + pc + (stop.symbol.empty() ? "" : " in " + stop.symbol) + ")";
+  report.backtrace = stop.backtrace;
+  if (stop_listener_) stop_listener_(report);
+}
+
+double ImageProgram::frame_isr_instructions() const {
+  const ImageChip::HandlerCost cost = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  return cost.entries == 0 ? 0.0 : static_cast<double>(cost.instructions) / static_cast<double>(cost.entries);
+}
+
+// The frame count is the frame interrupt's entries; the load is its instructions against the
+// frame's cycles at the core clock (one instruction per cycle).
+StepdanceBoardStatsV1 ImageProgram::stats() const {
+  StepdanceBoardStatsV1 stats{};
+  const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  stats.frames = static_cast<uint32_t>(frame.entries);
+  stats.fault_name = "";
+  stats.fault_detail = "";
+  stats.load_budget_cycles = static_cast<uint32_t>(uint64_t{chip_.core_clock_hz()} * 40 / 1000000);
+  stats.load_total_cycles = frame.instructions;
+  stats.load_frames = frame.entries;
+  return stats;
+}
+
+std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
+  const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  return {{"instructions", static_cast<double>(chip_.instructions())},
+          {"core_clock_hz", static_cast<double>(chip_.core_clock_hz())},
+          {"frame_interrupts", static_cast<double>(frame.entries)},
+          {"frame_interrupt_instructions_mean", frame_isr_instructions()}};
+}
+
+// ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------
+
+void ImageProgram::pin_config(SimTime, uint8_t pin, PinConfig config) { board_->set_pin_mode(pin, static_cast<int>(config)); }
+
+void ImageProgram::pin_drive(SimTime, uint8_t pin, bool high) { board_->write_pin(pin, high); }
+
+bool ImageProgram::pin_level(SimTime, uint8_t pin) { return board_->pin_level(pin); }
+
+void ImageProgram::port_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
+  board_->play_frame(port, start_ns, words, frame_ns);
+}
+
+int64_t ImageProgram::encoder_counts(SimTime, uint8_t index) { return board_->encoder_counts(index); }
+
+uint16_t ImageProgram::analog_level(SimTime, uint8_t pin) { return board_->analog_level(pin); }
+
+int ImageProgram::i2c_transfer(SimTime, uint8_t bus, uint32_t clock_hz, uint8_t address, const uint8_t* write,
+                               size_t write_length, uint8_t* read, size_t read_length, SimTime& wire_ns) {
+  board_->set_i2c_clock(bus, clock_hz);
+  int64_t wire = 0;
+  const int result = board_->i2c_transfer(bus, address, write, write_length, read, read_length, &wire);
+  wire_ns = wire;
+  return result;
+}
+
+size_t ImageProgram::serial_from_device(SimTime, const uint8_t* data, size_t length) {
+  return board_->write_console(data, length);
+}
+
+size_t ImageProgram::serial_to_device(SimTime, uint8_t* data, size_t capacity) {
+  size_t taken = 0;
+  while (taken < capacity && board_->console_available() > 0) data[taken++] = static_cast<uint8_t>(board_->read_console());
+  return taken;
+}
+
+}  // namespace stepdance::sim::image
