@@ -211,6 +211,7 @@ class ImageChip : public ChipContext {
   bool execute_double(const DoubleSite& site);
   void hook_double_site(const DoubleSite& site);
   void advance_it_state();
+  void restore_stopped_block_pc();
   static void on_double_site(uc_struct* uc, uint64_t address, uint32_t size, void* user);
 
   Scheduler& scheduler_;
@@ -262,6 +263,7 @@ class ImageChip : public ChipContext {
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
   std::deque<DoubleSite> double_sites_;  ///< hooked sites (stable addresses: the hooks point at them)
   DoubleOps double_ops_;
+  uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
 };
 
 }  // namespace stepdance::sim::image
