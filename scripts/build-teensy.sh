@@ -322,12 +322,14 @@ link_elf() {
   fi
 }
 
+# link_example NAME BOARD USB [FOLDER [ELF]]: the sketch in FOLDER (examples/NAME) linked into ELF
+# ($out/BOARD-USB/NAME.elf); only examples join the image list the checks below go through.
 link_example() {
-  local name=$1 board=$2 usb=$3 dir="$out/$2-$3"
+  local name=$1 board=$2 usb=$3 dir="$out/$2-$3" folder=${4:-examples/$1}
   local flags=("-D${board_macro[$board]}" "-D${usb_macro[$usb]}")
-  local sketch_object="$dir/examples/$name/$name.ino.o" extra_sources=() source
-  mapfile -t extra_sources < <(prepare_sketch "examples/$name" "$dir/examples/$name/$name.ino.cpp")
-  compile "$dir/examples/$name/$name.ino.cpp" "$sketch_object" "${flags[@]}" -iquote "examples/$name"
+  local sketch_object="$dir/$folder/$name.ino.o" extra_sources=() source
+  mapfile -t extra_sources < <(prepare_sketch "$folder" "$dir/$folder/$name.ino.cpp")
+  compile "$dir/$folder/$name.ino.cpp" "$sketch_object" "${flags[@]}" -iquote "$folder"
   local objects=("$sketch_object")
   for source in "${extra_sources[@]}"; do
     compile "$source" "$dir/${source%.*}.o" "${flags[@]}"
@@ -339,7 +341,7 @@ link_example() {
   if ! backend_present "${library_objects[@]}"; then
     link_flags=(-Wl,--unresolved-symbols=ignore-all)
   fi
-  local elf="$dir/$name.elf" inputs
+  local elf=${5:-$dir/$name.elf} inputs
   mapfile -t inputs < <(image_inputs "$board-$usb" "${objects[@]}" "${library_objects[@]}")
   link_elf "$elf" "$board" "${link_flags[@]}" "${inputs[@]}" || fail "linking $name for $board"
   if [ ${#link_flags[@]} -gt 0 ]; then
@@ -348,6 +350,7 @@ link_example() {
     [ -z "$missing" ] || fail "$name ($board) leaves symbols undefined: $missing"
     unlinked_hal+=("$name/$board")
   fi
+  [ -n "${4:-}" ] && return 0
   images+=("$elf")
   all_objects+=("${objects[@]}")
 }
@@ -356,6 +359,14 @@ for build in "${builds[@]}"; do
   read -r name board usb <<<"$build"
   [ -n "${config_objects[$board-$usb]+set}" ] || build_configuration "$board" "$usb"
   link_example "$name" "$board" "$usb"
+done
+# The image boards' fault fixtures (tests/sim/image/fault_sketches): one sketch per fault kind the
+# simulator must report, for the Teensy 4.1, in $out/teensy41-serial/faults/.
+for dir in tests/sim/image/fault_sketches/*/; do
+  name=$(basename "$dir")
+  [ -f "$dir/$name.ino" ] || continue
+  mkdir -p "$out/teensy41-serial/faults"
+  link_example "$name" teensy41 serial "${dir%/}" "$out/teensy41-serial/faults/$name.elf"
 done
 # The library builds for both boards even when no example needs the Teensy 4.0.
 [ -n "${config_objects[teensy40-serial]+set}" ] || build_configuration teensy40 serial

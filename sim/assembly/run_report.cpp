@@ -172,6 +172,19 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   extra["counters"] = counters;
   extra["cpu_load"] = load;
   if (!i2c.empty()) extra["i2c"] = i2c;
+  add_firmware_extras(extra);
+}
+
+// Per image board: its image and how it ran (instructions, the frame interrupt's cost).
+void Simulation::add_firmware_extras(nlohmann::json& extra) const {
+  nlohmann::json firmware = nlohmann::json::object();
+  for (const BoardSlot& slot : boards_) {
+    const BoardFirmware* program = slot.board->firmware();
+    if (program == nullptr) continue;
+    nlohmann::json& entry = firmware[slot.config->name] = {{"image", program->image_path()}};
+    for (const auto& [name, value] : program->figures()) entry[name] = value;
+  }
+  if (!firmware.empty()) extra["firmware"] = firmware;
 }
 
 nlohmann::json Simulation::cable_extras() const {

@@ -238,6 +238,7 @@ class Simulation {
   RunSummary run_summary() const;
   nlohmann::json summary_extra() const;
   void add_board_extras(nlohmann::json& extra) const;
+  void add_firmware_extras(nlohmann::json& extra) const;
   nlohmann::json cable_extras() const;
   nlohmann::json machine_extra() const;
   void write_summary_file(const SimulationReport& report) const;

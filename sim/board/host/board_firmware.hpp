@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "board/abi/board_abi.h"
@@ -39,8 +40,11 @@ class BoardFirmware {
   virtual void pulse_arrived(uint8_t port, const ArrivingPulse& pulse) = 0;
   /// The board's counters as the board ABI reports them (frames, faults, load).
   virtual StepdanceBoardStatsV1 stats() const = 0;
-  /// Lines for the run report about how the firmware ran (instructions, interrupt costs).
-  virtual std::vector<std::string> report_lines() const { return {}; }
+  /// How the firmware ran, for the summary's "firmware" object: named numbers (instructions
+  /// retired, the frame interrupt's cost, …) in a fixed order.
+  virtual std::vector<std::pair<std::string, double>> figures() const { return {}; }
+  /// The image file the firmware came from.
+  virtual const std::string& image_path() const = 0;
   /// Calls `listener` when the firmware stops for good (a fault, no progress).
   virtual void on_stop(std::function<void(const SketchStop&)> listener) = 0;
 };

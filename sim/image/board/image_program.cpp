@@ -11,12 +11,6 @@ namespace {
 /// Exception number of an interrupt (ARMv7-M B1.5.2: 16 + IRQ).
 constexpr unsigned exception_of_irq(unsigned irq) { return 16 + irq; }
 
-std::string format(const char* pattern, double a, double b = 0, double c = 0) {
-  char text[160];
-  std::snprintf(text, sizeof text, pattern, a, b, c);
-  return text;
-}
-
 }  // namespace
 
 ImageProgram::ImageProgram(Scheduler& scheduler, TeensyModel model, std::string image_path)
@@ -29,6 +23,9 @@ bool ImageProgram::load(std::string& error) { return chip_.load(image_path_, err
 bool ImageProgram::start(SimBoard& board, std::string& error) {
   board_ = &board;
   if (!add_blocks(error)) return false;
+  // The boot ROM hands a FlexSPI image over with the core on a PLL, not at the reset state's
+  // 12 MHz (ClockAndPinBlocks::apply_boot_rom_clocks says what it sets and why).
+  clocks_->apply_boot_rom_clocks();
   clocks_->ccm.add_rates_listener([this](const rt1062::ClockRates& rates) {
     if (rates.core_hz != 0) chip_.set_core_clock_hz(rates.core_hz);
   });
@@ -85,16 +82,12 @@ StepdanceBoardStatsV1 ImageProgram::stats() const {
   return stats;
 }
 
-std::vector<std::string> ImageProgram::report_lines() const {
-  std::vector<std::string> lines;
-  lines.push_back("image " + image_path_);
-  lines.push_back(format("%.0f instructions at %.0f MHz core clock (one per cycle)", static_cast<double>(chip_.instructions()),
-                         chip_.core_clock_hz() / 1e6));
+std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
   const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
-  lines.push_back(format("frame interrupt: %.0f entries, %.1f instructions each", static_cast<double>(frame.entries),
-                         frame_isr_instructions()));
-  lines.push_back("USB: " + usb_->host.describe());
-  return lines;
+  return {{"instructions", static_cast<double>(chip_.instructions())},
+          {"core_clock_hz", static_cast<double>(chip_.core_clock_hz())},
+          {"frame_interrupts", static_cast<double>(frame.entries)},
+          {"frame_interrupt_instructions_mean", frame_isr_instructions()}};
 }
 
 // ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------

@@ -37,7 +37,8 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   SimTime now_ns() const override { return chip_.now_ns(); }
   void pulse_arrived(uint8_t port, const ArrivingPulse& pulse) override;
   StepdanceBoardStatsV1 stats() const override;
-  std::vector<std::string> report_lines() const override;
+  std::vector<std::pair<std::string, double>> figures() const override;
+  const std::string& image_path() const override { return image_path_; }
   void on_stop(std::function<void(const SketchStop&)> listener) override { stop_listener_ = std::move(listener); }
 
   /// The frame interrupt's cost: instructions in FLEXIO3's handler per entry (0 before any).

@@ -13,7 +13,6 @@ namespace {
 // QEMU's exception numbers as unicorn passes them to the interrupt hook (target/arm/cpu.h).
 constexpr uint32_t kExcpUdef = 1, kExcpSwi = 2, kExcpPrefetchAbort = 3, kExcpDataAbort = 4, kExcpBkpt = 7;
 constexpr uint32_t kExcpExceptionExit = 8, kExcpNocp = 17, kExcpInvstate = 18, kExcpUnaligned = 22;
-constexpr size_t kMaxFrames = 16;
 
 std::string hex(uint32_t value) {
   char text[16];
@@ -68,14 +67,26 @@ void ImageChip::on_interrupt(uc_struct*, uint32_t intno, void* user) {
   }
 }
 
+// Unicorn 2.0.1 sends WFE and YIELD here too (QEMU's EXCP_YIELD), with the PC after them; an
+// undefined instruction comes with the PC on it.
 bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
-  if (chip.emulate_double_at_fault(chip.read_register(UC_ARM_REG_PC))) {  // vfp_hooks.cpp
+  const uint32_t pc = chip.read_register(UC_ARM_REG_PC);
+  uint16_t before[2] = {0, 0};
+  if (chip.read_memory(pc - 4, before, 4)) {
+    const bool wfe = before[1] == 0xBF20 || (before[0] == 0xF3AF && before[1] == 0x8002);
+    const bool yield = before[1] == 0xBF10 || (before[0] == 0xF3AF && before[1] == 0x8001);
+    if (wfe || yield) {
+      chip.yielded_ = yield;  // the run goes on at pc (YIELD) or sleeps first (WFE)
+      return true;
+    }
+  }
+  if (chip.emulate_double_at_fault(pc)) {  // vfp_hooks.cpp
     chip.we_stopped_ = true;
     return true;
   }
   chip.core_.cfsr |= 1u << 16;  // UFSR.UNDEFINSTR
-  chip.fault(kUsageFault, "UsageFault: undefined instruction", chip.read_register(UC_ARM_REG_PC));
+  chip.fault(kUsageFault, "UsageFault: undefined instruction", pc);
   chip.we_stopped_ = true;
   uc_emu_stop(uc);
   return true;
@@ -134,7 +145,8 @@ void ImageChip::raise_fault(ImageStop::Kind kind, const std::string& what, uint3
   stop_->symbol = image_.symbols.function_name(stop_->pc);
   stop_->backtrace = backtrace(stop_->pc, read_register(UC_ARM_REG_LR), read_register(UC_ARM_REG_SP));
   stop_->exit_code = kind == ImageStop::Kind::kNoProgress ? kExitNoProgress : kExitCrash;
-  stop_->time_ns = in_run_ ? time_of_cycle(in_access_ ? access_cycles_ : block_start_) : scheduler_.now();
+  // The access's time, or the block boundary reached (a fault inside a block: the block's end).
+  stop_->time_ns = in_run_ ? time_of_cycle(in_access_ ? access_cycles_ : retired_) : scheduler_.now();
   end_run_ = true;
 }
 

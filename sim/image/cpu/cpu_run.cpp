@@ -55,6 +55,10 @@ void ImageChip::run() {
   }
   if (stop_ != nullptr) finish_stop();
   if (stopped_) return;
+  if (asleep_) {
+    scheduler_.cancel(event_);  // pend_exception() wakes the core
+    return;
+  }
   const SimTime next = time_of_cycle(retired_);
   scheduler_.schedule(event_, next > now ? next : now);
 }
@@ -63,6 +67,8 @@ void ImageChip::run() {
 void ImageChip::run_slice() {
   in_run_ = true;
   we_stopped_ = false;
+  yielded_ = false;
+  install_double_sites();  // vfp_hooks.cpp: only between runs
   const uint32_t pc = read_register(UC_ARM_REG_PC) | 1u;
   const uc_err error = uc_emu_start(uc_, pc, kNoUntil, 0, 0);
   restore_stopped_block_pc();
@@ -74,25 +80,44 @@ void ImageChip::run_slice() {
                 read_register(UC_ARM_REG_PC));
     return;
   }
-  sleep_until_interrupt();  // the emulator returned by itself: WFI/WFE
+  if (!yielded_) sleep_until_interrupt();  // the emulator returned by itself: WFI or WFE
 }
 
-// WFI or WFE: the core sleeps until an interrupt; nothing to run until the limit. If nothing can
-// ever interrupt it, that is no progress.
+// WFI or WFE: the core sleeps until something pends an exception (it then wakes at that time;
+// B1.5.19 lets a WFI wake for any reason, so a pend it would not take wakes it too). If no
+// interrupt could ever wake it (one that would preempt with PRIMASK clear), that is no progress.
+// Sleep cycles pass as time, not instructions.
 void ImageChip::sleep_until_interrupt() {
-  if (!exceptions_.can_be_interrupted(masks(), system_blocks_->systick().ticking()) && !exceptions_.any_pending()) {
+  Masks wake = masks();
+  wake.primask = false;
+  if (!exceptions_.can_be_interrupted(wake, system_blocks_->systick().ticking()) && !exceptions_.any_pending()) {
     raise_fault(ImageStop::Kind::kNoProgress,
                 "no progress: the core sleeps (WFI/WFE) with no interrupt enabled that could wake it",
                 read_register(UC_ARM_REG_PC));
     return;
   }
-  if (retired_ < run_limit_) retired_ = run_limit_;
-  recheck_ = true;
+  asleep_ = true;
+  end_run_ = true;
+}
+
+void ImageChip::wake() {
+  asleep_ = false;
+  const uint64_t now = cycles_at(scheduler_.now());
+  if (now > retired_) {
+    slept_ += now - retired_;
+    retired_ = now;
+  }
+  scheduler_.schedule(event_, scheduler_.now());
 }
 
 void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
   if (chip.stepping_) return;  // counted one by one by step_through_block
+  for (Watch& watch : chip.watches_) {
+    if (watch.address != address || watch.fired_at == chip.retired_) continue;
+    watch.fired_at = chip.retired_;  // once per arrival, though a stop may make the block start twice
+    watch.listener(chip.instructions(), chip.time_of_cycle(chip.retired_));
+  }
   const ThumbBlock& block = chip.blocks_->get(static_cast<uint32_t>(address), size);
   if (chip.block_must_stop(block, static_cast<uint32_t>(address))) {
     chip.we_stopped_ = true;
@@ -145,6 +170,7 @@ void ImageChip::step_through_block() {
       fault(kUsageFault, "UsageFault: divide by zero (CCR.DIV_0_TRP is set)", pc);
     }
     if (stop_ != nullptr) break;
+    block_address_ = pc;  // a register access or fault in this step is at pc
     in_run_ = true;
     uc_emu_start(uc_, pc | 1u, kNoUntil, 0, 1);
     in_run_ = false;

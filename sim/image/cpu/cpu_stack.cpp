@@ -80,11 +80,13 @@ bool ImageChip::stack_overflows(uint32_t sp) const {
   return limit != 0 && sp < limit && limit - sp <= (1u << 20);
 }
 
-// At a block after one that lowered SP: has SP gone below the stack's bottom? (Checked after
+// At a block after one that lowered SP: has the main stack gone below its bottom? (Checked after
 // every block that pushes or allocates a frame: the overflowing frame's own stores may already
 // have reached the data below, as on a chip without a guard region that catches them.)
 bool ImageChip::stack_pointer_overflowed(uint32_t address) {
   check_sp_ = false;
+  // Only the main stack has that bottom: a thread on PSP (CONTROL.SPSEL) runs on a stack of its own.
+  if (current_exception_ == 0 && (read_register(UC_ARM_REG_CONTROL) & 2u) != 0) return false;
   const uint32_t sp = read_register(UC_ARM_REG_SP);
   if (!stack_overflows(sp)) return false;
   block_address_ = address;

@@ -74,7 +74,7 @@ void ImageChip::enter_exception(unsigned number, uint32_t return_pc) {
     for (int s = 0; s < 16; ++s) words_out[8 + s] = read_register(UC_ARM_REG_S0 + s);
     words_out[24] = read_register(UC_ARM_REG_FPSCR);
   }
-  if (stack_overflows(frame) || !write_memory(frame, words_out.data(), 4 * words)) {
+  if ((!on_psp && stack_overflows(frame)) || !write_memory(frame, words_out.data(), 4 * words)) {
     stack_fault(frame, return_pc);
     return;
   }

@@ -66,6 +66,7 @@ void ImageChip::power_on(SimTime time_ns) {
   base_ns_ = time_ns;
   base_cycle_ = 0;
   retired_ = 0;
+  slept_ = 0;
   powered_ = true;
   uint32_t probe = 0;
   if (!loaded_ || !read_memory(image_.entry & ~1u, &probe, 2)) {
@@ -102,7 +103,14 @@ uint64_t ImageChip::cycles_at(SimTime time_ns) const {
   return base_cycle_ + static_cast<uint64_t>((scaled + 999999999u) / 1000000000u);
 }
 
-uint64_t ImageChip::cycles() const { return in_access_ ? access_cycles_ : retired_; }
+uint64_t ImageChip::cycles() const {
+  if (in_access_) return access_cycles_;
+  if (asleep_) {  // the core's clock runs on while it sleeps
+    const uint64_t now = cycles_at(scheduler_.now());
+    return now > retired_ ? now : retired_;
+  }
+  return retired_;
+}
 
 SimTime ImageChip::now_ns() const {
   if (in_access_) return time_of_cycle(access_cycles_);
@@ -118,6 +126,7 @@ void ImageChip::set_irq_level(unsigned irq, bool high) {
 void ImageChip::pend_exception(unsigned number) {
   if (number > 0 && number < kExceptionCount) exceptions_.set_pending(number, true);
   recheck_ = true;
+  if (asleep_ && !in_run_) wake();
 }
 
 ImageChip::HandlerCost ImageChip::handler_cost(unsigned exception_number) const {

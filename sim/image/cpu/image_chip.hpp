@@ -48,18 +48,26 @@ struct BlockAccess;
 /// the block's start plus the instructions before it in the block (see docs/simulator.md for
 /// how the instruction is found).
 ///
+/// With nothing else queued, one run covers at most kMaxSliceNs: the core may then be up to that
+/// far ahead of a scheduler that stops with nothing queued.
+///
 /// Exceptions are taken at block boundaries: an interrupt pended during a block (by an event
 /// between runs, or by a register access) is entered before the next block runs. Nested ones
 /// preempt by group priority; PRIMASK, FAULTMASK and BASEPRI mask; a pending interrupt that a
-/// mask holds off is taken at the first block boundary after the mask drops.
+/// mask holds off is taken at the first block boundary after the mask drops. Entry and return
+/// take no cycles. WFI/WFE sleep until something pends an exception.
+///
+/// Faults (ImageStop) stop the image at the moment its fault handler would be entered; the
+/// handler does not run. on_stop listeners hear it once, after the run ends.
 ///
 /// Context: the simulator's thread only.
 class ImageChip : public ChipContext {
  public:
   /// Longest single CPU run without an event in the queue, ns.
   static constexpr SimTime kMaxSliceNs = 100 * kMicrosecond;
-  /// Core clock the boot ROM leaves for a FlexSPI boot: ARM_PLL off, the core on the 396 MHz
-  /// PLL2 PFD3 (IMXRT1060RM rev 3, 10.5 "boot clocks": "ARM core 396 MHz").
+  /// Core clock the boot ROM leaves for a FlexSPI boot: 396 MHz (IMXRT1060RM rev 3, 9.5.2, the
+  /// clocks the boot ROM sets; Teensyduino 1.59's teensy4/clockspeed.c starts F_CPU_ACTUAL at
+  /// 396000000 for the same reason). The CCM model sets the clock the image then chooses.
   static constexpr uint32_t kBootCoreClockHz = 396000000;
 
   ImageChip(Scheduler& scheduler, TeensyModel model);
@@ -73,19 +81,25 @@ class ImageChip : public ChipContext {
   bool load(const std::string& elf_path, std::string& error);
   /// The peripheral space: the board and the RT1062 models add their blocks before power_on.
   PeripheralBus& bus() { return bus_; }
-  /// Boots as the ROM does a FlexSPI image (IMXRT1060RM 9.7.1: the IVT's entry): SP from the
-  /// image's vector table where its entry's table says, PC = the ELF entry; then the CPU runs as
-  /// a scheduler event from `time_ns`. A stop (kBadImage) if the entry is outside memory.
+  /// Boots as the ROM does a FlexSPI image (IMXRT1060RM rev 3, 9.7: it jumps to the IVT's entry,
+  /// which is the ELF's entry): PC = the ELF entry, SP = the top of DTCM (images set SP first
+  /// thing, as Teensyduino's ResetHandler does); then the CPU runs as a scheduler event from
+  /// `time_ns`. A stop (kBadImage) if nothing is loaded or the entry is outside memory.
   void power_on(SimTime time_ns);
   /// Called once when the image stops (fault, stall, unmodelled register). Several may listen.
   void on_stop(std::function<void(const ImageStop&)> listener) { stop_listeners_.push_back(std::move(listener)); }
   bool stopped() const { return stopped_; }
   /// The stop's report, or null while the image runs.
   const ImageStop* stop_report() const { return stopped_ ? stop_.get() : nullptr; }
+  /// Calls `listener` each time the core starts a block at `address` (a function's entry, e.g.
+  /// `setup`), with the instructions retired before it and the time. Costs one comparison per
+  /// block per watch. Before or after power_on.
+  using ReachListener = std::function<void(uint64_t instructions, SimTime time_ns)>;
+  void on_reach(uint32_t address, ReachListener listener) { watches_.push_back({address & ~1u, std::move(listener), ~uint64_t{0}}); }
   /// The CCM model calls this when ARM_PLL or the dividers change; time from now on runs at it.
   void set_core_clock_hz(uint32_t hz);
-  /// Instructions retired since power_on.
-  uint64_t instructions() const { return retired_; }
+  /// Instructions retired since power_on (core cycles less those slept in WFI/WFE).
+  uint64_t instructions() const { return retired_ - slept_; }
 
   /// Instructions spent in one exception's handler, nested ones excluded (each instruction
   /// counts for the exception whose handler was running it), and how often it was entered.
@@ -97,6 +111,9 @@ class ImageChip : public ChipContext {
   const ElfSymbols& symbols() const { return image_.symbols; }
   /// The exception the core is handling (IPSR), 0 in thread mode.
   unsigned current_exception() const { return current_exception_; }
+  /// The core's own registers (0xE0000000–0xE00FFFFF): the CPU's accesses go here; tests
+  /// drive them directly.
+  PeripheralBus& system_bus() { return system_bus_; }
   /// The system-space state (for tests and reports).
   const CoreRegisters& core_registers() const { return core_; }
   ExceptionState& exceptions() { return exceptions_; }
@@ -171,6 +188,7 @@ class ImageChip : public ChipContext {
   bool block_must_stop(const ThumbBlock& block, uint32_t address);
   bool spin(uint32_t address);
   void sleep_until_interrupt();
+  void wake();
   void shorten_run();
   uint64_t cycles_at(SimTime time_ns) const;
   Masks masks() const;
@@ -210,6 +228,9 @@ class ImageChip : public ChipContext {
   bool emulate_double_at_fault(uint32_t pc);
   bool execute_double(const DoubleSite& site);
   void hook_double_site(const DoubleSite& site);
+  /// Hooks the sites found during the last run (between runs: adding a hook or dropping a
+  /// translation while the emulator runs breaks its chained blocks).
+  void install_double_sites();
   void advance_it_state();
   void restore_stopped_block_pc();
   static void on_double_site(uc_struct* uc, uint64_t address, uint32_t size, void* user);
@@ -229,12 +250,18 @@ class ImageChip : public ChipContext {
   ExceptionState exceptions_;
   CpuEvent event_{this};
   std::vector<std::function<void(const ImageStop&)>> stop_listeners_;
+  struct Watch {
+    uint32_t address;
+    ReachListener listener;
+    uint64_t fired_at = ~uint64_t{0};  ///< retired_ at the last call
+  };
+  std::vector<Watch> watches_;
 
   // time
   uint32_t core_hz_ = kBootCoreClockHz;
   uint64_t base_cycle_ = 0;  ///< cycle count at which the current clock began
   SimTime base_ns_ = 0;      ///< … and its time
-  uint64_t retired_ = 0;     ///< instructions retired (counted at each block's start)
+  uint64_t retired_ = 0;     ///< core cycles: instructions retired (counted at each block's start) and slept
   uint64_t block_start_ = 0; ///< retired_ before the block running now
   uint64_t run_limit_ = 0;   ///< the run ends at the first block boundary at or past this
   const ThumbBlock* block_ = nullptr;  ///< the block running now
@@ -248,6 +275,9 @@ class ImageChip : public ChipContext {
   bool end_run_ = false;       ///< stop_cpu_run() or a clock change: back to the scheduler at the next block
   bool recheck_ = false;       ///< something was pended or unmasked: take it at the next block
   bool we_stopped_ = false;    ///< the last emulator return was our own uc_emu_stop
+  bool yielded_ = false;       ///< … or a YIELD hint: run on
+  uint64_t slept_ = 0;         ///< cycles spent asleep (WFI, WFE)
+  bool asleep_ = false;        ///< in WFI/WFE: no event queued until something pends
   bool check_masks_ = false;   ///< something pending is masked: re-check at every block
   bool stopped_ = false;
   bool powered_ = false;
@@ -262,6 +292,7 @@ class ImageChip : public ChipContext {
   bool stepping_ = false;
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
   std::deque<DoubleSite> double_sites_;  ///< hooked sites (stable addresses: the hooks point at them)
+  std::vector<DoubleSite> new_double_sites_;  ///< found during the current run, hooked after it
   DoubleOps double_ops_;
   uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
 };

@@ -27,6 +27,11 @@ namespace stepdance::sim::image {
 namespace {
 
 constexpr uint32_t kControlNpriv = 1u << 0, kControlFpca = 1u << 2;
+/// Whether sites get code hooks after their first run (fast) or take the invalid-instruction
+/// path every time (about 30 µs each). Off until a fault is understood: with the hooks,
+/// Step-A-Sketch's image restarts a block of micros() after its push (SP off by 8, r5 lost) at
+/// 0.6 ms; without them it runs on (issue 37's notes).
+constexpr bool kHookDoubleSites = false;
 constexpr uint32_t kFpccrAspen = 1u << 31;
 /// ITSTATE in xPSR/CPSR: IT[1:0] at bits 26:25, IT[7:2] at bits 15:10 (ARMv7-M ARM B1.4.2).
 constexpr uint32_t kItMask = (3u << 25) | (0x3Fu << 10);
@@ -45,11 +50,8 @@ bool ImageChip::emulate_double_at_fault(uint32_t pc) {
   const DoubleSite site{this, pc & ~1u, instruction, operands.reads, operands.writes, vfp_reads_apsr(instruction)};
   if (!execute_double(site)) return true;  // a NOCP fault: the run stops on it
   ++double_ops_.slow;
-  if ((read_register(UC_ARM_REG_XPSR) & kItMask) != 0) {
-    advance_it_state();
-  } else {
-    hook_double_site(site);
-  }
+  if ((read_register(UC_ARM_REG_XPSR) & kItMask) != 0) advance_it_state();
+  if (kHookDoubleSites) new_double_sites_.push_back(site);
   uint32_t next = (site.address + 4) | 1u;
   uc_reg_write(uc_, UC_ARM_REG_PC, &next);
   return true;
@@ -65,13 +67,29 @@ void ImageChip::advance_it_state() {
   uc_reg_write(uc_, UC_ARM_REG_CPSR, &cpsr);
 }
 
+// The site's instruction becomes NOP.W (ARMv7-M A7.7.88, T2: 0xF3AF 0x8000) in the emulator's
+// memory and its code hook executes the double-precision operation just before it: the block
+// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself. (Writing
+// the PC from a hook instead leaves unicorn 2.0.1 a stop request that the next register access
+// turns into a restart of its block, with the block's earlier stores and pushes already done.)
 void ImageChip::hook_double_site(const DoubleSite& site) {
   double_sites_.push_back(site);
   uc_hook hook;
   uc_hook_add(uc_, &hook, UC_HOOK_CODE, reinterpret_cast<void*>(&on_double_site), &double_sites_.back(),
               site.address, site.address);
+  const uint16_t nop_w[2] = {0xF3AF, 0x8000};
+  uc_mem_write(uc_, site.address, nop_w, sizeof nop_w);
   uc_ctl_remove_cache(uc_, site.address, site.address + 4);
   ++double_ops_.sites;
+}
+
+void ImageChip::install_double_sites() {
+  for (const DoubleSite& site : new_double_sites_) {
+    bool known = false;
+    for (const DoubleSite& hooked : double_sites_) known = known || hooked.address == site.address;
+    if (!known) hook_double_site(site);
+  }
+  new_double_sites_.clear();
 }
 
 void ImageChip::on_double_site(uc_struct* uc, uint64_t, uint32_t, void* user) {
@@ -79,10 +97,7 @@ void ImageChip::on_double_site(uc_struct* uc, uint64_t, uint32_t, void* user) {
   if (!site.chip->execute_double(site)) {
     site.chip->we_stopped_ = true;
     uc_emu_stop(uc);
-    return;
   }
-  uint32_t next = (site.address + 4) | 1u;
-  uc_reg_write(uc, UC_ARM_REG_PC, &next);  // ends the block before the undefined instruction
 }
 
 // Once any code hook exists, unicorn no longer puts the PC back to the start of a block that the

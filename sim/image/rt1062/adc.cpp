@@ -49,11 +49,16 @@ uint32_t Adc::conversion_cycles(bool first, bool calibration) const {
   return (first ? kFirstConversionAdder : 0u) + average * each;
 }
 
+// A job starts now (`first`), or right where the previous continuous conversion ended.
 void Adc::start(Job job, bool first) {
   job_ = job;
   gs_ |= kGsAdact;
-  const TickClock adck(context_.now_ns(), adck_hz(), 1);
-  context_.scheduler().schedule(done_, adck.time_of(conversion_cycles(first, job == Job::kCalibration)));
+  if (first) {
+    adck_ = TickClock(context_.now_ns(), adck_hz(), 1);
+    end_cycle_ = 0;
+  }
+  end_cycle_ += conversion_cycles(first, job == Job::kCalibration);
+  context_.scheduler().schedule(done_, adck_.time_of(end_cycle_));
 }
 
 void Adc::finish() {

@@ -11,6 +11,7 @@
 #include "image/rt1062/ccm.hpp"
 #include "image/rt1062/register_bits.hpp"
 #include "image/rt1062/teensy_pins.hpp"
+#include "image/rt1062/tick_clock.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 
@@ -66,6 +67,8 @@ class Adc : public Peripheral {
   std::array<uint32_t, 8> hc_{};
   uint32_t hs_ = 0, r0_ = 0, cfg_ = 0x200u, gc_ = 0, gs_ = 0, cv_ = 0, ofs_ = 0, cal_ = 0;
   Job job_ = Job::kNone;
+  TickClock adck_;          ///< ADCK from the first conversion of a run (continuous runs: no drift)
+  uint64_t end_cycle_ = 0;  ///< the ADCK cycle the job in progress ends at
   bool irq_high_ = false;
   ModelEvent done_;
 };

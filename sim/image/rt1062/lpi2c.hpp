@@ -18,12 +18,14 @@ namespace stepdance::sim::image {
 /// transmit FIFO and leave it at the bus's pace (SCL period from MCCR0, MCFGR1 PRESCALE and the
 /// LPI2C clock root): START + address 10 bit times, a data byte 9, RECEIVE 9 per byte, STOP 1.
 /// One START's worth of commands (a segment) becomes one BoardIo::i2c_transfer: a write segment
-/// when its STOP or the next START leaves the FIFO, or when its last byte has gone out and
-/// nothing follows (Wire's endTransmission(false) waits there); a read segment when its RECEIVE
-/// starts, its bytes then arriving in the receive FIFO one byte time apart. A NACK (address or
-/// data) sets NDF and halts the FIFO until software clears it or resets the FIFOs, as Wire
-/// expects; a bus error sets ALF, a timeout PLTF. So Wire's write-then-read (a repeated START)
-/// reaches the world as two transfers, a write and a read.
+/// once its address is out and its end is known (its STOP or the next START is in the FIFO), or
+/// when its last byte has gone out and nothing follows (Wire's endTransmission(false) waits
+/// there); a read segment when its RECEIVE starts, its bytes then arriving in the receive FIFO
+/// one byte time apart. A NACK sets NDF and halts the FIFO where the hardware stops: after the
+/// address for an address NACK (the data still queued), after the data for a data NACK; it stays
+/// halted until software clears NDF or resets the FIFOs, as Wire expects. A bus error sets ALF, a
+/// timeout PLTF. So Wire's write-then-read (a repeated START) reaches the world as two transfers,
+/// a write and a read.
 /// Refused (kUnmodelled): slave registers, interrupt and DMA enables, MCFGR1 options other than
 /// PRESCALE, high-speed and expect-NACK commands, non-32-bit accesses.
 class Lpi2c final : public Peripheral {
@@ -56,6 +58,7 @@ class Lpi2c final : public Peripheral {
     uint8_t address = 0;
     bool is_read = false;
     std::vector<uint8_t> written;
+    size_t prefetched = 0;  // TRANSMITs still in the FIFO whose bytes went with the transfer
   };
   struct Wake : Event {
     explicit Wake(Lpi2c& model) : Event(&fire), owner(model) {}
@@ -72,7 +75,8 @@ class Lpi2c final : public Peripheral {
   bool step(SimTime now_ns);
   SimTime duration_ns(uint16_t word) const;
   void apply(uint16_t word, SimTime at_ns);
-  bool execute(SimTime at_ns, size_t read_length);
+  int execute(SimTime at_ns, size_t read_length);
+  void execute_known_write(SimTime at_ns);
   void schedule_wake(SimTime now_ns);
 
   unsigned instance_;

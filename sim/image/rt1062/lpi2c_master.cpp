@@ -34,6 +34,7 @@ SimTime Lpi2c::duration_ns(uint16_t word) const {
 void Lpi2c::advance(SimTime now_ns) {
   while (step(now_ns)) {
   }
+  if (mcr_ & kMen) execute_known_write(now_ns);  // a STOP or START just queued behind the data
 }
 
 bool Lpi2c::step(SimTime now_ns) {
@@ -51,23 +52,40 @@ bool Lpi2c::step(SimTime now_ns) {
   const SimTime done = head_start_ns_ + duration_ns(word);
   if (done > now_ns || halted_) return false;
   if (command_of(word) != kReceive) apply(word, done);
+  if (halted_) return false;
   // A write segment whose last byte has gone out with nothing queued behind it: the master holds
   // the bus and the segment is complete as far as the world can tell (Wire's endTransmission(false)).
   const bool stalled = tx_.size() == 1 && segment_.open && !segment_.is_read && !segment_.executed &&
                        (command_of(word) == kTransmit || command_of(word) == kStart);
-  if (stalled && !halted_) execute(done, 0);
-  if (halted_) return false;  // the command stays in the FIFO until NDF is cleared or the FIFO reset
+  if (stalled && execute(done, 0) == kAddressNack) return false;  // the last command stays queued
   tx_.pop_front();
   head_started_ = false;
   line_free_ns_ = done;
-  return true;
+  execute_known_write(done);
+  return !halted_;
+}
+
+void Lpi2c::execute_known_write(SimTime at_ns) {
+  if (halted_ || !segment_.open || segment_.is_read || segment_.executed) return;
+  // The bytes queued up to the segment's STOP or next START, if one is queued already.
+  size_t queued = 0;
+  while (queued < tx_.size() && command_of(tx_[queued].word) == kTransmit) ++queued;
+  if (queued == tx_.size()) return;  // its end is not known yet
+  for (size_t i = 0; i < queued; ++i) segment_.written.push_back(static_cast<uint8_t>(tx_[i].word & 0xFFu));
+  const int result = execute(at_ns, 0);
+  if (result == kOk) {
+    segment_.prefetched = queued;
+  } else if (result == kDataNack) {
+    tx_.erase(tx_.begin(), tx_.begin() + static_cast<std::ptrdiff_t>(queued));  // the bytes went out
+    head_started_ = false;
+  }
 }
 
 void Lpi2c::apply(uint16_t word, SimTime at_ns) {
   const uint8_t data = static_cast<uint8_t>(word & 0xFFu);
   switch (command_of(word)) {
     case kStart:
-      if (segment_.open && !segment_.executed && !execute(at_ns, 0)) return;  // a repeated START
+      if (segment_.open && !segment_.executed && execute(at_ns, 0) != kOk) return;  // a repeated START
       if (segment_.open) flags_ |= kEpf;
       segment_ = Segment{true, false, static_cast<uint8_t>(data >> 1), (data & 1u) != 0, {}};
       bus_busy_ = true;
@@ -75,6 +93,10 @@ void Lpi2c::apply(uint16_t word, SimTime at_ns) {
     case kTransmit:
       if (!segment_.open || segment_.is_read) {
         flags_ |= kFef;  // data without a START (RM §47.4.1.4 FEF)
+        break;
+      }
+      if (segment_.prefetched > 0) {  // its byte already went with the transfer
+        --segment_.prefetched;
         break;
       }
       if (segment_.executed) {  // more bytes after a stall: a further write to the same address
@@ -91,7 +113,7 @@ void Lpi2c::apply(uint16_t word, SimTime at_ns) {
       execute(at_ns, static_cast<size_t>(data) + 1u);
       break;
     case kStop:
-      if (segment_.open && !segment_.executed && !execute(at_ns, 0)) return;
+      if (segment_.open && !segment_.executed && execute(at_ns, 0) != kOk) return;
       segment_ = Segment{};
       bus_busy_ = false;
       flags_ |= kSdf | kEpf;
@@ -100,7 +122,7 @@ void Lpi2c::apply(uint16_t word, SimTime at_ns) {
   }
 }
 
-bool Lpi2c::execute(SimTime at_ns, size_t read_length) {
+int Lpi2c::execute(SimTime at_ns, size_t read_length) {
   uint8_t data[256] = {};
   SimTime wire_ns = 0;
   const uint8_t bus = instance_ == 1 ? 0 : 1;
@@ -111,12 +133,12 @@ bool Lpi2c::execute(SimTime at_ns, size_t read_length) {
   if (result == kOk) {
     const SimTime byte_ns = duration_ns(0);
     for (size_t i = 0; i < read_length; ++i) rx_.emplace_back(at_ns + byte_ns * static_cast<SimTime>(i + 1), data[i]);
-    return true;
+    return result;
   }
   // A NACK or a broken bus: the master stops with the flag up (Wire clears the FIFO and sends STOP).
   flags_ |= result == kAddressNack || result == kDataNack ? kNdf : result == kTimeout ? kPltf : kAlf;
   halted_ = true;
-  return false;
+  return result;
 }
 
 void Lpi2c::schedule_wake(SimTime now_ns) {

@@ -2,6 +2,7 @@
 // backtrace; exit status 5, or 6 for no progress (docs/simulator.md). One fixture per kind
 // (tests/sim/image/fixtures/fault_*.c).
 #include "fixture.hpp"
+#include "test_device.hpp"
 
 namespace stepdance::sim::image::testing {
 namespace {
@@ -48,6 +49,16 @@ TEST(ImageChipFault, AnUndefinedInstructionIsAUsageFault) {
   EXPECT_EQ(f.chip->core_registers().cfsr & (1u << 16), 1u << 16);  // UFSR.UNDEFINSTR
 }
 
+TEST(ImageChipFault, AFaultWhoseHandlerIsDisabledEscalatesToHardFault) {
+  Fixture f;
+  const ImageStop stop = run_to_stop(f, "fault_escalated");
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kHardFault);
+  EXPECT_NE(stop.what.find("escalated"), std::string::npos) << stop.what;
+  EXPECT_NE(stop.what.find("undefined instruction"), std::string::npos) << stop.what;
+  expect_in(f, stop, "undefined_here");
+  EXPECT_EQ(f.chip->core_registers().hfsr & (1u << 30), 1u << 30);  // HFSR.FORCED
+}
+
 TEST(ImageChipFault, ADivideByZeroWithDiv0TrpIsAUsageFault) {
   Fixture f;
   const ImageStop stop = run_to_stop(f, "fault_divide");
@@ -67,6 +78,23 @@ TEST(ImageChipFault, AReadWhereNoMemoryIsIsABusFault) {
   EXPECT_NE(stop.what.find("read of 4 bytes at 0x30000000"), std::string::npos) << stop.what;
   expect_in(f, stop, "read_unmapped");
   EXPECT_EQ(f.chip->core_registers().bfar, 0x30000000u);
+}
+
+TEST(ImageChipFault, ABlockAnsweringWithABusErrorIsABusFault) {
+  Fixture f;
+  std::unique_ptr<TestDevice> device;
+  ASSERT_TRUE(f.boot("fault_device", [&device](ImageChip& chip) {
+    device = std::make_unique<TestDevice>(chip);
+    chip.bus().add(*device);
+  }));
+  f.scheduler.run_until(1 * kMillisecond);
+  ASSERT_EQ(f.stops.size(), 1u);
+  const ImageStop& stop = f.stops[0];
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kBusFault);
+  EXPECT_NE(stop.what.find("0x40100014 (TESTDEV+0x14): the block answers with a bus error"), std::string::npos)
+      << stop.what;
+  expect_in(f, stop, "read_device");
+  EXPECT_EQ(f.chip->core_registers().bfar, 0x40100014u);
 }
 
 TEST(ImageChipFault, AnAccessTheMpuForbidsIsAMemManageFault) {
@@ -91,6 +119,16 @@ TEST(ImageChipFault, EndlessRecursionOverflowsTheStack) {
   EXPECT_GT(sp + 128, f.address_of("_ebss"));
 }
 
+TEST(ImageChipFault, TheStackGuardRegionIsTheStacksBottom) {
+  Fixture f;
+  const ImageStop stop = run_to_stop(f, "fault_stack_guard");
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kStackOverflow) << stop.what;
+  EXPECT_EQ(stop.symbol, "recurse");
+  char bottom[16];
+  std::snprintf(bottom, sizeof bottom, "0x%08X", f.address_of("_ebss") + 32);  // the guard's top
+  EXPECT_NE(stop.what.find(std::string("bottom ") + bottom), std::string::npos) << stop.what;
+}
+
 TEST(ImageChipFault, ASpinWithInterruptsMaskedIsNoProgress) {
   Fixture f;
   const ImageStop stop = run_to_stop(f, "fault_stall");
@@ -98,6 +136,15 @@ TEST(ImageChipFault, ASpinWithInterruptsMaskedIsNoProgress) {
   expect_in(f, stop, "stall");
   EXPECT_EQ(stop.exit_code, 6);
   EXPECT_LT(stop.time_ns, 1 * kMillisecond);  // found at once, not at the end of the run
+}
+
+TEST(ImageChipFault, SleepingWithNothingToWakeTheCoreIsNoProgress) {
+  Fixture f;
+  const ImageStop stop = run_to_stop(f, "fault_sleep");
+  EXPECT_EQ(stop.kind, ImageStop::Kind::kNoProgress);
+  EXPECT_NE(stop.what.find("WFI"), std::string::npos) << stop.what;
+  EXPECT_EQ(stop.symbol, "sleep_forever");
+  EXPECT_EQ(stop.exit_code, 6);
 }
 
 TEST(ImageChipFault, AnUnmodelledRegisterStopsTheRunNamingIt) {

@@ -78,6 +78,25 @@ TEST(ImageChipIrq, AMaskedInterruptIsTakenRightAfterTheMaskDrops) {
   EXPECT_EQ(f.device->cycle_of(60), first + 1);
 }
 
+TEST(ImageChipIrq, AnInterruptTheFirmwarePendsIsTakenAtTheNextBlock) {
+  IrqFixture f;
+  ASSERT_TRUE(f.boot_with_device("irq_software"));
+  f.run_until(10 * kMicrosecond);
+  const std::vector<TestDevice::Mark> expected{{1, 23}, {2, 26}, {30, 29}, {3, 34}};
+  EXPECT_EQ(f.device->marks, expected);
+}
+
+TEST(ImageChipIrq, AThreadOnTheProcessStackStacksThereAndReturnsThere) {
+  IrqFixture f;
+  ASSERT_TRUE(f.boot_with_device("psp_thread"));
+  f.pend_at(2 * kMicrosecond, 3);
+  f.run_until(20 * kMicrosecond);
+  const std::vector<uint32_t> order{0xFFFFFFFD, 10, 2};  // EXC_RETURN: thread, PSP, basic frame
+  EXPECT_EQ(f.device->values(), order);
+  EXPECT_EQ(f.word("handler_sp"), 0x20080000u);  // MSP untouched by the frame: the top of DTCM
+  EXPECT_EQ(f.word("thread_sp_after"), f.address_of("process_stack") + 256);  // PSP back at its top
+}
+
 TEST(ImageChipIrq, TheThreadsFloatsSurviveAHandlerThatUsesTheFpu) {
   IrqFixture f;
   ASSERT_TRUE(f.boot_with_device("fpu_isr"));

@@ -24,15 +24,20 @@ class TestDevice : public Peripheral {
   const char* name() const override { return "TESTDEV"; }
   uint32_t base() const override { return 0x40100000; }
   uint32_t size_bytes() const override { return 0x100; }
-  /// 0x0C reads 0x5A; everything else unmodelled.
+  /// 0x0C reads 0x5A; 0x14 answers with a bus error; everything else unmodelled.
   Access read(uint32_t offset, uint8_t, uint32_t& value) override {
+    if (offset == 0x14) return Access::kBusError;
     if (offset != 0x0C) return Access::kUnmodelled;
     value = 0x5A;
     return Access::kOk;
   }
-  /// 0x00: lower IRQ line `value`; 0x04: log a mark; 0x08: raise IRQ line `value`.
+  /// 0x00: lower IRQ line `value`; 0x04: log a mark; 0x08: raise IRQ line `value`; 0x10: end the
+  /// CPU's run (if stop_on_write).
   Access write(uint32_t offset, uint8_t, uint32_t value) override {
     switch (offset) {
+      case 0x10:
+        if (stop_on_write) chip_.stop_cpu_run();
+        return Access::kOk;
       case 0x00: chip_.set_irq_level(value, false); return Access::kOk;
       case 0x04: marks.push_back({value, chip_.cycles()}); return Access::kOk;
       case 0x08: chip_.set_irq_level(value, true); return Access::kOk;
@@ -64,6 +69,7 @@ class TestDevice : public Peripheral {
   }
 
   std::vector<Mark> marks;
+  bool stop_on_write = false;
 
  private:
   ChipContext& chip_;

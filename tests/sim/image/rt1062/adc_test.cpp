@@ -123,6 +123,29 @@ TEST_F(AdcChip, ResultsScaleToTheResolution) {
   EXPECT_EQ(rd(kAdc1 + kR0), 128u);
 }
 
+TEST_F(AdcChip, ContinuousConversionsFollowEachOtherWithoutTheFirstAdder) {
+  world.analog[24] = 300;
+  wr(kAdc1 + kCfg, 1u << 2);     // 10 bits, ADICLK = IPG (3 MHz at reset), short sample ADSTS 0
+  wr(kAdc1 + kGc, 1u << 6);      // ADCO
+  const SimTime start = chip.now_ns();
+  wr(kAdc1 + kHc0, (1u << 7) | 1u);
+  // First: 6 + (21 + 3) = 30 cycles = 10 µs; each next: 24 cycles = 8 µs. 100 conversions end at
+  // 10 + 99 × 8 = 802 µs exactly.
+  int conversions = 0;
+  bool was_high = false;
+  for (SimTime t = start; t <= start + 802 * kMicrosecond; t += 1000) {
+    chip.advance_to(t);
+    if (chip.irq_levels[67] && !was_high) ++conversions;
+    was_high = chip.irq_levels[67];
+    if (was_high) {
+      EXPECT_EQ(rd(kAdc1 + kR0), 300u);
+      was_high = false;
+    }
+  }
+  EXPECT_EQ(conversions, 100);
+  EXPECT_EQ(chip.irq_log.back().time, start + 802 * kMicrosecond);
+}
+
 TEST_F(AdcChip, RefusesChannelsWithoutATeensyPinAndHardwareTriggers) {
   uint32_t value = 0;
   BusRefusal refusal;

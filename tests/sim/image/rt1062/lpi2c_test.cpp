@@ -158,12 +158,15 @@ TEST_F(Lpi2cTest, AWriteTakesItsWireTime) {
   wire.begin(400000);
   const SimTime before = rig.chip.now_ns();
   ASSERT_EQ(wire.end_transmission({0x3F << 1, 1, 2, 3, 4, 5, 6}, true), 0);
-  // START + address (10 bits) and six bytes (9 bits each) at 2.5 µs a bit before the transfer is
-  // complete: 160 µs at least.
+  const SimTime after = rig.chip.now_ns();
   ASSERT_EQ(rig.io.i2c_calls.size(), 1u);
   EXPECT_EQ(rig.io.i2c_calls[0].written, (std::vector<uint8_t>{1, 2, 3, 4, 5, 6}));
-  EXPECT_GE(rig.io.i2c_calls[0].at_ns - before, 160000);
-  EXPECT_LT(rig.io.i2c_calls[0].at_ns - before, 200000);
+  // The device is asked once the address is out (START + 8 bits + ACK = 10 bits of 2.5 µs).
+  EXPECT_GE(rig.io.i2c_calls[0].at_ns - before, 25000);
+  // Wire sees the STOP after START + address (10 bits), six bytes (9 bits each) and the STOP
+  // (1 bit): 162.5 µs at 400 kHz, plus its own polling.
+  EXPECT_GE(after - before, 162500);
+  EXPECT_LT(after - before, 200000);
 }
 
 TEST_F(Lpi2cTest, WriteThenReadWithRepeatedStartReadsTheDevice) {
@@ -181,6 +184,28 @@ TEST_F(Lpi2cTest, AWriteWithoutStopToAnAbsentAddressIsNackedBeforeTheRead) {
   wire.begin(400000);
   EXPECT_EQ(wire.end_transmission({0x50 << 1, 0x00}, false), 2);
   EXPECT_TRUE(wire.request_from(0x50, 2).empty());
+}
+
+// Where the FIFO stops on a NACK tells an address NACK from a data NACK (RM §47.3: the master
+// halts at the NACKed byte): the commands behind it stay queued.
+TEST_F(Lpi2cTest, ANackHaltsTheFifoAtTheNackedByte) {
+  rig.io.i2c_results[0x21] = 4;  // the device at 0x21 refuses data
+  wire.begin(400000);
+  for (const auto& [address, left] : {std::pair<uint8_t, uint32_t>{0x20, 3}, {0x21, 1}}) {
+    ASSERT_TRUE(wire.wait_idle());
+    wire.set(kMtdr, kCmdStart | (address << 1));
+    wire.set(kMtdr, kCmdTransmit | 0xA0);
+    wire.set(kMtdr, kCmdTransmit | 0xA1);
+    wire.set(kMtdr, kCmdStop);
+    rig.run_until(rig.chip.now_ns() + 200000);
+    EXPECT_TRUE(wire.reg(kMsr) & kNdf) << int(address);
+    EXPECT_EQ(wire.reg(kMfsr) & 7u, left) << int(address);
+    wire.set(kMcr, wire.reg(kMcr) | (1u << 8) | (1u << 9));  // Wire: reset the FIFOs, then STOP
+    wire.set(kMtdr, kCmdStop);
+    EXPECT_EQ(wire.reg(kMfsr) & 7u, 1u);
+  }
+  rig.run_until(rig.chip.now_ns() + 10000);
+  EXPECT_FALSE(wire.reg(kMsr) & kBbf) << "the STOP went out: the bus is free";
 }
 
 TEST_F(Lpi2cTest, UnexpectedUsesAreRefused) {

@@ -94,6 +94,8 @@ class FakeIo : public BoardIo {
     // 9 bit times per byte plus start/stop, as a real bus at clock_hz would take.
     wire_ns = static_cast<SimTime>((9 * (1 + write_length + (read_length ? 1 + read_length : 0)) + 2) * 1000000000LL /
                                    clock_hz);
+    const auto forced = i2c_results.find(address);
+    if (forced != i2c_results.end()) return forced->second;
     const auto device = i2c_devices.find(address);
     if (device == i2c_devices.end()) return 3;  // hal::I2cResult::kAddressNack
     for (size_t i = 0; i < read_length; ++i) read[i] = device->second[i % device->second.size()];
@@ -105,6 +107,7 @@ class FakeIo : public BoardIo {
   std::map<uint8_t, bool> pins;
   std::map<uint8_t, int64_t> encoders;
   std::map<uint8_t, std::vector<uint8_t>> i2c_devices;  ///< address → bytes it answers reads with
+  std::map<uint8_t, int> i2c_results;                    ///< address → a result to force (4 = data NACK)
   std::vector<PortFrame> frames;
   std::vector<I2cCall> i2c_calls;
 };
