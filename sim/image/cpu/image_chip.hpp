@@ -233,6 +233,7 @@ class ImageChip : public ChipContext {
   /// translation while the emulator runs breaks its chained blocks).
   void install_double_sites();
   void advance_it_state();
+  void restore_stopped_block_pc();
   static void on_double_site(uc_struct* uc, uint64_t address, uint32_t size, void* user);
 
   Scheduler& scheduler_;
@@ -294,6 +295,7 @@ class ImageChip : public ChipContext {
   std::deque<DoubleSite> double_sites_;  ///< hooked sites (stable addresses: the hooks point at them)
   std::vector<DoubleSite> new_double_sites_;  ///< found during the current run, hooked after it
   DoubleOps double_ops_;
+  uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
 };
 
 }  // namespace stepdance::sim::image

@@ -100,6 +100,14 @@ void ImageChip::on_double_site(uc_struct* uc, uint64_t, uint32_t, void* user) {
   }
 }
 
+// Once any code hook exists, unicorn no longer puts the PC back to the start of a block that the
+// block hook stopped before (qemu/accel/tcg/cpu-exec.c syncs it only without UC_HOOK_CODE): the
+// PC would be wherever a hook last wrote it. Put it there, as the run loop expects.
+void ImageChip::restore_stopped_block_pc() {
+  if (block_stop_pc_ != 0 && !double_sites_.empty()) uc_reg_write(uc_, UC_ARM_REG_PC, &block_stop_pc_);
+  block_stop_pc_ = 0;
+}
+
 // Moves the instruction's D registers, FPSCR (and APSR for VSEL) out of the emulator, executes,
 // and writes back what changed. Executing a floating-point instruction sets CONTROL.FPCA (with
 // FPCCR.ASPEN) as the hardware does, so a following exception stacks the FP context. False
