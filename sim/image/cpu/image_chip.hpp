@@ -87,6 +87,9 @@ class ImageChip : public ChipContext {
   /// thing, as Teensyduino's ResetHandler does); then the CPU runs as a scheduler event from
   /// `time_ns`. A stop (kBadImage) if nothing is loaded or the entry is outside memory.
   void power_on(SimTime time_ns);
+  /// The address the boot ROM starts the image at: the IVT's entry when the ELF's entry is the
+  /// IVT (Teensyduino's images), else the ELF's entry.
+  uint32_t boot_entry();
   /// Called once when the image stops (fault, stall, unmodelled register). Several may listen.
   void on_stop(std::function<void(const ImageStop&)> listener) { stop_listeners_.push_back(std::move(listener)); }
   bool stopped() const { return stopped_; }
