@@ -34,7 +34,21 @@ bool ImageProgram::start(SimBoard& board, std::string& error) {
     if (rates.core_hz != 0) chip_.set_core_clock_hz(rates.core_hz);
   });
   chip_.on_stop([this](const ImageStop& stop) { stopped(stop); });
+  watch_setup();
   return true;
+}
+
+// The first arrival at the sketch's setup() (its symbol, C++ mangled as the Arduino IDE links
+// it): the boot's cost in instructions and simulated time.
+void ImageProgram::watch_setup() {
+  uint32_t address = 0;
+  if (!chip_.symbols().find("_Z5setupv", address) && !chip_.symbols().find("setup", address)) return;
+  chip_.on_reach(address, [this](uint64_t instructions, SimTime time_ns) {
+    if (setup_reached_) return;
+    setup_reached_ = true;
+    instructions_to_setup_ = instructions;
+    time_to_setup_ns_ = time_ns - powered_on_ns_;
+  });
 }
 
 // The chip's blocks, each group added whole or not at all; an overlap is a bug of the models.
@@ -48,7 +62,10 @@ bool ImageProgram::add_blocks(std::string& error) {
   return false;
 }
 
-void ImageProgram::power_on(SimTime time_ns) { chip_.power_on(time_ns); }
+void ImageProgram::power_on(SimTime time_ns) {
+  powered_on_ns_ = time_ns;
+  chip_.power_on(time_ns);
+}
 
 void ImageProgram::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) { motion_->capture().pulse_arrived(port, pulse); }
 
@@ -97,7 +114,9 @@ std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
   return {{"instructions", static_cast<double>(chip_.instructions())},
           {"core_clock_hz", static_cast<double>(chip_.core_clock_hz())},
           {"frame_interrupts", static_cast<double>(frame.entries)},
-          {"frame_interrupt_instructions_mean", frame_isr_instructions()}};
+          {"frame_interrupt_instructions_mean", frame_isr_instructions()},
+          {"instructions_to_setup", setup_reached_ ? static_cast<double>(instructions_to_setup_) : -1.0},
+          {"time_to_setup_s", setup_reached_ ? to_seconds(time_to_setup_ns_) : -1.0}};
 }
 
 // ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------
