@@ -193,6 +193,7 @@ void print_report(const sim::SimulationReport& report, bool quiet, const LiveTim
                   report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
   }
   std::cout << line;
+  for (const std::string& warning : report.warnings) std::cout << warning << "\n";
   if (live.paced_ms > 0) {
     std::snprintf(line, sizeof line,
                   "pacing: simulated time behind the wall clock by %.3f ms at most, %.3f ms on average "
