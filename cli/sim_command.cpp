@@ -218,11 +218,12 @@ void print_report(const sim::SimulationReport& report, bool quiet, const LiveTim
                   report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
   }
   std::cout << line;
+  for (const std::string& warning : report.warnings) std::cout << warning << "\n";
   if (live.paced_ms > 0) {
     std::snprintf(line, sizeof line,
                   "pacing: simulated time behind the wall clock by %.3f ms at most, %.3f ms on average "
-                  "(%llu paced ms)\n",
-                  live.lag_max_ms, live.lag_mean_ms, static_cast<unsigned long long>(live.paced_ms));
+                  "(%llu paced ms); %.3f ms given up (the run went slower than the clock)\n",
+                  live.lag_max_ms, live.lag_mean_ms, static_cast<unsigned long long>(live.paced_ms), live.given_up_ms);
     std::cout << line;
   }
   for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
