@@ -4,6 +4,7 @@
 #include "decode_command.hpp"
 #include "exit_codes.hpp"
 #include "serve/serve_command.hpp"
+#include "serve/sketch_runner.hpp"
 #include "sim_command.hpp"
 #include "usage.hpp"
 #include "view/live_view_server.hpp"
@@ -22,6 +23,15 @@ int main(int argc, char** argv) {
   CLI::App& decode_command = add_decode_command(app, decode);
   ServeCommandOptions serve;
   CLI::App& serve_command = add_serve_command(app, serve);
+  // The sketch server's child (serve/sketch_runner.hpp): not for people, so not in the help.
+  serve::SketchRunnerOptions runner;
+  CLI::App& runner_command = *app.add_subcommand("run-sketch", "")->group("");
+  runner_command.add_option("--folder", runner.folder)->required();
+  runner_command.add_option("--example", runner.example)->required();
+  runner_command.add_option("--scenario", runner.scenario)->required();
+  runner_command.add_option("--watchdog-s", runner.watchdog_s);
+  runner_command.add_option("--cache", runner.cache_directory);
+  runner_command.add_flag("--unconfined", runner.unconfined);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -30,5 +40,6 @@ int main(int argc, char** argv) {
   if (sim_command.parsed()) return run_sim_command(sim);
   if (decode_command.parsed()) return run_decode_command(decode);
   if (serve_command.parsed()) return run_serve_command(serve);
+  if (runner_command.parsed()) return serve::run_sketch_runner(runner);
   return kExitBadInput;
 }

@@ -3,6 +3,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -223,6 +224,19 @@ std::unique_ptr<sim::view::ReplayRecorder> make_replay(sim::Simulation& simulati
   return replay;
 }
 
+// A --serial-link naming no board is bad input (docs/simulator.md), said before anything runs.
+bool serial_links_name_boards(const LiveOptions& live, const sim::scenario::Scenario& scenario) {
+  for (const auto& [name, path] : live.serial_links) {
+    const bool found = std::any_of(scenario.boards.begin(), scenario.boards.end(),
+                                   [&](const auto& board) { return board.name == name; });
+    if (!found) {
+      std::cerr << "--serial-link: no board named '" << name << "'\n";
+      return false;
+    }
+  }
+  return true;
+}
+
 int exit_status(const sim::SimulationReport& report) {
   if (report.sketch_stop) {
     switch (report.sketch_stop->cause) {
@@ -302,14 +316,14 @@ int run_sim_command(const SimCommandOptions& options) {
   LiveOptions live;
   uint16_t view_port = 0;
   if (!check_numbers(options, numbers) || !check_live_only(options) || !parse_live_options(options, live) ||
-      !read_view_port(options, view_port)) {
+      !read_view_port(options, view_port))
     return kExitBadInput;
-  }
   const sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario_path);
   if (!loaded.ok()) {
     std::cerr << loaded.error_text();
     return kExitBadInput;
   }
+  if (!serial_links_name_boards(live, loaded.scenario)) return kExitBadInput;
   if (options.live && !loaded.scenario.hosts.empty()) {
     std::cerr << loaded.scenario.file << ":" << loaded.scenario.hosts.front().line
               << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";

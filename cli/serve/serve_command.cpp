@@ -170,6 +170,7 @@ int run_sketch_server_command(const ServeCommandOptions& options) {
   server.port = static_cast<uint16_t>(*port);
   server.allowed_origins = options.allowed_origins;
   server.cache_directory = options.cache_directory;
+  server.unconfined = options.unconfined;
   return serve::run_sketch_server(server);
 }
 
@@ -198,6 +199,9 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
                         " (default 1)");
   add_output_folder_option(serve, options.output_directory, "simulation: ");
   add_cache_folder_option(serve, options.cache_directory, "simulation: ");
+  serve.add_flag("--unconfined", options.unconfined,
+                 "sketch server: run the pages' sketches with your rights, without the confinement docs/web.md "
+                 "describes (needed where the kernel lacks Landlock ABI 6 or seccomp)");
   return serve;
 }
 

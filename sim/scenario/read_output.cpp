@@ -67,6 +67,11 @@ void read_output(TableReader& top, ParseContext& context) {
         }
       }
     }
+    // A VCD of no ports would be written, and empty: say what it needs instead.
+    if (!vcd.empty() && output.vcd_ports.empty()) {
+      reader.error("vcd", "'vcd' (\"" + vcd + "\") records the ports 'vcd_ports' lists, and it lists none: add "
+                          "e.g. vcd_ports = [\"board:OUT_A\"] (or use --vcd FILE, which records every port)");
+    }
     reader.finish();
   }
   output.directory = context.resolve(directory);

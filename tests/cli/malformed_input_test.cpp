@@ -155,6 +155,34 @@ TEST(MalformedCommandLineTest, LiveOptionsNeedLive) {
   EXPECT_EQ(link.out, "");
 }
 
+// Found by hand (issue 38): `[output] vcd` without `vcd_ports` wrote an empty VCD.
+TEST(MalformedScenarioTest, AVcdWithoutPortsIsRefusedAtLoad) {
+  expect_refused("vcd-without-ports.toml",
+                 {{9, "'vcd' (\"wire.vcd\") records the ports 'vcd_ports' lists, and it lists none"}});
+}
+
+// Found by hand (issue 38): `decode --step X --dir X` decoded one wire as both.
+TEST(MalformedCommandLineTest, DecodeRefusesTheSameWireTwice) {
+  const std::string capture = kFixtures + "/long-pulses.vcd";
+  for (const char* names : {"--step upstream.OUT_A_STEP --dir upstream.OUT_A_STEP", "--step OUT_A_DIR --dir OUT_A_DIR"}) {
+    const CommandResult result = run("decode " + std::string(names) + " " + capture, "same_wire");
+    EXPECT_EQ(result.exit_code, 2) << names;
+    EXPECT_NE(result.err.find("--step and --dir name the same wire"), std::string::npos) << result.err;
+    EXPECT_EQ(result.out, "") << names;
+  }
+}
+
+// Found by hand (issue 38): a --serial-link naming no board exited 1; docs/simulator.md says bad input is 2.
+TEST(MalformedCommandLineTest, ASerialLinkToNoBoardIsBadInput) {
+  const std::string scratch = test_output_dir("malformed_serial_link_board");
+  const CommandResult link = run("sim --live --duration 1 --serial-link nosuch=" + scratch + "/link " +
+                                     source_path("examples/StepASketch"),
+                                 "serial_link_board");
+  EXPECT_EQ(link.exit_code, 2);
+  EXPECT_EQ(link.err, "--serial-link: no board named 'nosuch'\n");
+  EXPECT_EQ(link.out, "");
+}
+
 // Found by hand (issue 27): `--out ""` wrote into the example's own folder (an empty option was
 // taken as no option), and --serial-link deleted the file it was given to make a symlink.
 TEST(MalformedCommandLineTest, EmptyPathsAndFilesInTheWayOfALinkAreRefused) {

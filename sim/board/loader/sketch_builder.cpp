@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "board/abi/board_abi.h"
@@ -106,6 +107,13 @@ std::string SketchBuilder::default_cache_dir() {
   const std::string home = env_or_empty("HOME");
   if (!home.empty()) return home + "/.cache/stepdance/sketches";
   return toolchain::kFallbackCacheDir;
+}
+
+std::vector<std::string> SketchBuilder::toolchain_paths() {
+  std::vector<std::string> paths(std::begin(toolchain::kIncludeDirs), std::end(toolchain::kIncludeDirs));
+  paths.emplace_back(toolchain::kRuntimeLibrary);
+  paths.emplace_back(toolchain::kExportMap);
+  return paths;
 }
 
 std::string SketchBuilder::cache_key(const SketchSources& sources) const {

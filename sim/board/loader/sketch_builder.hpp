@@ -39,6 +39,9 @@ class SketchBuilder : public BoardSource {
   /// $STEPDANCE_SKETCH_CACHE, else $XDG_CACHE_HOME/stepdance/sketches, else
   /// $HOME/.cache/stepdance/sketches, else the build tree's sketch-cache/.
   static std::string default_cache_dir();
+  /// The files and folders a build reads besides the sketch and the system's: the include
+  /// folders, the runtime library and the export map (a confined build may read only these).
+  static std::vector<std::string> toolchain_paths();
   const std::string& cache_dir() const { return cache_dir_; }
 
  private:
