@@ -4,6 +4,7 @@
 #include "decode_command.hpp"
 #include "exit_codes.hpp"
 #include "serve/serve_command.hpp"
+#include "serve/board_runner.hpp"
 #include "serve/sketch_runner.hpp"
 #include "sim_command.hpp"
 #include "usage.hpp"
@@ -32,6 +33,14 @@ int main(int argc, char** argv) {
   runner_command.add_option("--watchdog-s", runner.watchdog_s);
   runner_command.add_option("--cache", runner.cache_directory);
   runner_command.add_flag("--unconfined", runner.unconfined);
+  // `stepdance serve <scenario>`'s board child (serve/board_runner.hpp), not in the help either.
+  serve::BoardRunnerOptions board_runner;
+  CLI::App& board_command = *app.add_subcommand("run-board", "")->group("");
+  board_command.add_option("--scenario", board_runner.scenario)->required();
+  board_command.add_option("--board", board_runner.board);
+  board_command.add_option("--speed", board_runner.speed);
+  board_command.add_option("--out", board_runner.output_directory);
+  board_command.add_option("--cache", board_runner.cache_directory);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -41,5 +50,6 @@ int main(int argc, char** argv) {
   if (decode_command.parsed()) return run_decode_command(decode);
   if (serve_command.parsed()) return run_serve_command(serve);
   if (runner_command.parsed()) return serve::run_sketch_runner(runner);
+  if (board_command.parsed()) return serve::run_board_runner(board_runner);
   return kExitBadInput;
 }

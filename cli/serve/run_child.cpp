@@ -25,7 +25,7 @@ constexpr int kChildChannelFd = 3;
   } else if (dup2(channel, kChildChannelFd) < 0) {
     _exit(127);
   }
-  if (dup2(log, STDOUT_FILENO) < 0 || dup2(log, STDERR_FILENO) < 0) _exit(127);
+  if (log >= 0 && (dup2(log, STDOUT_FILENO) < 0 || dup2(log, STDERR_FILENO) < 0)) _exit(127);
   const int null_in = open("/dev/null", O_RDONLY);
   if (null_in >= 0) dup2(null_in, STDIN_FILENO);
   for (int fd = kChildChannelFd + 1; fd < 1024; ++fd) close(fd);
@@ -45,8 +45,8 @@ RunChild::RunChild(const std::vector<std::string>& arguments, const std::string&
   if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0) {
     throw std::runtime_error(std::string("cannot make the run's socket: ") + std::strerror(errno));
   }
-  const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0600);
-  pid_ = log < 0 ? -1 : fork();
+  const int log = log_path.empty() ? -1 : open(log_path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0600);
+  pid_ = log < 0 && !log_path.empty() ? -1 : fork();
   if (pid_ == 0) become_runner(argv.data(), ends[1], log);
   const int error = errno;
   if (log >= 0) close(log);

@@ -13,7 +13,7 @@ namespace stepdance::cli::serve {
 class RunChild {
  public:
   /// Starts this program (/proc/self/exe) with `arguments` (after argv[0]) in a new process
-  /// group, its stdout and stderr appended to `log_path`, file descriptor 3 a socket whose
+  /// group, its stdout and stderr appended to `log_path` ("": this process's own), file descriptor 3 a socket whose
   /// other end channel_fd() is. Throws std::runtime_error when it cannot.
   RunChild(const std::vector<std::string>& arguments, const std::string& log_path);
   /// end().
