@@ -207,6 +207,22 @@ bool SketchBuilder::store(const std::string& sources_key, const std::string& ste
 }
 
 SketchBuild SketchBuilder::build(const std::string& sketch) const {
+  {
+    const std::lock_guard<std::mutex> lock(built_mutex_);
+    const auto found = built_.find(sketch);
+    if (found != built_.end()) return found->second;
+  }
+  SketchBuild result = build_once(sketch);
+  if (!result.ok) return result;
+  SketchBuild again = result;
+  again.from_cache = true;
+  again.diagnostics.clear();  // its warnings were given with the first board
+  const std::lock_guard<std::mutex> lock(built_mutex_);
+  built_.emplace(sketch, std::move(again));
+  return result;
+}
+
+SketchBuild SketchBuilder::build_once(const std::string& sketch) const {
   SketchBuild result;
   SketchSources sources;
   if (!find_sketch_sources(sketch, sources, result.error)) return result;
