@@ -163,8 +163,14 @@ std::vector<std::string> output_conflicts(const std::vector<PlannedOutput>& outp
                                           const std::vector<RunInput>& inputs) {
   std::vector<ResolvedPath> output_paths;
   for (const PlannedOutput& output : outputs) output_paths.push_back(resolve(output.path));
+  // Every board lists the ~470 files its build read, mostly the same ones: each resolved once.
+  std::map<std::string, ResolvedPath> resolved_inputs;
   std::vector<ResolvedPath> input_paths;
-  for (const RunInput& input : inputs) input_paths.push_back(resolve(input.path));
+  for (const RunInput& input : inputs) {
+    auto found = resolved_inputs.find(input.path);
+    if (found == resolved_inputs.end()) found = resolved_inputs.emplace(input.path, resolve(input.path)).first;
+    input_paths.push_back(found->second);
+  }
   const std::vector<std::vector<size_t>> partners = related_pairs(output_paths);
   const PathIndex input_index(input_paths);
   std::vector<std::string> conflicts;
