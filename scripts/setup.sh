@@ -18,6 +18,7 @@ packages=(
   prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)
   python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests
   bcnc  # a real Grbl sender driving the live simulator (tests/cli/live/bcnc_sender_test.py)
+  libseccomp-dev  # seccomp filters confining the sketch server's runs (docs/web.md)
   libboost-dev  # Boost.Beast and Asio (header-only): HTTP and WebSocket for `stepdance serve`
   chromium chromium-driver python3-selenium  # the web control page tested in headless Chromium
 )

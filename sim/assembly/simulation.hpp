@@ -52,6 +52,8 @@ struct SimulationOptions {
   std::optional<std::string> output_directory;
   /// False skips the VCD even if the scenario asks for one.
   bool write_vcd = true;
+  /// A run whose VCD could pass this many bytes (vcd_size.hpp's estimate) is refused at create().
+  uint64_t vcd_max_bytes = 1000ull * 1000 * 1000;
   /// A live run: Ctrl-C or SIGTERM end it normally (expectations are checked) instead of cutting
   /// it short.
   bool live = false;
