@@ -13,6 +13,7 @@ packages=(
   libunicorn-dev  # unicorn: the Cortex-M7 that runs firmware images in the simulator (sim/image)
   libre2-dev  # RE2: scenario reply patterns matched in time linear in the line
   clang  # libFuzzer targets (scripts/fuzz.sh)
+  time  # /usr/bin/time: CPU seconds in bench/image_board_speed.sh
   universal-ctags  # function lengths for the structure check (scripts/check-function-length.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
   prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)
