@@ -101,7 +101,7 @@ TEST(ImageChipIrq, AThreadOnTheProcessStackStacksThereAndReturnsThere) {
 // for, and every double-precision instruction was then undefined.
 TEST(ImageChipIrq, TheFpuDoesDoublePrecision) {
   IrqFixture f;
-  ASSERT_TRUE(f.boot_with_device("fpu_double"));
+  ASSERT_TRUE(f.boot_with_device("fpu_double_m7"));
   f.run_until(10 * kMicrosecond);
   const std::vector<uint32_t> values{0x400E0000, 0x40700000};  // 3.75: double's high word, float
   EXPECT_EQ(f.device->values(), values);
