@@ -10,6 +10,10 @@ namespace {
 
 /// Exception number of an interrupt (ARMv7-M B1.5.2: 16 + IRQ).
 constexpr unsigned exception_of_irq(unsigned irq) { return 16 + irq; }
+/// The Teensy backend's frame: FLEXIO3's tick interrupt (IRQ 156) pends IRQ 155, an interrupt the
+/// chip leaves unused, whose handler runs the frame's stages (src/stepdance/platform/teensy/
+/// regs_nvic.hpp, kIrqReservedForFrame). The frame's cost is both handlers' instructions.
+constexpr unsigned kFrameStagesIrq = 155;
 
 }  // namespace
 
@@ -63,8 +67,14 @@ void ImageProgram::stopped(const ImageStop& stop) {
   if (stop_listener_) stop_listener_(report);
 }
 
+ImageChip::HandlerCost ImageProgram::frame_cost() const {
+  const ImageChip::HandlerCost tick = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost stages = chip_.handler_cost(exception_of_irq(kFrameStagesIrq));
+  return {tick.entries, tick.instructions + stages.instructions};
+}
+
 double ImageProgram::frame_isr_instructions() const {
-  const ImageChip::HandlerCost cost = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost cost = frame_cost();
   return cost.entries == 0 ? 0.0 : static_cast<double>(cost.instructions) / static_cast<double>(cost.entries);
 }
 
@@ -72,7 +82,7 @@ double ImageProgram::frame_isr_instructions() const {
 // frame's cycles at the core clock (one instruction per cycle).
 StepdanceBoardStatsV1 ImageProgram::stats() const {
   StepdanceBoardStatsV1 stats{};
-  const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost frame = frame_cost();
   stats.frames = static_cast<uint32_t>(frame.entries);
   stats.fault_name = "";
   stats.fault_detail = "";
@@ -83,7 +93,7 @@ StepdanceBoardStatsV1 ImageProgram::stats() const {
 }
 
 std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
-  const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost frame = frame_cost();
   return {{"instructions", static_cast<double>(chip_.instructions())},
           {"core_clock_hz", static_cast<double>(chip_.core_clock_hz())},
           {"frame_interrupts", static_cast<double>(frame.entries)},
@@ -96,7 +106,14 @@ void ImageProgram::pin_config(SimTime, uint8_t pin, PinConfig config) { board_->
 
 void ImageProgram::pin_drive(SimTime, uint8_t pin, bool high) { board_->write_pin(pin, high); }
 
-bool ImageProgram::pin_level(SimTime, uint8_t pin) { return board_->pin_level(pin); }
+// An input port's DIR pin carries what the cable's last pulse left on it (the capture model
+// knows); every other pin is the board's.
+bool ImageProgram::pin_level(SimTime now_ns, uint8_t pin) {
+  for (uint8_t port = 0; port < kMaxBoardPorts; ++port) {
+    if (InputCapture::dir_pin(port) == pin) return motion_->capture().dir_line(port, now_ns);
+  }
+  return board_->pin_level(pin);
+}
 
 void ImageProgram::port_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
   board_->play_frame(port, start_ns, words, frame_ns);

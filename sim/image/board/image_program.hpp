@@ -58,6 +58,8 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   size_t serial_to_device(SimTime now_ns, uint8_t* data, size_t capacity) override;
 
   bool add_blocks(std::string& error);
+  /// The frame interrupts (tick entries) and the instructions of the tick and stage handlers.
+  ImageChip::HandlerCost frame_cost() const;
   void stopped(const ImageStop& stop);
 
   TeensyModel model_;

@@ -81,6 +81,10 @@ void InputCapture::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) {
   }
 }
 
+uint8_t InputCapture::dir_pin(uint8_t port) {
+  return port < kDriverModuleV1.input_port_count ? kDriverModuleV1.input_ports[port].dir : kNoPin;
+}
+
 bool InputCapture::dir_line(uint8_t port, SimTime now_ns) const {
   if (port >= 4 || !any_[port]) return false;
   return now_ns < latest_[port].fall_ns ? latest_[port].dir_at_rise : latest_[port].dir_at_fall;

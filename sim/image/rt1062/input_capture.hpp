@@ -38,6 +38,8 @@ class InputCapture {
   /// pulse). For the board's GPIO side, whose DIR pin the backend reads in its capture ISR.
   /// Context: any.
   bool dir_line(uint8_t port, SimTime now_ns) const;
+  /// The Teensy pin of input port `port`'s DIR line (board table), or 255. Context: any.
+  static uint8_t dir_pin(uint8_t port);
   /// Edges that did not reach a capture input because the pad was not routed to it. Context: any.
   uint64_t unrouted_edges() const { return unrouted_; }
 

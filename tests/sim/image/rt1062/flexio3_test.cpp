@@ -106,6 +106,18 @@ TEST_F(Flexio3Test, ResetValuesAndReservedBitsFollowTheManual) {
   EXPECT_EQ(rig.read32(timcmp(2)), 0x1234u);  // CMP is bits 15:0
   ASSERT_TRUE(rig.write(kCtrl, 0x3FFFFFF8u));  // only reserved bits
   EXPECT_EQ(rig.read32(kCtrl), 0u);
+  // SHIFTCTL: TIMSEL 26:24, TIMPOL 23, PINCFG 17:16, PINSEL 12:8, PINPOL 7, SMOD 2:0; the rest reserved.
+  ASSERT_TRUE(rig.write(shiftctl(0), transmitter(0, kStepPinA) | 0xF87CE078u));
+  EXPECT_EQ(rig.read32(shiftctl(0)), transmitter(0, kStepPinA));
+}
+
+TEST_F(Flexio3Test, ShifterPinSelectHasFiveBits) {
+  // SHIFTCTL PINSEL is bits 12:8 (RM §50.5.1.19): FlexIO3 pin 19 (Teensy 4.1 pin 37, port C's
+  // STEP on a Driver Module) reads back whole. A 4-bit mask once sent port C's STEP to pin 3.
+  const uint32_t step_c = transmitter(2, 19);
+  ASSERT_EQ((step_c >> 8) & 0x1Fu, 19u);
+  ASSERT_TRUE(rig.write(shiftctl(2), step_c));
+  EXPECT_EQ(rig.read32(shiftctl(2)), step_c);
 }
 
 TEST_F(Flexio3Test, SoftwareResetClearsEverythingButCtrl) {
@@ -244,6 +256,15 @@ TEST(Flexio3Teensy40, PortsCAndDHaveNoFlexio3PadsOnTheTeensy40) {
   // Port C STEP is Teensy 37 = GPIO_B1_03 → FLEXIO3 19 on the 4.1; the 4.0's pin 37 is an SD pad.
   EXPECT_FALSE(rig.write(shiftctl(2), transmitter(2, 19)));
   EXPECT_TRUE(rig.write(shiftctl(0), transmitter(0, kStepPinA)));
+}
+
+TEST_F(Flexio3Test, PortsCAndDAreOnB1PadsOfTheTeensy41) {
+  // Port C STEP 37 = B1_03 → FLEXIO3 19, DIR 36 = B1_02 → 18; port D STEP 35 = B1_12 → 28,
+  // DIR 34 = B1_13 → 29 (RM §11.7 ALT9).
+  EXPECT_TRUE(rig.write(shiftctl(2), transmitter(2, 19)));
+  EXPECT_TRUE(rig.write(shiftctl(6), transmitter(2, 18)));
+  EXPECT_TRUE(rig.write(shiftctl(3), transmitter(3, 28)));
+  EXPECT_TRUE(rig.write(shiftctl(7), transmitter(3, 29)));
 }
 
 }  // namespace

@@ -52,18 +52,32 @@ class BackendFrames : public ::testing::Test {
  protected:
   void SetUp() override {
     backend_rig::reset();
-    static const bool begun = hal::port_out_begin(0) == Status::kOk;
-    ASSERT_TRUE(begun) << "port A claimed on FLEXIO3";
+    // All four output ports: their shifters' FLEXIO3 pins must reach ports A–D (pads 23/22,
+    // 21/20 on AD_B1, 37/36 and 35/34 on B1).
+    static const bool begun = hal::port_out_begin(0) == Status::kOk && hal::port_out_begin(1) == Status::kOk &&
+                              hal::port_out_begin(2) == Status::kOk && hal::port_out_begin(3) == Status::kOk;
+    ASSERT_TRUE(begun) << "ports A–D claimed on FLEXIO3";
     script = Script{};
     before_ = teensy::frame_diagnostics();
   }
   void TearDown() override { teensy::frame_timer_stop(); }
-  // Frames launched with any bit set.
+  // The frames launched on `port`.
+  static std::vector<stepdance::sim::image::testing::PortFrame> frames_of(uint8_t port) {
+    std::vector<stepdance::sim::image::testing::PortFrame> frames;
+    for (const auto& frame : backend_rig::world().io.frames) {
+      if (frame.port == port) frames.push_back(frame);
+    }
+    return frames;
+  }
+  // Indices of port A's frames with any bit set, and whether any other port had one.
   std::vector<size_t> busy_frames() const {
     std::vector<size_t> busy;
-    const auto& frames = backend_rig::world().io.frames;
+    const auto frames = frames_of(0);
     for (size_t i = 0; i < frames.size(); ++i) {
       if (frames[i].words.step_bits != 0 || frames[i].words.dir_bits != 0) busy.push_back(i);
+    }
+    for (const auto& frame : backend_rig::world().io.frames) {
+      if (frame.port != 0 && (frame.words.step_bits != 0 || frame.words.dir_bits != 0)) busy.push_back(999);
     }
     return busy;
   }
@@ -75,12 +89,16 @@ TEST_F(BackendFrames, TheFrameClockTicksEvery40MicrosecondsAndAStepLeavesAtTheNe
   const uint64_t ticks_before = backend_rig::taken(kTickIrq);
   ASSERT_EQ(hal::frame_timer_start(40, on_frame), Status::kOk) << "the first tick must arrive";
   backend_rig::idle_for(10 * kPeriodNs);
-  const auto& frames = backend_rig::world().io.frames;
+  const auto frames = frames_of(0);
   ASSERT_GE(frames.size(), 10u);
   for (size_t i = 1; i < frames.size(); ++i) {
     EXPECT_EQ(frames[i].start_ns - frames[i - 1].start_ns, kPeriodNs) << i;
-    EXPECT_EQ(frames[i].port, 0u);
     EXPECT_EQ(frames[i].frame_ns, kPeriodNs);
+  }
+  for (uint8_t port = 1; port < 4; ++port) {  // every port launches at the same ticks
+    const auto others = frames_of(port);
+    ASSERT_EQ(others.size(), frames.size()) << int(port);
+    EXPECT_EQ(others.back().start_ns, frames.back().start_ns) << int(port);
   }
   // One tick ISR and one frame ISR per launch, each frame ISR within a microsecond of its tick.
   EXPECT_EQ(backend_rig::taken(kTickIrq) - ticks_before, frames.size());
