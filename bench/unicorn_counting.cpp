@@ -32,7 +32,7 @@ void on_instruction(uc_engine* uc, uint64_t, uint32_t, void* user) {
 
 uc_engine* open_loop() {
   uc_engine* uc = nullptr;
-  uc_open(UC_ARCH_ARM, static_cast<uc_mode>(UC_MODE_THUMB | UC_MODE_MCLASS), &uc);
+  uc_open(UC_ARCH_ARM, UC_MODE_THUMB, &uc);  // as ImageChip opens it (no MCLASS: see image_chip.cpp)
   uc_ctl_set_cpu_model(uc, UC_CPU_ARM_CORTEX_M7);
   uc_mem_map(uc, 0, 0x10000, UC_PROT_ALL);
   // 0x100: adds r1,#1 (×9); b 0x100

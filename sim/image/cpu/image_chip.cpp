@@ -28,7 +28,11 @@ ImageChip::ImageChip(Scheduler& scheduler, TeensyModel model)
     : scheduler_(scheduler),
       model_(model),
       flash_bytes_(model == TeensyModel::kTeensy41 ? 8u << 20 : 2u << 20) {
-  if (uc_open(UC_ARCH_ARM, static_cast<uc_mode>(UC_MODE_THUMB | UC_MODE_MCLASS), &uc_) != UC_ERR_OK) {
+  // Thumb only, not UC_MODE_MCLASS: unicorn 2.0.1 forces a Cortex-M33 (single-precision FPU,
+  // so every double-precision instruction is undefined) on any engine opened with MCLASS,
+  // whatever model uc_ctl_set_cpu_model asks for (qemu/target/arm/cpu.c, cpu_arm_init). The M7
+  // model is M-profile by its own features.
+  if (uc_open(UC_ARCH_ARM, UC_MODE_THUMB, &uc_) != UC_ERR_OK) {
     throw std::runtime_error("unicorn: cannot open an ARM M-profile engine");
   }
   if (uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_CORTEX_M7) != UC_ERR_OK) {

@@ -121,9 +121,11 @@ class ImageChip : public ChipContext {
   /// The system-space state (for tests and reports).
   const CoreRegisters& core_registers() const { return core_; }
   ExceptionState& exceptions() { return exceptions_; }
-  /// Double-precision FPU instructions run in software (vfp_hooks.cpp: the emulator has no
-  /// double-precision unit): all of them, those that took the slow path (a site's first run, an
-  /// instruction inside an IT block: one emulator restart each), and the sites hooked.
+  /// Double-precision FPU instructions run in software by vfp_hooks.cpp: all of them, those that
+  /// took the slow path (a site's first run, an instruction inside an IT block: one emulator
+  /// restart each), and the sites hooked. Since the engine is a real Cortex-M7 (FPv5-D16;
+  /// image_chip.cpp), its FPU runs doubles itself and these stay 0: the software path is only
+  /// taken for a double instruction the emulator reports as undefined.
   struct DoubleOps {
     uint64_t executed = 0;
     uint64_t slow = 0;
