@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "board/host/entry_monitor.hpp"
+#include "live_pacer.hpp"
 #include "pty_port.hpp"
 
 namespace stepdance::cli {
@@ -39,13 +40,6 @@ double sleep_until(std::chrono::steady_clock::time_point due, LiveView* view) {
   }
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
-
-/// Where the wall clock and simulated time were last tied together, and at which speed.
-struct PacingAnchor {
-  std::chrono::steady_clock::time_point wall;
-  sim::SimTime simulated = 0;
-  double speed = 1.0;
-};
 
 // Waits while a page has the run paused (serving the pages); true if it waited.
 bool wait_while_paused(LiveView* view) {
@@ -104,7 +98,8 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
   }
   std::fflush(stdout);
   const auto wall_start = std::chrono::steady_clock::now();
-  PacingAnchor anchor{wall_start, simulation.now(), options.speed};
+  LivePacer pacer;
+  pacer.anchor(wall_start, simulation.now(), options.speed);
   double slept_s = 0;
   LiveTiming timing;
   double lag_total_ms = 0;
@@ -119,18 +114,17 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
       const auto resumed_at = std::chrono::steady_clock::now();
       if (paused) slept_s += std::chrono::duration<double>(resumed_at - paused_at).count();
       // After a pause or at a new speed the run is paced from here on, not from the start.
-      if (paused || view->control().speed != anchor.speed) anchor = {resumed_at, now, view->control().speed};
+      if (paused || view->control().speed != pacer.speed()) pacer.anchor(resumed_at, now, view->control().speed);
     }
-    if (anchor.speed <= 0.0) return;
-    const double due_s = sim::to_seconds(now - anchor.simulated) / anchor.speed;
-    const double lag_ms =
-        1e3 * std::max(0.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - anchor.wall).count() - due_s);
+    if (pacer.speed() <= 0.0) return;
+    // Late by more than the catch-up limit, the run gives the time up rather than racing the
+    // sender on the other end of the terminal (LivePacer).
+    const LivePacer::Due due = pacer.due(now, std::chrono::steady_clock::now());
     ++timing.paced_ms;
-    lag_total_ms += lag_ms;
-    timing.lag_max_ms = std::max(timing.lag_max_ms, lag_ms);
-    slept_s += sleep_until(anchor.wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                             std::chrono::duration<double>(due_s)),
-                           view);
+    lag_total_ms += due.lag_ms;
+    timing.lag_max_ms = std::max(timing.lag_max_ms, due.lag_ms);
+    timing.given_up_ms += due.given_up_ms;
+    slept_s += sleep_until(due.wall, view);
   });
   exchange(links);
   while (!stop_requested() && simulation.now() < simulation.duration() && !simulation.stopped()) {

@@ -32,7 +32,8 @@ struct BlockAccess;
 /// One i.MX RT1062 core running one firmware image.
 ///
 /// Memory map (IMXRT1060RM rev 3, 2.2 "memory map"): FlexSPI flash at 0x60000000 (2 MB on a
-/// Teensy 4.0, 8 MB on a 4.1; read and execute only), ITCM at 0x00000000 (512 KB), DTCM at
+/// Teensy 4.0, 8 MB on a 4.1; read and execute only; erased, 0xFF, where the image does not
+/// fill it), ITCM at 0x00000000 (512 KB), DTCM at
 /// 0x20000000 (512 KB), OCRAM at 0x20200000 (1 MB: OCRAM2 and the FlexRAM's OCRAM banks) — the
 /// FlexRAM's largest sizes, whatever IOMUXC_GPR14/16/17 say. Peripherals (0x40000000–0x7FFFFFFF
 /// outside the flash) reach bus(); the Cortex-M7's system space (0xE0000000–0xE00FFFFF) reaches
@@ -86,6 +87,9 @@ class ImageChip : public ChipContext {
   /// thing, as Teensyduino's ResetHandler does); then the CPU runs as a scheduler event from
   /// `time_ns`. A stop (kBadImage) if nothing is loaded or the entry is outside memory.
   void power_on(SimTime time_ns);
+  /// The address the boot ROM starts the image at: the IVT's entry when the ELF's entry is the
+  /// IVT (Teensyduino's images), else the ELF's entry.
+  uint32_t boot_entry();
   /// Called once when the image stops (fault, stall, unmodelled register). Several may listen.
   void on_stop(std::function<void(const ImageStop&)> listener) { stop_listeners_.push_back(std::move(listener)); }
   bool stopped() const { return stopped_; }
