@@ -70,9 +70,10 @@ void ImageChip::advance_it_state() {
 
 // The site's instruction becomes NOP.W (ARMv7-M A7.7.88, T2: 0xF3AF 0x8000) in the emulator's
 // memory and its code hook executes the double-precision operation just before it: the block
-// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself. (Writing
-// the PC from a hook instead leaves unicorn 2.0.1 a stop request that the next register access
-// turns into a restart of its block, with the block's earlier stores and pushes already done.)
+// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself, inside
+// an IT block too. (A hook that writes PC = address + 4 instead ends the block at every site and
+// sends the emulator round its loop; the restarted block once blamed on it was the stale PC that
+// restore_stopped_block_pc() fixes.)
 void ImageChip::hook_double_site(const DoubleSite& site) {
   double_sites_.push_back(site);
   uc_hook hook;
