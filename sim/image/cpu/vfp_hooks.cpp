@@ -2,22 +2,23 @@
 //
 // Debian's unicorn 2.0.1 models the Cortex-M7's FPU as single precision only: a double-precision
 // data-processing instruction is undefined to it. The first time one is reached (the emulator
-// reports an invalid instruction with the PC on it), it is executed here (vfp_double.cpp), the
-// PC moves past it, and its address gets a code hook of its own: from then on the hook executes
-// it and writes PC = address + 4, which ends the translation block before the undefined
-// instruction (about 0.1 µs instead of an emulator restart, ~30 µs). The stale translation is
-// dropped so the next one calls the hook.
+// reports an invalid instruction with the PC on it), it is executed here (vfp_double.cpp),
+// ITSTATE is advanced if it sits in an IT block (written through CPSR, which the emulator
+// honours), and the PC moves past it; that ends the run (an emulator restart, ~30 µs). Before
+// the next run the site becomes NOP.W in the emulator's memory with a code hook of its own that
+// executes the double-precision operation: from then on the block runs straight through
+// (~0.3 µs per operation, docs/simulator.md).
 //
-// Counting: an undefined instruction ends its translation block, so it is the block's last
-// instruction; the block hook counted it with the block, and whether it runs here or in the code
-// hook the block ends there and the next block starts after it. Each runs once, counted once.
+// Counting: the first time, the undefined instruction ends its translation block and the block
+// hook counted it with the block; afterwards it is a NOP.W inside its block. Each run of the
+// instruction is counted once.
 //
 // IT blocks: the emulator skips a conditional instruction whose condition fails before calling
-// a code hook or reaching the undefined instruction, so reaching either means the condition
-// passed. But inside an IT block unicorn neither ends the block at a hook nor lets the hook's
-// PC write stand (the undefined instruction still runs and puts the PC back), so an instruction
-// in an IT block takes the slow path every time: executed at the invalid-instruction report,
-// ITSTATE advanced (written through CPSR, which the emulator honours), PC moved past it.
+// its code hook or reaching the undefined instruction, so reaching either means the condition
+// passed; the NOP.W then advances ITSTATE as any instruction does.
+//
+// With any code hook installed, unicorn no longer puts the PC back at the start of a block the
+// block hook stopped the run before (restore_stopped_block_pc() does).
 #include <unicorn/unicorn.h>
 
 #include "image/cpu/image_chip.hpp"
@@ -28,10 +29,10 @@ namespace {
 
 constexpr uint32_t kControlNpriv = 1u << 0, kControlFpca = 1u << 2;
 /// Whether sites get code hooks after their first run (fast) or take the invalid-instruction
-/// path every time (about 30 µs each). Off until a fault is understood: with the hooks,
-/// Step-A-Sketch's image restarts a block of micros() after its push (SP off by 8, r5 lost) at
-/// 0.6 ms; without them it runs on (issue 37's notes).
-constexpr bool kHookDoubleSites = false;
+/// path every time (about 30 µs each). The fault the hooks once caused in Step-A-Sketch's image
+/// (a block of micros() restarted after its push) was the stale PC restore_stopped_block_pc()
+/// fixes.
+constexpr bool kHookDoubleSites = true;
 constexpr uint32_t kFpccrAspen = 1u << 31;
 /// ITSTATE in xPSR/CPSR: IT[1:0] at bits 26:25, IT[7:2] at bits 15:10 (ARMv7-M ARM B1.4.2).
 constexpr uint32_t kItMask = (3u << 25) | (0x3Fu << 10);
@@ -69,9 +70,10 @@ void ImageChip::advance_it_state() {
 
 // The site's instruction becomes NOP.W (ARMv7-M A7.7.88, T2: 0xF3AF 0x8000) in the emulator's
 // memory and its code hook executes the double-precision operation just before it: the block
-// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself. (Writing
-// the PC from a hook instead leaves unicorn 2.0.1 a stop request that the next register access
-// turns into a restart of its block, with the block's earlier stores and pushes already done.)
+// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself, inside
+// an IT block too. (A hook that writes PC = address + 4 instead ends the block at every site and
+// sends the emulator round its loop; the restarted block once blamed on it was the stale PC that
+// restore_stopped_block_pc() fixes.)
 void ImageChip::hook_double_site(const DoubleSite& site) {
   double_sites_.push_back(site);
   uc_hook hook;
@@ -102,7 +104,8 @@ void ImageChip::on_double_site(uc_struct* uc, uint64_t, uint32_t, void* user) {
 
 // Once any code hook exists, unicorn no longer puts the PC back to the start of a block that the
 // block hook stopped before (qemu/accel/tcg/cpu-exec.c syncs it only without UC_HOOK_CODE): the
-// PC would be wherever a hook last wrote it. Put it there, as the run loop expects.
+// PC would be wherever it was last synchronised (a hooked instruction, a register access), and
+// the next run would repeat instructions already done. Put it there, as the run loop expects.
 void ImageChip::restore_stopped_block_pc() {
   if (block_stop_pc_ != 0 && !double_sites_.empty()) uc_reg_write(uc_, UC_ARM_REG_PC, &block_stop_pc_);
   block_stop_pc_ = 0;

@@ -47,3 +47,21 @@ TEST(ImageChipDouble, AnInterruptThatUsesDoublesLeavesTheThreadsResults) {
 
 }  // namespace
 }  // namespace stepdance::sim::image::testing
+
+namespace stepdance::sim::image::testing {
+namespace {
+
+TEST(ImageChipDouble, ADoubleInstructionWithTheFpuOffIsANocpUsageFault) {
+  Fixture f;
+  ASSERT_TRUE(f.boot("fpu_double_nocp"));
+  f.scheduler.run_until(1 * kMillisecond);
+  ASSERT_EQ(f.stops.size(), 1u);
+  EXPECT_EQ(f.stops[0].kind, ImageStop::Kind::kUsageFault);
+  EXPECT_NE(f.stops[0].what.find("coprocessor"), std::string::npos) << f.stops[0].what;
+  EXPECT_EQ(f.stops[0].pc, f.address_of("nocp_here"));
+  EXPECT_EQ(f.chip->core_registers().cfsr & ((1u << 19) | (1u << 16)), 1u << 19);  // NOCP, not UNDEFINSTR
+  EXPECT_EQ(f.chip->double_ops().executed, 1u);  // the first VMOV.F64 only
+}
+
+}  // namespace
+}  // namespace stepdance::sim::image::testing
