@@ -275,6 +275,8 @@ class ImageChip : public ChipContext {
   bool recheck_ = false;       ///< something was pended or unmasked: take it at the next block
   bool we_stopped_ = false;    ///< the last emulator return was our own uc_emu_stop
   bool yielded_ = false;       ///< … or a YIELD hint: run on
+  bool block_stop_ = false;    ///< the block hook stopped the run before the block at block_stop_pc_
+  uint32_t block_stop_pc_ = 0; ///< … whose start the PC is set to after the run (cpu_run.cpp)
   uint64_t slept_ = 0;         ///< cycles spent asleep (WFI, WFE)
   bool asleep_ = false;        ///< in WFI/WFE: no event queued until something pends
   bool check_masks_ = false;   ///< something pending is masked: re-check at every block

@@ -2,22 +2,21 @@
 //
 // Debian's unicorn 2.0.1 models the Cortex-M7's FPU as single precision only: a double-precision
 // data-processing instruction is undefined to it. The first time one is reached (the emulator
-// reports an invalid instruction with the PC on it), it is executed here (vfp_double.cpp), the
-// PC moves past it, and its address gets a code hook of its own: from then on the hook executes
-// it and writes PC = address + 4, which ends the translation block before the undefined
-// instruction (about 0.1 µs instead of an emulator restart, ~30 µs). The stale translation is
-// dropped so the next one calls the hook.
+// reports an invalid instruction with the PC on it), it is executed here (vfp_double.cpp) and the
+// PC moves past it (an emulator restart, ~30 µs). Between runs its site then becomes NOP.W with a
+// code hook that executes the operation just before the NOP runs (~0.1 µs, no restart).
+//
+// A code hook changes how unicorn 2.0.1 stops: with any UC_HOOK_CODE registered it no longer puts
+// the PC back to the start of a block stopped by the block hook, so run_slice() does (cpu_run.cpp).
 //
 // Counting: an undefined instruction ends its translation block, so it is the block's last
-// instruction; the block hook counted it with the block, and whether it runs here or in the code
-// hook the block ends there and the next block starts after it. Each runs once, counted once.
+// instruction; the block hook counted it with the block. As NOP.W it is one instruction of its
+// block like any other. Each runs once, counted once.
 //
 // IT blocks: the emulator skips a conditional instruction whose condition fails before calling
 // a code hook or reaching the undefined instruction, so reaching either means the condition
-// passed. But inside an IT block unicorn neither ends the block at a hook nor lets the hook's
-// PC write stand (the undefined instruction still runs and puts the PC back), so an instruction
-// in an IT block takes the slow path every time: executed at the invalid-instruction report,
-// ITSTATE advanced (written through CPSR, which the emulator honours), PC moved past it.
+// passed. On the slow path ITSTATE is advanced here (written through CPSR, which the emulator
+// honours); as NOP.W the CPU advances it itself.
 #include <unicorn/unicorn.h>
 
 #include "image/cpu/image_chip.hpp"
@@ -28,10 +27,8 @@ namespace {
 
 constexpr uint32_t kControlNpriv = 1u << 0, kControlFpca = 1u << 2;
 /// Whether sites get code hooks after their first run (fast) or take the invalid-instruction
-/// path every time (about 30 µs each). Off until a fault is understood: with the hooks,
-/// Step-A-Sketch's image restarts a block of micros() after its push (SP off by 8, r5 lost) at
-/// 0.6 ms; without them it runs on (issue 37's notes).
-constexpr bool kHookDoubleSites = false;
+/// path every time (about 30 µs each).
+constexpr bool kHookDoubleSites = true;
 constexpr uint32_t kFpccrAspen = 1u << 31;
 /// ITSTATE in xPSR/CPSR: IT[1:0] at bits 26:25, IT[7:2] at bits 15:10 (ARMv7-M ARM B1.4.2).
 constexpr uint32_t kItMask = (3u << 25) | (0x3Fu << 10);
