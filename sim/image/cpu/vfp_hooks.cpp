@@ -107,7 +107,8 @@ void ImageChip::on_double_site(uc_struct* uc, uint64_t, uint32_t, void* user) {
 // PC would be wherever it was last synchronised (a hooked instruction, a register access), and
 // the next run would repeat instructions already done. Put it there, as the run loop expects.
 void ImageChip::restore_stopped_block_pc() {
-  if (block_stop_pc_ != 0 && !double_sites_.empty()) uc_reg_write(uc_, UC_ARM_REG_PC, &block_stop_pc_);
+  // Also after uc_emu_start with a count (step_through_block), which adds a code hook of its own.
+  if (block_stop_pc_ != 0) uc_reg_write(uc_, UC_ARM_REG_PC, &block_stop_pc_);
   block_stop_pc_ = 0;
 }
 

@@ -1,0 +1,49 @@
+// Double-precision sites on the fast path (vfp_hooks.cpp: NOP.W + a code hook) with runs that end
+// inside chained blocks and exceptions taken there (tests/sim/image/fixtures/double_sites.S).
+// Unicorn 2.0.1, once any code hook exists, leaves the PC of a run stopped by the block hook at an
+// earlier block's start: the run resumed there and pushed twice (Step-A-Sketch's image died in
+// micros() at 0.6 ms). Expected counts come from the fixture's instructions.
+#include "fixture.hpp"
+#include "test_device.hpp"
+
+namespace stepdance::sim::image::testing {
+namespace {
+
+struct DoubleSitesFixture : Fixture {
+  std::unique_ptr<TestDevice> device;
+  bool boot_with_device() {
+    return boot("double_sites", [this](ImageChip& target) {
+      device = std::make_unique<TestDevice>(target);
+      device->stop_on_write = true;  // every call of pushpop ends the CPU's run inside it
+      target.bus().add(*device);
+    });
+  }
+};
+
+TEST(ImageChipDoubleSites, RunsEndingInChainedBlocksResumeWhereTheyStopped) {
+  DoubleSitesFixture f;
+  ASSERT_TRUE(f.boot_with_device());
+  f.run_to(200 * kMicrosecond);
+  ASSERT_TRUE(f.stops.empty()) << f.stops[0].what << " at " << f.stops[0].symbol;
+  // 2: SP and r5 kept over 8 calls; 3: and over 200 more with SysTick interrupting, the handler's
+  // double count equal to its integer count, d0 = 208.0 (restored from the extended frames).
+  ASSERT_EQ(f.device->marks.size(), 2u);
+  EXPECT_EQ(f.device->marks[0].value, 2u);
+  EXPECT_EQ(f.device->marks[1].value, 3u);
+}
+
+TEST(ImageChipDoubleSites, EachSiteTakesTheSlowPathOnceThenItsHook) {
+  DoubleSitesFixture f;
+  ASSERT_TRUE(f.boot_with_device());
+  f.run_to(200 * kMicrosecond);
+  ASSERT_TRUE(f.stops.empty()) << f.stops[0].what << " at " << f.stops[0].symbol;
+  const uint32_t ticks = f.word("tick_count");
+  EXPECT_GT(ticks, 10u);  // 200 calls of ~20 cycles at one tick per 150 cycles
+  const ImageChip::DoubleOps ops = f.chip->double_ops();
+  EXPECT_EQ(ops.sites, 6u);  // two loops, VCVT, VCMP, two in the handler
+  EXPECT_EQ(ops.slow, 6u);   // each site's first run
+  EXPECT_EQ(ops.executed, 8u + 200u + 2u + 2u * ticks);
+}
+
+}  // namespace
+}  // namespace stepdance::sim::image::testing
