@@ -172,6 +172,8 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, cons
   if (options.live) {
     // Runs until interrupted (or --duration); the terminals carry the console: nothing echoed.
     if (!numbers.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
+    // Its length is the user's, not a year: the VCD's size is not estimated without --duration.
+    if (!numbers.duration_s && !numbers.vcd_max_gb) sim_options.vcd_max_bytes = UINT64_MAX;
     return sim_options;
   }
   sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
