@@ -25,11 +25,15 @@ SdCardSettings sd_card_settings(const scenario::SdCardConfig& config) {
   return settings;
 }
 
-/// Every file the boards' compilers read, as inputs no output may replace (output_plan.hpp).
-std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const std::vector<SketchBuild>& builds) {
+/// Every file the boards' compilers read, and every image a board runs, as inputs no output may
+/// replace (output_plan.hpp).
+std::vector<RunInput> compiled_inputs(const scenario::Scenario& scenario, const std::vector<SketchBuild>& builds,
+                                      const std::vector<bool>& runs_image) {
   std::vector<RunInput> inputs;
   for (size_t i = 0; i < builds.size(); ++i) {
-    const std::string what = "a file the sketch of board '" + scenario.boards[i].name + "' includes (or its image)";
+    const std::string& board = scenario.boards[i].name;
+    const std::string what = runs_image[i] ? "the firmware image board '" + board + "' runs"
+                                           : "a file the sketch of board '" + board + "' includes";
     for (const std::string& file : builds[i].inputs) inputs.push_back({file, what});
   }
   return inputs;
@@ -48,26 +52,9 @@ bool Simulation::build_boards(SimulationError& error) {
     }
   }
   std::vector<SketchBuild> builds;
-  for (const scenario::BoardConfig& config : scenario_.boards) {
-    if (const std::string image = image_of(config); !image.empty()) {
-      SketchBuild nothing_compiled;
-      nothing_compiled.inputs.push_back(std::filesystem::absolute(image).lexically_normal().string());
-      builds.push_back(std::move(nothing_compiled));
-      continue;
-    }
-    if (!options_.boards) {
-      error = {SimulationError::kFailure, "no board source: this simulation cannot compile or load sketches"};
-      return false;
-    }
-    builds.push_back(options_.boards->build(config.sketch));
-    const SketchBuild& build = builds.back();
-    if (!build.ok) {
-      error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name + "': " + build.error};
-      return false;
-    }
-    if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
-  }
-  if (std::string conflicts = output_conflicts_text(output_files(), compiled_inputs(scenario_, builds)); !conflicts.empty()) {
+  std::vector<bool> runs_image;
+  if (!build_sketches(builds, runs_image, error)) return false;
+  if (std::string conflicts = output_conflicts_text(output_files(), compiled_inputs(scenario_, builds, runs_image)); !conflicts.empty()) {
     error = {SimulationError::kBadInput, std::move(conflicts)};
     return false;
   }
@@ -89,6 +76,31 @@ bool Simulation::build_boards(SimulationError& error) {
     });
     slot.board->on_sketch_stop([this](const SketchStop& stop) { on_sketch_stop(stop); });
     build_sockets(slot);
+  }
+  return true;
+}
+
+// Builds each board's sketch, or notes the image it runs instead (an image board's only input).
+bool Simulation::build_sketches(std::vector<SketchBuild>& builds, std::vector<bool>& runs_image, SimulationError& error) {
+  for (const scenario::BoardConfig& config : scenario_.boards) {
+    runs_image.push_back(!image_of(config).empty());
+    if (runs_image.back()) {
+      SketchBuild nothing_compiled;
+      nothing_compiled.inputs.push_back(std::filesystem::absolute(image_of(config)).lexically_normal().string());
+      builds.push_back(std::move(nothing_compiled));
+      continue;
+    }
+    if (!options_.boards) {
+      error = {SimulationError::kFailure, "no board source: this simulation cannot compile or load sketches"};
+      return false;
+    }
+    builds.push_back(options_.boards->build(config.sketch));
+    const SketchBuild& build = builds.back();
+    if (!build.ok) {
+      error = {SimulationError::kBadInput, place(config.line) + "board '" + config.name + "': " + build.error};
+      return false;
+    }
+    if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
   }
   return true;
 }

@@ -191,6 +191,7 @@ class Simulation {
   // output_files.cpp (the files a run writes, checked before it), run_report.cpp (drawings,
   // summary); expectations.cpp checks the [[expect]] entries.
   bool build_boards(SimulationError& error);
+  bool build_sketches(std::vector<SketchBuild>& builds, std::vector<bool>& runs_image, SimulationError& error);
   /// The firmware image `config`'s board runs ("" for its host-compiled sketch).
   std::string image_of(const scenario::BoardConfig& config) const;
   /// The board for `config`: its sketch's library (`build`) or its firmware image loaded.
