@@ -49,6 +49,11 @@ bool choose_pairs(const DecodeCommandOptions& options, const VcdCapture& capture
     error = !step.ok ? step.error : dir.error;
     return false;
   }
+  if (step.index == dir.index) {
+    error = "--step and --dir name the same wire, '" + capture.wires[step.index].full_name() +
+            "': a STEP/DIR pair is two wires";
+    return false;
+  }
   pairs.push_back({capture.wires[step.index].full_name(), step.index, dir.index});
   return true;
 }

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "board/host/entry_monitor.hpp"
+#include "live_pacer.hpp"
 #include "pty_port.hpp"
 
 namespace stepdance::cli {
@@ -19,6 +20,13 @@ constexpr sim::SimTime kExchangeNs = sim::kMillisecond;
 
 /// The longest the pacing sleeps at once, so a stop request is seen within this (at any speed).
 constexpr auto kLongestSleep = std::chrono::milliseconds(20);
+/// The longest a paced simulated millisecond waits for a client to read what its board wrote.
+constexpr auto kReaderWait = std::chrono::milliseconds(100);
+/// A client is waited for only while it drives its board (wrote within this) and reads (had
+/// nothing left unread within this): not a terminal nobody reads, nor one that only writes.
+constexpr auto kClientActive = std::chrono::seconds(1);
+/// How often the wait for a reader looks again.
+constexpr auto kReaderPoll = std::chrono::microseconds(100);
 
 // Ctrl-C and SIGTERM reach the run through Containment (containment.hpp).
 bool stop_requested() { return sim::EntryMonitor::requested() != sim::EscapeCause::kNone; }
@@ -40,13 +48,6 @@ double sleep_until(std::chrono::steady_clock::time_point due, LiveView* view) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
-/// Where the wall clock and simulated time were last tied together, and at which speed.
-struct PacingAnchor {
-  std::chrono::steady_clock::time_point wall;
-  sim::SimTime simulated = 0;
-  double speed = 1.0;
-};
-
 // Waits while a page has the run paused (serving the pages); true if it waited.
 bool wait_while_paused(LiveView* view) {
   if (view == nullptr || !view->control().paused) return false;
@@ -57,6 +58,18 @@ bool wait_while_paused(LiveView* view) {
 struct BoardLink {
   sim::SimBoard* board;
   std::unique_ptr<PtyPort> port;
+  std::chrono::steady_clock::time_point client_wrote{};    // last time the client wrote (never: epoch)
+  std::chrono::steady_clock::time_point client_caught_up{};  // last time it had read everything
+
+  // Whether simulated time should wait for this client to read its board's output now.
+  bool owes_a_read(std::chrono::steady_clock::time_point now) {
+    port->flush();
+    if (port->unread_by_client() == 0) {
+      client_caught_up = now;
+      return false;
+    }
+    return now - client_wrote < kClientActive && now - client_caught_up < kClientActive;
+  }
 };
 
 std::vector<BoardLink> open_terminals(sim::Simulation& simulation, const std::vector<std::string>& boards,
@@ -87,9 +100,32 @@ void exchange(std::vector<BoardLink>& links) {
   for (BoardLink& link : links) {
     received.clear();
     link.port->read_from_client(received, link.board->console_input_room());
-    if (!received.empty()) link.board->send_console(received);
+    if (!received.empty()) {
+      link.board->send_console(received);
+      link.client_wrote = std::chrono::steady_clock::now();
+    }
     link.port->flush();
   }
+}
+
+// A client that drives its board gets up to kReaderWait to read what the board wrote before
+// simulated time goes on: a G-code sender sees its `ok`s (and can refill the queue) before the
+// run moves past them, so a run on a loaded machine goes slower than the clock instead of
+// draining a sender's queue behind its back. Returns the seconds waited.
+double wait_for_readers(std::vector<BoardLink>& links, LiveView* view) {
+  const auto started = std::chrono::steady_clock::now();
+  for (;;) {
+    const auto now = std::chrono::steady_clock::now();
+    bool waiting = false;
+    for (BoardLink& link : links) waiting = link.owes_a_read(now) || waiting;
+    if (!waiting || now - started >= kReaderWait || stop_requested()) break;
+    if (view != nullptr) {
+      view->serve_for(kReaderPoll);
+    } else {
+      std::this_thread::sleep_for(kReaderPoll);
+    }
+  }
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
 }  // namespace
@@ -104,7 +140,8 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
   }
   std::fflush(stdout);
   const auto wall_start = std::chrono::steady_clock::now();
-  PacingAnchor anchor{wall_start, simulation.now(), options.speed};
+  LivePacer pacer;
+  pacer.anchor(wall_start, simulation.now(), options.speed);
   double slept_s = 0;
   LiveTiming timing;
   double lag_total_ms = 0;
@@ -119,18 +156,18 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
       const auto resumed_at = std::chrono::steady_clock::now();
       if (paused) slept_s += std::chrono::duration<double>(resumed_at - paused_at).count();
       // After a pause or at a new speed the run is paced from here on, not from the start.
-      if (paused || view->control().speed != anchor.speed) anchor = {resumed_at, now, view->control().speed};
+      if (paused || view->control().speed != pacer.speed()) pacer.anchor(resumed_at, now, view->control().speed);
     }
-    if (anchor.speed <= 0.0) return;
-    const double due_s = sim::to_seconds(now - anchor.simulated) / anchor.speed;
-    const double lag_ms =
-        1e3 * std::max(0.0, std::chrono::duration<double>(std::chrono::steady_clock::now() - anchor.wall).count() - due_s);
+    if (pacer.speed() <= 0.0) return;
+    slept_s += wait_for_readers(links, view);
+    // Late by more than the catch-up limit, the run gives the time up rather than racing the
+    // sender on the other end of the terminal (LivePacer).
+    const LivePacer::Due due = pacer.due(now, std::chrono::steady_clock::now());
     ++timing.paced_ms;
-    lag_total_ms += lag_ms;
-    timing.lag_max_ms = std::max(timing.lag_max_ms, lag_ms);
-    slept_s += sleep_until(anchor.wall + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                             std::chrono::duration<double>(due_s)),
-                           view);
+    lag_total_ms += due.lag_ms;
+    timing.lag_max_ms = std::max(timing.lag_max_ms, due.lag_ms);
+    timing.given_up_ms += due.given_up_ms;
+    slept_s += sleep_until(due.wall, view);
   });
   exchange(links);
   while (!stop_requested() && simulation.now() < simulation.duration() && !simulation.stopped()) {

@@ -58,12 +58,18 @@ struct LiveTiming {
   uint64_t paced_ms = 0;
   double lag_max_ms = 0;
   double lag_mean_ms = 0;
+  /// Wall time the run gave up instead of catching up (LivePacer): by this much the run went
+  /// slower than `speed` times the wall clock, ms.
+  double given_up_ms = 0;
 };
 
 /// Opens a terminal per board and announces each on stdout, exactly `serial <board>: <path>`,
 /// flushed, before simulated time starts. Then runs the simulation until SIGINT or SIGTERM (or
 /// the end of its duration, or a stopped sketch), moving bytes between terminals and sketches
-/// every simulated millisecond and pacing to the wall clock, and finally makes the current time
+/// every simulated millisecond and pacing to the wall clock (late by more than
+/// LivePacer::kCatchUpLimit, it gives the time up and runs slower than the clock rather than
+/// racing a client that was slowed by the same load; and a client that drives its board gets up
+/// to 100 ms to read the board's output before simulated time goes on), and finally makes the current time
 /// the end of the run (Simulation::end_now). Needs a Containment in scope for the signals.
 /// Returns how long it took. Throws std::runtime_error when a terminal or link cannot be made.
 LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options);

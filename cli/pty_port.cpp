@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/ioctl.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -77,6 +78,12 @@ void PtyPort::write_to_client(const uint8_t* data, size_t length) {
     ++size_;
   }
   flush();
+}
+
+size_t PtyPort::unread_by_client() const {
+  int in_terminal = 0;
+  if (ioctl(keeper_, FIONREAD, &in_terminal) != 0) in_terminal = 0;
+  return size_ + static_cast<size_t>(std::max(in_terminal, 0));
 }
 
 // Writes the ring's contiguous runs while the terminal takes them.

@@ -44,6 +44,10 @@ class PtyPort {
   void flush();
   /// Bytes dropped because the client did not read (see kMaxPendingBytes).
   uint64_t dropped_bytes() const { return dropped_; }
+  /// Bytes written for the client that it has not read yet (in the terminal's read queue or
+  /// still queued here). Bytes just written may reach the terminal's queue a moment later (the
+  /// kernel moves them), and count only then.
+  size_t unread_by_client() const;
 
  private:
   int master_ = -1;

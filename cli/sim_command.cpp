@@ -3,6 +3,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -40,11 +41,14 @@ struct CheckedNumbers {
   std::optional<double> duration_s;
   std::optional<double> csv_interval_ms;
   std::optional<double> watchdog_s;
+  std::optional<double> vcd_max_gb;
 };
 
 /// --watchdog-s: from a tenth of a second (tests) to a day; 10 s unless given.
 constexpr sim::scenario::NumberRange kWatchdogS{0.1, 86400, false, "s"};
 constexpr double kDefaultWatchdogS = 10;
+/// --vcd-max-gb: the cap on the VCD's estimated size (sim/assembly/vcd_size.hpp), up to a petabyte.
+constexpr sim::scenario::NumberRange kVcdMaxGb{0, 1e6, false, "GB"};
 
 /// Checks an optional number option; false (message on stderr) when it is given and bad.
 bool check_number(const char* option, const std::string& text, const sim::scenario::NumberRange& range,
@@ -57,7 +61,8 @@ bool check_number(const char* option, const std::string& text, const sim::scenar
 bool check_numbers(const SimCommandOptions& options, CheckedNumbers& numbers) {
   return check_number("--duration", options.duration_s, ranges::kDurationS, numbers.duration_s) &&
          check_number("--csv-interval-ms", options.csv_interval_ms, ranges::kCsvIntervalMs, numbers.csv_interval_ms) &&
-         check_number("--watchdog-s", options.watchdog_s, kWatchdogS, numbers.watchdog_s);
+         check_number("--watchdog-s", options.watchdog_s, kWatchdogS, numbers.watchdog_s) &&
+         check_number("--vcd-max-gb", options.vcd_max_gb, kVcdMaxGb, numbers.vcd_max_gb);
 }
 
 /// Options that only mean something in a live run: refused without --live (they used to be
@@ -158,6 +163,7 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, cons
   if (numbers.duration_s) sim_options.duration = sim::from_seconds(*numbers.duration_s);
   if (!options.output_directory.empty()) sim_options.output_directory = absolute_path(options.output_directory);
   sim_options.write_vcd = !options.no_vcd;
+  if (numbers.vcd_max_gb) sim_options.vcd_max_bytes = static_cast<uint64_t>(*numbers.vcd_max_gb * 1e9);
   if (!options.vcd_file.empty()) sim_options.vcd_file = absolute_path(options.vcd_file);
   if (!options.csv_file.empty()) sim_options.csv_file = absolute_path(options.csv_file);
   if (!options.html_file.empty()) sim_options.html_file = absolute_path(options.html_file);
@@ -166,6 +172,8 @@ sim::SimulationOptions simulation_options(const SimCommandOptions& options, cons
   if (options.live) {
     // Runs until interrupted (or --duration); the terminals carry the console: nothing echoed.
     if (!numbers.duration_s) sim_options.duration = sim::from_seconds(kLiveDurationS);
+    // Its length is the user's, not a year: the VCD's size is not estimated without --duration.
+    if (!numbers.duration_s && !numbers.vcd_max_gb) sim_options.vcd_max_bytes = UINT64_MAX;
     return sim_options;
   }
   sim_options.progress = [&progress](sim::SimTime done, sim::SimTime total) { progress.update(done, total); };
@@ -218,11 +226,12 @@ void print_report(const sim::SimulationReport& report, bool quiet, const LiveTim
                   report.wall_s, report.wall_s > 0 ? simulated_s / report.wall_s : 0.0);
   }
   std::cout << line;
+  for (const std::string& warning : report.warnings) std::cout << warning << "\n";
   if (live.paced_ms > 0) {
     std::snprintf(line, sizeof line,
                   "pacing: simulated time behind the wall clock by %.3f ms at most, %.3f ms on average "
-                  "(%llu paced ms)\n",
-                  live.lag_max_ms, live.lag_mean_ms, static_cast<unsigned long long>(live.paced_ms));
+                  "(%llu paced ms); %.3f ms given up (the run went slower than the clock)\n",
+                  live.lag_max_ms, live.lag_mean_ms, static_cast<unsigned long long>(live.paced_ms), live.given_up_ms);
     std::cout << line;
   }
   for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
@@ -246,6 +255,19 @@ std::unique_ptr<sim::view::ReplayRecorder> make_replay(sim::Simulation& simulati
     recorder->console(board, data, length);
   };
   return replay;
+}
+
+// A --serial-link naming no board is bad input (docs/simulator.md), said before anything runs.
+bool serial_links_name_boards(const LiveOptions& live, const sim::scenario::Scenario& scenario) {
+  for (const auto& [name, path] : live.serial_links) {
+    const bool found = std::any_of(scenario.boards.begin(), scenario.boards.end(),
+                                   [&](const auto& board) { return board.name == name; });
+    if (!found) {
+      std::cerr << "--serial-link: no board named '" << name << "'\n";
+      return false;
+    }
+  }
+  return true;
 }
 
 int exit_status(const sim::SimulationReport& report) {
@@ -297,6 +319,9 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   add_number_option(sim, "--csv-interval-ms", options.csv_interval_ms,
                     "CSV sampling interval instead of csv_interval_ms, in " + describe(ranges::kCsvIntervalMs));
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
+  add_number_option(sim, "--vcd-max-gb", options.vcd_max_gb,
+                    "refuse a run whose VCD could pass this many GB (default 1; the estimate: 1.425 MB per recorded "
+                    "port and simulated second), in " + describe(kVcdMaxGb));
   sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
   sim.add_flag("--live", options.live,
                "run in real time until interrupted (Ctrl-C), each board's USB serial on a pseudo-terminal announced "
@@ -339,6 +364,7 @@ int run_sim_command(const SimCommandOptions& options) {
     std::cerr << loaded.error_text();
     return kExitBadInput;
   }
+  if (!serial_links_name_boards(live, loaded.scenario)) return kExitBadInput;
   if (options.live && !loaded.scenario.hosts.empty()) {
     std::cerr << loaded.scenario.file << ":" << loaded.scenario.hosts.front().line
               << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";

@@ -31,6 +31,7 @@ struct SimCommandOptions {
   std::string html_file;            ///< write the replay page here ("" = the scenario's)
   std::string csv_interval_ms;      ///< replaces csv_interval_ms ("" = the file's); checked like it
   bool no_vcd = false;
+  std::string vcd_max_gb;           ///< the cap on the VCD's estimated size, GB ("" = 1)
   bool quiet = false;
   std::string cache_directory;      ///< empty: the default sketch cache
   bool live = false;                ///< pace to the wall clock, serial ports on terminals

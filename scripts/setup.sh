@@ -13,11 +13,13 @@ packages=(
   libunicorn-dev  # unicorn: the Cortex-M7 that runs firmware images in the simulator (sim/image)
   libre2-dev  # RE2: scenario reply patterns matched in time linear in the line
   clang  # libFuzzer targets (scripts/fuzz.sh)
+  time  # /usr/bin/time: CPU seconds in bench/image_board_speed.sh
   universal-ctags  # function lengths for the structure check (scripts/check-function-length.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
   prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)
   python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests
   bcnc  # a real Grbl sender driving the live simulator (tests/cli/live/bcnc_sender_test.py)
+  libseccomp-dev  # seccomp filters confining the sketch server's runs (docs/web.md)
   libboost-dev  # Boost.Beast and Asio (header-only): HTTP and WebSocket for `stepdance serve`
   chromium chromium-driver python3-selenium  # the web control page tested in headless Chromium
 )

@@ -1,6 +1,8 @@
 // `stepdance serve`: the board link, the request router and the web server on one event loop.
 #include "serve_command.hpp"
 
+#include <sys/wait.h>
+
 #include <csignal>
 #include <filesystem>
 #include <iostream>
@@ -12,14 +14,12 @@
 #include "command_help.hpp"
 #include "exit_codes.hpp"
 #include "option_kinds.hpp"
-#include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "serve/request_router.hpp"
 #include "serve/serial_device_link.hpp"
-#include "serve/simulated_board_link.hpp"
+#include "serve/child_board_link.hpp"
 #include "serve/sketch_server.hpp"
 #include "serve/web_server.hpp"
-#include "simulator_hooks.hpp"
 
 namespace stepdance::cli {
 namespace {
@@ -27,8 +27,8 @@ namespace {
 namespace net = boost::asio;
 using serve::Clock;
 
-/// A served simulation runs until interrupted; this bounds it (a year of simulated time).
-constexpr double kServeDurationS = 365.0 * 86400.0;
+/// How long a simulated board's child may take to write its outputs when the server stops.
+constexpr std::chrono::seconds kStopGrace{60};
 constexpr std::chrono::milliseconds kHousekeepingPeriod{100};
 constexpr int kStatusEveryTicks = 10;  // the counters go to the pages once a second
 
@@ -58,36 +58,16 @@ bool read_numbers(const ServeCommandOptions& options, bool serial_device, ServeN
   return true;
 }
 
-/// The simulation for a scenario, or null after printing why not.
-std::unique_ptr<sim::Simulation> make_simulation(const ServeCommandOptions& options, std::string& board,
-                                                 int& exit_code) {
-  sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.target);
-  if (!loaded.ok()) {
-    std::cerr << loaded.error_text();
-    exit_code = kExitBadInput;
-    return nullptr;
-  }
-  if (!loaded.scenario.hosts.empty() || !loaded.scenario.expectations.empty()) {
-    std::cerr << "serve: the page is the host here: the scenario's [[host]] scripts and [[expect]] checks are "
-                 "left out\n";
-    loaded.scenario.hosts.clear();
-    loaded.scenario.expectations.clear();
-  }
-  board = options.board.empty() ? loaded.scenario.boards.front().name : options.board;
-  sim::SimulationOptions sim_options;
-  plug_front_end(sim_options, options.cache_directory);
-  sim_options.duration = sim::from_seconds(kServeDurationS);
-  sim_options.write_vcd = false;  // hours of interactive use would make it huge
+/// The board's child: `stepdance run-board` with the command line's simulation options.
+std::vector<std::string> board_runner_arguments(const ServeCommandOptions& options, double speed) {
+  std::vector<std::string> arguments{"run-board", "--scenario", options.target, "--speed", std::to_string(speed)};
+  if (!options.board.empty()) arguments.insert(arguments.end(), {"--board", options.board});
+  if (!options.cache_directory.empty()) arguments.insert(arguments.end(), {"--cache", options.cache_directory});
   if (!options.output_directory.empty()) {
-    sim_options.output_directory = std::filesystem::absolute(options.output_directory).lexically_normal().string();
+    const std::string out = std::filesystem::absolute(options.output_directory).lexically_normal().string();
+    arguments.insert(arguments.end(), {"--out", out});
   }
-  sim::SimulationError error;
-  auto simulation = sim::Simulation::create(loaded.scenario, sim_options, error);
-  if (!simulation) {
-    std::cerr << error.message << (error.message.empty() || error.message.back() != '\n' ? "\n" : "");
-    exit_code = error.kind == sim::SimulationError::kBadInput ? kExitBadInput : kExitFailure;
-  }
-  return simulation;
+  return arguments;
 }
 
 nlohmann::json status_message(const serve::RequestRouter& router, const serve::WebServer& server) {
@@ -100,8 +80,17 @@ nlohmann::json status_message(const serve::RequestRouter& router, const serve::W
             {"accept_failures", server.accept_failures()}}}};
 }
 
+/// The simulated board's drawing and the report of its run's end go to every page.
+void show_simulation_to_pages(serve::ChildBoardLink& simulated, serve::WebServer& server) {
+  simulated.on_drawing([&server](const nlohmann::json& update) { server.broadcast(update.dump()); });
+  simulated.on_ended([&server](const nlohmann::json& report) {
+    std::cerr << "serve: " << report["ended"]["text"].get<std::string>();
+    server.broadcast(report.dump());
+  });
+}
+
 /// Runs the loop: the link, router and server wired together, until a signal stops it.
-int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::SimulatedBoardLink* simulated,
+int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::ChildBoardLink* simulated,
                         const ServeCommandOptions& options, uint16_t port) {
   std::unique_ptr<serve::WebServer> server;
   serve::RequestRouter router(
@@ -110,6 +99,7 @@ int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::Simu
   serve::WebServerHooks hooks;
   hooks.connected = [&](serve::ClientId client) {
     router.add_client(client);
+    if (simulated != nullptr && simulated->ended()) simulated->restart();  // from the files as they are now
     nlohmann::json hello = {{"hello", {{"board", link.describe()}, {"simulated", simulated != nullptr}}}};
     if (simulated != nullptr) hello["hello"].update(simulated->machine_description());
     server->send(client, hello.dump());
@@ -120,7 +110,7 @@ int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::Simu
   hooks.disconnected = [&router](serve::ClientId client) { router.remove_client(client); };
   server = std::make_unique<serve::WebServer>(io, options.host, port, options.allowed_origins, hooks);
   link.on_line([&router](std::string_view line) { router.from_board(line, Clock::now()); });
-  if (simulated != nullptr) simulated->on_drawing([&server](const nlohmann::json& update) { server->broadcast(update.dump()); });
+  if (simulated != nullptr) show_simulation_to_pages(*simulated, *server);
 
   net::steady_timer housekeeping(io);
   int ticks = 0;
@@ -148,12 +138,26 @@ int serve_until_stopped(net::io_context& io, serve::BoardLink& link, serve::Simu
   signals.async_wait([&](const boost::system::error_code&, int) {
     server->stop();
     housekeeping.cancel();
-    if (simulated != nullptr) simulated->stop();
     io.stop();
   });
   const std::string shown_host = options.host.find(':') != std::string::npos ? "[" + options.host + "]" : options.host;
   std::cout << "serving http://" << shown_host << ":" << server->port() << "/ for " << link.describe() << std::endl;
   io.run();
+  return kExitOk;
+}
+
+/// A scenario's board, run by a child process: waits until it runs (or ends: a scenario or
+/// sketch that does not build, its exit status returned), serves, then stops it so that it
+/// writes its outputs.
+int serve_simulation(net::io_context& io, const ServeCommandOptions& options, const ServeNumbers& numbers) {
+  serve::ChildBoardLink link(io, board_runner_arguments(options, numbers.speed), options.board);
+  while (!link.running() && !link.ended()) io.run_one_for(std::chrono::milliseconds(100));
+  if (!link.running()) {
+    const int status = link.exit_status();
+    return WIFEXITED(status) && WEXITSTATUS(status) != kExitOk ? WEXITSTATUS(status) : kExitFailure;
+  }
+  serve_until_stopped(io, link, &link, options, numbers.port);
+  for (const std::string& file : link.stop(io, kStopGrace)) std::cout << "wrote " << file << "\n";
   return kExitOk;
 }
 
@@ -170,6 +174,7 @@ int run_sketch_server_command(const ServeCommandOptions& options) {
   server.port = static_cast<uint16_t>(*port);
   server.allowed_origins = options.allowed_origins;
   server.cache_directory = options.cache_directory;
+  server.unconfined = options.unconfined;
   return serve::run_sketch_server(server);
 }
 
@@ -198,6 +203,9 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
                         " (default 1)");
   add_output_folder_option(serve, options.output_directory, "simulation: ");
   add_cache_folder_option(serve, options.cache_directory, "simulation: ");
+  serve.add_flag("--unconfined", options.unconfined,
+                 "sketch server: run the pages' sketches with your rights, without the confinement docs/web.md "
+                 "describes (needed where the kernel lacks Landlock ABI 6 or seccomp)");
   return serve;
 }
 
@@ -207,31 +215,16 @@ int run_serve_command(const ServeCommandOptions& options) {
   ServeNumbers numbers;
   if (!read_numbers(options, serial_device, numbers)) return kExitBadInput;
   net::io_context io;
-  std::unique_ptr<sim::Simulation> simulation;
-  std::unique_ptr<serve::BoardLink> link;
-  serve::SimulatedBoardLink* simulated = nullptr;
   try {
     if (serial_device) {
-      link = std::make_unique<serve::SerialDeviceLink>(io, options.target, numbers.baud);
-    } else {
-      std::string board;
-      int exit_code = kExitOk;
-      simulation = make_simulation(options, board, exit_code);
-      if (!simulation) return exit_code;
-      auto board_link = std::make_unique<serve::SimulatedBoardLink>(io, *simulation, board, numbers.speed);
-      simulated = board_link.get();
-      link = std::move(board_link);
+      serve::SerialDeviceLink link(io, options.target, numbers.baud);
+      return serve_until_stopped(io, link, nullptr, options, numbers.port);
     }
-    serve_until_stopped(io, *link, simulated, options, numbers.port);
-    if (!simulation) return kExitOk;
-    simulation->end_now();
-    const sim::SimulationReport report = simulation->finish();
-    for (const std::string& file : report.files) std::cout << "wrote " << file << "\n";
+    return serve_simulation(io, options, numbers);
   } catch (const std::exception& failure) {
     std::cerr << "serve: " << failure.what() << "\n";
     return kExitFailure;
   }
-  return kExitOk;
 }
 
 }  // namespace stepdance::cli

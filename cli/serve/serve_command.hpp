@@ -21,6 +21,7 @@ struct ServeCommandOptions {
   std::string speed;                         ///< simulation: simulated seconds per wall second ("" = 1)
   std::string output_directory;              ///< simulation: write the outputs here instead
   std::string cache_directory;               ///< simulation: compiled sketch cache
+  bool unconfined = false;                   ///< sketch server: run the pages' sketches unconfined
 };
 
 /// Adds the `serve` subcommand to `app`, filling `options` when it is parsed.

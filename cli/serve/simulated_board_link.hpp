@@ -1,4 +1,5 @@
-// A board of a live simulation run inside `stepdance serve`, paced by the event loop's timer.
+// A board of a live simulation run by `stepdance serve <scenario>`'s child process
+// (serve/board_runner.hpp), paced by its event loop's timer.
 #pragma once
 
 #include <chrono>

@@ -56,10 +56,8 @@ void setup() {
   gcode.output_x.map(&axidraw_kinematics.input_x);
   gcode.output_y.map(&axidraw_kinematics.input_y);
   gcode.output_z.map(&channel_z.input_target_position);
-  // What senders see in `$$`: 80 steps/mm on X and Y, 50 on Z; a plotter's speeds and accelerations.
-  gcode.settings().set_from_sketch(100, 80);
-  gcode.settings().set_from_sketch(101, 80);
-  gcode.settings().set_from_sketch(102, 50);
+  // `$100`–`$102` (steps/mm) come from the channels X, Y and Z drive: senders see 80, 80 and 50.
+  // A plotter's speeds and accelerations:
   gcode.settings().set_from_sketch(110, 6000);  // mm/min
   gcode.settings().set_from_sketch(111, 6000);
   gcode.settings().set_from_sketch(112, 3000);

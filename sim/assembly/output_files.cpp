@@ -13,6 +13,7 @@
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
 #include "assembly/simulation.hpp"
+#include "assembly/vcd_size.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -118,6 +119,13 @@ std::vector<PlannedOutput> Simulation::output_files() const {
 }
 
 bool Simulation::prepare_outputs(SimulationError& error) const {
+  if (!vcd_path_.empty()) {
+    std::string problem = vcd_size_problem(vcd_path_, vcd_ports().size(), duration_, options_.vcd_max_bytes);
+    if (!problem.empty()) {
+      error = {SimulationError::kBadInput, std::move(problem)};
+      return false;
+    }
+  }
   const std::string png = options_.pictures ? output_path(scenario_.output.png) : std::string();
   if (const std::string problem = plotter_png_problem(scenario_, png); !problem.empty()) {
     error = {SimulationError::kBadInput, problem};

@@ -125,8 +125,12 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
   nlohmann::json faults = nlohmann::json::object(), frames = nlohmann::json::object();
   nlohmann::json counters = nlohmann::json::object(), load = nlohmann::json::object();
   nlohmann::json motors = nlohmann::json::object(), i2c = nlohmann::json::object();
-  nlohmann::json console = nlohmann::json::object();
+  nlohmann::json console = nlohmann::json::object(), warnings = nlohmann::json::object();
   for (const BoardSlot& slot : boards_) {
+    // Each kind of warning the fault path tallied ("Eibotboard: overrun"), with its count.
+    for (const SimBoard::BoardWarning& warning : slot.board->warnings()) {
+      warnings[slot.config->name][warning.name] = warning.count;
+    }
     // Console output that was dropped (nobody read a live terminal), when there was any.
     if (const uint64_t dropped = slot.board->console_dropped_bytes(); dropped > 0) {
       console[slot.config->name] = {{"dropped_unread_bytes", dropped}};
@@ -166,6 +170,7 @@ void Simulation::add_board_extras(nlohmann::json& extra) const {
     }
   }
   extra["faults"] = faults;
+  extra["warnings"] = warnings;
   extra["frames"] = frames;
   if (!console.empty()) extra["console"] = console;
   extra["motors"] = motors;
@@ -230,6 +235,18 @@ nlohmann::json Simulation::summary_extra() const {
     extra["stopped"] = {{"what", interrupted_by_ == 15 ? "SIGTERM" : "SIGINT"}, {"time_s", to_seconds(scheduler_.now())}};
   }
   return extra;
+}
+
+std::vector<std::string> Simulation::warning_lines() const {
+  std::vector<std::string> lines;
+  for (const BoardSlot& slot : boards_) {
+    for (const SimBoard::BoardWarning& warning : slot.board->warnings()) {
+      std::string line = "[" + slot.config->name + "] warning ×" + std::to_string(warning.count) + ": " + warning.name;
+      if (!warning.detail.empty()) line += " (first: " + warning.detail + ")";
+      lines.push_back(line);
+    }
+  }
+  return lines;
 }
 
 RunSummary Simulation::run_summary() const {

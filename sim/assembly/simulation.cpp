@@ -162,6 +162,7 @@ SimulationReport Simulation::finish() {
   report.expectations =
       unchecked.empty() ? evaluate_expectations(scenario_, *this) : unchecked_expectations(scenario_, unchecked);
   add_storage_violations(report);
+  report.warnings = warning_lines();
   return report;
 }
 

@@ -52,6 +52,8 @@ struct SimulationOptions {
   std::optional<std::string> output_directory;
   /// False skips the VCD even if the scenario asks for one.
   bool write_vcd = true;
+  /// A run whose VCD could pass this many bytes (vcd_size.hpp's estimate) is refused at create().
+  uint64_t vcd_max_bytes = 1000ull * 1000 * 1000;
   /// A live run: Ctrl-C or SIGTERM end it normally (expectations are checked) instead of cutting
   /// it short.
   bool live = false;
@@ -94,6 +96,8 @@ struct SimulationReport {
   /// Files written, in the order written.
   std::vector<std::string> files;
   std::vector<ExpectationResult> expectations;
+  /// Simulation::warning_lines() at the end of the run.
+  std::vector<std::string> warnings;
   bool all_expectations_met() const;
 };
 
@@ -161,6 +165,9 @@ class Simulation {
   const FiveBarArm* five_bar_arm(const std::string& name) const;
   /// The JSON summary text as it would be written now (wall time left out).
   std::string summary_text() const;
+  /// One line per kind of warning on each board's fault path, with its count and the first
+  /// report's detail: "[driver] warning ×3: Eibotboard: overrun (first: …)".
+  std::vector<std::string> warning_lines() const;
   /// Where the replay page goes ("" = none): checked with the other outputs by create(), written
   /// by the front end after finish().
   const std::string& html_path() const { return html_path_; }

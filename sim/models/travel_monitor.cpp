@@ -15,9 +15,15 @@ double TravelMonitor::overshoot_mm(const PenPoint& position) const {
   return std::hypot(dx, dy);
 }
 
+bool TravelMonitor::beyond_tolerance(const PenPoint& position) const {
+  const double tolerance = area_.tolerance_mm;
+  return position.x_mm < area_.x_min_mm - tolerance || position.x_mm > area_.x_max_mm + tolerance ||
+         position.y_mm < area_.y_min_mm - tolerance || position.y_mm > area_.y_max_mm + tolerance;
+}
+
 void TravelMonitor::observe(SimTime time, const PenPoint& position) {
   const double overshoot = overshoot_mm(position);
-  const bool outside = overshoot > 0;
+  const bool outside = beyond_tolerance(position);
   const bool remembered = count_ > 0 && count_ <= max_remembered_;
   if (outside && !outside_) {
     ++count_;
@@ -30,7 +36,7 @@ void TravelMonitor::observe(SimTime time, const PenPoint& position) {
   } else if (!outside && outside_ && remembered) {
     excursions_.back().end = time;
   }
-  max_overshoot_mm_ = std::max(max_overshoot_mm_, overshoot);
+  if (outside) max_overshoot_mm_ = std::max(max_overshoot_mm_, overshoot);
   outside_ = outside;
 }
 

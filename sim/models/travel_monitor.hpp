@@ -16,6 +16,9 @@ struct TravelArea {
   double x_max_mm = 0;
   double y_min_mm = 0;
   double y_max_mm = 0;
+  /// How far past a bound an axis may be before it counts as an excursion: the machine's
+  /// resolution (one microstep), so a motor stepping on its own past the edge is not one (mm, ≥ 0).
+  double tolerance_mm = 0;
 };
 
 /// One stretch of time spent outside the area.
@@ -32,8 +35,9 @@ struct TravelExcursion {
   double overshoot_mm = 0;
 };
 
-/// Watches positions sample by sample. Every move from inside to outside starts an excursion; the
-/// first `max_remembered` excursions are kept in detail and all are counted.
+/// Watches positions sample by sample. Every move from inside to outside (more than the area's
+/// tolerance past a bound on either axis) starts an excursion; the first `max_remembered`
+/// excursions are kept in detail and all are counted. Overshoots are measured from the area itself.
 class TravelMonitor {
  public:
   explicit TravelMonitor(const TravelArea& area, size_t max_remembered = 64);
@@ -48,11 +52,13 @@ class TravelMonitor {
   uint64_t excursion_count() const { return count_; }
   /// The first excursions, in order.
   const std::vector<TravelExcursion>& excursions() const { return excursions_; }
-  /// Largest distance outside the area seen so far (mm).
+  /// Largest distance outside the area seen so far in an excursion (mm).
   double max_overshoot_mm() const { return max_overshoot_mm_; }
 
   /// Distance (mm) from `position` to the area; 0 inside or on the edge.
   double overshoot_mm(const PenPoint& position) const;
+  /// Whether `position` is more than the tolerance past a bound on either axis.
+  bool beyond_tolerance(const PenPoint& position) const;
 
  private:
   TravelArea area_;

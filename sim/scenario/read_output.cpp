@@ -15,6 +15,27 @@ std::string output_file(const std::string& directory, const std::string& name) {
   return (given.is_absolute() ? given : std::filesystem::path(directory) / given).lexically_normal().string();
 }
 
+/// `vcd_ports`, and the refusal of a `vcd` that names none (it would be written empty).
+void read_vcd_ports(TableReader& reader, const std::string& vcd, OutputConfig& output, ParseContext& context) {
+  if (const toml::array* ports = reader.array("vcd_ports")) {
+    for (const toml::node& item : *ports) {
+      if (const auto* text = item.as_string()) {
+        if (const auto line_ref = parse_port_line(text->get(), "vcd_ports", line_of(item), context)) {
+          output.vcd_ports.push_back(*line_ref);
+        }
+      } else {
+        context.reporter.error(line_of(item), "'vcd_ports' must hold strings like \"board:OUT_A\", not " +
+                                                  std::string(type_phrase(item)));
+      }
+    }
+  }
+  // A VCD of no ports would be written, and empty: say what it needs instead.
+  if (!vcd.empty() && output.vcd_ports.empty()) {
+    reader.error("vcd", "'vcd' (\"" + vcd + "\") records the ports 'vcd_ports' lists, and it lists none: add "
+                        "e.g. vcd_ports = [\"board:OUT_A\"] (or use --vcd FILE, which records every port)");
+  }
+}
+
 }  // namespace
 
 void read_output(TableReader& top, ParseContext& context) {
@@ -55,18 +76,7 @@ void read_output(TableReader& top, ParseContext& context) {
     if (const auto interval = reader.number("csv_interval_ms", ranges::kCsvIntervalMs)) {
       output.csv_interval_ms = *interval;
     }
-    if (const toml::array* ports = reader.array("vcd_ports")) {
-      for (const toml::node& item : *ports) {
-        if (const auto* text = item.as_string()) {
-          if (const auto line_ref = parse_port_line(text->get(), "vcd_ports", line_of(item), context)) {
-            output.vcd_ports.push_back(*line_ref);
-          }
-        } else {
-          context.reporter.error(line_of(item), "'vcd_ports' must hold strings like \"board:OUT_A\", not " +
-                                                    std::string(type_phrase(item)));
-        }
-      }
-    }
+    read_vcd_ports(reader, vcd, output, context);
     reader.finish();
   }
   output.directory = context.resolve(directory);

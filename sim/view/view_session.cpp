@@ -193,6 +193,11 @@ json ViewSession::boards_state_json() const {
       entry["fault"] = {{"reason", stats.fault_name ? stats.fault_name : ""}, {"count", stats.fault_count},
                         {"detail", stats.fault_detail ? stats.fault_detail : ""}};
     }
+    json warnings = json::array();
+    for (const SimBoard::BoardWarning& warning : board->warnings()) {
+      warnings.push_back({{"name", warning.name}, {"count", warning.count}, {"detail", warning.detail}});
+    }
+    entry["warnings"] = std::move(warnings);
     boards.push_back(std::move(entry));
   }
   return boards;

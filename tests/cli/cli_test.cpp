@@ -1,4 +1,7 @@
 // The `stepdance` command as a user runs it: exit statuses, `file:line:` errors, decode output.
+#include <algorithm>
+#include <sstream>
+
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -68,6 +71,31 @@ TEST(CliTest, DecodeOfTheSimulatorsVcdMatchesItsSummary) {
   EXPECT_EQ(report["ports"]["plotter.IN_A"]["pulses"], summary["ports"]["plotter:IN_A"]["pulses"]);
   EXPECT_EQ(report["ports"]["plotter.IN_A"]["rejected"]["too_short"],
             summary["ports"]["plotter:IN_A"]["rejected"]["too_short"]);
+}
+
+// Found by hand (issue 38): 20 × 5,000 `x` printed without a newline, then "END", showed 5,794
+// of the 100,000 bytes: the 4,096-byte pieces of the long line were folded as repeated lines.
+TEST(CliTest, ConsoleTextWithoutANewlineIsShownWhole) {
+  const std::string scratch = test_output_dir("cli_console_pieces");
+  std::filesystem::create_directories(scratch);
+  std::ofstream(scratch + "/Pieces.ino") << "#define module_driver\n#include \"stepdance.hpp\"\n"
+                                            "void setup() {\n  Serial.begin(115200);\n  static char block[5001];\n"
+                                            "  memset(block, 'x', 5000);\n"
+                                            "  for (int i = 0; i < 20; ++i) Serial.print(block);\n"
+                                            "  Serial.println(\"END\");\n  dance_start();\n}\n"
+                                            "void loop() { dance_loop(); }\n";
+  const std::string scenario = write_scenario(
+      scratch, "duration_s = 0.2\n[[board]]\nname = \"driver\"\nsketch = \"Pieces.ino\"\nmodule = \"driver\"\n");
+  const CommandResult result = stepdance("sim --cache " + kSketchCache + " --out " + scratch + "/out " + scenario, scratch);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::istringstream lines(result.out);
+  size_t shown = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("[driver] ", 0) == 0) shown += static_cast<size_t>(std::count(line.begin(), line.end(), 'x'));
+  }
+  EXPECT_EQ(shown, 100000u);
+  EXPECT_NE(result.out.find("xEND\n"), std::string::npos);
+  EXPECT_EQ(result.out.find("the same line"), std::string::npos) << result.out.substr(0, 200);
 }
 
 TEST(CliTest, DecodeOfAMissingWireIsBadInput) {

@@ -96,6 +96,14 @@ TEST(ContainedSketch, ACrashReportNamesTheLineOfTheSketch) {
       << result.err;
 }
 
+TEST(ContainedSketch, ACrashInTheFirstFunctionNamesTheLineOfTheSketch) {
+  if (kSanitizerBuild) GTEST_SKIP() << "UBSan reports this sketch's null write itself";
+  const CommandResult result = run_fixture("NullWriteInSetup");
+  EXPECT_NE(result.err.find("#0 setup() at " + fixture("NullWriteInSetup") + "/NullWriteInSetup.ino:8"),
+            std::string::npos)
+      << result.err;
+}
+
 TEST(ContainedSketch, TheOutputsAreWrittenWhenASketchIsStopped) {
   const std::string scratch = test_output_dir("contained_outputs");
   const CommandResult result = stepdance("sim " + fixture("ExitInLoop") + " --out " + scratch + "/out", scratch);

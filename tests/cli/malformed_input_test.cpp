@@ -155,6 +155,54 @@ TEST(MalformedCommandLineTest, LiveOptionsNeedLive) {
   EXPECT_EQ(link.out, "");
 }
 
+// Found by hand (issue 38): `[output] vcd` without `vcd_ports` wrote an empty VCD.
+TEST(MalformedScenarioTest, AVcdWithoutPortsIsRefusedAtLoad) {
+  expect_refused("vcd-without-ports.toml",
+                 {{9, "'vcd' (\"wire.vcd\") records the ports 'vcd_ports' lists, and it lists none"}});
+}
+
+// Found by hand (issue 38): `--duration 86400 --vcd` started without a word (about 2.6 GB).
+// One port for 2,000 s at 25,000 frames × 3 edges × 19 bytes a second: 2.85 GB, above 1 GB.
+TEST(MalformedScenarioTest, AVcdThatCouldPassItsCapIsRefusedWithTheEstimate) {
+  const std::string scratch = test_output_dir("malformed_vcd_cap");
+  const std::string path = kFixtures + "/vcd-too-large.toml";
+  const CommandResult result = run("sim --quiet --cache " + kSketchCache + " --out " + scratch + "/out " + path, "vcd_cap");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find(scratch + "/out/wire.vcd: the VCD could reach 2.85 GB (1 port(s) × at most 1.425 MB per "
+                            "simulated second × 2000 s), above the cap of 1.00 GB: raise it with --vcd-max-gb 3"),
+            std::string::npos)
+      << result.err;
+  EXPECT_FALSE(std::filesystem::exists(scratch + "/out/wire.vcd"));
+  EXPECT_EQ(result.out, "");
+  // --duration shortens the run under the cap; --no-vcd leaves the VCD out: both run.
+  EXPECT_EQ(run("sim --quiet --no-vcd --duration 0.1 --cache " + kSketchCache + " --out " + scratch + "/out2 " + path,
+                "vcd_cap").exit_code, 0);
+  EXPECT_EQ(run("sim --quiet --vcd-max-gb 3 --duration 0.1 --cache " + kSketchCache + " --out " + scratch + "/out3 " +
+                path, "vcd_cap").exit_code, 0);
+}
+
+// Found by hand (issue 38): `decode --step X --dir X` decoded one wire as both.
+TEST(MalformedCommandLineTest, DecodeRefusesTheSameWireTwice) {
+  const std::string capture = kFixtures + "/long-pulses.vcd";
+  for (const char* names : {"--step upstream.OUT_A_STEP --dir upstream.OUT_A_STEP", "--step OUT_A_DIR --dir OUT_A_DIR"}) {
+    const CommandResult result = run("decode " + std::string(names) + " " + capture, "same_wire");
+    EXPECT_EQ(result.exit_code, 2) << names;
+    EXPECT_NE(result.err.find("--step and --dir name the same wire"), std::string::npos) << result.err;
+    EXPECT_EQ(result.out, "") << names;
+  }
+}
+
+// Found by hand (issue 38): a --serial-link naming no board exited 1; docs/simulator.md says bad input is 2.
+TEST(MalformedCommandLineTest, ASerialLinkToNoBoardIsBadInput) {
+  const std::string scratch = test_output_dir("malformed_serial_link_board");
+  const CommandResult link = run("sim --live --duration 1 --serial-link nosuch=" + scratch + "/link " +
+                                     source_path("examples/StepASketch"),
+                                 "serial_link_board");
+  EXPECT_EQ(link.exit_code, 2);
+  EXPECT_EQ(link.err, "--serial-link: no board named 'nosuch'\n");
+  EXPECT_EQ(link.out, "");
+}
+
 // Found by hand (issue 27): `--out ""` wrote into the example's own folder (an empty option was
 // taken as no option), and --serial-link deleted the file it was given to make a symlink.
 TEST(MalformedCommandLineTest, EmptyPathsAndFilesInTheWayOfALinkAreRefused) {

@@ -75,7 +75,8 @@ TEST(OutputSafetyTest, OutputNamesThatCollideAreRefusedWithTheirLines) {
 
 TEST(OutputSafetyTest, NamesThatOnlyCollideInOneOutFolderAreRefused) {
   // Without --out they are out/a/x.txt and out/b/x.txt; --out keeps only the file names.
-  const std::string copy = copy_fixture("flattened", "vcd = \"a/x.txt\"\ncsv = \"b/x.txt\"\n");
+  const std::string copy =
+      copy_fixture("flattened", "vcd = \"a/x.txt\"\ncsv = \"b/x.txt\"\nvcd_ports = [\"driver:OUT_A\"]\n");
   const std::string elsewhere = fs::path(copy).parent_path().string() + "/elsewhere";
   const CommandResult result = run_sim("--out " + elsewhere + " " + copy, copy);
   EXPECT_EQ(result.exit_code, 2);

@@ -134,6 +134,32 @@ TEST_F(FaultLevelsTest, ReportsBeyondTheHistoryAreCountedAsLost) {
   EXPECT_EQ(told.back().sequence, kFaultReportHistory + 4);
 }
 
+// Every warning is tallied by its source and reason, so a run can list each with its count:
+// the first report's detail stays with its kind; count_warning() adds to a kind without a report.
+TEST_F(FaultLevelsTest, WarningsAreTalliedBySourceAndReason) {
+  report_fault(FaultLevel::kWarning, FaultReason::kOverrun, "Eibotboard", "first stretch");
+  for (int i = 0; i < 4; ++i) count_warning(FaultReason::kOverrun, "Eibotboard");
+  report_fault(FaultLevel::kWarning, FaultReason::kUnreachable, "kinematics", "pose out of reach");
+  report_fault(FaultLevel::kWarning, FaultReason::kUnreachable, "kinematics", "another pose");
+  report_fault(FaultLevel::kAlarm, FaultReason::kLimitHit, "homing", "not a warning");
+  EXPECT_EQ(warning_count(), 7u);
+  WarningTally tally;
+  ASSERT_TRUE(warning_tally(0, tally));
+  EXPECT_STREQ(tally.source, "Eibotboard");
+  EXPECT_EQ(tally.reason, FaultReason::kOverrun);
+  EXPECT_STREQ(tally.detail, "first stretch");
+  EXPECT_EQ(tally.count, 5u);
+  ASSERT_TRUE(warning_tally(1, tally));
+  EXPECT_STREQ(tally.source, "kinematics");
+  EXPECT_STREQ(tally.detail, "pose out of reach");
+  EXPECT_EQ(tally.count, 2u);
+  EXPECT_FALSE(warning_tally(2, tally));
+  dance_loop();
+  EXPECT_EQ(told.size(), 4u);  // count_warning() made no report
+  clear_fault();
+  EXPECT_FALSE(warning_tally(0, tally));
+}
+
 TEST_F(FaultLevelsTest, SubscribersAreBounded) {
   auto other = [](const FaultReport&) {};
   for (uint32_t i = 1; i < kMaxFaultSubscribers; ++i) EXPECT_TRUE(on_fault(other));

@@ -99,12 +99,24 @@ TEST_F(EbbRateTest, AFastMoveIsSlowedToTheStepRateAndDrawsItsPathExactly) {
   ASSERT_TRUE(recent_fault_report(0, report));
   EXPECT_EQ(report.level, FaultLevel::kWarning);
   EXPECT_STREQ(report.source, "Eibotboard");
+  // The move and its rates: LM's 22,400 steps/s at 1/8 are 44,800 1/16 steps/s; one 1/16 step
+  // per 40 µs frame carries 25,000.
+  const std::string detail = report.detail;
+  EXPECT_NE(detail.find("LM"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("44800"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("25000"), std::string::npos) << detail;
+  WarningTally tally;
+  ASSERT_TRUE(warning_tally(0, tally));
+  EXPECT_STREQ(tally.source, "Eibotboard");
+  EXPECT_EQ(tally.reason, FaultReason::kOverrun);
+  EXPECT_EQ(tally.count, 1u);
+  EXPECT_FALSE(warning_tally(1, tally));
   for (int i = 0; i < 10; ++i) host.step();
   EXPECT_EQ(host.exchange("QM\r"), "QM,0,0,0,0\n\r");
   EXPECT_EQ(host.exchange("QS\r"), "2800,-400\n\rOK\r\n");
 }
 
-TEST_F(EbbRateTest, RepeatedStretchesAreCountedEachAndReportedAtMostOncePerSecond) {
+TEST_F(EbbRateTest, RepeatedStretchesAreNamedOnceAndCountedEach) {
   start(40);
   ASSERT_EQ(host.exchange("CU,4,16\r"), "OK\r\n");
   for (int i = 0; i < 6; ++i) {  // six fast moves back and forth, 5600 frames (0.224 s) each
@@ -116,9 +128,15 @@ TEST_F(EbbRateTest, RepeatedStretchesAreCountedEachAndReportedAtMostOncePerSecon
   }
   for (int i = 0; i < 40000; ++i) host.step();
   EXPECT_EQ(counter("moves_stretched"), 6u);
-  // Stretched moves start at 0, 0.224, … 1.12 s: reported at 0 s, and again at 1.12 s, the first
-  // stretch a second or more after the last report.
-  EXPECT_EQ(warning_count(), 2u);
+  // The first stretch is reported with its move and rates; the other five are counted only.
+  EXPECT_EQ(warning_count(), 6u);
+  FaultReport report;
+  EXPECT_TRUE(recent_fault_report(0, report));
+  EXPECT_FALSE(recent_fault_report(1, report));
+  WarningTally tally;
+  ASSERT_TRUE(warning_tally(0, tally));
+  EXPECT_EQ(tally.count, 6u);
+  EXPECT_STREQ(tally.detail, report.detail);
   EXPECT_EQ(channel_a.current_position, 0.0);
   EXPECT_EQ(channel_b.current_position, 0.0);
 }

@@ -169,7 +169,63 @@ TEST_F(GCodeInterfaceTest, AtTenMicrosecondFramesMovesAndDwellsKeepRealTime) {
     step();
     ++frames;
   }
-  EXPECT_NEAR(frames * kDt10, 0.5, 0.002);
+  EXPECT_NEAR(frames * kDt10, 0.5 + TimeBasedInterpolator::kStartDelayUs * 1e-6, 0.002);
+}
+
+// Grbl's mc_dwell: protocol_buffer_synchronize (the queue drains), then delay_sec; the line's
+// `ok` comes at the end, the state meanwhile is Idle (the planner is empty), and realtime
+// commands are served throughout. Each loop pass returns (the test's step() runs one a frame).
+TEST_F(GCodeInterfaceTest, DwellWaitsForTheQueueThenAnswersAtItsEnd) {
+  host.send("$120=1000\nG1 X10 F600\n");
+  for (int i = 0; i < 100; ++i) step();
+  host.take();
+  host.send("G4 P1.5\n");
+  for (int i = 0; i < 100; ++i) step();
+  EXPECT_EQ(host.take(), "");  // the move is still running: nothing is owed yet
+  int frames = 100;
+  while (gcode.output_x.read_absolute() != 10.0 && frames < 200000) {
+    step();
+    ++frames;
+  }
+  // From the G1 line: the start delay, 10 mm at 10 mm/s and its two 0.01 s ramps at 1000 mm/s².
+  EXPECT_NEAR((frames + 100) * kDt, 0.02 + 10.0 / 10.0 + 10.0 / 1000.0, 0.01);
+  const int move_end = frames;
+  std::string replies;
+  bool status_seen = false;
+  while (replies.find("ok") == std::string::npos && frames < move_end + 100000) {
+    if (frames == move_end + 18750) {  // halfway through the dwell
+      host.send("?");
+      step();
+      ++frames;
+      const std::string status = host.take();
+      EXPECT_EQ(status.rfind("<Idle|", 0), 0u) << status;
+      status_seen = true;
+      continue;
+    }
+    step();
+    ++frames;
+    replies += host.take();
+  }
+  EXPECT_TRUE(status_seen);
+  EXPECT_EQ(replies, "ok\r\n");
+  EXPECT_NEAR((frames - move_end) * kDt, 1.5, 0.002);
+}
+
+// A Ctrl-X during a dwell ends it; as on Grbl (delay_sec returns on abort, gc_execute_line then
+// returns STATUS_OK) the line gets its `ok` before the welcome, and no alarm (nothing moved).
+TEST_F(GCodeInterfaceTest, ResetDuringADwellAnswersTheLineBeforeTheWelcome) {
+  host.send("G4 P10\n");
+  for (int i = 0; i < 1000; ++i) step();
+  EXPECT_EQ(host.take(), "");
+  host.send("\x18");
+  for (int i = 0; i < 10; ++i) step();
+  const std::string replies = host.take();
+  EXPECT_EQ(replies.rfind("ok\r\n\r\nGrbl 1.1h", 0), 0u) << replies;
+  EXPECT_EQ(replies.find("ALARM"), std::string::npos) << replies;
+  host.send("G0 X1\n");
+  run_until_idle();
+  EXPECT_EQ(host.take(), "ok\r\n");
+  EXPECT_DOUBLE_EQ(gcode.output_x.read_absolute(), 1.0);
 }
 
 TEST_F(GCodeInterfaceTest, DwellWaitsItsTime) {
@@ -179,9 +235,8 @@ TEST_F(GCodeInterfaceTest, DwellWaitsItsTime) {
     step();
     ++frames;
   }
-  // A dwell's speeds are final at once (it starts and ends at rest), so it starts without the
-  // planner's start delay; the move begins when it ends.
-  EXPECT_NEAR(frames * kDt, 0.5, 0.002);
+  // The move is read once the dwell ends and starts from rest after the planner's start delay.
+  EXPECT_NEAR(frames * kDt, 0.5 + TimeBasedInterpolator::kStartDelayUs * 1e-6, 0.002);
 }
 
 TEST_F(GCodeInterfaceTest, FeedHoldDeceleratesResumeFinishes) {

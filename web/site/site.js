@@ -138,6 +138,8 @@ const runEvents = {
   failed(text) { showProblems(text); status("the run did not start: see the problems under the scenario"); },
   result(result) { showResult(result); },
   crashed(text) { status(`the simulator failed: ${text}`); },
+  // The sketch server's report of a run that ended early (a crash, exit(), a hang, a limit).
+  ended(text) { showProblems(text); status("the run ended early: see the problems under the scenario"); },
 };
 
 /// The WebAssembly simulator in a Web Worker: {send(text), stop()}.
@@ -166,6 +168,7 @@ async function serverRunner(example, scenarioFile, scenarioText) {
     if (message.type === "building") status(`compiling ${sketchFile(example)} on stepdance serve…`);
     else if (message.type === "started") status(`running ${example.name} on stepdance serve`);
     else if (message.type === "failed") runEvents.failed(message.text);
+    else if (message.type === "ended") runEvents.ended(message.text);
     else if (message.type === "result") runEvents.result(message.result);
     else toView(event.data); // the view protocol
   };

@@ -388,6 +388,7 @@ function showBoards(update) {
     for (const motor of update.motors.filter((m) => m.board === state.name)) {
       rows.push([`motor ${motor.port}`, `${motor.steps} steps, ${Math.round(motor.rate_steps_per_s)} steps/s`]);
     }
+    for (const warning of state.warnings || []) rows.push([`warning ${warning.name}`, `×${warning.count} ${warning.detail}`]);
     board.figures.replaceChildren(...rows.map(([name, value]) => {
       const row = document.createElement("tr");
       element("th", {}, row, name);

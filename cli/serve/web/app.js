@@ -283,6 +283,8 @@ socket.addEventListener("message", (event) => {
   } else if (message.bridge) {
     const b = message.bridge;
     $("bridge").textContent = `${b.forwarded} requests, ${b.dropped + b.messages_dropped} dropped, ${b.timed_out} unanswered`;
+  } else if (message.ended) {
+    log(`the simulated board's run ended:\n${message.ended.text}`);  // a crash, exit(), a hang
   } else if ("console" in message) {
     log(message.console);
   } else {

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /* Bump when either table changes shape. The board refuses a host of another version. */
-#define STEPDANCE_BOARD_ABI_VERSION 8u
+#define STEPDANCE_BOARD_ABI_VERSION 9u
 
 /* Which hardware timer a timer_start() call is for. */
 enum StepdanceTimerId { STEPDANCE_TIMER_FRAME = 0, STEPDANCE_TIMER_KHZ = 1 };
@@ -63,6 +63,12 @@ typedef struct StepdanceBoardStatsV1 {
  * static. */
 typedef void (*StepdanceCounterFnV1)(void* context, const char* block, uint32_t instance, const char* name,
                                      uint64_t value);
+
+/* One kind of warning on the board's fault path (stepdance::WarningTally): its source (a block
+ * or interface), its reason's name, the first report's detail ("" if none) and how often it came
+ * since dance_start() or the last clear_fault(). Strings are valid during the call. */
+typedef void (*StepdanceWarningFnV1)(void* context, const char* source, const char* reason, const char* detail,
+                                     uint32_t count);
 
 /* Callbacks from the board into the simulator. `context` is the host_context given to attach. */
 typedef struct StepdanceHostV1 {
@@ -144,6 +150,8 @@ typedef struct StepdanceBoardV1 {
   void (*read_stats)(StepdanceBoardStatsV1* stats);
   /* Calls emit once per counter of every registered block. */
   void (*read_counters)(StepdanceCounterFnV1 emit, void* context);
+  /* Calls emit once per kind of warning tallied (in the order first seen). */
+  void (*read_warnings)(StepdanceWarningFnV1 emit, void* context);
   /* Leaves the innermost entry point now, which then returns `code` (non-zero). Called by the
    * host from inside the board's code: a host callback the sketch called, or a signal handler
    * that interrupted the sketch's own code (never one that interrupted a C library call). Does

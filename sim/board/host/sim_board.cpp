@@ -433,6 +433,18 @@ std::vector<SimBoard::BlockCounter> SimBoard::counters() const {
   return out;
 }
 
+std::vector<SimBoard::BoardWarning> SimBoard::warnings() const {
+  std::vector<BoardWarning> out;
+  if (board_ == nullptr) return out;
+  board_->read_warnings(
+      [](void* context, const char* source, const char* reason, const char* detail, uint32_t count) {
+        static_cast<std::vector<BoardWarning>*>(context)->push_back(
+            {std::string(source) + ": " + reason, std::string(detail), count});
+      },
+      &out);
+  return out;
+}
+
 uint64_t SimBoard::port_counter(const std::string& block_class, uint8_t port, const std::string& name) const {
   const std::vector<BlockCounter> all = counters();
   const std::string prefix = block_class + "#";

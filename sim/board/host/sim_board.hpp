@@ -172,6 +172,14 @@ class SimBoard {
   };
   /// Every block's named counters, in the engine's block order.
   std::vector<BlockCounter> counters() const;
+  /// One kind of warning the board's fault path tallied (a source and a reason).
+  struct BoardWarning {
+    std::string name;    ///< "source: reason", e.g. "Eibotboard: overrun"
+    std::string detail;  ///< the first report's detail ("" if it was only counted)
+    uint64_t count = 0;
+  };
+  /// Every kind of warning reported since dance_start(), in the order first seen.
+  std::vector<BoardWarning> warnings() const;
   /// Counter `name` of the block of class `block_class` whose "port" counter is `port` (an
   /// OutputPort or InputPort), or 0 if there is none.
   uint64_t port_counter(const std::string& block_class, uint8_t port, const std::string& name) const;

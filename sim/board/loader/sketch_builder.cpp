@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "board/abi/board_abi.h"
@@ -108,6 +109,13 @@ std::string SketchBuilder::default_cache_dir() {
   return toolchain::kFallbackCacheDir;
 }
 
+std::vector<std::string> SketchBuilder::toolchain_paths() {
+  std::vector<std::string> paths(std::begin(toolchain::kIncludeDirs), std::end(toolchain::kIncludeDirs));
+  paths.emplace_back(toolchain::kRuntimeLibrary);
+  paths.emplace_back(toolchain::kExportMap);
+  return paths;
+}
+
 std::string SketchBuilder::cache_key(const SketchSources& sources) const {
   ContentHash hash;
   hash.add(std::to_string(STEPDANCE_BOARD_ABI_VERSION));
@@ -199,6 +207,22 @@ bool SketchBuilder::store(const std::string& sources_key, const std::string& ste
 }
 
 SketchBuild SketchBuilder::build(const std::string& sketch) const {
+  {
+    const std::lock_guard<std::mutex> lock(built_mutex_);
+    const auto found = built_.find(sketch);
+    if (found != built_.end()) return found->second;
+  }
+  SketchBuild result = build_once(sketch);
+  if (!result.ok) return result;
+  SketchBuild again = result;
+  again.from_cache = true;
+  again.diagnostics.clear();  // its warnings were given with the first board
+  const std::lock_guard<std::mutex> lock(built_mutex_);
+  built_.emplace(sketch, std::move(again));
+  return result;
+}
+
+SketchBuild SketchBuilder::build_once(const std::string& sketch) const {
   SketchBuild result;
   SketchSources sources;
   if (!find_sketch_sources(sketch, sources, result.error)) return result;

@@ -2,6 +2,8 @@
 // it: the compiling BoardSource, linked by the command line and the tests (it runs the compiler).
 #pragma once
 
+#include <map>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -31,7 +33,9 @@ class SketchBuilder : public BoardSource {
   explicit SketchBuilder(std::string cache_dir = {});
 
   /// Builds (or finds in the cache) the board library for `sketch_path` (an .ino or a sketch
-  /// folder). Context: loop (runs the compiler).
+  /// folder). A sketch built before by this builder is not looked up again: the boards of one run
+  /// that share a sketch cost one lookup (hashing the ~470 files a build read took ~50 ms a
+  /// board). Context: loop (runs the compiler); any thread.
   SketchBuild build(const std::string& sketch_path) const override;
   /// Names the offsets with one run of addr2line (binutils, which the compiler needs anyway).
   std::vector<std::string> symbols(const std::string& library_path, const std::vector<uintptr_t>& offsets) const override;
@@ -39,6 +43,9 @@ class SketchBuilder : public BoardSource {
   /// $STEPDANCE_SKETCH_CACHE, else $XDG_CACHE_HOME/stepdance/sketches, else
   /// $HOME/.cache/stepdance/sketches, else the build tree's sketch-cache/.
   static std::string default_cache_dir();
+  /// The files and folders a build reads besides the sketch and the system's: the include
+  /// folders, the runtime library and the export map (a confined build may read only these).
+  static std::vector<std::string> toolchain_paths();
   const std::string& cache_dir() const { return cache_dir_; }
 
  private:
@@ -56,7 +63,12 @@ class SketchBuilder : public BoardSource {
   // Records the inputs and moves <stem>.so to its place; false with result.error if it cannot.
   bool store(const std::string& sources_key, const std::string& stem, SketchBuild& result) const;
 
+  // The uncached build().
+  SketchBuild build_once(const std::string& sketch_path) const;
+
   std::string cache_dir_;
+  mutable std::mutex built_mutex_;
+  mutable std::map<std::string, SketchBuild> built_;  ///< sketch path → its successful build
 };
 
 }  // namespace stepdance::sim

@@ -61,6 +61,11 @@ void read_counters(StepdanceCounterFnV1 emit, void* context) {
                           &forwarder);
 }
 
+void read_warnings(StepdanceWarningFnV1 emit, void* context) {
+  WarningTally tally;
+  for (uint32_t i = 0; warning_tally(i, tally); ++i) emit(context, tally.source, to_string(tally.reason), tally.detail, tally.count);
+}
+
 // Each entry runs guarded, so the simulator can leave it early (see EntryGuard; the frequent
 // ones as kGuardFrequentEntries says).
 int run_setup(int64_t now) {
@@ -95,7 +100,7 @@ int deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pul
 
 StepdanceBoardV1 board_table = {
     STEPDANCE_BOARD_ABI_VERSION, nullptr, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
-    &read_counters, &EntryGuard::escape,
+    &read_counters, &read_warnings, &EntryGuard::escape,
 };
 
 }  // namespace

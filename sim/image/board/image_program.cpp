@@ -10,6 +10,10 @@ namespace {
 
 /// Exception number of an interrupt (ARMv7-M B1.5.2: 16 + IRQ).
 constexpr unsigned exception_of_irq(unsigned irq) { return 16 + irq; }
+/// The Teensy backend's frame: FLEXIO3's tick interrupt (IRQ 156) pends IRQ 155, an interrupt the
+/// chip leaves unused, whose handler runs the frame's stages (src/stepdance/platform/teensy/
+/// regs_nvic.hpp, kIrqReservedForFrame). The frame's cost is both handlers' instructions.
+constexpr unsigned kFrameStagesIrq = 155;
 
 }  // namespace
 
@@ -30,7 +34,21 @@ bool ImageProgram::start(SimBoard& board, std::string& error) {
     if (rates.core_hz != 0) chip_.set_core_clock_hz(rates.core_hz);
   });
   chip_.on_stop([this](const ImageStop& stop) { stopped(stop); });
+  watch_setup();
   return true;
+}
+
+// The first arrival at the sketch's setup() (its symbol, C++ mangled as the Arduino IDE links
+// it): the boot's cost in instructions and simulated time.
+void ImageProgram::watch_setup() {
+  uint32_t address = 0;
+  if (!chip_.symbols().find("_Z5setupv", address) && !chip_.symbols().find("setup", address)) return;
+  chip_.on_reach(address, [this](uint64_t instructions, SimTime time_ns) {
+    if (setup_reached_) return;
+    setup_reached_ = true;
+    instructions_to_setup_ = instructions;
+    time_to_setup_ns_ = time_ns - powered_on_ns_;
+  });
 }
 
 // The chip's blocks, each group added whole or not at all; an overlap is a bug of the models.
@@ -44,7 +62,10 @@ bool ImageProgram::add_blocks(std::string& error) {
   return false;
 }
 
-void ImageProgram::power_on(SimTime time_ns) { chip_.power_on(time_ns); }
+void ImageProgram::power_on(SimTime time_ns) {
+  powered_on_ns_ = time_ns;
+  chip_.power_on(time_ns);
+}
 
 void ImageProgram::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) { motion_->capture().pulse_arrived(port, pulse); }
 
@@ -63,8 +84,14 @@ void ImageProgram::stopped(const ImageStop& stop) {
   if (stop_listener_) stop_listener_(report);
 }
 
+ImageChip::HandlerCost ImageProgram::frame_cost() const {
+  const ImageChip::HandlerCost tick = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost stages = chip_.handler_cost(exception_of_irq(kFrameStagesIrq));
+  return {tick.entries, tick.instructions + stages.instructions};
+}
+
 double ImageProgram::frame_isr_instructions() const {
-  const ImageChip::HandlerCost cost = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost cost = frame_cost();
   return cost.entries == 0 ? 0.0 : static_cast<double>(cost.instructions) / static_cast<double>(cost.entries);
 }
 
@@ -72,7 +99,7 @@ double ImageProgram::frame_isr_instructions() const {
 // frame's cycles at the core clock (one instruction per cycle).
 StepdanceBoardStatsV1 ImageProgram::stats() const {
   StepdanceBoardStatsV1 stats{};
-  const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost frame = frame_cost();
   stats.frames = static_cast<uint32_t>(frame.entries);
   stats.fault_name = "";
   stats.fault_detail = "";
@@ -83,11 +110,13 @@ StepdanceBoardStatsV1 ImageProgram::stats() const {
 }
 
 std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
-  const ImageChip::HandlerCost frame = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
+  const ImageChip::HandlerCost frame = frame_cost();
   return {{"instructions", static_cast<double>(chip_.instructions())},
           {"core_clock_hz", static_cast<double>(chip_.core_clock_hz())},
           {"frame_interrupts", static_cast<double>(frame.entries)},
-          {"frame_interrupt_instructions_mean", frame_isr_instructions()}};
+          {"frame_interrupt_instructions_mean", frame_isr_instructions()},
+          {"instructions_to_setup", setup_reached_ ? static_cast<double>(instructions_to_setup_) : -1.0},
+          {"time_to_setup_s", setup_reached_ ? to_seconds(time_to_setup_ns_) : -1.0}};
 }
 
 // ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------
@@ -96,7 +125,14 @@ void ImageProgram::pin_config(SimTime, uint8_t pin, PinConfig config) { board_->
 
 void ImageProgram::pin_drive(SimTime, uint8_t pin, bool high) { board_->write_pin(pin, high); }
 
-bool ImageProgram::pin_level(SimTime, uint8_t pin) { return board_->pin_level(pin); }
+// An input port's DIR pin carries what the cable's last pulse left on it (the capture model
+// knows); every other pin is the board's.
+bool ImageProgram::pin_level(SimTime now_ns, uint8_t pin) {
+  for (uint8_t port = 0; port < kMaxBoardPorts; ++port) {
+    if (InputCapture::dir_pin(port) == pin) return motion_->capture().dir_line(port, now_ns);
+  }
+  return board_->pin_level(pin);
+}
 
 void ImageProgram::port_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
   board_->play_frame(port, start_ns, words, frame_ns);

@@ -58,6 +58,9 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   size_t serial_to_device(SimTime now_ns, uint8_t* data, size_t capacity) override;
 
   bool add_blocks(std::string& error);
+  void watch_setup();
+  /// The frame interrupts (tick entries) and the instructions of the tick and stage handlers.
+  ImageChip::HandlerCost frame_cost() const;
   void stopped(const ImageStop& stop);
 
   TeensyModel model_;
@@ -68,6 +71,10 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   std::unique_ptr<MotionBlocks> motion_;
   std::unique_ptr<usb::UsbBlocks> usb_;
   std::function<void(const SketchStop&)> stop_listener_;
+  SimTime powered_on_ns_ = 0;
+  bool setup_reached_ = false;         ///< the image has entered setup() (-1 in figures until then)
+  uint64_t instructions_to_setup_ = 0;
+  SimTime time_to_setup_ns_ = 0;
 };
 
 }  // namespace stepdance::sim::image

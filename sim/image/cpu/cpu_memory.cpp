@@ -38,6 +38,10 @@ std::string hex(uint32_t value) {
 void ImageChip::map_memory() {
   for (const Memory& ram : kRam) uc_mem_map(uc_, ram.base, ram.size_bytes, UC_PROT_ALL);
   uc_mem_map(uc_, kFlashBase, flash_bytes_, UC_PROT_READ | UC_PROT_EXEC);
+  // NOR flash outside the image reads erased (0xFF), as on a board fresh from the loader: the
+  // EEPROM emulation at the flash's end then finds no data.
+  const std::vector<uint8_t> erased(flash_bytes_, 0xFF);
+  uc_mem_write(uc_, kFlashBase, erased.data(), erased.size());
   windows_[0] = {this, kPeripheralBase, false};
   windows_[1] = {this, kFlashBase + flash_bytes_, false};
   windows_[2] = {this, kSystemBase, true};

@@ -68,20 +68,12 @@ void ImageChip::run_slice() {
   in_run_ = true;
   we_stopped_ = false;
   yielded_ = false;
-  block_stop_ = false;
   install_double_sites();  // vfp_hooks.cpp: only between runs
   const uint32_t pc = read_register(UC_ARM_REG_PC) | 1u;
   const uc_err error = uc_emu_start(uc_, pc, kNoUntil, 0, 0);
+  restore_stopped_block_pc();
   in_run_ = false;
   block_ = nullptr;
-  // Unicorn 2.0.1 puts the PC back to the start of the stopped block only while no code hook
-  // exists (cpu_tb_exec, TB_EXIT_REQUESTED); with one (the double-precision sites' hooks, or the
-  // step counter's) it keeps the last PC it synced, which inside chained blocks is an earlier
-  // block's start: the run would resume there, repeating its pushes. The hook knows the block.
-  if (block_stop_) {
-    const uint32_t resume = block_stop_pc_ | 1u;
-    uc_reg_write(uc_, UC_ARM_REG_PC, &resume);
-  }
   if (stop_ != nullptr || we_stopped_) return;
   if (error != UC_ERR_OK) {
     raise_fault(ImageStop::Kind::kHardFault, std::string("HardFault: the emulator stopped: ") + uc_strerror(error),
@@ -129,9 +121,8 @@ void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* u
   const ThumbBlock& block = chip.blocks_->get(static_cast<uint32_t>(address), size);
   if (chip.block_must_stop(block, static_cast<uint32_t>(address))) {
     chip.we_stopped_ = true;
-    chip.block_stop_ = true;  // before the block runs: run_slice() sets the PC to its start
-    chip.block_stop_pc_ = static_cast<uint32_t>(address);
-    uc_emu_stop(uc);
+    chip.block_stop_pc_ = static_cast<uint32_t>(address) | 1u;  // vfp_hooks.cpp
+    uc_emu_stop(uc);  // before the block runs: the PC stays at its start
     return;
   }
   chip.block_ = &block;

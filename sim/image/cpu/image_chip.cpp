@@ -28,7 +28,11 @@ ImageChip::ImageChip(Scheduler& scheduler, TeensyModel model)
     : scheduler_(scheduler),
       model_(model),
       flash_bytes_(model == TeensyModel::kTeensy41 ? 8u << 20 : 2u << 20) {
-  if (uc_open(UC_ARCH_ARM, static_cast<uc_mode>(UC_MODE_THUMB | UC_MODE_MCLASS), &uc_) != UC_ERR_OK) {
+  // Thumb only, not UC_MODE_MCLASS: unicorn 2.0.1 forces a Cortex-M33 (single-precision FPU,
+  // so every double-precision instruction is undefined) on any engine opened with MCLASS,
+  // whatever model uc_ctl_set_cpu_model asks for (qemu/target/arm/cpu.c, cpu_arm_init). The M7
+  // model is M-profile by its own features.
+  if (uc_open(UC_ARCH_ARM, UC_MODE_THUMB, &uc_) != UC_ERR_OK) {
     throw std::runtime_error("unicorn: cannot open an ARM M-profile engine");
   }
   if (uc_ctl_set_cpu_model(uc_, UC_CPU_ARM_CORTEX_M7) != UC_ERR_OK) {
@@ -76,10 +80,23 @@ void ImageChip::power_on(SimTime time_ns) {
     finish_stop();
     return;
   }
-  uint32_t sp = kBootStack, pc = image_.entry | 1u;
+  uint32_t sp = kBootStack, pc = boot_entry() | 1u;
   uc_reg_write(uc_, UC_ARM_REG_SP, &sp);
   uc_reg_write(uc_, UC_ARM_REG_PC, &pc);
   scheduler_.schedule(event_, time_ns);
+}
+
+// Where the boot ROM starts a FlexSPI image (IMXRT1060RM 9.7.1.1): the image vector table at
+// flash + 0x1000 (header tag 0xD1) names the entry. Teensyduino's ELF entry is that table itself;
+// an ELF whose entry is code (the CI stand-in's) starts there when the table names it too.
+uint32_t ImageChip::boot_entry() {
+  constexpr uint32_t kIvtAddress = 0x60001000u;
+  constexpr uint8_t kIvtTag = 0xD1;
+  uint32_t ivt[2] = {0, 0};
+  if ((image_.entry & ~1u) == kIvtAddress && read_memory(kIvtAddress, ivt, sizeof ivt) && (ivt[0] & 0xFF) == kIvtTag) {
+    return ivt[1];
+  }
+  return image_.entry;
 }
 
 void ImageChip::set_core_clock_hz(uint32_t hz) {

@@ -32,7 +32,8 @@ struct BlockAccess;
 /// One i.MX RT1062 core running one firmware image.
 ///
 /// Memory map (IMXRT1060RM rev 3, 2.2 "memory map"): FlexSPI flash at 0x60000000 (2 MB on a
-/// Teensy 4.0, 8 MB on a 4.1; read and execute only), ITCM at 0x00000000 (512 KB), DTCM at
+/// Teensy 4.0, 8 MB on a 4.1; read and execute only; erased, 0xFF, where the image does not
+/// fill it), ITCM at 0x00000000 (512 KB), DTCM at
 /// 0x20000000 (512 KB), OCRAM at 0x20200000 (1 MB: OCRAM2 and the FlexRAM's OCRAM banks) — the
 /// FlexRAM's largest sizes, whatever IOMUXC_GPR14/16/17 say. Peripherals (0x40000000–0x7FFFFFFF
 /// outside the flash) reach bus(); the Cortex-M7's system space (0xE0000000–0xE00FFFFF) reaches
@@ -86,6 +87,9 @@ class ImageChip : public ChipContext {
   /// thing, as Teensyduino's ResetHandler does); then the CPU runs as a scheduler event from
   /// `time_ns`. A stop (kBadImage) if nothing is loaded or the entry is outside memory.
   void power_on(SimTime time_ns);
+  /// The address the boot ROM starts the image at: the IVT's entry when the ELF's entry is the
+  /// IVT (Teensyduino's images), else the ELF's entry.
+  uint32_t boot_entry();
   /// Called once when the image stops (fault, stall, unmodelled register). Several may listen.
   void on_stop(std::function<void(const ImageStop&)> listener) { stop_listeners_.push_back(std::move(listener)); }
   bool stopped() const { return stopped_; }
@@ -117,9 +121,11 @@ class ImageChip : public ChipContext {
   /// The system-space state (for tests and reports).
   const CoreRegisters& core_registers() const { return core_; }
   ExceptionState& exceptions() { return exceptions_; }
-  /// Double-precision FPU instructions run in software (vfp_hooks.cpp: the emulator has no
-  /// double-precision unit): all of them, those that took the slow path (a site's first run, an
-  /// instruction inside an IT block: one emulator restart each), and the sites hooked.
+  /// Double-precision FPU instructions run in software by vfp_hooks.cpp: all of them, those that
+  /// took the slow path (a site's first run, an instruction inside an IT block: one emulator
+  /// restart each), and the sites hooked. Since the engine is a real Cortex-M7 (FPv5-D16;
+  /// image_chip.cpp), its FPU runs doubles itself and these stay 0: the software path is only
+  /// taken for a double instruction the emulator reports as undefined.
   struct DoubleOps {
     uint64_t executed = 0;
     uint64_t slow = 0;
@@ -232,6 +238,7 @@ class ImageChip : public ChipContext {
   /// translation while the emulator runs breaks its chained blocks).
   void install_double_sites();
   void advance_it_state();
+  void restore_stopped_block_pc();
   static void on_double_site(uc_struct* uc, uint64_t address, uint32_t size, void* user);
 
   Scheduler& scheduler_;
@@ -275,8 +282,6 @@ class ImageChip : public ChipContext {
   bool recheck_ = false;       ///< something was pended or unmasked: take it at the next block
   bool we_stopped_ = false;    ///< the last emulator return was our own uc_emu_stop
   bool yielded_ = false;       ///< … or a YIELD hint: run on
-  bool block_stop_ = false;    ///< the block hook stopped the run before the block at block_stop_pc_
-  uint32_t block_stop_pc_ = 0; ///< … whose start the PC is set to after the run (cpu_run.cpp)
   uint64_t slept_ = 0;         ///< cycles spent asleep (WFI, WFE)
   bool asleep_ = false;        ///< in WFI/WFE: no event queued until something pends
   bool check_masks_ = false;   ///< something pending is masked: re-check at every block
@@ -295,6 +300,7 @@ class ImageChip : public ChipContext {
   std::deque<DoubleSite> double_sites_;  ///< hooked sites (stable addresses: the hooks point at them)
   std::vector<DoubleSite> new_double_sites_;  ///< found during the current run, hooked after it
   DoubleOps double_ops_;
+  uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
 };
 
 }  // namespace stepdance::sim::image

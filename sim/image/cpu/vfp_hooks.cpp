@@ -2,21 +2,23 @@
 //
 // Debian's unicorn 2.0.1 models the Cortex-M7's FPU as single precision only: a double-precision
 // data-processing instruction is undefined to it. The first time one is reached (the emulator
-// reports an invalid instruction with the PC on it), it is executed here (vfp_double.cpp) and the
-// PC moves past it (an emulator restart, ~30 µs). Between runs its site then becomes NOP.W with a
-// code hook that executes the operation just before the NOP runs (~0.1 µs, no restart).
+// reports an invalid instruction with the PC on it), it is executed here (vfp_double.cpp),
+// ITSTATE is advanced if it sits in an IT block (written through CPSR, which the emulator
+// honours), and the PC moves past it; that ends the run (an emulator restart, ~30 µs). Before
+// the next run the site becomes NOP.W in the emulator's memory with a code hook of its own that
+// executes the double-precision operation: from then on the block runs straight through
+// (~0.3 µs per operation, docs/simulator.md).
 //
-// A code hook changes how unicorn 2.0.1 stops: with any UC_HOOK_CODE registered it no longer puts
-// the PC back to the start of a block stopped by the block hook, so run_slice() does (cpu_run.cpp).
-//
-// Counting: an undefined instruction ends its translation block, so it is the block's last
-// instruction; the block hook counted it with the block. As NOP.W it is one instruction of its
-// block like any other. Each runs once, counted once.
+// Counting: the first time, the undefined instruction ends its translation block and the block
+// hook counted it with the block; afterwards it is a NOP.W inside its block. Each run of the
+// instruction is counted once.
 //
 // IT blocks: the emulator skips a conditional instruction whose condition fails before calling
-// a code hook or reaching the undefined instruction, so reaching either means the condition
-// passed. On the slow path ITSTATE is advanced here (written through CPSR, which the emulator
-// honours); as NOP.W the CPU advances it itself.
+// its code hook or reaching the undefined instruction, so reaching either means the condition
+// passed; the NOP.W then advances ITSTATE as any instruction does.
+//
+// With any code hook installed, unicorn no longer puts the PC back at the start of a block the
+// block hook stopped the run before (restore_stopped_block_pc() does).
 #include <unicorn/unicorn.h>
 
 #include "image/cpu/image_chip.hpp"
@@ -27,7 +29,9 @@ namespace {
 
 constexpr uint32_t kControlNpriv = 1u << 0, kControlFpca = 1u << 2;
 /// Whether sites get code hooks after their first run (fast) or take the invalid-instruction
-/// path every time (about 30 µs each).
+/// path every time (about 30 µs each). The fault the hooks once caused in Step-A-Sketch's image
+/// (a block of micros() restarted after its push) was the stale PC restore_stopped_block_pc()
+/// fixes.
 constexpr bool kHookDoubleSites = true;
 constexpr uint32_t kFpccrAspen = 1u << 31;
 /// ITSTATE in xPSR/CPSR: IT[1:0] at bits 26:25, IT[7:2] at bits 15:10 (ARMv7-M ARM B1.4.2).
@@ -66,9 +70,10 @@ void ImageChip::advance_it_state() {
 
 // The site's instruction becomes NOP.W (ARMv7-M A7.7.88, T2: 0xF3AF 0x8000) in the emulator's
 // memory and its code hook executes the double-precision operation just before it: the block
-// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself. (Writing
-// the PC from a hook instead leaves unicorn 2.0.1 a stop request that the next register access
-// turns into a restart of its block, with the block's earlier stores and pushes already done.)
+// runs on without leaving the emulator, and the CPU advances the PC and ITSTATE itself, inside
+// an IT block too. (A hook that writes PC = address + 4 instead ends the block at every site and
+// sends the emulator round its loop; the restarted block once blamed on it was the stale PC that
+// restore_stopped_block_pc() fixes.)
 void ImageChip::hook_double_site(const DoubleSite& site) {
   double_sites_.push_back(site);
   uc_hook hook;
@@ -95,6 +100,16 @@ void ImageChip::on_double_site(uc_struct* uc, uint64_t, uint32_t, void* user) {
     site.chip->we_stopped_ = true;
     uc_emu_stop(uc);
   }
+}
+
+// Once any code hook exists, unicorn no longer puts the PC back to the start of a block that the
+// block hook stopped before (qemu/accel/tcg/cpu-exec.c syncs it only without UC_HOOK_CODE): the
+// PC would be wherever it was last synchronised (a hooked instruction, a register access), and
+// the next run would repeat instructions already done. Put it there, as the run loop expects.
+void ImageChip::restore_stopped_block_pc() {
+  // Also after uc_emu_start with a count (step_through_block), which adds a code hook of its own.
+  if (block_stop_pc_ != 0) uc_reg_write(uc_, UC_ARM_REG_PC, &block_stop_pc_);
+  block_stop_pc_ = 0;
 }
 
 // Moves the instruction's D registers, FPSCR (and APSR for VSEL) out of the emulator, executes,

@@ -13,7 +13,6 @@ namespace {
 constexpr uint8_t kDeviceToHost = 0x80, kClassInterface = 0x21;
 constexpr uint8_t kGetDescriptor = 6, kSetAddress = 5, kSetConfiguration = 9;
 constexpr uint8_t kSetLineCoding = 0x20, kSetControlLineState = 0x22;
-constexpr uint16_t kDtrAndRts = 0x0003;  // PSTN 1.2 table 18: D0 DTR, D1 RTS
 constexpr SimTime kDataStageNs = 500 * kMillisecond;   // §9.2.6.4: IN data within 500 ms
 constexpr SimTime kOutDataStageNs = 5000 * kMillisecond;  // §9.2.6.4: whole OUT request within 5 s
 constexpr SimTime kStatusStageNs = 50 * kMillisecond;  // §9.2.6.4: status within 50 ms
@@ -71,20 +70,38 @@ void UsbHost::begin_next_request() {
         return queue_request("CDC SET_LINE_CODING", kClassInterface, kSetLineCoding, 0, record_.cdc.comm_interface, 7, coding);
       }
       case kLineState:
-        return queue_request("CDC SET_CONTROL_LINE_STATE(DTR, RTS)", kClassInterface, kSetControlLineState, kDtrAndRts,
+        line_state_pending_ = false;
+        return queue_request("CDC SET_CONTROL_LINE_STATE", kClassInterface, kSetControlLineState, line_state_,
                              record_.cdc.comm_interface, 0);
       default: break;
     }
     ++step_;
   }
   control_active_ = false;
+  if (phase_ == Phase::kRunning) return;  // a line-state change after enumeration
   phase_ = Phase::kRunning;
   record_.configured_ns = chip_.now_ns();
 }
 
+void UsbHost::set_line_state(bool dtr, bool rts) {
+  line_state_ = static_cast<uint16_t>((dtr ? 1u : 0u) | (rts ? 2u : 0u));
+  line_state_pending_ = true;
+  wake();
+}
+
+bool UsbHost::send_line_state() {
+  if (!line_state_pending_ || control_active_ || phase_ != Phase::kRunning) return false;
+  line_state_pending_ = false;
+  step_ = kSteps;  // no enumeration step follows
+  queue_request("CDC SET_CONTROL_LINE_STATE", kClassInterface, kSetControlLineState, line_state_,
+                record_.cdc.comm_interface, 0);
+  return true;
+}
+
 bool UsbHost::run_control(int& budget) {
   if (!control_active_) return false;
-  while (budget > 0 && control_active_ && phase_ == Phase::kEnumerating && chip_.now_ns() >= phase_until_ns_) {
+  while (budget > 0 && control_active_ && (phase_ == Phase::kEnumerating || phase_ == Phase::kRunning) &&
+         chip_.now_ns() >= phase_until_ns_) {
     ControlTransfer& t = control_;
     bool moved = false;
     if (t.stage == ControlTransfer::Stage::kSetup) {

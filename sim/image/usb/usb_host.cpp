@@ -110,7 +110,8 @@ void UsbHost::run_tick() {
     return;
   }
   int budget = record_.speed == BusSpeed::kHigh ? kHighSpeedTransactions : kFullSpeedTransactions;
-  bool busy = run_control(budget);
+  bool busy = send_line_state();
+  busy = run_control(budget) || busy;
   if (phase_ == Phase::kFailed) return;
   if (phase_ == Phase::kRunning) busy = run_bulk(budget) || busy;
   if (now < phase_until_ns_) {

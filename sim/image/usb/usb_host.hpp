@@ -72,7 +72,11 @@ class UsbHost {
   /// The device changed something the host may find: look at the next (micro)frame.
   void wake();
 
-  /// True once the CDC function is configured and DTR is on.
+  /// Changes the CDC control line state (PSTN 1.2 table 18: DTR, RTS) as a terminal program
+  /// does when it opens or closes the port; sent at the next (micro)frame once enumerated (the
+  /// enumeration itself sends the latest state, DTR and RTS on unless changed before).
+  void set_line_state(bool dtr, bool rts);
+  /// True once the CDC function is configured and the first line state was sent.
   bool enumerated() const { return phase_ == Phase::kRunning; }
   const HostRecord& record() const { return record_; }
   /// The enumeration failure in one line ("" if none), e.g. "usb host at 0.312 s: …".
@@ -96,6 +100,7 @@ class UsbHost {
   void run_tick();
   void advance_phase();
   bool run_control(int& budget);
+  bool send_line_state();
   bool control_setup(ControlTransfer& transfer);
   bool control_data(ControlTransfer& transfer, int& budget);
   bool control_status(ControlTransfer& transfer);
@@ -127,6 +132,8 @@ class UsbHost {
   uint16_t language_ = 0x0409;
   ControlTransfer control_;
   bool control_active_ = false;
+  uint16_t line_state_ = 0x0003;  ///< PSTN 1.2 table 18: D0 DTR, D1 RTS
+  bool line_state_pending_ = false;
   std::deque<uint8_t> out_;      ///< bytes from the world waiting for the device
   std::vector<uint8_t> in_held_; ///< bytes from the device the world has not taken yet
   HostRecord record_;

@@ -18,6 +18,30 @@ volatile uint32_t reports_made = 0;     // sequence number of the newest report
 uint32_t reports_delivered = 0;         // loop only: newest sequence handed to subscribers
 volatile uint32_t reports_lost = 0;
 FaultSubscriber subscribers[kMaxFaultSubscribers] = {};
+WarningTally tallies[kWarningKinds];
+uint32_t tally_count = 0;
+
+bool same_source(const char* a, const char* b) {
+  if (a == b) return true;
+  while (*a != '\0' && *a == *b) {
+    ++a;
+    ++b;
+  }
+  return *a == *b;
+}
+
+// Adds one to the kind's tally (a new kind keeps `detail`). Call inside a critical section.
+void tally_warning(FaultReason reason, const char* source, const char* detail) {
+  warnings = warnings + 1;
+  for (uint32_t i = 0; i < tally_count; ++i) {
+    if (tallies[i].reason == reason && same_source(tallies[i].source, source)) {
+      ++tallies[i].count;
+      return;
+    }
+  }
+  if (tally_count == kWarningKinds) return;
+  tallies[tally_count++] = WarningTally{source, reason, detail, 1};
+}
 
 void fault_without_report(FaultReason reason, const char* detail);
 
@@ -70,7 +94,19 @@ void report_fault(FaultLevel level, FaultReason reason, const char* source, cons
   }
   hal::CriticalSection guard;
   if (level == FaultLevel::kAlarm) alarm_raised = true;
-  else warnings = warnings + 1;
+  else tally_warning(reason, source != nullptr ? source : "", detail != nullptr ? detail : "");
+}
+
+void count_warning(FaultReason reason, const char* source) {
+  hal::CriticalSection guard;
+  tally_warning(reason, source != nullptr ? source : "", "");
+}
+
+bool warning_tally(uint32_t index, WarningTally& out) {
+  hal::CriticalSection guard;
+  if (index >= tally_count) return false;
+  out = tallies[index];
+  return true;
 }
 
 bool on_fault(FaultSubscriber subscriber) {
@@ -158,6 +194,7 @@ void clear_fault() {
   first_detail = "";
   count = 0;
   warnings = 0;
+  tally_count = 0;
   alarm_raised = false;
   reports_made = 0;
   reports_delivered = 0;

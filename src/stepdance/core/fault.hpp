@@ -87,6 +87,24 @@ void report_fault(FaultLevel level, FaultReason reason, const char* source, cons
 
 /// Warnings reported since start or clear_fault(). Context: any.
 uint32_t warning_count();
+
+/// One kind of warning (a source and a reason) and how often it came since start or
+/// clear_fault(). Strings are static.
+struct WarningTally {
+  const char* source = "";
+  FaultReason reason = FaultReason::kNone;
+  const char* detail = "";  ///< the first report's detail ("" if the kind was only counted)
+  uint32_t count = 0;
+};
+/// Kinds of warning tallied; further kinds count in warning_count() only.
+constexpr uint32_t kWarningKinds = 8;
+/// Counts one more warning of a kind without a report of its own (a repeat whose first instance
+/// was reported with its detail): no history entry, no subscriber call. Context: any (frame ISR
+/// included); never allocates, never blocks.
+void count_warning(FaultReason reason, const char* source);
+/// The `index`-th kind of warning seen (0 = the first), with its count; false past the last.
+/// Context: any.
+bool warning_tally(uint32_t index, WarningTally& out);
 /// True while an alarm is raised and not yet cleared. Context: any.
 bool alarm_active();
 /// Clears a raised alarm (the sketch's or host's explicit acknowledgement). Context: loop.

@@ -135,7 +135,10 @@ TEST_F(ArcStreaming, SoftResetAbandonsTheRestOfTheArc) {
   replies.clear();
   host.send("\x18");
   pass();
-  EXPECT_EQ(count(replies, "ok"), 0) << "the abandoned arc must not be answered: " << replies;
+  // As Grbl's mc_arc bails on the abort and gc_execute_line still returns STATUS_OK: the line
+  // is answered once, before the welcome.
+  EXPECT_EQ(count(replies, "ok"), 1) << replies;
+  EXPECT_LT(replies.find("ok\r\n"), replies.find("Grbl 1.1")) << replies;
   EXPECT_EQ(count(replies, "Grbl 1.1"), 1) << replies;
   uint32_t queued_after_reset = 0;
   for (int i = 0; i < 20000; ++i) {
@@ -144,7 +147,7 @@ TEST_F(ArcStreaming, SoftResetAbandonsTheRestOfTheArc) {
   }
   EXPECT_EQ(queued_after_reset, 0u);
   EXPECT_TRUE(gcode.interpolator().is_idle());
-  EXPECT_EQ(count(replies, "ok"), 0) << replies;
+  EXPECT_EQ(count(replies, "ok"), 1) << replies;
 }
 
 TEST_F(ArcStreaming, SoftLimitsTakeTheBoxTheArcSweeps) {
@@ -158,6 +161,7 @@ TEST_F(ArcStreaming, SoftLimitsTakeTheBoxTheArcSweeps) {
   replies.clear();
   host.send("\x18");  // whichever way the refusal came (error:15, or Grbl's ALARM:2), start afresh
   pass();
+  replies.clear();  // Grbl's ALARM:2 line is answered by the reset
   host.send("$X\nG0 X5 Y10\nG2 X5 Y10 I0 J5 F6000\n");
   for (int i = 0; i < 200000 && !(count(replies, "ok") == 3 && gcode.interpolator().is_idle()); ++i) frame_then_pass();
   EXPECT_EQ(count(replies, "ok"), 3) << replies;

@@ -2,6 +2,7 @@
 // axis words, exponents, the line-number limit. Expected values from gcode.c, not from our output.
 #include <gtest/gtest.h>
 
+#include <math.h>
 #include <string.h>
 
 #include <vector>
@@ -71,6 +72,33 @@ TEST_F(GrblWords, ArcWithoutAxisWordsIsErrorTwentySix) {
   EXPECT_EQ(run("G2 I5 F100"), GrblError::kNoAxisWords);
   EXPECT_EQ(run("G2 Z5 I5 F100"), GrblError::kNoInPlaneAxisWords);
   EXPECT_TRUE(sink.list.empty());
+}
+
+// gcode.c (offset form): once an in-plane offset is there, I, J and K are all marked used, so the
+// out-of-plane word is accepted and ignored; the radius form leaves it unused (error:36).
+TEST_F(GrblWords, OffsetFormIgnoresTheOutOfPlaneOffsetWord) {
+  // The arc from (0, 0) round (5, 0) to (10, 0), clockwise: half a turn of radius 5, in G17 and,
+  // after G18, in the ZX plane (centre (Z, X) = (0, 5) from the start at X 0).
+  ASSERT_EQ(run("G2 X10 I5 K1 F100"), GrblError::kOk);
+  ASSERT_EQ(run("G2 X0 I-5 J0 K0"), GrblError::kOk);
+  ASSERT_EQ(run("G18 G2 X10 I5 J1"), GrblError::kOk);
+  ASSERT_EQ(sink.list.size(), 3u);
+  const double kPi = 3.14159265358979323846;
+  const double expected_center_0[3] = {5.0, 5.0, 0.0};  // G17: X; G18: Z
+  const double expected_center_1[3] = {0.0, 0.0, 5.0};  // G17: Y; G18: X
+  const double expected_end_x[3] = {10.0, 0.0, 10.0};
+  for (int i = 0; i < 3; ++i) {
+    const Motion& arc = sink.list[static_cast<size_t>(i)];
+    EXPECT_EQ(arc.kind, MotionKind::kArc);
+    EXPECT_NEAR(arc.center_0_mm, expected_center_0[i], 1e-12);
+    EXPECT_NEAR(arc.center_1_mm, expected_center_1[i], 1e-12);
+    EXPECT_NEAR(arc.radius_mm, 5.0, 1e-12);
+    EXPECT_NEAR(fabs(arc.sweep_rad), kPi, 1e-12);
+    EXPECT_NEAR(arc.end_mm[kAxisX], expected_end_x[i], 1e-12);
+    EXPECT_DOUBLE_EQ(arc.end_mm[kAxisZ], 0.0);
+  }
+  EXPECT_EQ(run("G17 G2 X0 R5 K1"), GrblError::kUnusedValueWords);  // 36: R leaves K unused
+  EXPECT_EQ(run("G17 G2 X10 K1"), GrblError::kNoInPlaneOffsetWords);  // 35: no in-plane offset
 }
 
 // Grbl's read_float reads no exponent: `X1e1` is X1 and an E word, which Grbl does not know.

@@ -290,8 +290,9 @@ TEST_F(GrblLink, SoftLimitsNeedHomingAsOnGrbl) {
 }
 
 // Grbl 1.1h's limits_soft_check: a moving machine comes to a controlled stop, the queue is
-// dropped, ALARM:2 and "Reset to continue"; the line gets no reply and nothing is heard but
-// Ctrl-X, after which the alarm holds until `$X`.
+// dropped, ALARM:2 and "Reset to continue"; nothing is heard but Ctrl-X, which ends the
+// critical-event loop: the line then gets its `ok` (gc_execute_line returns STATUS_OK) before
+// the welcome, and the alarm holds until `$X`.
 TEST_F(GrblLink, ATargetOutsideTravelRaisesAlarmTwoAndLocksUntilReset) {
   exchange("$22=1\n$20=1\n$130=100\n");
   EXPECT_EQ(exchange("G0 X10 Y10\n"), "ok\r\n");
@@ -301,7 +302,7 @@ TEST_F(GrblLink, ATargetOutsideTravelRaisesAlarmTwoAndLocksUntilReset) {
   EXPECT_EQ(machine.resets, 1);
   EXPECT_EQ(machine.motions.size(), 1u);  // neither the move nor the line after it
   EXPECT_EQ(exchange("?G0 X30\n$X\n~"), "");
-  EXPECT_EQ(exchange("\x18"), "\r\nGrbl 1.1h ['$' for help]\r\n[MSG:'$H'|'$X' to unlock]\r\n");
+  EXPECT_EQ(exchange("\x18"), "ok\r\n\r\nGrbl 1.1h ['$' for help]\r\n[MSG:'$H'|'$X' to unlock]\r\n");
   EXPECT_EQ(exchange("G0 X20\n"), "error:9\r\n");
   EXPECT_EQ(exchange("$X\n"), "[MSG:Caution: Unlocked]\r\nok\r\n");
   EXPECT_EQ(exchange("G0 X20\n"), "ok\r\n");

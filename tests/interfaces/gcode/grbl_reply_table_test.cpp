@@ -181,7 +181,7 @@ TEST_F(GrblReplyTable, ASoftLimitWhileMovingStopsThePathFirst) {
   EXPECT_TRUE(gcode->interpolator().is_idle());
   EXPECT_DOUBLE_EQ(gcode->output_x.read_absolute(), stopped_x);  // the rest of the job was dropped
   EXPECT_EQ(exchange("G0 X1\n"), std::vector<std::string>{});
-  EXPECT_EQ(exchange("\x18"), (std::vector<std::string>{"", "Grbl 1.1h ['$' for help]", "[MSG:'$H'|'$X' to unlock]"}));
+  EXPECT_EQ(exchange("\x18"), (std::vector<std::string>{"ok", "", "Grbl 1.1h ['$' for help]", "[MSG:'$H'|'$X' to unlock]"}));
 }
 
 }  // namespace

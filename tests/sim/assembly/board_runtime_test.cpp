@@ -20,6 +20,11 @@ serial = "board"
 text = "hello\n"
 
 [[at]]
+time_s = 0.12
+serial = "board"
+text = "warn\nwarn\nwarn\n"
+
+[[at]]
 time_s = 0.2
 serial = "board"
 text = "fault\n"
@@ -72,6 +77,17 @@ TEST_F(BoardRuntimeTest, AFaultStopsTheFramesAndDisablesTheDrivers) {
   // pass at 200 ms read "fault" before that instant's frame (it was queued first).
   EXPECT_EQ(board_->stats().frames, 4874u);
   EXPECT_NE(simulation_->summary_text().find("\"first\": \"invariant broken: asked over serial\""), std::string::npos);
+}
+
+// Warnings are not faults: each kind is listed with its count in the summary's `warnings` and
+// in the run report's lines, the first report's detail with it.
+TEST_F(BoardRuntimeTest, EveryWarningIsShownWithItsCount) {
+  simulation_->run_until(150 * kMillisecond);
+  const SimulationReport report = simulation_->finish();
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], "[board] warning ×3: fixture: overrun (first: warned over serial)");
+  const nlohmann::json summary = nlohmann::json::parse(simulation_->summary_text());
+  EXPECT_EQ(summary["warnings"], nlohmann::json::parse(R"({"board": {"fixture: overrun": 3}})"));
 }
 
 }  // namespace

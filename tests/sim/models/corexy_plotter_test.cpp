@@ -154,6 +154,27 @@ TEST(CorexyPlotter, StrokesSplitOnPenUpAndDown) {
   EXPECT_EQ(stats.travel_excursions, 0u);
 }
 
+// Returning home one motor at a time (as an EBB steps them) may pass one microstep (1/80 mm of
+// belt) outside the area: not an excursion. A tenth of a millimetre is.
+TEST(CorexyPlotter, OneMicrostepOutsideIsNotAnExcursion) {
+  Plotter rig;
+  rig.plotter.update(0);
+  steps(rig.a, -1, 1 * kMs);  // (−1/160, −1/160)
+  rig.plotter.update(2 * kMs);
+  steps(rig.b, -1, 3 * kMs);  // (−1/80, 0)
+  rig.plotter.update(4 * kMs);
+  steps(rig.a, 1, 5 * kMs);
+  steps(rig.b, 1, 5 * kMs);
+  rig.plotter.update(6 * kMs);
+  EXPECT_EQ(rig.plotter.stats().travel_excursions, 0u);
+  steps(rig.a, -8, 7 * kMs);
+  steps(rig.b, -8, 7 * kMs);  // (−0.1, 0)
+  rig.plotter.update(8 * kMs);
+  EXPECT_EQ(rig.plotter.stats().travel_excursions, 1u);
+  ASSERT_EQ(rig.plotter.travel()->excursions().size(), 1u);
+  EXPECT_NEAR(rig.plotter.travel()->excursions()[0].overshoot_mm, 0.1, 1e-12);
+}
+
 TEST(CorexyPlotter, ReportsTravelOutsideTheArea) {
   Plotter rig;
   rig.plotter.update(0);

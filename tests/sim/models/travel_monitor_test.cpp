@@ -39,6 +39,27 @@ TEST(TravelMonitor, RemembersEachExcursionWithItsFarthestPoint) {
   EXPECT_DOUBLE_EQ(monitor.overshoot_mm(PenPoint{-3, 222}), 5.0);
 }
 
+// A machine's own resolution: a position out by at most one microstep on each axis (the 1/80 mm
+// of belt one AxiDraw motor step makes) is not an excursion; 0.1 mm out still is, and its
+// overshoot is measured from the area itself.
+TEST(TravelMonitor, ToleratesOneMicrostepOnEachAxis) {
+  TravelArea area = kAxidraw;
+  area.tolerance_mm = 1.0 / 80.0;
+  TravelMonitor monitor(area);
+  for (PenPoint p : {PenPoint{-1.0 / 80.0, 0}, PenPoint{-1.0 / 80.0, -1.0 / 80.0}, PenPoint{300 + 1.0 / 80.0, 10}}) {
+    monitor.observe(0, p);
+  }
+  EXPECT_EQ(monitor.excursion_count(), 0u);
+  EXPECT_FALSE(monitor.outside());
+  monitor.observe(1, PenPoint{-0.1, 5});
+  monitor.observe(2, PenPoint{5, 5});
+  monitor.observe(3, PenPoint{5, 218 + 1.5 / 80.0});
+  EXPECT_EQ(monitor.excursion_count(), 2u);
+  ASSERT_EQ(monitor.excursions().size(), 2u);
+  EXPECT_DOUBLE_EQ(monitor.excursions()[0].overshoot_mm, 0.1);
+  EXPECT_NEAR(monitor.excursions()[1].overshoot_mm, 1.5 / 80.0, 1e-12);
+}
+
 TEST(TravelMonitor, CountsBeyondWhatItRemembers) {
   TravelMonitor monitor(kAxidraw, 1);
   for (int i = 0; i < 3; ++i) {

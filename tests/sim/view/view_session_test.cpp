@@ -189,6 +189,36 @@ TEST(ViewSession, SaveGivesTheSvgTheRunWritesAtThatInstant) {
   EXPECT_EQ(drawing["svg"], bytes.str());
 }
 
+// The board's warnings reach the page with each update: each kind with its count and the first
+// report's detail (tests/sim/assembly/fixtures/HostFeatures warns once per "warn" line).
+TEST(ViewSession, UpdatesCarryEachBoardsWarnings) {
+  const char* const scenario = R"(
+duration_s = 0.5
+[[board]]
+name = "board"
+sketch = "HostFeatures.ino"
+[board.sockets]
+A = { device = "stepper" }
+[[at]]
+time_s = 0.1
+serial = "board"
+text = "warn\nwarn\n"
+[output]
+svg = ""
+png = ""
+)";
+  auto simulation = create(parse(scenario, source_path("tests/sim/assembly/fixtures/HostFeatures/scenario.toml")),
+                           "view_warnings", false);
+  ASSERT_NE(simulation, nullptr);
+  RunControl control;
+  ViewSession session(*simulation, control);
+  simulation->run_until(50 * kMillisecond);
+  EXPECT_EQ(json::parse(session.update_now())["boards"][0]["warnings"], json::array());
+  simulation->run_until(200 * kMillisecond);
+  const json warnings = json::parse(session.update_now())["boards"][0]["warnings"];
+  EXPECT_EQ(warnings, json::parse(R"([{"name": "fixture: overrun", "count": 2, "detail": "warned over serial"}])"));
+}
+
 TEST(ViewSession, BadMessagesGetAClearErrorAndChangeNothing) {
   auto simulation = make("", "view_bad");
   RunControl control;

@@ -37,6 +37,7 @@ struct EbbMove {
   bool pen_up = false;        ///< kServo: the pen state this move stands for
   uint8_t microstep_mode = 1; ///< kEnable: 1 = 1/16 … 5 = full step; 0 = leave it
   bool enable[2] = {true, true};
+  char command[2] = {};       ///< the command that queued it ("SM", "LM", "HM"…), for reports
 };
 
 /// Ticks a step-limited axis of `move` needs to cover its steps: steps·2^31 = rate·T + accel·T²/2
@@ -62,6 +63,8 @@ class EbbMotionExecutor {
   void servo_now(uint16_t target, uint16_t rate, bool pen_up);
 
   bool busy() const { return busy_; }
+  /// The move started last. Context: frame.
+  const EbbMove& move() const { return move_; }
   /// The most steps any motor takes in one tick of the current move, 0 … 1: its larger rate, on
   /// the first or the last tick, over 2^31 (a rate that would roll over counts as 1). 0 for moves
   /// that turn no motor. Context: frame, after start().

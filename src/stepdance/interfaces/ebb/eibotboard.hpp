@@ -106,7 +106,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   static constexpr size_t kReplyBufferBytes = 512;
   static constexpr size_t kLargestReplyBytes = 160;
   static constexpr uint32_t kUnstretchedQ16 = 65536;               // a stretch factor of 1 in Q16
-  static constexpr uint32_t kStretchReportIntervalUs = 1000000;    // at most one warning a second
+  static constexpr const char* kWarningSource = "Eibotboard";
 
   /// What the dispatcher checks before a handler runs.
   enum CommandFlags : uint8_t {
@@ -190,6 +190,7 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   void update_outputs();
   double move_duration_s(const ebb::EbbMove& move) const;
   void fit_move_to_step_rate();
+  void describe_stretch(double asked_per_s, double carried_per_s);
 
   // loop side
   // ASCII lines ended by CR or LF (CR LF and LF CR end one; empty lines are skipped), control and
@@ -228,7 +229,8 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   uint32_t tick_time_q16_ = 0;  // frame time not yet spent on an EBB tick, µs·2^16 (< one tick)
   uint32_t stretch_q16_ = kUnstretchedQ16;  // the current move's tick length over 40 µs, ·2^16 (≥ 1)
   double move_stretch_ = 1.0;               // the same as a factor
-  uint32_t us_since_stretch_report_ = kStretchReportIntervalUs;
+  bool stretch_named_ = false;   // frame: the first stretch was reported with its move and rates
+  char stretch_detail_[192] = {};  // that report's detail (the fault path keeps the pointer)
   volatile uint32_t moves_stretched_ = 0;   // frame: moves slowed down to the step rate
   double mm_per_sixteenth_ = 25.4 / 2032.0;
   bool ratio_xy_given_ = false;  // set_ratio_xy() was called: the channels must agree with it

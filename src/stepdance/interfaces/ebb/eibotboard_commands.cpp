@@ -104,7 +104,10 @@ bool Eibotboard::reply_parameter_error(const EbbParameters& parameters) {
 
 bool Eibotboard::queue(const EbbMove& move) {
   const uint32_t waiting = moves_queued_ - moves_started_;
-  if (waiting >= fifo_depth_ || fifo_.push(move) != Status::kOk) return false;
+  EbbMove named = move;
+  named.command[0] = command_name_[0];
+  named.command[1] = command_name_[1];
+  if (waiting >= fifo_depth_ || fifo_.push(named) != Status::kOk) return false;
   moves_queued_ = moves_queued_ + 1;
   return true;
 }

@@ -3,6 +3,7 @@
 
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/frame_period.hpp"
+#include "stepdance/core/text_writer.hpp"
 #include "stepdance/interfaces/ebb/eibotboard.hpp"
 
 namespace stepdance {
@@ -35,7 +36,6 @@ void Eibotboard::run() {
 // (every frame at 40 µs, every 4th at 10 µs, 5 ticks in 8 frames at 25 µs).
 void Eibotboard::tick_ebb_time() {
   const uint32_t period_us = frame_period_us();
-  if (us_since_stretch_report_ < kStretchReportIntervalUs) us_since_stretch_report_ += period_us;
   tick_time_q16_ += period_us * kUnstretchedQ16;
   const uint32_t tick_q16 = ebb::kTickPeriodUs * stretch_q16_;  // stretched: a longer tick
   if (tick_time_q16_ < tick_q16) return;
@@ -133,7 +133,8 @@ double Eibotboard::move_duration_s(const EbbMove& move) const {
 
 // A channel steps at most once per frame: a move whose fastest motor would take more 1/16 steps
 // in an EBB tick than the frames of that tick carry runs on a slower clock, the whole move, so
-// every motor keeps its place on the path. Counted; reported at most once a second of frames.
+// every motor keeps its place on the path. The first such move is reported with its command and
+// rates; every one is counted (moves_stretched, and on the fault path's tally).
 void Eibotboard::fit_move_to_step_rate() {
   move_stretch_ = 1.0;
   stretch_q16_ = kUnstretchedQ16;
@@ -144,10 +145,29 @@ void Eibotboard::fit_move_to_step_rate() {
   move_stretch_ = static_cast<double>(stretch_q16_) / kUnstretchedQ16;
   move_duration_s_ *= move_stretch_;
   moves_stretched_ = moves_stretched_ + 1;
-  if (us_since_stretch_report_ < kStretchReportIntervalUs) return;
-  us_since_stretch_report_ = 0;
-  report_fault(FaultLevel::kWarning, FaultReason::kOverrun, "Eibotboard",
-               "a move faster than one step per frame per motor was slowed down to fit (moves_stretched)");
+  if (stretch_named_) {
+    count_warning(FaultReason::kOverrun, kWarningSource);
+    return;
+  }
+  stretch_named_ = true;
+  describe_stretch(sixteenths_per_tick * ebb::kTicksPerSecond, carried_per_tick * ebb::kTicksPerSecond);
+  report_fault(FaultLevel::kWarning, FaultReason::kOverrun, kWarningSource, stretch_detail_);
+}
+
+// "SM move (5000, -5000 steps) asked a motor for 41667 1/16 steps/s; the 40 us frames carry
+// 25000: it ran 1.67x as long (later ones counted in moves_stretched)". Written once, then kept
+// (the fault path holds the pointer). Context: frame ISR (no heap; a bounded text).
+void Eibotboard::describe_stretch(double asked_per_s, double carried_per_s) {
+  const EbbMove& move = executor_.move();
+  TextWriter text(stretch_detail_, sizeof(stretch_detail_));
+  text.character(move.command[0] != '\0' ? move.command[0] : '?').character(move.command[1]).text(" move");
+  if (move.kind == EbbMove::Kind::kSteps) {
+    text.text(" (").signed_number(static_cast<int32_t>(move.steps[0]) * move.direction[0]).text(", ");
+    text.signed_number(static_cast<int32_t>(move.steps[1]) * move.direction[1]).text(" steps)");
+  }
+  text.text(" asked a motor for ").significant(asked_per_s, 6).text(" 1/16 steps/s; the ");
+  text.unsigned_number(frame_period_us()).text(" us frames carry ").significant(carried_per_s, 6);
+  text.text(": it ran ").fixed(move_stretch_, 2).text("x as long (later ones counted in moves_stretched)");
 }
 
 void Eibotboard::update_outputs() {

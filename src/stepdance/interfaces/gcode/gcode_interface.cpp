@@ -5,6 +5,7 @@
 
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/file_storage.hpp"
+#include "stepdance/hal/hal.hpp"
 #include "stepdance/hal/nonvolatile.hpp"
 
 namespace stepdance {
@@ -101,8 +102,7 @@ void GCodeInterface::drain_pending() {
     bool done = false;
     switch (request.kind) {
       case Pending::Kind::kDwell:
-        done = request.dwell_s <= 0.0 ||
-               interpolator_.add_timed_move(INCREMENTAL, static_cast<float>(request.dwell_s), 0, 0, 0, 0, 0, 0) >= 0;
+        done = dwell_done(request.dwell_s);
         break;
       case Pending::Kind::kSpindle:
       case Pending::Kind::kPause:
@@ -181,6 +181,24 @@ bool GCodeInterface::act_when_idle(const Pending& request) {
   return true;
 }
 
+// G4 as Grbl's mc_dwell: once everything queued before it has run (protocol_buffer_synchronize),
+// the time passes on the board's clock, a loop pass at a time (never a wait inside one), while
+// realtime commands are served; the state is Idle meanwhile and the line's `ok` comes at the end.
+bool GCodeInterface::dwell_done(double seconds) {
+  const uint32_t now_us = hal::micros_now();
+  if (!dwelling_) {
+    if (!interpolator_.is_idle()) return false;
+    dwelling_ = true;
+    dwell_last_us_ = now_us;
+    dwell_elapsed_us_ = 0;
+  }
+  dwell_elapsed_us_ += now_us - dwell_last_us_;  // wrap-safe: at most one wrap between passes
+  dwell_last_us_ = now_us;
+  if (static_cast<double>(dwell_elapsed_us_) < seconds * 1e6) return false;
+  dwelling_ = false;
+  return true;
+}
+
 void GCodeInterface::apply_settings_to_planner() {
   gcode::GrblSettings& grbl = settings();
   planner::MotionLimits& limits = interpolator_.limits();
@@ -194,7 +212,8 @@ void GCodeInterface::apply_settings_to_planner() {
 // ---- state and realtime commands ----
 
 MotionState GCodeInterface::motion_state() {
-  const bool busy = !interpolator_.is_idle() || pending_count_ > 0;
+  // A dwell runs with the planner empty: Idle, as Grbl reports during mc_dwell.
+  const bool busy = !interpolator_.is_idle() || (pending_count_ > 0 && !dwelling_);
   if (holding_) return MotionState::kHolding;
   if (homing_started_) return MotionState::kRun;
   if (!busy) return MotionState::kIdle;
@@ -213,7 +232,7 @@ double GCodeInterface::feed_now_mm_per_min() { return interpolator_.current_spee
 // As Grbl's plan_get_block_buffer_available: the block executing and those handed to the frame
 // still take their place, so `Bf:` equals `[OPT:]`'s count only when nothing is left to do.
 uint16_t GCodeInterface::queue_slots_free() {
-  const size_t held = interpolator_.moves_held() + static_cast<size_t>(pending_count_);
+  const size_t held = interpolator_.moves_held() + static_cast<size_t>(pending_count_ - (dwelling_ ? 1 : 0));
   const size_t total = queue_slots_total();
   return static_cast<uint16_t>(held >= total ? 0 : total - held);
 }
@@ -228,6 +247,7 @@ bool GCodeInterface::line_in_progress() {
   for (int i = 0; i < pending_count_; ++i) {
     const Pending& request = pending_[(pending_head_ + i) % kPendingCapacity];
     if (request.kind == Pending::Kind::kMotion && request.motion.kind == MotionKind::kArc) return true;
+    if (request.kind == Pending::Kind::kDwell) return true;  // its `ok` comes when it ends
   }
   return false;
 }
@@ -247,6 +267,7 @@ bool GCodeInterface::soft_reset() {
   interpolator_.emergency_stop();
   pending_count_ = 0;
   arc_next_chord_ = 0;
+  dwelling_ = false;
   holding_ = false;
   jogging_ = false;
   feed_percent_ = rapid_percent_ = 100;
@@ -256,6 +277,7 @@ bool GCodeInterface::soft_reset() {
 
 void GCodeInterface::jog_cancel() {
   pending_count_ = 0;
+  dwelling_ = false;
   interpolator_.reset_block_queue();
 }
 

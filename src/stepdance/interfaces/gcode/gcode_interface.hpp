@@ -47,8 +47,9 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   /// Planned duration of the current move, seconds.
   BlockPort& output_duration = interpolator_.output_duration;
 
-  /// The Grbl settings; the sketch may set read-only ones such as $100–$102 (steps/mm, reported
-  /// to senders) with set_from_sketch(). Context: loop.
+  /// The Grbl settings. `$100`–`$102` (steps/mm, reported to senders) come from the channels at
+  /// start (see accept_frame_period); the sketch needs to set them with set_from_sketch() only
+  /// for an axis that drives no channel. Context: loop.
   gcode::GrblSettings& settings() { return protocol_.settings(); }
   /// The planner behind the link (limits, underruns, refused moves). Context: loop.
   TimeBasedInterpolator& interpolator() { return interpolator_; }
@@ -71,6 +72,12 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
 
   /// Serves the link: reads, executes and replies; feeds pending arc chords. Context: loop.
   void loop() override;
+  /// At start: `$100`–`$102` become the steps/mm of the channels G-code X, Y and Z drive
+  /// (through a kinematics or directly), as the EBB takes its ratio. A value the sketch also set
+  /// with set_from_sketch() must agree, and channels of one axis must agree with each other: else
+  /// a kBadConfiguration fault naming the setting and both values, and the engine does not
+  /// start. An axis that reaches no channel keeps the sketch's value. Context: loop.
+  bool accept_frame_period(uint32_t period_us) override;
 
   /// Most arc chords one loop pass hands to the planner. A longer arc is fed over several
   /// passes (its `ok` waits until all of it is planned, as Grbl's does) while realtime commands
@@ -82,7 +89,8 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
 
  private:
   struct Pending {
-    /// kSpindle and kPause wait for the planner to be idle (program order), then act.
+    /// kSpindle and kPause wait for the planner to be idle (program order), then act; kDwell
+    /// waits for it too, then lets its time pass over loop passes (Grbl's mc_dwell).
     enum class Kind : uint8_t { kMotion, kDwell, kJog, kSpindle, kPause } kind = Kind::kMotion;
     gcode::Motion motion;
     double dwell_s = 0.0;      // kDwell; kSpindle: the speed
@@ -123,7 +131,9 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   bool queue_line_motion(const gcode::Motion& motion, double speed_mm_per_s, double time_s);
   bool feed_arc(const gcode::Motion& arc);
   bool act_when_idle(const Pending& request);
+  bool dwell_done(double seconds);
   void apply_settings_to_planner();
+  void describe_steps_fault(uint32_t number, char axis, double sketch, double channels);
   void apply_override();
 
   TimeBasedInterpolator interpolator_;
@@ -136,11 +146,16 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   uint32_t arc_chords_queued_ = 0;
   bool holding_ = false;
   bool jogging_ = false;
+  // G4 at the head of the requests: the planner has drained and the dwell runs (Idle meanwhile).
+  bool dwelling_ = false;
+  uint32_t dwell_last_us_ = 0;    // hal::micros_now() at the last loop pass of the dwell
+  uint64_t dwell_elapsed_us_ = 0;
   uint8_t feed_percent_ = 100;
   uint8_t rapid_percent_ = 100;
   SpindleCallback spindle_callback_ = nullptr;
   Homing* homing_ = nullptr;
   bool homing_started_ = false;
+  char steps_fault_text_[200] = {};  // a start fault's detail (the fault path keeps the pointer)
 };
 
 }  // namespace stepdance

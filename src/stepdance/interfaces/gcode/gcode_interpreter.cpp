@@ -246,7 +246,7 @@ GrblError LineExecution::plan_arc(Motion& motion) {
     const char letter_0 = offset_letters[motion.plane_axis_0];
     const char letter_1 = offset_letters[motion.plane_axis_1];
     if (!block_.has_word(letter_0) && !block_.has_word(letter_1)) return GrblError::kNoInPlaneOffsetWords;
-    use(letter_bit(letter_0) | letter_bit(letter_1));
+    use(kOffsetWords);  // as Grbl's gcode.c: I, J and K together, the out-of-plane one ignored
     error = complete_arc_ijk(motion, clockwise, block_.word(letter_0) * unit_mm(), block_.word(letter_1) * unit_mm());
   }
   return error == GrblError::kOk ? apply_arc_turns(motion) : error;

@@ -122,7 +122,7 @@ void GrblProtocol::execute_line(const ReceivedLine& line) {
   } else {
     error = execute_gcode(line.text, line.length);
   }
-  if (soft_limit_ != SoftLimit::kNone) return;  // the alarm answers for the line, as on Grbl
+  if (soft_limit_ != SoftLimit::kNone) return;  // answered by the reset that ends the alarm, as on Grbl
   if (error == GrblError::kOk) {
     // `$H` is answered when its routine ends, a line still being taken once it has been.
     if (!homing_reply_pending_ && machine_->line_in_progress()) ok_owed_ = true;
@@ -221,11 +221,15 @@ void GrblProtocol::raise_alarm(uint8_t code) {
   send_line(line);
 }
 
+// As Grbl: the reset aborts the line being executed (an arc being fed, a dwell, `$H`, the line
+// that raised ALARM:2), whose gc_execute_line (system_execute_line) still returns STATUS_OK, so
+// it gets its `ok` (after ALARM:3 if the machine was moving) before the welcome.
 void GrblProtocol::soft_reset() {
   reset_requested_ = false;
+  const bool line_owed = ok_owed_ || homing_reply_pending_ || soft_limit_ != SoftLimit::kNone;
   soft_limit_ = SoftLimit::kNone;
-  homing_reply_pending_ = false;  // the reset answers for the `$H` line, as on Grbl
-  ok_owed_ = false;               // and for a line whose arc it abandons
+  homing_reply_pending_ = false;
+  ok_owed_ = false;
   const bool was_moving = machine_->soft_reset();
   receiver_.clear();
   const CoordinateData coordinates = interpreter_.coordinate_data();
@@ -235,6 +239,7 @@ void GrblProtocol::soft_reset() {
   feed_override_percent_ = rapid_override_percent_ = spindle_override_percent_ = 100;
   status_requested_ = false;
   if (was_moving) raise_alarm(3);  // Grbl's "reset while in motion": position may be lost
+  if (line_owed) send_text("ok");
   report_welcome();
   if (alarm_ != 0) send_text("[MSG:'$H'|'$X' to unlock]");
 }

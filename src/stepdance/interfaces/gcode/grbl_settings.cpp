@@ -87,6 +87,15 @@ bool GrblSettings::set_from_sketch(uint32_t number, double value) {
   if (setting == nullptr || !fits(*setting, value)) return false;
   setting->default_value = value;
   if (!setting->host_set) setting->value = value;
+  setting->sketch_set = true;
+  return true;
+}
+
+bool GrblSettings::set_from_machine(uint32_t number, double value) {
+  const GrblSetting* setting = find(number);
+  const bool sketch_set = setting != nullptr && setting->sketch_set;
+  if (!set_from_sketch(number, value)) return false;
+  const_cast<GrblSetting*>(setting)->sketch_set = sketch_set;
   return true;
 }
 

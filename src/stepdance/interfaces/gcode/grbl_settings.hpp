@@ -15,6 +15,7 @@ struct GrblSetting {
   bool writable;   ///< false: the sketch owns it (steps/mm come from the channels)
   double default_value = 0.0;  ///< Grbl's default or the sketch's (set_from_sketch); `$RST=$`
   bool host_set = false;       ///< written by the host (`$N=v`) or loaded from the store
+  bool sketch_set = false;     ///< given by the sketch (set_from_sketch)
 };
 
 /// Every Grbl 1.1 setting, with Grbl's defaults where the value is the machine's business.
@@ -42,6 +43,9 @@ class GrblSettings {
   /// For a host-writable setting this is the default: a value the host wrote (and the board
   /// stored) wins over it, as a stored Grbl setting wins over the firmware's default.
   bool set_from_sketch(uint32_t number, double value);
+  /// A read-only value the machine measures ($100–$102 from the channels at start): set as
+  /// set_from_sketch() would, without counting as the sketch's own. False as set_from_sketch().
+  bool set_from_machine(uint32_t number, double value);
   /// `$RST=$`: every setting back to its default (Grbl's or the sketch's).
   void restore_defaults();
   /// Settings in `$$` order.

@@ -61,6 +61,19 @@ TEST(ElfImage, RefusesWhatIsNotAnArmExecutable) {
   EXPECT_NE(error.find("cannot be opened"), std::string::npos) << error;
 }
 
+TEST(ElfImage, FlashBeyondTheImageReadsErased) {
+  Scheduler scheduler;
+  ImageChip chip(scheduler, TeensyModel::kTeensy41);
+  std::string error;
+  ASSERT_TRUE(chip.load(fixture_path("fault_undefined"), error)) << error;
+  uint32_t word = 0;
+  ASSERT_TRUE(chip.read_memory(0x607FFFFC, &word, 4));  // the last word of the 4.1's 8 MB
+  EXPECT_EQ(word, 0xFFFFFFFFu);
+  EXPECT_FALSE(chip.read_memory(0x60800000, &word, 4));  // past the flash
+  ASSERT_TRUE(chip.read_memory(0x20000000, &word, 4));   // RAM starts zeroed
+  EXPECT_EQ(word, 0u);
+}
+
 TEST(ElfImage, TheChipRefusesASegmentOutsideItsMemoriesAndLoadsNothing) {
   std::vector<char> bytes = read_file(fixture_path("fault_undefined"));
   ASSERT_GT(bytes.size(), sizeof(Elf32_Ehdr));

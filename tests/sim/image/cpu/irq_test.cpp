@@ -97,6 +97,16 @@ TEST(ImageChipIrq, AThreadOnTheProcessStackStacksThereAndReturnsThere) {
   EXPECT_EQ(f.word("thread_sp_after"), f.address_of("process_stack") + 256);  // PSP back at its top
 }
 
+// A regression: unicorn 2.0.1 opened with UC_MODE_MCLASS is a Cortex-M33 whatever model is asked
+// for, and every double-precision instruction was then undefined.
+TEST(ImageChipIrq, TheFpuDoesDoublePrecision) {
+  IrqFixture f;
+  ASSERT_TRUE(f.boot_with_device("fpu_double_m7"));
+  f.run_until(10 * kMicrosecond);
+  const std::vector<uint32_t> values{0x400E0000, 0x40700000};  // 3.75: double's high word, float
+  EXPECT_EQ(f.device->values(), values);
+}
+
 TEST(ImageChipIrq, TheThreadsFloatsSurviveAHandlerThatUsesTheFpu) {
   IrqFixture f;
   ASSERT_TRUE(f.boot_with_device("fpu_isr"));

@@ -177,3 +177,31 @@ TEST(UsbEnumeration, SofInterruptsComeEachMicroframeWhileEnabled) {
 
 }  // namespace
 }  // namespace stepdance::sim::image::usb::testing
+
+namespace stepdance::sim::image::usb::testing {
+namespace {
+
+TEST(UsbEnumeration, ATerminalClosingAndOpeningThePortTogglesDtr) {
+  UsbBench bench;
+  bench.enumerate();
+  ASSERT_EQ(bench.stack.line_state, 3);
+  bench.host().set_line_state(false, false);  // the port closed
+  bench.stack.run_until(bench.chip.now_ns() + kMillisecond);
+  EXPECT_EQ(bench.stack.line_state, 0);
+  bench.host().set_line_state(true, false);   // opened again, DTR only
+  bench.stack.run_until(bench.chip.now_ns() + kMillisecond);
+  EXPECT_EQ(bench.stack.line_state, 1);
+  EXPECT_EQ(bench.stack.setups.back(), (std::vector<uint8_t>{0x21, 0x22, 1, 0, 0, 0, 0, 0}));
+  EXPECT_TRUE(bench.host().enumerated());
+  EXPECT_EQ(bench.host().failure(), "");
+}
+
+TEST(UsbEnumeration, ALineStateSetBeforeEnumerationIsTheOneSent) {
+  UsbBench bench;
+  bench.host().set_line_state(false, true);  // a port opened with DTR off (RTS only)
+  bench.enumerate();
+  EXPECT_EQ(bench.stack.line_state, 2);
+}
+
+}  // namespace
+}  // namespace stepdance::sim::image::usb::testing

@@ -183,5 +183,44 @@ TEST(UsbTransfers, ATransferIntoUnmappedMemoryIsASystemError) {
   EXPECT_NE(bench.host().failure(), "");
 }
 
+
+TEST(UsbTransfers, TheHostTakesOnlyWhatItCanHoldAndLosesNothing) {
+  UsbBench bench;
+  bench.enumerate();
+  FakeDeviceStack& s = bench.stack;
+  std::string text;
+  for (int i = 0; i < 10000; ++i) text += static_cast<char>('0' + i % 75);
+  bench.world.to_device.assign(text.begin(), text.end());
+  s.run_until(bench.chip.now_ns() + 5 * kMillisecond);
+  EXPECT_EQ(bench.host().out_pending(), 4096u);  // HostOptions::out_buffer_bytes
+  EXPECT_EQ(bench.world.to_device.size(), 10000u - 4096u);
+  // The device takes 512 bytes at a time; everything arrives, in order.
+  std::string arrived;
+  for (int round = 0; round < 40 && arrived.size() < text.size(); ++round) {
+    s.make_dtd(FakeDeviceStack::kDtdRx, FakeDeviceStack::kRxBuffer, 512, true);
+    s.prime(kBulkOut, FakeDeviceStack::kDtdRx);
+    s.run_until(bench.chip.now_ns() + 250 * kMicrosecond);
+    const uint32_t left = bench.chip.word(FakeDeviceStack::kDtdRx + 4) >> 16;
+    arrived += ram_text(bench.chip, FakeDeviceStack::kRxBuffer, 512 - left);
+  }
+  EXPECT_EQ(arrived, text);
+}
+
+TEST(UsbTransfers, AControllerResetMakesTheHostEnumerateAgain) {
+  UsbBench bench;
+  bench.enumerate();
+  FakeDeviceStack& s = bench.stack;
+  s.set(kUsbCmd, kCmdReset);
+  s.run_until(bench.chip.now_ns() + 20 * kMillisecond);
+  EXPECT_FALSE(bench.host().enumerated());
+  EXPECT_NE(bench.host().describe().find("USB1_USBMODE.CM is not 2"), std::string::npos) << bench.host().describe();
+  s.init();
+  const SimTime attached = bench.chip.now_ns();
+  s.run_until(attached + 300 * kMillisecond);
+  EXPECT_TRUE(bench.host().enumerated());
+  EXPECT_EQ(s.bus_resets, 2);
+  EXPECT_GE(bench.host().record().attached_ns, attached);
+}
+
 }  // namespace
 }  // namespace stepdance::sim::image::usb::testing

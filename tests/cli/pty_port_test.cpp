@@ -1,0 +1,31 @@
+// PtyPort: what the client has not read yet, which the live run waits on (run_live).
+#include "pty_port.hpp"
+
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <stdint.h>
+#include <unistd.h>
+
+namespace stepdance::cli {
+namespace {
+
+TEST(PtyPort, CountsTheBytesTheClientHasNotReadYet) {
+  PtyPort port;
+  const int client = open(port.path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  ASSERT_GE(client, 0);
+  EXPECT_EQ(port.unread_by_client(), 0u);
+  const uint8_t reply[] = {'o', 'k', '\r', '\n', 'o', 'k', '\r', '\n'};
+  port.write_to_client(reply, sizeof reply);
+  // The kernel hands written bytes to the terminal's read queue a moment later.
+  for (int i = 0; i < 1000 && port.unread_by_client() < 8u; ++i) usleep(1000);
+  EXPECT_EQ(port.unread_by_client(), 8u);
+  char got[4];
+  ASSERT_EQ(read(client, got, sizeof got), 4);
+  EXPECT_EQ(port.unread_by_client(), 4u);
+  ASSERT_EQ(read(client, got, sizeof got), 4);
+  EXPECT_EQ(port.unread_by_client(), 0u);
+  close(client);
+}
+
+}  // namespace
+}  // namespace stepdance::cli
