@@ -81,10 +81,6 @@ bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
       return true;
     }
   }
-  if (chip.emulate_double_at_fault(pc)) {  // vfp_hooks.cpp
-    chip.we_stopped_ = true;
-    return true;
-  }
   chip.core_.cfsr |= 1u << 16;  // UFSR.UNDEFINSTR
   chip.fault(kUsageFault, "UsageFault: undefined instruction", pc);
   chip.we_stopped_ = true;

@@ -68,7 +68,6 @@ void ImageChip::run_slice() {
   in_run_ = true;
   we_stopped_ = false;
   yielded_ = false;
-  install_double_sites();  // vfp_hooks.cpp: only between runs
   const uint32_t pc = read_register(UC_ARM_REG_PC) | 1u;
   const uc_err error = uc_emu_start(uc_, pc, kNoUntil, 0, 0);
   restore_stopped_block_pc();
@@ -121,7 +120,7 @@ void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* u
   const ThumbBlock& block = chip.blocks_->get(static_cast<uint32_t>(address), size);
   if (chip.block_must_stop(block, static_cast<uint32_t>(address))) {
     chip.we_stopped_ = true;
-    chip.block_stop_pc_ = static_cast<uint32_t>(address) | 1u;  // vfp_hooks.cpp
+    chip.block_stop_pc_ = static_cast<uint32_t>(address) | 1u;  // restore_stopped_block_pc()
     uc_emu_stop(uc);  // before the block runs: the PC stays at its start
     return;
   }
@@ -195,6 +194,11 @@ bool ImageChip::spin(uint32_t address) {
     retired_ = run_limit_;
   }
   return true;
+}
+
+void ImageChip::restore_stopped_block_pc() {
+  if (block_stop_pc_ != 0) uc_reg_write(uc_, UC_ARM_REG_PC, &block_stop_pc_);
+  block_stop_pc_ = 0;
 }
 
 }  // namespace stepdance::sim::image

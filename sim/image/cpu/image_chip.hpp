@@ -121,17 +121,6 @@ class ImageChip : public ChipContext {
   /// The system-space state (for tests and reports).
   const CoreRegisters& core_registers() const { return core_; }
   ExceptionState& exceptions() { return exceptions_; }
-  /// Double-precision FPU instructions run in software by vfp_hooks.cpp: all of them, those that
-  /// took the slow path (a site's first run, an instruction inside an IT block: one emulator
-  /// restart each), and the sites hooked. Since the engine is a real Cortex-M7 (FPv5-D16;
-  /// image_chip.cpp), its FPU runs doubles itself and these stay 0: the software path is only
-  /// taken for a double instruction the emulator reports as undefined.
-  struct DoubleOps {
-    uint64_t executed = 0;
-    uint64_t slow = 0;
-    uint64_t sites = 0;
-  };
-  DoubleOps double_ops() const { return double_ops_; }
   /// Reads a core register (a uc_arm_reg number) — for tests and reports.
   uint32_t read_register(int uc_register) const;
 
@@ -222,24 +211,12 @@ class ImageChip : public ChipContext {
   bool stack_pointer_overflowed(uint32_t address);
   void step_through_block();
 
-  // double precision (vfp_hooks.cpp)
-  struct DoubleSite {
-    ImageChip* chip;
-    uint32_t address;
-    uint32_t instruction;
-    uint16_t reads;   ///< D registers read (bit n = Dn)
-    uint16_t writes;  ///< D registers written
-    bool apsr;        ///< VSEL: reads the condition flags
-  };
-  bool emulate_double_at_fault(uint32_t pc);
-  bool execute_double(const DoubleSite& site);
-  void hook_double_site(const DoubleSite& site);
-  /// Hooks the sites found during the last run (between runs: adding a hook or dropping a
-  /// translation while the emulator runs breaks its chained blocks).
-  void install_double_sites();
-  void advance_it_state();
+  /// Once any code hook exists (uc_emu_start's own count adds one: step_through_block), unicorn
+  /// 2.0.1 no longer puts the PC back at the start of a block the block hook stopped the run
+  /// before (qemu/accel/tcg/cpu-exec.c syncs it only without UC_HOOK_CODE): the PC would be where
+  /// it was last synchronised and the next run would repeat instructions already done. Puts it
+  /// there (cpu_run.cpp).
   void restore_stopped_block_pc();
-  static void on_double_site(uc_struct* uc, uint64_t address, uint32_t size, void* user);
 
   Scheduler& scheduler_;
   TeensyModel model_;
@@ -297,9 +274,6 @@ class ImageChip : public ChipContext {
   uint32_t step_address_ = 0;
   bool stepping_ = false;
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
-  std::deque<DoubleSite> double_sites_;  ///< hooked sites (stable addresses: the hooks point at them)
-  std::vector<DoubleSite> new_double_sites_;  ///< found during the current run, hooked after it
-  DoubleOps double_ops_;
   uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
 };
 
