@@ -197,6 +197,12 @@ void SimBoard::play_pending_frames(SimTime start_ns) {
 void SimBoard::play_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
   PortState& state = ports_.at(port);
   state.output_claimed = true;
+  // A firmware's frame clock is its ports' launches: the first port of each launch is the tick
+  // the frame listener (the machine's pen sampling) is told of, as a host board's frame timer is.
+  if (tick_listener_ && start_ns != last_played_tick_ns_) {
+    last_played_tick_ns_ = start_ns;
+    tick_listener_(start_ns);
+  }
   if ((words.step_bits | words.dir_bits) == 0) {
     for (WireListener* listener : state.idle_listeners) listener->on_frame(start_ns, words, frame_ns);
     return;

@@ -353,6 +353,7 @@ class SimBoard {
   SdCardTiming sd_timing_;
   uint64_t storage_calls_in_isr_ = 0;
   std::function<void(SimTime)> tick_listener_;
+  SimTime last_played_tick_ns_ = -1;  ///< a firmware's last launch time told to tick_listener_
   SimTime end_ns_ = INT64_MAX;
   bool frozen_ = false;
   std::function<void(const SketchStop&)> stop_listener_;
