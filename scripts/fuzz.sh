@@ -13,8 +13,8 @@ mkdir -p "$build"
 
 # Portable-core folders (every .cpp in them) or files each target links besides its fuzz file.
 # "core" stands for the whole portable core and the manual board (hosts whole blocks).
-# The Grbl link without its block (GCodeInterface and its homing need the whole core).
-gcode_link_sources="$(find src/stepdance/interfaces/gcode -name '*.cpp' ! -name 'gcode_interface.cpp' ! -name 'gcode_homing.cpp' | sort | tr '\n' ' ')"
+# The Grbl link without its block (GCodeInterface, its homing and its steps/mm check need the whole core).
+gcode_link_sources="$(find src/stepdance/interfaces/gcode -name '*.cpp' ! -name 'gcode_interface.cpp' ! -name 'gcode_homing.cpp' ! -name 'gcode_steps_per_mm.cpp' | sort | tr '\n' ' ')"
 gcode_link_sources+="src/stepdance/interfaces/link/line_reader.cpp src/stepdance/interfaces/link/reply_ring.cpp src/stepdance/core/text_writer.cpp"
 declare -A target_sources=(
   [gcode]="$gcode_link_sources"
