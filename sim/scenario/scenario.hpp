@@ -66,6 +66,11 @@ struct BoardConfig {
   int64_t loop_period_us = 200;
   /// Offset of this board's 40 µs frame clock, µs (0..39).
   int frame_phase_us = 0;
+  /// Set from code, never from the file: the board's clocks to the nanosecond, to line a host
+  /// board up with an image board's measured ones (tests/sim/image_examples). Unset: the frame
+  /// clock at frame_phase_us, the kilohertz tick half a frame after it (sim_board.hpp).
+  std::optional<SimTime> frame_phase_ns;
+  std::optional<SimTime> khz_phase_ns;
   /// Populated sockets, sorted by port (boards with driver sockets only).
   std::vector<SocketConfig> sockets;
   /// Speed and failures of the board's card.

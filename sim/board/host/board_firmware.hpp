@@ -43,6 +43,11 @@ class BoardFirmware {
   /// How the firmware ran, for the summary's "firmware" object: named numbers (instructions
   /// retired, the frame interrupt's cost, …) in a fixed order.
   virtual std::vector<std::pair<std::string, double>> figures() const { return {}; }
+  /// Calls `emit` once per named counter of the firmware's blocks, and once per kind of warning
+  /// its fault path tallied, as a host-compiled board's read_counters and read_warnings do (none
+  /// if the firmware cannot say). Context: between the firmware's runs.
+  virtual void read_counters(StepdanceCounterFnV1 emit, void* context) { (void)emit, (void)context; }
+  virtual void read_warnings(StepdanceWarningFnV1 emit, void* context) { (void)emit, (void)context; }
   /// The image file the firmware came from.
   virtual const std::string& image_path() const = 0;
   /// Calls `listener` when the firmware stops for good (a fault, no progress).

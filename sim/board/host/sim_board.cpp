@@ -152,7 +152,7 @@ int SimBoard::start_timer(int timer_id, uint32_t period_us) {
   if (timer_id == STEPDANCE_TIMER_FRAME) {
     frame_timer_.start(next_aligned(options_.frame_phase_ns, period), period);
   } else if (timer_id == STEPDANCE_TIMER_KHZ) {
-    khz_timer_.start(next_aligned(options_.frame_phase_ns + kKhzOffsetNs, period), period);
+    khz_timer_.start(next_aligned(options_.khz_phase_ns.value_or(options_.frame_phase_ns + kKhzOffsetNs), period), period);
   } else {
     return static_cast<int>(Status::kBadArgument);
   }
@@ -429,25 +429,23 @@ int SimBoard::read_console() {
 
 std::vector<SimBoard::BlockCounter> SimBoard::counters() const {
   std::vector<BlockCounter> out;
-  if (board_ == nullptr) return out;
-  board_->read_counters(
-      [](void* context, const char* block, uint32_t instance, const char* name, uint64_t value) {
-        static_cast<std::vector<BlockCounter>*>(context)->push_back(
-            {std::string(block) + "#" + std::to_string(instance), name, value});
-      },
-      &out);
+  const StepdanceCounterFnV1 emit = [](void* context, const char* block, uint32_t instance, const char* name,
+                                       uint64_t value) {
+    static_cast<std::vector<BlockCounter>*>(context)->push_back({std::string(block) + "#" + std::to_string(instance), name, value});
+  };
+  if (firmware_) firmware_->read_counters(emit, &out);
+  if (board_ != nullptr) board_->read_counters(emit, &out);
   return out;
 }
 
 std::vector<SimBoard::BoardWarning> SimBoard::warnings() const {
   std::vector<BoardWarning> out;
-  if (board_ == nullptr) return out;
-  board_->read_warnings(
-      [](void* context, const char* source, const char* reason, const char* detail, uint32_t count) {
-        static_cast<std::vector<BoardWarning>*>(context)->push_back(
-            {std::string(source) + ": " + reason, std::string(detail), count});
-      },
-      &out);
+  const StepdanceWarningFnV1 emit = [](void* context, const char* source, const char* reason, const char* detail,
+                                       uint32_t count) {
+    static_cast<std::vector<BoardWarning>*>(context)->push_back({std::string(source) + ": " + reason, std::string(detail), count});
+  };
+  if (firmware_) firmware_->read_warnings(emit, &out);
+  if (board_ != nullptr) board_->read_warnings(emit, &out);
   return out;
 }
 

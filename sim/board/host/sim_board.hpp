@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct BoardOptions {
   /// lock-step). The kilohertz tick runs half a frame later, at phase + 20 µs + k × 1 ms, so
   /// it never coincides with a frame.
   SimTime frame_phase_ns = 0;
+  /// The kilohertz tick's phase on its 1 ms grid instead (ticks at phase + k × 1 ms): set to line
+  /// a host board up with an image board's measured clocks. Unset: phase + 20 µs as above.
+  std::optional<SimTime> khz_phase_ns;
   /// loop() runs every this long (each pass takes no simulated time).
   SimTime loop_period_ns = 200 * kMicrosecond;
   /// Folder behind the board's file storage ("" = no card).

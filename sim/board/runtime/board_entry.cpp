@@ -5,6 +5,7 @@
 #include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/platform/sim/sim_hal.hpp"
 #include "stepdance/boards/board.hpp"
+#include "stepdance/core/counter_report.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/units.hpp"
@@ -32,39 +33,9 @@ void read_stats(StepdanceBoardStatsV1* stats) {
   stats->load_frames = load.frames();
 }
 
-// Hands every block's named counters to the host, numbering blocks of one class in order.
-class CounterForwarder : public CounterSink {
- public:
-  CounterForwarder(StepdanceCounterFnV1 emit, void* context) : emit_(emit), context_(context) {}
-  void visit(const Block& block) {
-    block_ = block.type_name();
-    instance_ = 0;
-    for (uint32_t i = 0; i < seen_count_; ++i) instance_ += seen_[i] == block_ ? 1u : 0u;
-    if (seen_count_ < kMaxBlocks) seen_[seen_count_++] = block_;
-    block.report_counters(*this);
-  }
-  void counter(const char* name, uint64_t value) override { emit_(context_, block_, instance_, name, value); }
+void read_counters(StepdanceCounterFnV1 emit, void* context) { report_block_counters(emit, context); }
 
- private:
-  static constexpr uint32_t kMaxBlocks = 256;
-  StepdanceCounterFnV1 emit_;
-  void* context_;
-  const char* block_ = "";
-  uint32_t instance_ = 0;
-  const char* seen_[kMaxBlocks] = {};
-  uint32_t seen_count_ = 0;
-};
-
-void read_counters(StepdanceCounterFnV1 emit, void* context) {
-  CounterForwarder forwarder(emit, context);
-  engine().for_each_block([](Block* block, void* state) { static_cast<CounterForwarder*>(state)->visit(*block); },
-                          &forwarder);
-}
-
-void read_warnings(StepdanceWarningFnV1 emit, void* context) {
-  WarningTally tally;
-  for (uint32_t i = 0; warning_tally(i, tally); ++i) emit(context, tally.source, to_string(tally.reason), tally.detail, tally.count);
-}
+void read_warnings(StepdanceWarningFnV1 emit, void* context) { report_warnings(emit, context); }
 
 // Each entry runs guarded, so the simulator can leave it early (see EntryGuard; the frequent
 // ones as kGuardFrequentEntries says).

@@ -1,6 +1,8 @@
 // An image board's program: the emulated chip wired to its SimBoard.
 #include "image/board/image_program.hpp"
 
+#include <unicorn/unicorn.h>
+
 #include <cstdio>
 
 #include "board/host/sim_board.hpp"
@@ -14,6 +16,14 @@ constexpr unsigned exception_of_irq(unsigned irq) { return 16 + irq; }
 /// chip leaves unused, whose handler runs the frame's stages (src/stepdance/platform/teensy/
 /// regs_nvic.hpp, kIrqReservedForFrame). The frame's cost is both handlers' instructions.
 constexpr unsigned kFrameStagesIrq = 155;
+/// The backend's kilohertz tick: GPT2's interrupt (RM table 4-2; src/stepdance/platform/teensy/
+/// khz_timer.cpp).
+constexpr unsigned kKhzTickIrq = 101;
+
+/// Seconds of a first entry, -1 for none.
+double first_entry_s(const ImageChip::HandlerCost& cost) {
+  return cost.first_entry_ns < 0 ? -1.0 : to_seconds(cost.first_entry_ns);
+}
 
 }  // namespace
 
@@ -87,7 +97,7 @@ void ImageProgram::stopped(const ImageStop& stop) {
 ImageChip::HandlerCost ImageProgram::frame_cost() const {
   const ImageChip::HandlerCost tick = chip_.handler_cost(exception_of_irq(Flexio3::kIrq));
   const ImageChip::HandlerCost stages = chip_.handler_cost(exception_of_irq(kFrameStagesIrq));
-  return {tick.entries, tick.instructions + stages.instructions};
+  return {tick.entries, tick.instructions + stages.instructions, tick.first_entry_ns};
 }
 
 double ImageProgram::frame_isr_instructions() const {
@@ -116,7 +126,9 @@ std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
           {"frame_interrupts", static_cast<double>(frame.entries)},
           {"frame_interrupt_instructions_mean", frame_isr_instructions()},
           {"instructions_to_setup", setup_reached_ ? static_cast<double>(instructions_to_setup_) : -1.0},
-          {"time_to_setup_s", setup_reached_ ? to_seconds(time_to_setup_ns_) : -1.0}};
+          {"time_to_setup_s", setup_reached_ ? to_seconds(time_to_setup_ns_) : -1.0},
+          {"frame_interrupt_first_s", first_entry_s(frame)},
+          {"khz_interrupt_first_s", first_entry_s(chip_.handler_cost(exception_of_irq(kKhzTickIrq)))}};
 }
 
 // ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------
@@ -159,6 +171,49 @@ size_t ImageProgram::serial_to_device(SimTime, uint8_t* data, size_t capacity) {
   size_t taken = 0;
   while (taken < capacity && board_->console_available() > 0) data[taken++] = static_cast<uint8_t>(board_->read_console());
   return taken;
+}
+
+// ---- what the image reports of itself (a debugger's calls) ---------------------------------------
+
+void ImageProgram::call_reporter(const char* symbol, const std::function<void()>& callout) {
+  uint32_t function = 0;
+  if (chip_.stopped() || !chip_.symbols().find(symbol, function)) return;
+  std::string error;
+  if (!chip_.call_function(function, {ImageChip::kCalloutAddress | 1u, 0, 0, 0}, callout, error)) {
+    std::fprintf(stderr, "stepdance: image board %s: %s: %s\n", board_ != nullptr ? board_->name().c_str() : "?", symbol,
+                 error.c_str());
+  }
+}
+
+std::string ImageProgram::image_string(uint32_t address) {
+  std::string text;
+  char c = 0;
+  while (text.size() < 128 && chip_.read_memory(address + static_cast<uint32_t>(text.size()), &c, 1) && c != '\0') text += c;
+  return text;
+}
+
+// The callout is CounterEmit(context, block, instance, name, value): R0–R3, then the 64-bit
+// value on the stack at SP (AAPCS 5.5: 8-byte aligned, the first stacked argument).
+void ImageProgram::read_counters(StepdanceCounterFnV1 emit, void* context) {
+  call_reporter("stepdance_debug_counters", [&] {
+    uint64_t value = 0;
+    chip_.read_memory(chip_.read_register(UC_ARM_REG_SP), &value, sizeof value);
+    const std::string block = image_string(chip_.read_register(UC_ARM_REG_R1));
+    const std::string name = image_string(chip_.read_register(UC_ARM_REG_R3));
+    emit(context, block.c_str(), chip_.read_register(UC_ARM_REG_R2), name.c_str(), value);
+  });
+}
+
+// WarningEmit(context, source, reason, detail, count): count is the first stacked word.
+void ImageProgram::read_warnings(StepdanceWarningFnV1 emit, void* context) {
+  call_reporter("stepdance_debug_warnings", [&] {
+    uint32_t count = 0;
+    chip_.read_memory(chip_.read_register(UC_ARM_REG_SP), &count, sizeof count);
+    const std::string source = image_string(chip_.read_register(UC_ARM_REG_R1));
+    const std::string reason = image_string(chip_.read_register(UC_ARM_REG_R2));
+    const std::string detail = image_string(chip_.read_register(UC_ARM_REG_R3));
+    emit(context, source.c_str(), reason.c_str(), detail.c_str(), count);
+  });
 }
 
 }  // namespace stepdance::sim::image

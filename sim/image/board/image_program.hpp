@@ -38,6 +38,11 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   void pulse_arrived(uint8_t port, const ArrivingPulse& pulse) override;
   StepdanceBoardStatsV1 stats() const override;
   std::vector<std::pair<std::string, double>> figures() const override;
+  /// Asks the image itself: a debugger's call to its stepdance_debug_counters or
+  /// stepdance_debug_warnings (src/stepdance/platform/teensy/debug_entries.cpp). Nothing if the
+  /// image has no such function (one built before them) or the image has stopped.
+  void read_counters(StepdanceCounterFnV1 emit, void* context) override;
+  void read_warnings(StepdanceWarningFnV1 emit, void* context) override;
   const std::string& image_path() const override { return image_path_; }
   void on_stop(std::function<void(const SketchStop&)> listener) override { stop_listener_ = std::move(listener); }
 
@@ -58,6 +63,10 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   size_t serial_to_device(SimTime now_ns, uint8_t* data, size_t capacity) override;
 
   bool add_blocks(std::string& error);
+  /// Calls the image's function `symbol` with (kCalloutAddress, 0); each callout calls `callout`.
+  void call_reporter(const char* symbol, const std::function<void()>& callout);
+  /// The NUL-terminated string at `address` in the image's memory (at most 128 bytes).
+  std::string image_string(uint32_t address);
   void watch_setup();
   /// The frame interrupts (tick entries) and the instructions of the tick and stage handlers.
   ImageChip::HandlerCost frame_cost() const;

@@ -24,6 +24,10 @@ std::string hex(uint32_t value) {
 
 void ImageChip::on_interrupt(uc_struct*, uint32_t intno, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
+  if (chip.calling_) {
+    chip.call_went_wrong("raised exception " + std::to_string(intno));
+    return;
+  }
   const uint32_t pc = chip.read_register(UC_ARM_REG_PC);
   switch (intno) {
     case kExcpExceptionExit:
@@ -71,6 +75,10 @@ void ImageChip::on_interrupt(uc_struct*, uint32_t intno, void* user) {
 // undefined instruction comes with the PC on it.
 bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
+  if (chip.calling_) {
+    chip.call_went_wrong("ran an undefined instruction");
+    return false;
+  }
   const uint32_t pc = chip.read_register(UC_ARM_REG_PC);
   uint16_t before[2] = {0, 0};
   if (chip.read_memory(pc - 4, before, 4)) {
@@ -91,6 +99,11 @@ bool ImageChip::on_invalid_instruction(uc_struct* uc, void* user) {
 bool ImageChip::on_unmapped(uc_struct*, int type, uint64_t address, int size, int64_t, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
   const auto where = static_cast<uint32_t>(address);
+  if (chip.calling_) {
+    if (type == UC_MEM_FETCH_UNMAPPED) return chip.call_fetch(where);
+    chip.call_went_wrong("accessed " + hex(where) + " outside its memory");
+    return false;
+  }
   if (type == UC_MEM_READ_PROT || type == UC_MEM_WRITE_PROT || type == UC_MEM_FETCH_PROT) {
     chip.protection_fault(type, where, size);
     return false;

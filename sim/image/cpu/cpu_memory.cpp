@@ -103,6 +103,10 @@ void ImageChip::mmio_write(uc_struct*, uint64_t offset, unsigned size, uint64_t 
 // One register access from the running image, at its instruction's time. A refusal ends the run.
 void ImageChip::access(bool system, uint32_t address, unsigned size, bool is_write, uint32_t& value) {
   if (stop_ != nullptr) return;  // the run is ending: the rest of its block touches nothing
+  if (calling_) {                 // a debugger's call reads memory only (cpu_call.cpp)
+    call_went_wrong("accessed the register at " + hex(address));
+    return;
+  }
   const uint32_t pc = note_access_position(address);
   in_access_ = true;
   PeripheralBus& bus = system ? system_bus_ : bus_;

@@ -112,6 +112,11 @@ void ImageChip::wake() {
 void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* user) {
   auto& chip = *static_cast<ImageChip*>(user);
   if (chip.stepping_) return;  // counted one by one by step_through_block
+  if (chip.calling_) {
+    chip.call_instructions_ += chip.blocks_->get(static_cast<uint32_t>(address), size).instructions;
+    if (chip.call_instructions_ > kMaxCallInstructions) chip.call_went_wrong("ran past its instruction budget");
+    return;
+  }
   for (Watch& watch : chip.watches_) {
     if (watch.address != address || watch.fired_at == chip.retired_) continue;
     watch.fired_at = chip.retired_;  // once per arrival, though a stop may make the block start twice

@@ -105,7 +105,7 @@ void ImageChip::activate(unsigned number) {
   }
   exceptions_.activate(number);
   current_exception_ = number;
-  ++handler_costs_[number].entries;
+  if (handler_costs_[number].entries++ == 0) handler_costs_[number].first_entry_ns = time_of_cycle(retired_);
   write_ipsr(number);
   handler |= 1u;
   uc_reg_write(uc_, UC_ARM_REG_PC, &handler);

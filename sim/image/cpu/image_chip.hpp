@@ -110,6 +110,7 @@ class ImageChip : public ChipContext {
   struct HandlerCost {
     uint64_t entries = 0;
     uint64_t instructions = 0;
+    SimTime first_entry_ns = -1;  ///< when the handler was first entered (-1: never)
   };
   HandlerCost handler_cost(unsigned exception_number) const;
   const ElfSymbols& symbols() const { return image_.symbols; }
@@ -138,6 +139,19 @@ class ImageChip : public ChipContext {
   void pend_exception(unsigned number);
   /// Simulated time of core cycle `cycle` at the current clock (for timers that count cycles).
   SimTime time_of_cycle(uint64_t cycle) const;
+
+  /// A debugger's call (cpu_call.cpp): runs the image's function at `function` (a Thumb address)
+  /// with `args` in R0–R3 until it returns, below the current stack pointer, with time stopped,
+  /// nothing counted and no exception taken; every core register is put back afterwards. A
+  /// function pointer kCalloutAddress | 1 handed to it calls `on_callout` (R0–R3 and the stack
+  /// are the callout's arguments: read them with read_register and read_memory) and returns.
+  /// False with `error` if the function faults, touches a register, runs past kMaxCallInstructions
+  /// or the image is running, stopped or not powered. Context: between runs.
+  static constexpr uint32_t kCallReturnAddress = 0x9FFF0000;
+  static constexpr uint32_t kCalloutAddress = 0x9FFF0010;
+  static constexpr uint64_t kMaxCallInstructions = 10000000;
+  bool call_function(uint32_t function, const std::array<uint32_t, 4>& args, const std::function<void()>& on_callout,
+                     std::string& error);
 
  private:
   struct CpuEvent : Event {
@@ -174,6 +188,11 @@ class ImageChip : public ChipContext {
   void access(bool system, uint32_t address, unsigned size, bool is_write, uint32_t& value);
   uint32_t note_access_position(uint32_t address);
   bool could_access(const BlockAccess& access, uint32_t address) const;
+
+  // debugger's calls (cpu_call.cpp)
+  bool run_call(uint32_t pc, const std::function<void()>& on_callout, std::string& error);
+  bool call_fetch(uint32_t address);
+  void call_went_wrong(const std::string& what);
 
   // running (cpu_run.cpp)
   void run();
@@ -275,6 +294,10 @@ class ImageChip : public ChipContext {
   bool stepping_ = false;
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
   uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
+  bool calling_ = false;          ///< inside call_function
+  uint64_t call_instructions_ = 0;
+  uint32_t call_reached_ = 0;     ///< kCallReturnAddress or kCalloutAddress when the call stopped there
+  std::string call_problem_;      ///< why the call went wrong ("" if it did not)
 };
 
 }  // namespace stepdance::sim::image
