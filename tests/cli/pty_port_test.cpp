@@ -27,5 +27,25 @@ TEST(PtyPort, CountsTheBytesTheClientHasNotReadYet) {
   close(client);
 }
 
+// The kernel moves bytes written to the master into the terminal's read queue a moment later (a
+// work item; on a loaded machine, milliseconds later). A count taken in that moment used to say 0,
+// and the live run went on as if the client had read its `ok`s. Every write must count at once.
+TEST(PtyPort, CountsBytesJustWrittenAtOnce) {
+  PtyPort port;
+  const int client = open(port.path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  ASSERT_GE(client, 0);
+  const uint8_t reply[] = {'o', 'k', '\r', '\n'};
+  int counted_late = 0;
+  for (int i = 0; i < 5000; ++i) {
+    port.write_to_client(reply, sizeof reply);
+    if (port.unread_by_client() != sizeof reply) ++counted_late;
+    char got[sizeof reply];
+    // The client's read waits for the same kernel work, so it always gets the four bytes.
+    ASSERT_EQ(read(client, got, sizeof got), static_cast<ssize_t>(sizeof got));
+  }
+  EXPECT_EQ(counted_late, 0);
+  close(client);
+}
+
 }  // namespace
 }  // namespace stepdance::cli
