@@ -6,6 +6,8 @@
 #include <stdint.h>
 #include <unistd.h>
 
+#include <string>
+
 namespace stepdance::cli {
 namespace {
 
@@ -44,6 +46,26 @@ TEST(PtyPort, CountsBytesJustWrittenAtOnce) {
     ASSERT_EQ(read(client, got, sizeof got), static_cast<ssize_t>(sizeof got));
   }
   EXPECT_EQ(counted_late, 0);
+  close(client);
+}
+
+// The other way needs no help: a read of the master that finds nothing runs the same kernel work
+// before it answers, so a line the client has written is taken at once (docs/gcode.md relies on
+// it: the live run never advances past a line it could have read).
+TEST(PtyPort, TakesBytesTheClientJustWroteAtOnce) {
+  PtyPort port;
+  const int client = open(port.path().c_str(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+  ASSERT_GE(client, 0);
+  const char line[] = "G1 X1\n";
+  int taken_late = 0;
+  for (int i = 0; i < 5000; ++i) {
+    ASSERT_EQ(write(client, line, sizeof line - 1), static_cast<ssize_t>(sizeof line - 1));
+    std::string taken;
+    port.read_from_client(taken, 4096);
+    if (taken != line) ++taken_late;
+    for (int tries = 0; tries < 1000 && taken.size() < sizeof line - 1; ++tries) port.read_from_client(taken, 4096);
+  }
+  EXPECT_EQ(taken_late, 0);
   close(client);
 }
 
