@@ -12,7 +12,9 @@ a sender must keep the planner fed at 800 lines a second of wall time at 4x. A `
     not counting the first and last 200 lines (the job's own ramps); F3000 is the plan.
   - lines acknowledged, wall time, and the simulator's own closing report (its pacing line).
 docs/gcode.md records the figures. PACING_DEBUG=1 prints each mid-job Idle report with the
-sender's bytes in flight.
+sender's bytes in flight. PACING_TRACE=FILE writes one line per event to FILE: wall time (ms),
+W (a line written), R (a reply read) or S (a status report), lines sent, lines acknowledged,
+and the reply or report.
 
 Usage: bench/live_stream_under_load.py [SPEED] [HOGS] [STEPDANCE_BINARY]
        (defaults: 4, the number of cores, build/stepdance; HOGS 0 runs without load)
@@ -71,6 +73,13 @@ class Stream:
         self.min_feed = None
         self.reports = 0
         self.errors = []
+        self.trace = open(os.environ["PACING_TRACE"], "w") if os.environ.get("PACING_TRACE") else None
+        self.read_at = None  # when the first reply not yet answered by a write was read
+        self.answer_s = []   # from reading a reply to writing the next line, s: the sender's own latency
+
+    def note(self, event, text):
+        if self.trace:
+            self.trace.write("%.3f %s %d %d %s\n" % (time.monotonic() * 1e3, event, self.sent, self.acked, text))
 
     def send_what_fits(self):
         while self.sent < len(self.lines):
@@ -80,6 +89,10 @@ class Stream:
             os.write(self.port, line)
             self.in_flight.append(len(line))
             self.sent += 1
+            self.note("W", "")
+            if self.read_at is not None:
+                self.answer_s.append(time.monotonic() - self.read_at)
+                self.read_at = None
 
     def read_replies(self):
         try:
@@ -94,11 +107,15 @@ class Stream:
                     self.errors.append((self.acked, text))
                 self.in_flight.pop(0)
                 self.acked += 1
+                self.note("R", text)
+                if self.read_at is None:
+                    self.read_at = time.monotonic()
             elif text.startswith("<"):
                 self.status(text)
 
     def status(self, text):
         self.reports += 1
+        self.note("S", text)
         mid_job = 0 < self.acked < len(self.lines)
         if mid_job and text.startswith("<Idle"):
             self.idle_mid_job += 1
@@ -144,6 +161,11 @@ def main():
           % (len(stream.lines), SPEED, HOGS, os.cpu_count(), stream.acked, len(stream.errors), wall_s))
     print("pacing: %d status reports; Idle mid-job: %d; lowest feed with more than 4 blocks queued: %s mm/min"
           % (stream.reports, stream.idle_mid_job, "%.0f" % stream.min_feed if stream.min_feed is not None else "-"))
+    answers = sorted(stream.answer_s)
+    if answers:
+        print("pacing: the sender, from reading a reply to writing the next line: median %.0f us, 99th percentile"
+              " %.0f us, longest %.1f ms, %.2f s in all" % (answers[len(answers) // 2] * 1e6,
+              answers[len(answers) * 99 // 100] * 1e6, answers[-1] * 1e3, sum(answers)))
     print("pacing: the simulator's report:\n" + report)
 
 

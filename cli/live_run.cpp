@@ -128,6 +128,19 @@ double wait_for_readers(std::vector<BoardLink>& links, LiveView* view) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
+// Detaches the boards from their terminals, counting and announcing what nobody read.
+void close_terminals(std::vector<BoardLink>& links, const std::vector<std::string>& boards) {
+  for (size_t i = 0; i < links.size(); ++i) {
+    links[i].board->on_console_bytes(nullptr);
+    const uint64_t dropped = links[i].port->dropped_bytes();
+    links[i].board->count_console_dropped(dropped);
+    if (dropped > 0) {
+      std::printf("serial %s: %llu bytes the board printed were dropped, oldest first (nobody read them)\n",
+                  boards[i].c_str(), static_cast<unsigned long long>(dropped));
+    }
+  }
+}
+
 }  // namespace
 
 LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options) {
@@ -174,15 +187,7 @@ LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>&
     simulation.run_until(simulation.duration());
   }
   exchange(links);
-  for (size_t i = 0; i < links.size(); ++i) {
-    links[i].board->on_console_bytes(nullptr);
-    const uint64_t dropped = links[i].port->dropped_bytes();
-    links[i].board->count_console_dropped(dropped);
-    if (dropped > 0) {
-      std::printf("serial %s: %llu bytes the board printed were dropped, oldest first (nobody read them)\n",
-                  boards[i].c_str(), static_cast<unsigned long long>(dropped));
-    }
-  }
+  close_terminals(links, boards);
   if (view != nullptr) view->finish();
   simulation.end_now();
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

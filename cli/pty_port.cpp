@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ioctl.h>
@@ -80,7 +81,13 @@ void PtyPort::write_to_client(const uint8_t* data, size_t length) {
   flush();
 }
 
+// Bytes written to the master reach the terminal's read queue through the kernel's flip buffer, a
+// work item run later by a kernel thread (much later on a loaded machine); FIONREAD does not
+// count them until then. poll() on the terminal side runs that pending work first when the
+// queue looks empty (n_tty_poll), so the count that follows includes every byte written so far.
 size_t PtyPort::unread_by_client() const {
+  pollfd terminal{keeper_, POLLIN, 0};
+  (void)poll(&terminal, 1, 0);
   int in_terminal = 0;
   if (ioctl(keeper_, FIONREAD, &in_terminal) != 0) in_terminal = 0;
   return size_ + static_cast<size_t>(std::max(in_terminal, 0));

@@ -44,9 +44,11 @@ class PtyPort {
   void flush();
   /// Bytes dropped because the client did not read (see kMaxPendingBytes).
   uint64_t dropped_bytes() const { return dropped_; }
-  /// Bytes written for the client that it has not read yet (in the terminal's read queue or
-  /// still queued here). Bytes just written may reach the terminal's queue a moment later (the
-  /// kernel moves them), and count only then.
+  /// Bytes written for the client that it has not read yet (in the terminal's read queue, on
+  /// their way there in the kernel, or still queued here): every byte written so far counts at
+  /// once, so a wait on this never sees 0 while the client has not yet seen a reply. May first
+  /// wait for the kernel to move bytes still on their way (a moment; on a loaded machine, until
+  /// its worker thread runs).
   size_t unread_by_client() const;
 
  private:
