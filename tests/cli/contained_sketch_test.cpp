@@ -71,6 +71,9 @@ const Case kCases[] = {
     // Busy loops: stopped by the watchdog, with where; the unfinished console line is shown.
     {"BusyLoop", kSketchHung, "board 'driver': loop() has not returned for 1 s of wall time", "[driver] progress: 50%"},
     {"BusySetup", kSketchHung, "board 'driver': setup() has not returned for 1 s of wall time", "NOT RUN "},
+    // A wait in the C library that the watchdog's signal cuts short, after which setup()
+    // returns by itself: still a hang, never a pass.
+    {"SleepInSetup", kSketchHung, "board 'driver': setup() has not returned for 1 s of wall time", "NOT RUN "},
     // exit() and abort(): reported, never status 0.
     {"ExitInLoop", kSketchFailed, "board 'driver': exit(0) called in loop() at t = 0.501", "NOT RUN "},
     {"AbortInLoop", kSketchFailed, "board 'driver': abort() called in loop()", "NOT RUN "},

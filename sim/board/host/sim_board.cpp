@@ -102,6 +102,8 @@ void SimBoard::enter(SketchEntry entry, Call call) {
     EntryMonitor::Scope running(*this, entry, board_->escape, &library_->code());
     code = call();
   }
+  // A hang the watchdog could not stop inside the entry is stopped now, not forgotten.
+  if (code == 0 && EntryMonitor::adopt_unreached_hang()) code = 1;
   if (code != 0) escaped(entry);
 }
 
