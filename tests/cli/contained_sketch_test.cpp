@@ -71,6 +71,9 @@ const Case kCases[] = {
     // Busy loops: stopped by the watchdog, with where; the unfinished console line is shown.
     {"BusyLoop", kSketchHung, "board 'driver': loop() has not returned for 1 s of wall time", "[driver] progress: 50%"},
     {"BusySetup", kSketchHung, "board 'driver': setup() has not returned for 1 s of wall time", "NOT RUN "},
+    // A wait in the C library that the watchdog's signal cuts short, after which setup()
+    // returns by itself: still a hang, never a pass.
+    {"SleepInSetup", kSketchHung, "board 'driver': setup() has not returned for 1 s of wall time", "NOT RUN "},
     // exit() and abort(): reported, never status 0.
     {"ExitInLoop", kSketchFailed, "board 'driver': exit(0) called in loop() at t = 0.501", "NOT RUN "},
     {"AbortInLoop", kSketchFailed, "board 'driver': abort() called in loop()", "NOT RUN "},
@@ -111,6 +114,28 @@ TEST(ContainedSketch, TheOutputsAreWrittenWhenASketchIsStopped) {
   const std::string summary = read_file(scratch + "/out/summary.json");
   EXPECT_NE(summary.find("\"what\": \"exit(0) called\""), std::string::npos) << summary;
   EXPECT_NE(summary.find("\"simulated_time_s\": 0.501"), std::string::npos) << summary;
+}
+
+// A sketch that writes without end cannot fill the host's disk or use up the simulator's files:
+// its card takes 64 MiB written per run and 16 open files, refuses the rest as a full card would,
+// and the run says how much. RunawayCard opens log.bin and 40 more files it never closes (15 of
+// them fit, taking "0".."14": 10 × 1 + 5 × 2 = 20 bytes), then writes 100 blocks of 1 MiB:
+// 63 fit beside the 20 bytes, 37 are refused.
+TEST(ContainedSketch, ARunawayCardWriterIsHeldToTheCardsLimits) {
+  const std::string scratch = test_output_dir("contained_RunawayCard");
+  const CommandResult result = run_fixture("RunawayCard");
+  EXPECT_EQ(result.exit_code, kOk) << result.out << result.err;
+  EXPECT_NE(result.out.find("[driver] warning ×37: SD card: full (first: the card takes 64 MiB written per run; "
+                            "38797312 bytes refused)"),
+            std::string::npos)
+      << result.out;
+  EXPECT_NE(result.out.find("[driver] warning ×25: SD card: too many open files"), std::string::npos) << result.out;
+  const std::string card = scratch + "/out/driver.sd";
+  EXPECT_EQ(std::filesystem::file_size(card + "/log.bin"), 63u * 1048576u);
+  size_t files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(card)) files += entry.is_regular_file() ? 1 : 0;
+  EXPECT_EQ(files, 16u);
+  EXPECT_NE(read_file(scratch + "/out/summary.json").find("\"SD card: full\": 37"), std::string::npos);
 }
 
 // SIGTERM (and Ctrl-C) end a batch run stuck in a sketch within a second, writing the outputs,

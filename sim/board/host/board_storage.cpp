@@ -17,6 +17,10 @@ bool BoardStorage::valid_name(const char* name) {
 Status BoardStorage::open(const char* name, int mode, int& handle) {
   if (directory_.empty()) return Status::kUnsupported;
   if (!valid_name(name) || mode < 0 || mode > 2) return Status::kBadArgument;
+  if (open_files_.size() >= static_cast<size_t>(kMaxOpenFiles)) {
+    ++refused_opens_;
+    return Status::kFull;
+  }
   std::error_code error;
   if (mode != 0) std::filesystem::create_directories(directory_, error);
   std::ios::openmode flags = std::ios::binary;
@@ -43,6 +47,12 @@ Status BoardStorage::read(int handle, uint8_t* data, size_t length, size_t& read
 Status BoardStorage::write(int handle, const uint8_t* data, size_t length) {
   const auto found = open_files_.find(handle);
   if (found == open_files_.end()) return Status::kBadArgument;
+  if (length > kWriteLimitBytes - written_bytes_) {
+    ++refused_writes_;
+    refused_write_bytes_ += length;
+    return Status::kFull;
+  }
+  written_bytes_ += length;
   found->second->write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(length));
   return found->second->good() ? Status::kOk : Status::kIoError;
 }

@@ -64,6 +64,13 @@ void EntryMonitor::escape_if_requested() {
   escape(cause);
 }
 
+bool EntryMonitor::adopt_unreached_hang() {
+  if (requested() != EscapeCause::kHung) return false;
+  record_.cause = EscapeCause::kHung;
+  record_.detail = requested_detail_.load(std::memory_order_relaxed);
+  return true;
+}
+
 void EntryMonitor::escape(EscapeCause cause) {
   const int depth = depth_;
   if (depth == 0 || depth > kMaxDepth) return;

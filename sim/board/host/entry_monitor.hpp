@@ -77,6 +77,11 @@ class EntryMonitor {
   static int requested_detail() { return requested_detail_.load(std::memory_order_relaxed); }
   static void clear_request() { requested_.store(0, std::memory_order_relaxed); }
 
+  /// After an entry returned by itself: if the watchdog asked to stop it (kHung) and the stop
+  /// never reached it (the sketch waited in a library call such as sleep(), which the watchdog's
+  /// signal cut short, and then returned without calling the simulator), records that stop as
+  /// the entry's escape and returns true. Context: the simulator's thread, between entries.
+  static bool adopt_unreached_hang();
   /// Called at the start of every host callback: escapes from the innermost entry if a stop was
   /// requested. Context: the simulator's thread, inside a sketch's call to the host.
   static void escape_if_requested();

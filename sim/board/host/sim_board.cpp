@@ -102,6 +102,8 @@ void SimBoard::enter(SketchEntry entry, Call call) {
     EntryMonitor::Scope running(*this, entry, board_->escape, &library_->code());
     code = call();
   }
+  // A hang the watchdog could not stop inside the entry is stopped now, not forgotten.
+  if (code == 0 && EntryMonitor::adopt_unreached_hang()) code = 1;
   if (code != 0) escaped(entry);
 }
 
@@ -446,7 +448,23 @@ std::vector<SimBoard::BoardWarning> SimBoard::warnings() const {
   };
   if (firmware_) firmware_->read_warnings(emit, &out);
   if (board_ != nullptr) board_->read_warnings(emit, &out);
+  add_storage_warnings(out);
   return out;
+}
+
+// What the card refused to a runaway sketch (board_storage.hpp's limits), told as warnings are.
+void SimBoard::add_storage_warnings(std::vector<BoardWarning>& out) const {
+  if (storage_.refused_writes() != 0) {
+    out.push_back({"SD card: full",
+                   "the card takes " + std::to_string(BoardStorage::kWriteLimitBytes >> 20) +
+                       " MiB written per run; " + std::to_string(storage_.refused_write_bytes()) + " bytes refused",
+                   storage_.refused_writes()});
+  }
+  if (storage_.refused_opens() != 0) {
+    out.push_back({"SD card: too many open files",
+                   "at most " + std::to_string(BoardStorage::kMaxOpenFiles) + " files open at once",
+                   storage_.refused_opens()});
+  }
 }
 
 uint64_t SimBoard::port_counter(const std::string& block_class, uint8_t port, const std::string& name) const {

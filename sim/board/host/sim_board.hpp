@@ -182,7 +182,8 @@ class SimBoard {
     std::string detail;  ///< the first report's detail ("" if it was only counted)
     uint64_t count = 0;
   };
-  /// Every kind of warning reported since dance_start(), in the order first seen.
+  /// Every kind of warning reported since dance_start(), in the order first seen, then what the
+  /// board's card refused ("SD card: full", "SD card: too many open files"; board_storage.hpp).
   std::vector<BoardWarning> warnings() const;
   /// Counter `name` of the block of class `block_class` whose "port" counter is `port` (an
   /// OutputPort or InputPort), or 0 if there is none.
@@ -287,6 +288,7 @@ class SimBoard {
     SimBoard& owner;
   };
   void keep_console_text(const uint8_t* data, size_t length);
+  void add_storage_warnings(std::vector<BoardWarning>& out) const;
 
   /// Runs one entry point of the sketch (`call` returns its code) unless the board is frozen;
   /// an escape freezes it and, for anything but the end of the run, reports the stop.

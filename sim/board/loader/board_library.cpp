@@ -1,4 +1,5 @@
-// dlopen of board libraries, copying the file for every board after the first that uses it.
+// dlopen of board libraries, copying the file for every board after the first that uses it and
+// running every copy from the original's code pages.
 #include "board/loader/board_library.hpp"
 
 #include <dlfcn.h>
@@ -8,6 +9,7 @@
 #include <map>
 
 #include "board/loader/board_code_ranges.hpp"
+#include "board/loader/shared_code_pages.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -29,7 +31,9 @@ void* open_library(const std::string& path, std::string& error) {
   return handle;
 }
 
-// Loads a private copy so this board's globals are not the first board's.
+// Loads a private copy so this board's globals are not the first board's, then maps its code
+// and constants from `path` again, so that a thousand boards do not run a thousand copies of the
+// same code (they did not fit the processor's caches: docs/simulator.md, "Many boards").
 void* open_private_copy(const std::string& path, int copy_index, std::string& error) {
   const std::string copy = path + ".copy-" + std::to_string(copy_index) + "-" + std::to_string(::getpid()) + ".so";
   std::error_code fs_error;
@@ -40,6 +44,7 @@ void* open_private_copy(const std::string& path, int copy_index, std::string& er
   }
   void* handle = open_library(copy, error);
   fs::remove(copy, fs_error);
+  if (handle != nullptr) share_read_only_pages(handle, path);
   return handle;
 }
 
