@@ -30,8 +30,11 @@ namespace net = boost::asio;
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// The edit protocol's version, sent in `serve_hello`.
-constexpr int kEditProtocolVersion = 1;
+/// The edit protocol's version, sent in `serve_hello`. Version 2 named the run request
+/// `sketch_run` (version 1's `run` was the view protocol's run control's name too: issue 40).
+constexpr int kEditProtocolVersion = 2;
+/// The edit protocol's run request. Every other message from the page goes to its run's view.
+constexpr const char* kRunRequestType = "sketch_run";
 /// How often the server looks at its run's process.
 constexpr std::chrono::milliseconds kCheckPeriod{100};
 
@@ -71,24 +74,24 @@ std::optional<RunRequest> read_run_request(const json& message, std::string& err
   const json* scenario = message.contains("scenario") ? &message["scenario"] : nullptr;
   if (!example || !example->is_string() || !plain_name(*example) || !files || !files->is_object() || !scenario ||
       !scenario->is_string()) {
-    error = "run: needs `example` (a plain name), `files` ({name: text}) and `scenario` (one of the files)";
+    error = "sketch_run: needs `example` (a plain name), `files` ({name: text}) and `scenario` (one of the files)";
     return std::nullopt;
   }
   if (files->size() > kMaxRunFiles) {
-    error = "run: at most " + std::to_string(kMaxRunFiles) + " files";
+    error = "sketch_run: at most " + std::to_string(kMaxRunFiles) + " files";
     return std::nullopt;
   }
   request.example = *example;
   request.scenario = *scenario;
   for (const auto& [name, text] : files->items()) {
     if (!plain_name(name) || !text.is_string()) {
-      error = "run: '" + name + "' is not a plain file name with a text";
+      error = "sketch_run: '" + name + "' is not a plain file name with a text";
       return std::nullopt;
     }
     request.files.emplace_back(name, text.get<std::string>());
   }
   if (!files->contains(request.scenario)) {
-    error = "run: the scenario '" + request.scenario + "' is not among the files";
+    error = "sketch_run: the scenario '" + request.scenario + "' is not among the files";
     return std::nullopt;
   }
   return request;
@@ -144,12 +147,12 @@ class SketchServer {
 
   void receive(ClientId client, std::string_view text) {
     json message = json::parse(text, nullptr, false);
-    if (message.is_object() && message.value("type", "") == "run") return start_run(client, message);
+    if (message.is_object() && message.value("type", "") == kRunRequestType) return start_run(client, message);
     if (run_ && client_ == client && !run_->over()) {
       if (!message.is_object()) return error(client, "not a JSON object");
       return run_->to_child(message.dump());  // one line, whatever the page's layout
     }
-    error(client, "not a run request, and no run of yours is going: send {\"type\": \"run\", …} first");
+    error(client, "not a sketch_run request, and no run of yours is going: send {\"type\": \"sketch_run\", …} first");
   }
 
   void start_run(ClientId client, const json& message) {

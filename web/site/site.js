@@ -8,6 +8,9 @@
 
 /// Where the page looks for `stepdance serve` (its default port), unless ?serve=PORT says otherwise.
 const DEFAULT_SERVE_PORT = 8001;
+/// The edit protocol's version this page speaks (2: the run request is `sketch_run`, apart from
+/// the view protocol's `run` control, which goes to the run as every other view message).
+const EDIT_PROTOCOL_VERSION = 2;
 
 const site = (window.stepdanceSite = { examples: [], scenarios: {}, result: null, problems: [], runner: null,
                                        server: null });
@@ -172,7 +175,7 @@ async function serverRunner(example, scenarioFile, scenarioText) {
     else if (message.type === "result") runEvents.result(message.result);
     else toView(event.data); // the view protocol
   };
-  socket.send(JSON.stringify({ type: "run", example: example.name, files, scenario: scenarioFile }));
+  socket.send(JSON.stringify({ type: "sketch_run", example: example.name, files, scenario: scenarioFile }));
   return { send: (text) => socket.send(text), stop: () => {} };
 }
 
@@ -210,7 +213,7 @@ function findServer() {
   }
   socket.onmessage = (event) => {
     const message = JSON.parse(event.data);
-    if (message.type !== "serve_hello" || message.version !== 1) return;
+    if (message.type !== "serve_hello" || message.version !== EDIT_PROTOCOL_VERSION) return;
     site.server = socket;
     $("serve-state").textContent = `Sketch edits compile on stepdance serve at 127.0.0.1:${port}.`;
     if (site.sketchText !== undefined) showSketch();
