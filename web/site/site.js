@@ -54,6 +54,7 @@ async function showExample() {
   }
   picker.value = "scenario.toml";
   showScenario();
+  site.shown = example.name;
 }
 
 // The sketch: highlighted and read-only, or, with a server to compile it, in an editor.

@@ -43,12 +43,34 @@ async function fetchBytes(url) {
   return new Uint8Array(await response.arrayBuffer());
 }
 
-async function start(request) {
-  sim = await StepdanceSim.create(createStepdanceModule, { print: () => {}, printErr: () => {} });
+/// The files in other examples' folders that scenario `text` names, as quoted relative paths
+/// (`sketch = "../ChainedKnobsBasic/ChainedKnobsBasic.ino"`): [{folder, file}].
+function otherExamplesFiles(text) {
+  const named = new Map();
+  for (const match of text.matchAll(/"\.\.\/([A-Za-z0-9_][\w.-]*)\/([A-Za-z0-9_][\w.-]*)"/g)) {
+    named.set(`${match[1]}/${match[2]}`, { folder: match[1], file: match[2] });
+  }
+  return [...named.values()];
+}
+
+/// Writes the example's own files and every file its scenario names in other examples' folders
+/// (the site carries every example's folder). A named file the site lacks is left out: the
+/// scenario reader then says which one is missing, as natively.
+async function writeFiles(request) {
   const folder = request.path.substring(0, request.path.lastIndexOf("/"));
   for (const file of request.files) {
     sim.writeFile(`${folder}/${file}`, await fetchBytes(`examples/${request.example}/${file}`));
   }
+  const examples = folder.substring(0, folder.lastIndexOf("/"));
+  for (const other of otherExamplesFiles(request.text)) {
+    const response = await fetch(`examples/${other.folder}/${other.file}`);
+    if (response.ok) sim.writeFile(`${examples}/${other.folder}/${other.file}`, new Uint8Array(await response.arrayBuffer()));
+  }
+}
+
+async function start(request) {
+  sim = await StepdanceSim.create(createStepdanceModule, { print: () => {}, printErr: () => {} });
+  await writeFiles(request);
   let sketches;
   try {
     sketches = sim.sketches(request.path, request.text);
