@@ -19,7 +19,7 @@ const SERVER_SEEN_KEY = "stepdance.serve-seen";
 const VISITED_KEY = "stepdance.visited";
 
 const site = (window.stepdanceSite = { examples: [], scenarios: {}, original: null, result: null, problems: [],
-                                       runner: null, server: null, shown: null, unsaved: false });
+                                       runner: null, server: null, shown: null, unsaved: false, worker: null });
 
 const $ = (id) => document.getElementById(id);
 let viewInbox = [];      // view messages that came before the view attached
@@ -274,18 +274,29 @@ const runEvents = {
   ended(text) { showProblems(text); status("the run ended early: see the problems under the scenario"); },
 };
 
-/// The WebAssembly simulator in a Web Worker: {send(text), stop()}.
-function workerRunner(example, scenarioFile, scenarioText) {
+/// The Web Worker that runs the WebAssembly simulator (worker.js), made once: it keeps the loaded
+/// module and boards between runs. Its messages are handed to the run they belong to.
+function simulationWorker() {
+  if (site.worker) return site.worker;
   const worker = new Worker("worker.js");
   worker.onmessage = (event) => {
     const message = event.data;
+    if (message.run !== site.runId) return; // a run that has been replaced
     if (message.kind === "view") toView(message.text);
     else if (runEvents[message.kind]) runEvents[message.kind](message.kind === "result" ? message.result : message.text);
   };
   worker.onerror = (event) => runEvents.crashed(event.message);
-  worker.postMessage({ kind: "start", example: example.name, files: example.files,
+  site.worker = worker;
+  return worker;
+}
+
+/// A run of the WebAssembly simulator in the page's worker: {send(text), stop()}.
+function workerRunner(example, scenarioFile, scenarioText) {
+  const worker = simulationWorker();
+  const run = (site.runId = (site.runId || 0) + 1);
+  worker.postMessage({ kind: "start", run, example: example.name, files: example.files,
                        path: exampleFolder(example) + scenarioFile, text: scenarioText });
-  return { send: (text) => worker.postMessage({ kind: "view", text }), stop: () => worker.terminate() };
+  return { send: (text) => worker.postMessage({ kind: "view", text }), stop: () => worker.postMessage({ kind: "stop" }) };
 }
 
 /// The run on the local `stepdance serve`, over its socket: {send(text), stop()}.
