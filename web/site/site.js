@@ -434,7 +434,7 @@ async function startPage() {
   let shared = null;
   if (fragment.shared) shared = await keep.decode(fragment.shared).catch(() => null);
   await showExample(shared);
-  if (fragment.shared) status(shared ? "ready: the shared edits are in the editors; Run starts them" : "ready: the share link is damaged; the example's own files are shown");
+  if (fragment.shared) status(shared ? "ready: the shared edits are in the editors; Run starts them" : "ready: the share link is damaged, so nothing of it was taken; Run starts the scenario shown");
   if (!recalled(VISITED_KEY)) $("hint").hidden = false;
 }
 
