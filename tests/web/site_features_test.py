@@ -20,38 +20,16 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
 import time
 import unittest
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
 SITE_DIR, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
 os.makedirs(WORK_DIR, exist_ok=True)
-PHONE_WIDTH_PX = 390
-PHONE_HEIGHT_PX = 844
-
-
-def chromium(phone=False):
-    """A headless Chromium with its own profile and the console's messages kept; on a phone's
-    screen (390 × 844 CSS px, mobile) when `phone`. Returns (driver, profile folder)."""
-    options = Options()
-    options.binary_location = "/usr/bin/chromium"
-    profile = tempfile.mkdtemp(prefix="stepdance-chromium-")
-    for argument in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--disable-gpu",
-                     f"--user-data-dir={profile}", "--window-size=1400,1000", "--allow-file-access-from-files"):
-        options.add_argument(argument)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    if phone:
-        options.add_experimental_option("mobileEmulation", {"deviceMetrics": {
-            "width": PHONE_WIDTH_PX, "height": PHONE_HEIGHT_PX, "pixelRatio": 2, "mobile": True, "touch": True}})
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options), profile
-
-
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from page_browser import PHONE_PIXEL_RATIO, PHONE_WIDTH_PX, chromium  # noqa: E402
 class PageTest(unittest.TestCase):
     phone = False
 
@@ -225,7 +203,7 @@ class Phone(PageTest):
         with open(shot, "rb") as png:
             header = png.read(24)
         width_px = int.from_bytes(header[16:20], "big")
-        self.assertEqual(width_px, PHONE_WIDTH_PX * 2)  # the screenshot is the phone's screen, 2 px a CSS px
+        self.assertEqual(width_px, PHONE_WIDTH_PX * PHONE_PIXEL_RATIO)  # the screenshot is the phone's screen
 
 
 class SmallThings(PageTest):
