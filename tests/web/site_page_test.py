@@ -262,6 +262,23 @@ class SketchServer(SitePage):
         self.assertEqual(self.in_view("return window.stepdanceView.errors;"), [])
         self.assertTrue(all(e["checked"] and e["met"] for e in self.site("result.expectations")))
 
+    def test_a_scenario_naming_another_examples_sketch_runs_on_the_server(self):
+        # ChainedPlotterDriver's knobs board runs ../ChainedKnobsBasic/ChainedKnobsBasic.ino: the page
+        # sends it as one of `others`, and the server writes it beside the run's example.
+        native = native_summary("ChainedPlotterDriver")
+        self.open_example("ChainedPlotterDriver", query=f"?serve={self.serve_port}")
+        self.wait_for(lambda: self.site("server") is not None, 60)
+        self.browser.find_element(By.ID, "run").click()
+        self.wait_view("true", 300)
+        self.browser.switch_to.frame(self.browser.find_element(By.ID, "view"))
+        self.browser.find_element(By.CSS_SELECTOR, "button[data-speed='max']").click()
+        self.browser.switch_to.default_content()
+        self.wait_for(lambda: self.site("result") is not None, 300)
+        self.assertEqual(self.site("problems"), [])
+        expectations = self.site("result.expectations")
+        self.assertTrue(expectations and all(e["checked"] and e["met"] for e in expectations), expectations)
+        self.assertEqual(self.site("result.summary.machine.strokes"), native["machine"]["strokes"])
+
     def test_the_server_refuses_foreign_origins_and_bad_requests(self):
         self.assertIn("403", websocket_status(self.serve_port, "/ws", "http://evil.example"))
         client = RawWebSocket(self.serve_port, "", origin=f"http://127.0.0.1:{self.port}")
@@ -270,6 +287,10 @@ class SketchServer(SitePage):
         for bad in ({"type": "sketch_run", "example": "StepASketch", "files": {"../x.ino": ""}, "scenario": "../x.ino"},
                     {"type": "sketch_run", "example": "../up", "files": {}, "scenario": "scenario.toml"},
                     {"type": "sketch_run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "b.toml"},
+                    {"type": "sketch_run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "a.toml",
+                     "others": {"..": {"x.ino": ""}}},
+                    {"type": "sketch_run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "a.toml",
+                     "others": {"Other": {"../x.ino": ""}}},
                     {"type": "input", "device": "knob_x", "action": "turn", "counts": 1},
                     {"type": "run", "action": "pause"}):  # the view's run control, with no run going
             client.send(json.dumps(bad))

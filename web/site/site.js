@@ -305,6 +305,11 @@ async function serverRunner(example, scenarioFile, scenarioText) {
   for (const file of example.files) files[file] = await fetchText(`examples/${example.name}/${file}`);
   files[sketchFile(example)] = site.sketchText;
   files[scenarioFile] = scenarioText;
+  const others = {};
+  for (const other of otherExamplesFiles(scenarioText)) {
+    const text = await fetchText(`examples/${other.folder}/${other.file}`).catch(() => null);
+    if (text !== null && other.folder !== example.name) (others[other.folder] ||= {})[other.file] = text;
+  }
   const socket = site.server;
   socket.onmessage = (event) => {
     const message = JSON.parse(event.data);
@@ -315,7 +320,7 @@ async function serverRunner(example, scenarioFile, scenarioText) {
     else if (message.type === "result") runEvents.result(message.result);
     else toView(event.data); // the view protocol
   };
-  socket.send(JSON.stringify({ type: "sketch_run", example: example.name, files, scenario: scenarioFile }));
+  socket.send(JSON.stringify({ type: "sketch_run", example: example.name, files, others, scenario: scenarioFile }));
   return { send: (text) => socket.send(text), stop: () => {} };
 }
 

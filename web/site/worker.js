@@ -15,7 +15,7 @@
 // `stepdance sim --result-json` writes), {kind: "crashed", text} when the module failed.
 "use strict";
 
-importScripts("stepdance_web.js", "stepdance_sim.js");
+importScripts("stepdance_web.js", "stepdance_sim.js", "named_files.js");
 
 /// How long one slice of simulation may hold the worker at --speed max (wall ms): messages from
 /// the page are answered between slices.
@@ -55,16 +55,6 @@ async function fetchBytes(url) {
   const bytes = new Uint8Array(await response.arrayBuffer());
   fetched.set(url, bytes);
   return bytes;
-}
-
-/// The files in other examples' folders that scenario `text` names, as quoted relative paths
-/// (`sketch = "../ChainedKnobsBasic/ChainedKnobsBasic.ino"`): [{folder, file}].
-function otherExamplesFiles(text) {
-  const named = new Map();
-  for (const match of text.matchAll(/"\.\.\/([A-Za-z0-9_][\w.-]*)\/([A-Za-z0-9_][\w.-]*)"/g)) {
-    named.set(`${match[1]}/${match[2]}`, { folder: match[1], file: match[2] });
-  }
-  return [...named.values()];
 }
 
 /// Writes the example's own files and every file its scenario names in other examples' folders
