@@ -6,8 +6,20 @@
 # `stepdance sim`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-scripts/build-host.sh >/dev/null
+scripts/setup.sh --main
+build_dir=${STEPDANCE_BUILD_DIR:-build}
+# A fresh tree is configured for the `stepdance` command alone (no tests, benchmarks or servo
+# firmware: their packages are scripts/test.sh's); a tree configured before keeps its settings.
+if [ ! -f "$build_dir/CMakeCache.txt" ]; then
+  launcher=()
+  if command -v ccache >/dev/null 2>&1; then
+    export CCACHE_BASEDIR=${CCACHE_BASEDIR:-$(cd .. && pwd)}
+    launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  fi
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSTEPDANCE_TESTS=OFF -DSTEPDANCE_BENCH=OFF \
+    -DSTEPDANCE_SERVO_FIRMWARE=OFF "${launcher[@]}" >/dev/null
+fi
+cmake --build "$build_dir" --target stepdance -j"$(nproc)" >/dev/null
 out_dir=out/step-a-sketch
-"${STEPDANCE_BUILD_DIR:-build}"/stepdance sim examples/StepASketch --out "$out_dir" --html "$out_dir/replay.html" "$@"
+"$build_dir"/stepdance sim examples/StepASketch --out "$out_dir" --html "$out_dir/replay.html" "$@"
 echo "The drawing is in $out_dir/drawing.svg and $out_dir/drawing.png; the replay page is $out_dir/replay.html."

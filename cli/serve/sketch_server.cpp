@@ -30,8 +30,11 @@ namespace net = boost::asio;
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/// The edit protocol's version, sent in `serve_hello`.
-constexpr int kEditProtocolVersion = 1;
+/// The edit protocol's version, sent in `serve_hello`. Version 2 named the run request
+/// `sketch_run` (version 1's `run` was the view protocol's run control's name too: issue 40).
+constexpr int kEditProtocolVersion = 2;
+/// The edit protocol's run request. Every other message from the page goes to its run's view.
+constexpr const char* kRunRequestType = "sketch_run";
 /// How often the server looks at its run's process.
 constexpr std::chrono::milliseconds kCheckPeriod{100};
 
@@ -53,14 +56,39 @@ std::string confinement_refusal(bool unconfined) {
 
 /// A run request's files, checked: plain names only (no folders, nothing hidden).
 struct RunRequest {
+  struct OtherFile {
+    std::string folder;  ///< another example's folder, beside the run's example
+    std::string name;
+    std::string text;
+  };
   std::string example;
   std::vector<std::pair<std::string, std::string>> files;  ///< name, text
+  std::vector<OtherFile> others;  ///< files of other examples' folders the scenario names
   std::string scenario;
 };
 
 bool plain_name(const std::string& name) {
   static const std::regex kPlain("[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}");
   return std::regex_match(name, kPlain) && name.find("..") == std::string::npos;
+}
+
+/// The request's optional `others` ({folder: {name: text}}: files of other examples' folders, as
+/// ChainedPlotterDriver's scenario names ../ChainedKnobsBasic/ChainedKnobsBasic.ino) into
+/// `request`; false with `error` when they are not plain names with texts.
+bool read_other_files(const json& message, RunRequest& request, std::string& error) {
+  if (!message.contains("others")) return true;
+  const json& others = message["others"];
+  error = "sketch_run: `others` must be {folder: {name: text}}, plain names, other than the example's";
+  if (!others.is_object()) return false;
+  for (const auto& [folder, files] : others.items()) {
+    if (!plain_name(folder) || folder == request.example || !files.is_object()) return false;
+    for (const auto& [name, text] : files.items()) {
+      if (!plain_name(name) || !text.is_string()) return false;
+      request.others.push_back({folder, name, text.get<std::string>()});
+    }
+  }
+  error.clear();
+  return true;
 }
 
 /// The request in `message`, or an error saying what is wrong with it.
@@ -71,37 +99,49 @@ std::optional<RunRequest> read_run_request(const json& message, std::string& err
   const json* scenario = message.contains("scenario") ? &message["scenario"] : nullptr;
   if (!example || !example->is_string() || !plain_name(*example) || !files || !files->is_object() || !scenario ||
       !scenario->is_string()) {
-    error = "run: needs `example` (a plain name), `files` ({name: text}) and `scenario` (one of the files)";
+    error = "sketch_run: needs `example` (a plain name), `files` ({name: text}) and `scenario` (one of the files)";
     return std::nullopt;
   }
   if (files->size() > kMaxRunFiles) {
-    error = "run: at most " + std::to_string(kMaxRunFiles) + " files";
+    error = "sketch_run: at most " + std::to_string(kMaxRunFiles) + " files";
     return std::nullopt;
   }
   request.example = *example;
   request.scenario = *scenario;
   for (const auto& [name, text] : files->items()) {
     if (!plain_name(name) || !text.is_string()) {
-      error = "run: '" + name + "' is not a plain file name with a text";
+      error = "sketch_run: '" + name + "' is not a plain file name with a text";
       return std::nullopt;
     }
     request.files.emplace_back(name, text.get<std::string>());
   }
   if (!files->contains(request.scenario)) {
-    error = "run: the scenario '" + request.scenario + "' is not among the files";
+    error = "sketch_run: the scenario '" + request.scenario + "' is not among the files";
+    return std::nullopt;
+  }
+  if (!read_other_files(message, request, error)) return std::nullopt;
+  if (request.files.size() + request.others.size() > kMaxRunFiles) {
+    error = "sketch_run: at most " + std::to_string(kMaxRunFiles) + " files";
     return std::nullopt;
   }
   return request;
 }
 
-/// The run's files written into its folder: <folder>/<example>/<name>.
+void write_file(const fs::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out.flush()) throw std::runtime_error("cannot write " + path.filename().string() + " for the run");
+}
+
+/// The run's files written into its folder: <folder>/<example>/<name>, and the other examples'
+/// beside it: <folder>/<other>/<name>.
 void write_files(const RunRequest& request, const fs::path& folder) {
   const fs::path example = folder / request.example;
   fs::create_directories(example);
-  for (const auto& [name, text] : request.files) {
-    std::ofstream out(example / name, std::ios::binary);
-    out << text;
-    if (!out.flush()) throw std::runtime_error("cannot write " + name + " for the run");
+  for (const auto& [name, text] : request.files) write_file(example / name, text);
+  for (const RunRequest::OtherFile& other : request.others) {
+    fs::create_directories(folder / other.folder);
+    write_file(folder / other.folder / other.name, other.text);
   }
 }
 
@@ -144,12 +184,12 @@ class SketchServer {
 
   void receive(ClientId client, std::string_view text) {
     json message = json::parse(text, nullptr, false);
-    if (message.is_object() && message.value("type", "") == "run") return start_run(client, message);
+    if (message.is_object() && message.value("type", "") == kRunRequestType) return start_run(client, message);
     if (run_ && client_ == client && !run_->over()) {
       if (!message.is_object()) return error(client, "not a JSON object");
       return run_->to_child(message.dump());  // one line, whatever the page's layout
     }
-    error(client, "not a run request, and no run of yours is going: send {\"type\": \"run\", …} first");
+    error(client, "not a sketch_run request, and no run of yours is going: send {\"type\": \"sketch_run\", …} first");
   }
 
   void start_run(ClientId client, const json& message) {

@@ -25,6 +25,7 @@ import os
 import re
 import subprocess
 import sys
+import time
 import unittest
 
 from selenium.webdriver.common.action_chains import ActionChains
@@ -224,15 +225,74 @@ class SketchServer(SitePage):
         self.assertTrue(all(e["checked"] and e["met"] for e in expectations), expectations)
         self.assertEqual(self.in_view("return window.stepdanceView.strokes.length;"), 4)
 
+    def sim_time_over(self, wall_s):
+        """The view's simulated time gained over `wall_s` seconds of wall time."""
+        before = self.in_view("return window.stepdanceView.t_s;")
+        time.sleep(wall_s)
+        return self.in_view("return window.stepdanceView.t_s;") - before
+
+    def click_in_view(self, selector):
+        self.browser.switch_to.frame(self.browser.find_element(By.ID, "view"))
+        try:
+            self.browser.find_element(By.CSS_SELECTOR, selector).click()
+        finally:
+            self.browser.switch_to.default_content()
+
+    def test_the_view_run_controls_act_on_a_run_on_the_server(self):
+        # Issue 40: the view's `run` control and the edit protocol's run request shared a type name,
+        # so with the server up Pause, 1x, 10x and max were answered "run: needs `example`…".
+        self.edited_sketch(lambda lines, at: None)
+        self.wait_view("window.stepdanceView.t_s > 0", 300)
+        self.click_in_view("#pause")
+        self.wait_for(lambda: self.in_view("return !document.getElementById('resume').hidden;"), 10)
+        self.assertEqual(self.sim_time_over(1.0), 0.0)
+        self.click_in_view("#resume")
+        self.click_in_view("button[data-speed='1']")
+        self.wait_for(lambda: self.in_view("return document.querySelector(\"button[data-speed='1']\").classList.contains('active');"), 10)
+        one_x = self.sim_time_over(2.0)
+        self.assertGreater(one_x, 2.0 * 0.6)
+        self.assertLess(one_x, 2.0 * 1.4)
+        self.click_in_view("button[data-speed='10']")
+        self.wait_for(lambda: self.in_view("return document.querySelector(\"button[data-speed='10']\").classList.contains('active');"), 10)
+        ten_x = self.sim_time_over(1.0)
+        self.assertGreater(ten_x, 10 * 0.5)
+        self.assertLess(ten_x, 10 * 1.4)
+        self.click_in_view("button[data-speed='max']")
+        self.wait_for(lambda: self.site("result") is not None, 120)
+        self.assertEqual(self.in_view("return window.stepdanceView.errors;"), [])
+        self.assertTrue(all(e["checked"] and e["met"] for e in self.site("result.expectations")))
+
+    def test_a_scenario_naming_another_examples_sketch_runs_on_the_server(self):
+        # ChainedPlotterDriver's knobs board runs ../ChainedKnobsBasic/ChainedKnobsBasic.ino: the page
+        # sends it as one of `others`, and the server writes it beside the run's example.
+        native = native_summary("ChainedPlotterDriver")
+        self.open_example("ChainedPlotterDriver", query=f"?serve={self.serve_port}")
+        self.wait_for(lambda: self.site("server") is not None, 60)
+        self.browser.find_element(By.ID, "run").click()
+        self.wait_view("true", 300)
+        self.browser.switch_to.frame(self.browser.find_element(By.ID, "view"))
+        self.browser.find_element(By.CSS_SELECTOR, "button[data-speed='max']").click()
+        self.browser.switch_to.default_content()
+        self.wait_for(lambda: self.site("result") is not None, 300)
+        self.assertEqual(self.site("problems"), [])
+        expectations = self.site("result.expectations")
+        self.assertTrue(expectations and all(e["checked"] and e["met"] for e in expectations), expectations)
+        self.assertEqual(self.site("result.summary.machine.strokes"), native["machine"]["strokes"])
+
     def test_the_server_refuses_foreign_origins_and_bad_requests(self):
         self.assertIn("403", websocket_status(self.serve_port, "/ws", "http://evil.example"))
         client = RawWebSocket(self.serve_port, "", origin=f"http://127.0.0.1:{self.port}")
         self.assertIn("101", client.status)
         self.assertEqual(client.receive()["type"], "serve_hello")
-        for bad in ({"type": "run", "example": "StepASketch", "files": {"../x.ino": ""}, "scenario": "../x.ino"},
-                    {"type": "run", "example": "../up", "files": {}, "scenario": "scenario.toml"},
-                    {"type": "run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "b.toml"},
-                    {"type": "input", "device": "knob_x", "action": "turn", "counts": 1}):
+        for bad in ({"type": "sketch_run", "example": "StepASketch", "files": {"../x.ino": ""}, "scenario": "../x.ino"},
+                    {"type": "sketch_run", "example": "../up", "files": {}, "scenario": "scenario.toml"},
+                    {"type": "sketch_run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "b.toml"},
+                    {"type": "sketch_run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "a.toml",
+                     "others": {"..": {"x.ino": ""}}},
+                    {"type": "sketch_run", "example": "StepASketch", "files": {"a.toml": ""}, "scenario": "a.toml",
+                     "others": {"Other": {"../x.ino": ""}}},
+                    {"type": "input", "device": "knob_x", "action": "turn", "counts": 1},
+                    {"type": "run", "action": "pause"}):  # the view's run control, with no run going
             client.send(json.dumps(bad))
             self.assertEqual(client.receive()["type"], "error", bad)
         client.close()

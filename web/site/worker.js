@@ -2,15 +2,20 @@
 // (stepdance_web.js, stepdance_sim.js) runs one example's scenario, paced to the wall clock at the
 // speed the view asks for, and speaks the view protocol (docs/simulator.md) to the page.
 //
-// From the page: {kind: "start", example, files, path, text} loads the example's files and boards
-// and opens the scenario `text` as the file `path`; {kind: "view", text} is a view-protocol
-// message from the view. To the page: {kind: "view", text} (hello, update, drawing, error
-// messages of the view protocol), {kind: "failed", text} (the scenario reader's or the
-// simulation's errors, `file:line: message` lines), {kind: "result", result} when the run ends
-// (the document `stepdance sim --result-json` writes).
+// The worker lives as long as the page: the module is loaded once and every run after the first
+// reuses it (and the boards it fetched), so a second Run reaches its first frame without
+// fetching or compiling anything.
+//
+// From the page: {kind: "start", run, example, files, path, text} ends the run before, loads the
+// example's files and boards and opens the scenario `text` as the file `path`; {kind: "view",
+// text} is a view-protocol message from the view; {kind: "stop"} ends the run. To the page, each
+// message tagged with its `run`: {kind: "view", text} (hello, update, drawing, error messages of
+// the view protocol), {kind: "failed", text} (the scenario reader's or the simulation's errors,
+// `file:line: message` lines), {kind: "result", result} when the run ends (the document
+// `stepdance sim --result-json` writes), {kind: "crashed", text} when the module failed.
 "use strict";
 
-importScripts("stepdance_web.js", "stepdance_sim.js");
+importScripts("stepdance_web.js", "stepdance_sim.js", "named_files.js");
 
 /// How long one slice of simulation may hold the worker at --speed max (wall ms): messages from
 /// the page are answered between slices.
@@ -21,47 +26,77 @@ const MAX_SPEED_STEP_S = 0.01;
 /// was in the background resumes from where it is instead of racing).
 const LONGEST_CATCH_UP_S = 0.25;
 
-let sim = null;
-let anchor = null; // {wall_s, sim_s, speed}: where wall clock and simulated time were tied
-let finished = false;
+let sim = null;      // the module, loaded by the first run
+let runId = null;    // the page's number of the run going (its messages carry it)
+let anchor = null;   // {wall_s, sim_s, speed}: where wall clock and simulated time were tied
+let finished = true;
+const addedBoards = new Set(); // sketch folder names whose boards the module has
 
 const wallSeconds = () => performance.now() / 1000;
 
 // The next tick: after `ms`, or at once (a MessageChannel message: a task, so the page's messages
 // are answered between slices, without setTimeout's clamp of 4 ms between nested calls).
 const immediate = new MessageChannel();
-immediate.port1.onmessage = () => tick();
+immediate.port1.onmessage = (event) => tick(event.data);
 function tickAfter(ms) {
-  if (ms > 0) setTimeout(tick, ms);
-  else immediate.port2.postMessage(null);
+  const run = runId;
+  if (ms > 0) setTimeout(() => tick(run), ms);
+  else immediate.port2.postMessage(run);
 }
-const post = (text) => postMessage({ kind: "view", text });
+const tell = (message) => postMessage({ ...message, run: runId });
+const post = (text) => tell({ kind: "view", text });
+
+const fetched = new Map(); // url → bytes: the site's files do not change while the page is open
 
 async function fetchBytes(url) {
+  if (fetched.has(url)) return fetched.get(url);
   const response = await fetch(url);
   if (!response.ok) throw new Error(`${url}: ${response.status} ${response.statusText}`);
-  return new Uint8Array(await response.arrayBuffer());
+  const bytes = new Uint8Array(await response.arrayBuffer());
+  fetched.set(url, bytes);
+  return bytes;
 }
 
-async function start(request) {
-  sim = await StepdanceSim.create(createStepdanceModule, { print: () => {}, printErr: () => {} });
+/// Writes the example's own files and every file its scenario names in other examples' folders
+/// (the site carries every example's folder). A named file the site lacks is left out: the
+/// scenario reader then says which one is missing, as natively.
+async function writeFiles(request) {
   const folder = request.path.substring(0, request.path.lastIndexOf("/"));
   for (const file of request.files) {
     sim.writeFile(`${folder}/${file}`, await fetchBytes(`examples/${request.example}/${file}`));
   }
+  const examples = folder.substring(0, folder.lastIndexOf("/"));
+  for (const other of otherExamplesFiles(request.text)) {
+    const bytes = await fetchBytes(`examples/${other.folder}/${other.file}`).catch(() => null);
+    if (bytes) sim.writeFile(`${examples}/${other.folder}/${other.file}`, bytes);
+  }
+}
+
+async function start(request) {
+  finished = true; // the run before (if any) ticks no more
+  anchor = null;
+  runId = request.run;
+  if (!sim) sim = await StepdanceSim.create(createStepdanceModule, { print: () => {}, printErr: () => {} });
+  sim.close();
+  await writeFiles(request);
   let sketches;
   try {
     sketches = sim.sketches(request.path, request.text);
   } catch (error) {
-    postMessage({ kind: "failed", text: error.message });
+    tell({ kind: "failed", text: error.message });
     return;
   }
-  for (const name of sketches) sim.addBoard(name, await fetchBytes(`boards/${name}.wasm`));
+  for (const name of sketches.filter((name) => !addedBoards.has(name))) {
+    sim.addBoard(name, await fetchBytes(`boards/${name}.wasm`));
+    addedBoards.add(name);
+  }
+  if (runId !== request.run) return; // a newer start came while this one fetched
   const errors = sim.open(request.path, request.text);
   if (errors) {
-    postMessage({ kind: "failed", text: errors });
+    tell({ kind: "failed", text: errors });
     return;
   }
+  finished = false;
   post(sim.hello());
   tickAfter(0);
 }
@@ -82,13 +117,15 @@ function advance(state) {
   while (wallSeconds() < until && reached < state.duration_s) reached = sim.runUntil(reached + MAX_SPEED_STEP_S);
 }
 
-function tick() {
-  if (!sim || finished) return;
+function tick(run) {
+  if (!sim || finished || run !== runId) return;
   try {
     paceOnce();
   } catch (error) {
     finished = true;
-    postMessage({ kind: "crashed", text: String((error && error.stack) || error) });
+    tell({ kind: "crashed", text: String((error && error.stack) || error) });
+    sim = null; // a trapped module is not trusted again: the next run loads a fresh one
+    addedBoards.clear();
   }
 }
 
@@ -105,7 +142,7 @@ function paceOnce() {
   if (sim.state().done) {
     finished = true;
     post(sim.updateNow());
-    postMessage({ kind: "result", result: sim.finish() });
+    tell({ kind: "result", result: sim.finish() });
     return;
   }
   tickAfter(state.speed > 0 || state.paused ? 4 : 0);
@@ -114,7 +151,9 @@ function paceOnce() {
 onmessage = (event) => {
   const message = event.data;
   if (message.kind === "start") {
-    start(message).catch((error) => postMessage({ kind: "failed", text: String(error.message || error) }));
+    start(message).catch((error) => tell({ kind: "failed", text: String(error.message || error) }));
+  } else if (message.kind === "stop") {
+    finished = true;
   } else if (message.kind === "view" && sim) {
     for (const reply of sim.receive(message.text)) post(reply);
   }

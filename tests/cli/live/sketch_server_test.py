@@ -96,7 +96,7 @@ class SketchServerContainsItsRuns(unittest.TestCase):
     def run_sketch(self, text, on_started=None):
         """Sends a run; returns (the messages by type, the console text) once it is over."""
         client = self.connect()
-        client.send(__import__("json").dumps({"type": "run", "example": "T", "scenario": "scenario.toml",
+        client.send(__import__("json").dumps({"type": "sketch_run", "example": "T", "scenario": "scenario.toml",
                                               "files": {"T.ino": text, "scenario.toml": SCENARIO}}))
         seen = {}
         console = ""
