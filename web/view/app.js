@@ -328,7 +328,7 @@ function buildBoard(board, container) {
   }
   const figures = element("table", { class: "figures", "aria-label": `${board.name} figures` }, box);
   const faults = element("p", { class: "fault", hidden: "" }, box);
-  const consoleText = element("pre", { class: "console", id: `console-${board.name}`, tabindex: 0, "aria-label": `${board.name} console` }, box);
+  const consoleText = element("pre", { class: "console", id: `console-${board.name}`, tabindex: 0, role: "log", "aria-label": `${board.name} console` }, box);
   addConsoleLine(board, box, consoleText);
   return { figures, faults, console: consoleText, screens, rows: new Map() };
 }
