@@ -27,7 +27,7 @@
     return { send: () => {}, immediate: true, label: "replay" };
   };
 
-  if (recording.format !== "stepdance-replay" || recording.version !== 1) {
+  if (recording.format !== "stepdance-replay" || recording.version !== 2) {
     throw new Error(`not a replay this page reads (format ${recording.format}, version ${recording.version})`);
   }
 
