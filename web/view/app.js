@@ -126,6 +126,8 @@ function setUpDrawing(machine) {
   const svg = drawing.svg;
   svg.replaceChildren();
   drawing.lines = [];
+  drawing.box = [Infinity, Infinity, -Infinity, -Infinity];  // the points' x0, y0, x1, y1
+  drawing.redrawFrom = [];  // per stroke: its first point changed since it was last drawn
   drawing.tableRadius = null;
   if (!machine) { svg.setAttribute("viewBox", "0 0 100 20"); return; }
   const margin = machine.margin_mm;
@@ -189,9 +191,14 @@ function renderStroke(i) {
   const group = drawing.lines[i];
   const points = view.strokes[i];
   const shades = view.shades[i];
+  const from = drawing.redrawFrom[i] ?? 0;
+  drawing.redrawFrom[i] = undefined;
+  if ((shades.length === 0 || !view.shadeScale) && group.children.length === 1 && points.length > 2 && from > 0) {
+    return extendLine(group.firstChild, points, from);
+  }
   const pieces = shades.length === 0 || !view.shadeScale ? [{ points, colour: null }]
-    : shades.map(([from, shade], j) => ({
-      points: points.slice(from, j + 1 < shades.length ? shades[j + 1][0] + 1 : points.length),
+    : shades.map(([start, shade], j) => ({
+      points: points.slice(start, j + 1 < shades.length ? shades[j + 1][0] + 1 : points.length),
       colour: shadeColour(shade, view.shadeScale),
     }));
   while (group.children.length > pieces.length) group.lastChild.remove();
@@ -201,6 +208,19 @@ function renderStroke(i) {
     line.setAttribute("points", pointsText(piece.points));
     if (piece.colour) line.setAttribute("stroke", piece.colour); else line.removeAttribute("stroke");
   });
+}
+
+/// A black stroke's polyline, drawn up to its point `from` already: its later points replaced
+/// in place (the browser neither writes nor reads the whole stroke's text again).
+function extendLine(line, points, from) {
+  const list = line.points;
+  while (list.numberOfItems > from) list.removeItem(list.numberOfItems - 1);
+  for (let k = list.numberOfItems; k < points.length; ++k) {
+    const point = drawing.svg.createSVGPoint();
+    point.x = points[k][0];
+    point.y = points[k][1];
+    list.appendItem(point);
+  }
 }
 
 /// What changed since the page last drew, drawn by render() once per batch of messages.
@@ -216,7 +236,13 @@ function applyStrokes(parts) {
     }
     const stroke = view.strokes[part.i];
     stroke.length = part.from;
-    for (const point of part.points) stroke.push(point);
+    const box = drawing.box;  // every point received (a moved head's old place too: it was drawn)
+    for (const point of part.points) {
+      stroke.push(point);
+      box[0] = Math.min(box[0], point[0]); box[1] = Math.min(box[1], point[1]);
+      box[2] = Math.max(box[2], point[0]); box[3] = Math.max(box[3], point[1]);
+    }
+    drawing.redrawFrom[part.i] = Math.min(drawing.redrawFrom[part.i] ?? Infinity, part.from);
     view.shades[part.i] = view.shades[part.i].filter(([from]) => from < part.from).concat(part.shades || []);
     dirty.strokes.add(part.i);
     dirty.fit = true;
@@ -240,13 +266,12 @@ function renderStrokes() {
 /// the circle around the centre holding the drawing and the arm).
 function fitToDrawing() {
   if (drawing.turntable) return fitTable();
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-  for (const stroke of view.strokes) for (const [x, y] of stroke) {
-    x0 = Math.min(x0, x); x1 = Math.max(x1, x); y0 = Math.min(y0, y); y1 = Math.max(y1, y);
-  }
+  const [x0, y0, x1, y1] = drawing.box;
   if (!(x0 <= x1)) return;
   const margin = view.hello.machine.margin_mm;
-  drawing.svg.setAttribute("viewBox", `${x0 - margin} ${y0 - margin} ${Math.max(x1 - x0, 10) + 2 * margin} ${Math.max(y1 - y0, 10) + 2 * margin}`);
+  const box = `${x0 - margin} ${y0 - margin} ${Math.max(x1 - x0, 10) + 2 * margin} ${Math.max(y1 - y0, 10) + 2 * margin}`;
+  if (box === drawing.svg.getAttribute("viewBox")) return;  // a new viewBox repaints the whole drawing
+  drawing.svg.setAttribute("viewBox", box);
   drawing.layer.setAttribute("transform", "");
 }
 
@@ -309,6 +334,7 @@ function onHello(hello) {
   container.replaceChildren();
   boards.clear();
   for (const board of hello.boards) boards.set(board.name, buildBoard(board, container));
+  shownReason = undefined;  // new controls: their state is written at the next render
 }
 
 function buildBoard(board, container) {
@@ -587,6 +613,8 @@ function blocked(what) {
   return true;
 }
 
+let shownReason;  // what showStatus() last wrote (undefined: nothing yet)
+
 /// The connection's label ("connected", "ended", "disconnected"), and the controls' state.
 function showStatus() {
   const label = document.getElementById("connection");
@@ -596,6 +624,8 @@ function showStatus() {
   label.textContent = text;
   label.className = "state " + (ended ? "ended" : linkState);
   const reason = blockedReason();
+  if (reason === shownReason) return;  // the controls' state is written when it changes only
+  shownReason = reason;
   const note = document.getElementById("controls-note");
   note.hidden = reason === null;
   if (reason !== null) note.textContent = reason;
