@@ -12,6 +12,11 @@ const NOTCHES_PER_TURN = 24;
 const NOTCHES_PER_PAGE_KEY = 6;
 /// Messages wait at most this long for an animation frame (a hidden page gets none).
 const LONGEST_BATCH_MS = 100;
+/// A black stroke's points that no update will change go into paths of this many segments.
+const SETTLED_POINTS = 256;
+/// The page draws at most about 30 times a second (the simulator sends up to 60 updates): on a
+/// machine of two cores the browser's drawing takes its time from the simulation's.
+const SHORTEST_FRAME_MS = 33;
 
 // What tests read (and nothing else needs): the drawing and state as received.
 // Updated as each batch of messages is drawn, so that what it says is on the page.
@@ -73,19 +78,22 @@ function showConnection(state) {
 // next update only when the last has gone: the socket is read as fast as messages come).
 const pending = [];
 let batchDue = false;
+let lastBatchAt = -Infinity;
 
 function receive(text) {
   pending.push(text);
   if (immediate) return handleBatch();
   if (batchDue) return;
   batchDue = true;
-  requestAnimationFrame(handleBatch);
-  setTimeout(handleBatch, LONGEST_BATCH_MS);
+  const wait = Math.max(0, lastBatchAt + SHORTEST_FRAME_MS - performance.now());
+  setTimeout(() => requestAnimationFrame(handleBatch), wait);
+  setTimeout(handleBatch, wait + LONGEST_BATCH_MS);
 }
 
 function handleBatch() {
   batchDue = false;
   if (pending.length === 0) return;
+  lastBatchAt = performance.now();
   for (const text of pending.splice(0)) handle(text);
   render();
 }
@@ -128,6 +136,7 @@ function setUpDrawing(machine) {
   drawing.lines = [];
   drawing.box = [Infinity, Infinity, -Infinity, -Infinity];  // the points' x0, y0, x1, y1
   drawing.redrawFrom = [];  // per stroke: its first point changed since it was last drawn
+  drawing.settled = [];     // per stroke: points drawn in its settled paths (renderBlackStroke)
   drawing.tableRadius = null;
   if (!machine) { svg.setAttribute("viewBox", "0 0 100 20"); return; }
   const margin = machine.margin_mm;
@@ -193,39 +202,48 @@ function renderStroke(i) {
   const shades = view.shades[i];
   const from = drawing.redrawFrom[i] ?? 0;
   drawing.redrawFrom[i] = undefined;
-  if ((shades.length === 0 || !view.shadeScale) && group.children.length === 1 && points.length > 2 && from > 0) {
-    return extendLine(group.firstChild, points, from);
-  }
-  const pieces = shades.length === 0 || !view.shadeScale ? [{ points, colour: null }]
-    : shades.map(([start, shade], j) => ({
-      points: points.slice(start, j + 1 < shades.length ? shades[j + 1][0] + 1 : points.length),
-      colour: shadeColour(shade, view.shadeScale),
-    }));
+  if (shades.length === 0 || !view.shadeScale) return renderBlackStroke(i, group, points, from);
+  for (const settled of group.querySelectorAll("path")) settled.remove();
+  drawing.settled[i] = 0;
+  const pieces = shades.map(([start, shade], j) => ({
+    points: points.slice(start, j + 1 < shades.length ? shades[j + 1][0] + 1 : points.length),
+    colour: shadeColour(shade, view.shadeScale),
+  }));
   while (group.children.length > pieces.length) group.lastChild.remove();
   while (group.children.length < pieces.length) svgElement("polyline", {}, group);
   pieces.forEach((piece, j) => {
     const line = group.children[j];
     line.setAttribute("points", pointsText(piece.points));
-    if (piece.colour) line.setAttribute("stroke", piece.colour); else line.removeAttribute("stroke");
+    line.setAttribute("stroke", piece.colour);
   });
 }
 
-/// A black stroke's polyline, drawn up to its point `from` already: its later points replaced
-/// in place (the browser neither writes nor reads the whole stroke's text again).
-function extendLine(line, points, from) {
-  const list = line.points;
-  while (list.numberOfItems > from) list.removeItem(list.numberOfItems - 1);
-  for (let k = list.numberOfItems; k < points.length; ++k) {
-    const point = drawing.svg.createSVGPoint();
-    point.x = points[k][0];
-    point.y = points[k][1];
-    list.appendItem(point);
+/// A black stroke: its settled points (those no update will change: before `from`) in paths of
+/// SETTLED_POINTS segments, written once, then one polyline with the rest, rewritten as the
+/// stroke grows. The browser then repaints only the rest's area, not the whole stroke's, at each
+/// frame. A path and the next one (or the polyline) share their joining point.
+function renderBlackStroke(i, group, points, from) {
+  let settled = drawing.settled[i] || 0;
+  let tail = group.lastElementChild;
+  if (from < settled || !tail || tail.tagName !== "polyline" || group.children.length - 1 !== group.querySelectorAll("path").length) {
+    group.replaceChildren();  // drawn afresh (a new stroke, or one that was shaded)
+    tail = svgElement("polyline", {}, group);
+    settled = 0;
   }
+  tail.removeAttribute("stroke");
+  while (Math.min(from, points.length - 2) - settled >= SETTLED_POINTS) {
+    const end = settled + SETTLED_POINTS;
+    const d = "M" + points.slice(settled, end + 1).map(([x, y]) => `${x},${y}`).join("L");
+    group.insertBefore(svgElement("path", { d, class: "settled" }), tail);
+    settled = end;
+  }
+  drawing.settled[i] = settled;
+  tail.setAttribute("points", pointsText(points.slice(settled)));
 }
 
 /// What changed since the page last drew, drawn by render() once per batch of messages.
 const dirty = { strokes: new Set(), boards: new Set(), console: new Map(), screens: new Map(), fit: false, pen: false,
-  table: false, arms: false, travel: false };
+  table: false, arms: false, travel: false, run: false };
 
 function applyStrokes(parts) {
   for (const part of parts) {
@@ -328,6 +346,7 @@ function onHello(hello) {
   dirty.console.clear();
   dirty.screens.clear();
   dirty.pen = dirty.table = dirty.arms = dirty.travel = false;
+  dirty.run = true;
   setUpDrawing(hello.machine);
   setUpTravel(hello.machine);
   const container = document.getElementById("boards");
@@ -542,7 +561,7 @@ function renderBoard(name) {
       return row;
     }));
   }
-  for (const [label, value] of rows) board.rows.get(label).textContent = String(value);
+  for (const [label, value] of rows) setText(board.rows.get(label), String(value));
   board.faults.hidden = !figures.fault;
   if (figures.fault) board.faults.textContent = `fault: ${figures.fault.reason} ×${figures.fault.count} ${figures.fault.detail}`;
 }
@@ -616,13 +635,19 @@ function blocked(what) {
 let shownReason;  // what showStatus() last wrote (undefined: nothing yet)
 
 /// The connection's label ("connected", "ended", "disconnected"), and the controls' state.
+/// Sets an element's text only when it changes (a write, even of the same text, costs a layout).
+function setText(node, text) {
+  if (node.textContent !== text) node.textContent = text;
+}
+
 function showStatus() {
   const label = document.getElementById("connection");
   const ended = view.run && (view.run.ended || view.run.stopped);
   const text = transport && transport.label ? transport.label
     : ended ? "ended" : linkState === "open" ? "connected" : linkState === "closed" ? "disconnected" : "connecting…";
-  label.textContent = text;
-  label.className = "state " + (ended ? "ended" : linkState);
+  setText(label, text);
+  const className = "state " + (ended ? "ended" : linkState);
+  if (label.className !== className) label.className = className;
   const reason = blockedReason();
   if (reason === shownReason) return;  // the controls' state is written when it changes only
   shownReason = reason;
@@ -672,7 +697,7 @@ function download(svg) {
 function onUpdate(update) {
   view.updates += 1;
   view.t_s = update.t_s;
-  if (update.run) view.run = update.run;
+  if (update.run) view.run = update.run, dirty.run = true;
   if (update.pen) view.pen = update.pen, dirty.pen = true;
   if (update.shade_scale) applyShadeScale(update.shade_scale);
   if (update.strokes) applyStrokes(update.strokes);
@@ -696,7 +721,7 @@ function onUpdate(update) {
 /// Draws what the batch of messages changed.
 function render() {
   if (!view.hello) return;
-  document.getElementById("sim-time").textContent = `t = ${view.t_s.toFixed(3)} s`;
+  setText(document.getElementById("sim-time"), `t = ${view.t_s.toFixed(3)} s`);
   renderStrokes();
   if (dirty.pen) showPen(view.pen);
   if (dirty.table) showTable(view.table);
@@ -718,7 +743,8 @@ function render() {
   dirty.screens.clear();
   if (dirty.travel) showTravel(view.travel);
   dirty.travel = false;
-  if (view.run) showRun(view.run);
+  if (dirty.run && view.run) showRun(view.run);
+  dirty.run = false;
 }
 
 connect();

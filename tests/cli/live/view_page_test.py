@@ -139,6 +139,7 @@ class ViewPageTest(unittest.TestCase):
         self.assertEqual(len(page_strokes), 1)
         self.assertEqual(page_strokes[0][0], [0, 0])
         self.assertEqual(page_strokes[0][-1], [24, 0])
+        self.assertEqual(len(self.browser.find_elements(By.CSS_SELECTOR, "#strokes g.stroke")), 1)
         self.assertEqual(len(self.browser.find_elements(By.CSS_SELECTOR, "#strokes polyline")), 1)
 
         self.check_run_drew_the_timeline_stroke()
