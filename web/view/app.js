@@ -387,7 +387,7 @@ function addConsoleLine(board, box, consoleText) {
   const clear = element("button", { type: "button", id: `clear-${board.name}` }, line, "Clear");
   line.addEventListener("submit", (event) => {
     event.preventDefault();
-    if (blocked(`the line was not sent`)) return;
+    if (blocked("The line was not sent")) return;
     send({ type: "console", board: board.name, text: input.value + "\n" });
     view.sent.push({ board: board.name, text: input.value });
     appendConsole(consoleText, `> ${input.value}\n`, "sent");
@@ -426,7 +426,7 @@ function addKnob(holder, device) {
   const flush = () => {
     const target = Math.round(angle / (2 * Math.PI) * perTurn);
     if (target === sent) return;
-    if (blocked(`the knob's turn was not sent`)) {
+    if (blocked("The knob's turn was not sent")) {
       angle = sent / perTurn * 2 * Math.PI;  // the knob goes back: nothing turned
       return show();
     }
@@ -470,7 +470,7 @@ function addButton(holder, device) {
   const button = element("button", { type: "button", class: "press", id: `control-${device.name}${device.control.type === "knob_with_button" ? "-button" : ""}`, "aria-label": `${device.name} button`, "aria-pressed": "false" }, holder);
   let pressedAt = null;
   const press = () => {
-    if (pressedAt !== null || blocked(`the press was not sent`)) return false;
+    if (pressedAt !== null || blocked("The press was not sent")) return false;
     pressedAt = performance.now();
     button.classList.add("down");
     button.setAttribute("aria-pressed", "true");
@@ -533,7 +533,7 @@ function addSlider(holder, device) {
   const slider = element("input", { type: "range", min: c.low, max: c.high, step: c.step, id: `control-${device.name}`, "aria-label": `${device.name} (${c.unit})` }, holder);
   let position = Number(slider.value);
   slider.addEventListener("input", () => {
-    if (blocked(`the slider's move was not sent`)) { slider.value = position; return; }
+    if (blocked("The slider's move was not sent")) { slider.value = position; return; }
     position = Number(slider.value);
     send({ type: "input", device: device.name, action: "set", position });
   });
@@ -627,7 +627,7 @@ function blocked(what) {
   const reason = blockedReason();
   if (reason === null) return false;
   const note = document.getElementById("controls-note");
-  note.textContent = `${reason} (${what}.)`;
+  note.textContent = `${reason} ${what}.`;
   note.hidden = false;
   return true;
 }
@@ -673,7 +673,7 @@ function showRun(run) {
 }
 
 function sendRun(message) {
-  if (blocked("the run was not changed")) return;
+  if (blocked("The run was not changed")) return;
   send(message);
 }
 
