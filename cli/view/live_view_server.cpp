@@ -1,6 +1,7 @@
 // LiveViewServer: a WebServer with the view's page and token, one ViewSession per page.
 #include "view/live_view_server.hpp"
 
+#include <cstdio>
 #include <random>
 
 namespace stepdance::cli {
@@ -28,6 +29,7 @@ LiveViewServer::LiveViewServer(sim::Simulation& simulation, uint16_t port)
     : simulation_(simulation), token_(random_token()) {
   serve::WebServerHooks hooks;
   hooks.connected = [this](serve::ClientId client) {
+    ++totals_.pages;
     auto session = std::make_unique<sim::view::ViewSession>(simulation_, control_);
     server_->send(client, session->hello());
     sessions_[client] = std::move(session);
@@ -37,7 +39,12 @@ LiveViewServer::LiveViewServer(sim::Simulation& simulation, uint16_t port)
     if (found == sessions_.end()) return;
     for (const std::string& reply : found->second->receive(text)) server_->send(client, reply);
   };
-  hooks.disconnected = [this](serve::ClientId client) { sessions_.erase(client); };
+  hooks.disconnected = [this](serve::ClientId client) {
+    auto found = sessions_.find(client);
+    if (found == sessions_.end()) return;
+    count(*found->second);
+    sessions_.erase(found);
+  };
   serve::WebServerContent content;
   content.find_asset = serve::find_view_asset;
   content.token = token_;
@@ -64,10 +71,15 @@ double LiveViewServer::wall_now_s() const {
 
 void LiveViewServer::send_updates(double wall_s) {
   for (auto& [client, session] : sessions_) {
-    // Back-pressure: a page whose last messages are still queued gets no new update yet; its
-    // session keeps accumulating (the drawing in full, console text up to its cap), so the
-    // update it gets once its queue has drained carries everything since.
-    if (server_->queued_messages(client) > 0) continue;
+    if (!session->due(wall_s)) continue;
+    // Back-pressure: a page whose last messages are still queued gets no new update yet (the
+    // update is held back and counted); its session keeps what the page was last sent, so the
+    // delta it gets once its queue has drained carries everything since (the drawing in full,
+    // console text up to its cap). The queue holds one update and replies: bounded.
+    if (server_->queued_messages(client) > 0) {
+      session->hold_back(wall_s);
+      continue;
+    }
     if (auto update = session->update(wall_s)) server_->send(client, *update);
   }
 }
@@ -89,9 +101,10 @@ void LiveViewServer::serve_for(std::chrono::steady_clock::duration span) {
 }
 
 void LiveViewServer::finish() {
-  // Every page gets the run's last state, the drawing in as many updates as it takes (each
-  // after the page's queue has drained, as during the run), then the sockets are served until
-  // nothing happens for 5 ms, for 200 ms at most (a page that does not read is not waited for).
+  // Every page gets the run's last state, "ended", the drawing in as many updates as it takes
+  // (each after the page's queue has drained, as during the run), then the sockets are served
+  // until nothing happens for 5 ms, for 200 ms at most (a page that does not read is not waited for).
+  for (auto& [client, session] : sessions_) session->end_run();
   std::map<serve::ClientId, bool> last_sent;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
   while (std::chrono::steady_clock::now() < deadline) {
@@ -106,6 +119,28 @@ void LiveViewServer::finish() {
     if (io_.stopped()) io_.restart();
     if (io_.run_for(std::chrono::milliseconds(5)) == 0 && all_sent) break;
   }
+  std::printf("%s\n", report().c_str());
+  std::fflush(stdout);
+}
+
+void LiveViewServer::count(const sim::view::ViewSession& session) {
+  totals_.updates += session.updates_made();
+  totals_.held_back += session.held_back();
+  totals_.console_dropped_bytes += session.console_dropped_bytes();
+}
+
+std::string LiveViewServer::report() const {
+  ViewTotals totals = totals_;
+  for (const auto& [client, session] : sessions_) {
+    totals.updates += session->updates_made();
+    totals.held_back += session->held_back();
+    totals.console_dropped_bytes += session->console_dropped_bytes();
+  }
+  return "live view: " + std::to_string(totals.pages) + " page(s); " + std::to_string(totals.updates) +
+         " updates sent, " + std::to_string(totals.held_back) +
+         " held back while a page had not read the last (the next carried what they missed), " +
+         std::to_string(server_->dropped_messages()) + " replies dropped (a page's queue full), " +
+         std::to_string(totals.console_dropped_bytes) + " console bytes dropped";
 }
 
 }  // namespace stepdance::cli

@@ -17,8 +17,9 @@
 
 namespace stepdance::sim::view {
 
-/// The replay's format version (its "version" key); the page refuses others.
-constexpr int kReplayFormatVersion = 1;
+/// The replay's format version (its "version" key); the page refuses others. Version 2: the
+/// samples' updates are view protocol 2's deltas.
+constexpr int kReplayFormatVersion = 2;
 
 /// What a recording holds at most (docs/simulator.md, "The replay page").
 struct ReplayLimits {

@@ -65,6 +65,11 @@ std::vector<StrokePart> StrokeStream::take(const std::vector<Polyline>& strokes,
         part.shades.push_back({part.from + part.points.size() - 1, own[mark_].shade});  // re-sent with the head
       }
       budget -= std::min<size_t>(budget, 1);
+      // A head that has not moved since it was sent (the pen down and still) is not sent again.
+      const Head head{done_, part.from, stroke.back(), part.shades.size(),
+                      part.shades.empty() ? 0.0 : part.shades.back().shade};
+      if (part.points.size() == 1 && head_sent_ && *head_sent_ == head) part.points.clear(), part.shades.clear();
+      head_sent_ = head;
     }
     if (!part.points.empty()) parts.push_back(std::move(part));
     behind_ = !all_kept_sent || (budget == 0 && done_ + 1 < strokes.size());

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "models/pen_trace.hpp"
@@ -32,7 +33,8 @@ struct StrokePart {
 /// Follows a machine's growing list of pen-down strokes (PenTrace: only a stroke's last point
 /// ever changes, and only the newest stroke grows) and hands out what is new since the last
 /// call. A point is left out only when it lies closer than kDisplayResolutionMm to the point
-/// kept before it; no stroke is ever left out, nor its first or last point.
+/// kept before it; no stroke is ever left out, nor its first or last point. The newest stroke's
+/// moving head is sent again only when it moved (or its shade changed) since it was last sent.
 /// Context: the thread running the simulation, between run_until() calls.
 class StrokeStream {
  public:
@@ -58,6 +60,21 @@ class StrokeStream {
   /// Whether kept_'s last point starts a shade (it is then never replaced).
   bool last_kept_is_marked() const { return !kept_marks_.empty() && kept_marks_.back().point + 1 == kept_.size(); }
 
+  /// The newest stroke's moving head as last sent: stroke, the part's `from`, the point, and
+  /// the part's shade starts (their count and the last one's shade).
+  struct Head {
+    size_t index = 0;
+    size_t from = 0;
+    PenPoint point;
+    size_t shades = 0;
+    double last_shade = 0;
+    bool operator==(const Head& other) const {
+      return index == other.index && from == other.from && point == other.point && shades == other.shades &&
+             last_shade == other.last_shade;
+    }
+  };
+
+  std::optional<Head> head_sent_;
   size_t done_ = 0;          ///< strokes complete on the page
   std::vector<PenPoint> kept_;  ///< the current stroke's final kept points (decimated)
   size_t source_ = 0;        ///< source points of the current stroke already looked at

@@ -158,104 +158,189 @@ std::string ViewSession::hello() const {
       .dump();
 }
 
-std::optional<std::string> ViewSession::update(double wall_s) {
-  if (last_update_wall_s_ && wall_s - *last_update_wall_s_ < 1.0 / kMaxUpdatesPerSecond) return std::nullopt;
-  last_update_wall_s_ = wall_s;
-  return update_now();
+bool ViewSession::due(double wall_s) const {
+  return !last_update_wall_s_ || wall_s - *last_update_wall_s_ >= 1.0 / kMaxUpdatesPerSecond;
 }
 
-json ViewSession::motors_json(double dt_s) {
-  json motors = json::array();
+void ViewSession::hold_back(double wall_s) {
+  ++held_back_;
+  last_update_wall_s_ = wall_s;
+}
+
+std::optional<std::string> ViewSession::update(double wall_s) {
+  if (!due(wall_s)) return std::nullopt;
+  last_update_wall_s_ = wall_s;
+  std::string message = make_update(false);
+  if (message.empty()) return std::nullopt;
+  return message;
+}
+
+std::string ViewSession::update_now() { return make_update(true); }
+
+void ViewSession::start_over() {
+  sent_.forget();
+  strokes_ = StrokeStream();
+}
+
+void ViewSession::end_run() { run_ended_ = true; }
+
+bool ViewSession::add_if_changed(json& message, const char* field, const std::string& key, json value) {
+  if (!sent_.changed(key, value)) return false;
+  if (!message.contains(field)) message[field] = json::array();
+  message[field].push_back(std::move(value));
+  return true;
+}
+
+bool ViewSession::add_run_parts(json& message) {
+  const bool ended = run_ended_ || simulation_.stopped() || simulation_.now() >= simulation_.duration();
+  json run = {{"paused", control_.paused}, {"speed", control_.speed}, {"stopped", simulation_.stopped()},
+              {"ended", ended}};
+  if (!sent_.changed("run", run)) return false;
+  message["run"] = std::move(run);
+  return true;
+}
+
+bool ViewSession::add_machine_parts(json& message) {
+  const Machine* machine = simulation_.machine();
+  if (machine == nullptr) return false;
+  bool changed = false;
+  json pen = {{"x_mm", machine->pen_position().x_mm}, {"y_mm", machine->pen_position().y_mm},
+              {"down", machine->pen_down()}};
+  if (sent_.changed("pen", pen)) message["pen"] = std::move(pen), changed = true;
+  json parts = json::array();
+  for (const StrokePart& part : strokes_.take(machine->strokes(), machine->shade_marks(), kMaxPointsPerUpdate)) {
+    json points = json::array();
+    for (const PenPoint& point : part.points) points.push_back(point_json(point));
+    json entry = {{"i", part.index}, {"from", part.from}, {"points", std::move(points)}};
+    if (!part.shades.empty()) {
+      json shades = json::array();
+      for (const ShadeStart& start : part.shades) shades.push_back(json::array({start.point, start.shade}));
+      entry["shades"] = std::move(shades);
+    }
+    parts.push_back(std::move(entry));
+  }
+  if (!parts.empty()) message["strokes"] = std::move(parts), changed = true;
+  if (const auto* table = dynamic_cast<const PolarTurntable*>(machine)) {
+    json state = {{"angle_rad", table->angle_rad()}, {"radius_mm", table->radius_mm()}};
+    if (sent_.changed("table", state)) message["table"] = std::move(state), changed = true;
+  }
+  if (const auto scale = shade_scale(*machine)) {
+    json pair = json::array({scale->first, scale->second});
+    if (sent_.changed("shade_scale", pair)) message["shade_scale"] = std::move(pair), changed = true;
+  }
+  return changed;
+}
+
+bool ViewSession::add_travel_part(json& message) {
+  const Machine* machine = simulation_.machine();
+  const TravelMonitor* travel = machine != nullptr ? machine->travel() : nullptr;
+  if (travel == nullptr) return false;
+  json first_points = json::array();
+  for (const TravelExcursion& excursion : travel->excursions()) {
+    first_points.push_back({{"t_s", to_seconds(excursion.start)}, {"x_mm", excursion.first.x_mm},
+                            {"y_mm", excursion.first.y_mm}});
+  }
+  json part = {{"outside", travel->outside()}, {"excursions", travel->excursion_count()},
+               {"first_points", std::move(first_points)}};
+  if (!sent_.changed("travel", part)) return false;
+  message["travel"] = std::move(part);
+  return true;
+}
+
+void ViewSession::update_motor_rates(double dt_s) {
   for (MotorState& motor : motors_) {
     const int64_t steps = simulation_.stepper(motor.board, motor.port)->position_steps();
-    const double rate = dt_s > 0 ? static_cast<double>(steps - motor.last_steps) / dt_s : 0.0;
+    // No simulated time since the last update (paused, or twice at one instant): the rate stands.
+    if (dt_s > 0) motor.rate_steps_per_s = static_cast<double>(steps - motor.last_steps) / dt_s;
     motor.last_steps = steps;
-    motors.push_back({{"board", motor.board}, {"port", std::string(1, motor.port)}, {"steps", steps},
-                      {"rate_steps_per_s", rate}});
   }
-  return motors;
 }
 
-json ViewSession::boards_state_json() const {
-  json boards = json::array();
-  for (const scenario::BoardConfig& config : simulation_.scenario().boards) {
-    const SimBoard* board = simulation_.board(config.name);
-    const StepdanceBoardStatsV1 stats = board->stats();
-    json entry = {{"name", config.name}, {"frames", stats.frames}, {"load_average_percent", nullptr},
-                  {"load_peak_percent", nullptr}, {"fault", nullptr}};
-    if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
-      const double budget = stats.load_budget_cycles;
-      entry["load_average_percent"] =
-          100.0 * static_cast<double>(stats.load_total_cycles) / static_cast<double>(stats.load_frames) / budget;
-      entry["load_peak_percent"] = 100.0 * stats.load_peak_cycles / budget;
-    }
-    if (stats.fault_reason != 0) {
-      entry["fault"] = {{"reason", stats.fault_name ? stats.fault_name : ""}, {"count", stats.fault_count},
-                        {"detail", stats.fault_detail ? stats.fault_detail : ""}};
-    }
-    json warnings = json::array();
-    for (const SimBoard::BoardWarning& warning : board->warnings()) {
-      warnings.push_back({{"name", warning.name}, {"count", warning.count}, {"detail", warning.detail}});
-    }
-    entry["warnings"] = std::move(warnings);
-    boards.push_back(std::move(entry));
+json ViewSession::board_state_json(const std::string& name) const {
+  const SimBoard* board = simulation_.board(name);
+  const StepdanceBoardStatsV1 stats = board->stats();
+  json entry = {{"name", name}, {"frames", stats.frames}, {"load_average_percent", nullptr},
+                {"load_peak_percent", nullptr}, {"fault", nullptr}};
+  if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
+    const double budget = stats.load_budget_cycles;
+    entry["load_average_percent"] =
+        100.0 * static_cast<double>(stats.load_total_cycles) / static_cast<double>(stats.load_frames) / budget;
+    entry["load_peak_percent"] = 100.0 * stats.load_peak_cycles / budget;
   }
-  return boards;
+  if (stats.fault_reason != 0) {
+    entry["fault"] = {{"reason", stats.fault_name ? stats.fault_name : ""}, {"count", stats.fault_count},
+                      {"detail", stats.fault_detail ? stats.fault_detail : ""}};
+  }
+  json warnings = json::array();
+  for (const SimBoard::BoardWarning& warning : board->warnings()) {
+    warnings.push_back({{"name", warning.name}, {"count", warning.count}, {"detail", warning.detail}});
+  }
+  entry["warnings"] = std::move(warnings);
+  return entry;
 }
 
-std::string ViewSession::update_now() {
+bool ViewSession::add_board_parts(json& message) {
   const SimTime now = simulation_.now();
-  json message = {{"type", "update"}, {"t_s", to_seconds(now)}};
-  message["run"] = {{"paused", control_.paused}, {"speed", control_.speed}, {"stopped", simulation_.stopped()}};
-  if (const Machine* machine = simulation_.machine()) {
-    message["pen"] = {{"x_mm", machine->pen_position().x_mm}, {"y_mm", machine->pen_position().y_mm},
-                      {"down", machine->pen_down()}};
-    json parts = json::array();
-    for (const StrokePart& part : strokes_.take(machine->strokes(), machine->shade_marks(), kMaxPointsPerUpdate)) {
-      json points = json::array();
-      for (const PenPoint& point : part.points) points.push_back(point_json(point));
-      json entry = {{"i", part.index}, {"from", part.from}, {"points", std::move(points)}};
-      if (!part.shades.empty()) {
-        json shades = json::array();
-        for (const ShadeStart& start : part.shades) shades.push_back(json::array({start.point, start.shade}));
-        entry["shades"] = std::move(shades);
-      }
-      parts.push_back(std::move(entry));
-    }
-    message["strokes"] = std::move(parts);
-    if (const auto* table = dynamic_cast<const PolarTurntable*>(machine)) {
-      message["table"] = {{"angle_rad", table->angle_rad()}, {"radius_mm", table->radius_mm()}};
-    }
-    if (const auto scale = shade_scale(*machine)) message["shade_scale"] = json::array({scale->first, scale->second});
-  }
-  message["motors"] = motors_json(to_seconds(now - last_update_sim_));
+  update_motor_rates(to_seconds(now - last_update_sim_));
   last_update_sim_ = now;
-  message["boards"] = boards_state_json();
+  bool changed = false;
+  for (const MotorState& motor : motors_) {
+    const std::string port(1, motor.port);
+    changed |= add_if_changed(message, "motors", "motor " + motor.board + " " + port,
+                              {{"board", motor.board}, {"port", port}, {"steps", motor.last_steps},
+                               {"rate_steps_per_s", motor.rate_steps_per_s}});
+  }
+  for (const scenario::BoardConfig& config : simulation_.scenario().boards) {
+    changed |= add_if_changed(message, "boards", "board " + config.name, board_state_json(config.name));
+  }
+  return changed;
+}
+
+bool ViewSession::add_device_parts(json& message) {
+  bool changed = false;
+  for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
+    const SimDevice* model = simulation_.device(device.name);
+    if (const auto* display = model_of<Ssd1306Display>(model)) {
+      changed |= add_if_changed(message, "screens", "screen " + device.name,
+                                {{"device", device.name}, {"on", display->display_on()},
+                                 {"rows", screen_rows(display->image())}});
+    }
+    FiveBarArm::Linkage linkage;
+    if (const auto* arm = model_of<FiveBarArm>(model); arm && arm->last_linkage(linkage)) {
+      changed |= add_if_changed(message, "arms", "arm " + device.name,
+                                {{"device", device.name}, {"right_pivot", point_json(linkage.right_pivot)},
+                                 {"left_pivot", point_json(linkage.left_pivot)}, {"c", point_json(linkage.c)},
+                                 {"d", point_json(linkage.d)}, {"e", point_json(linkage.e)},
+                                 {"t", point_json(linkage.t)}});
+    }
+  }
+  return changed;
+}
+
+bool ViewSession::add_console_part(json& message) {
   json console = json::array();
   for (auto& [board, text] : console_) {
     if (text.empty()) continue;
     console.push_back({{"board", board}, {"text", text}, {"dropped_bytes", console_dropped_[board]}});
     text.clear();
   }
+  if (console.empty()) return false;
   message["console"] = std::move(console);
-  json screens = json::array();
-  for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
-    if (const auto* display = model_of<Ssd1306Display>(simulation_.device(device.name))) {
-      screens.push_back({{"device", device.name}, {"on", display->display_on()},
-                         {"rows", screen_rows(display->image())}});
-    }
-  }
-  if (!screens.empty()) message["screens"] = std::move(screens);
-  json arms = json::array();
-  for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
-    FiveBarArm::Linkage linkage;
-    if (const auto* arm = model_of<FiveBarArm>(simulation_.device(device.name)); arm && arm->last_linkage(linkage)) {
-      arms.push_back({{"device", device.name}, {"right_pivot", point_json(linkage.right_pivot)},
-                      {"left_pivot", point_json(linkage.left_pivot)}, {"c", point_json(linkage.c)},
-                      {"d", point_json(linkage.d)}, {"e", point_json(linkage.e)}, {"t", point_json(linkage.t)}});
-    }
-  }
-  if (!arms.empty()) message["arms"] = std::move(arms);
+  return true;
+}
+
+std::string ViewSession::make_update(bool always) {
+  const double t_s = to_seconds(simulation_.now());
+  json message = {{"type", "update"}, {"t_s", t_s}};
+  bool changed = sent_.changed("t_s", t_s);
+  changed |= add_run_parts(message);
+  changed |= add_machine_parts(message);
+  changed |= add_travel_part(message);
+  changed |= add_board_parts(message);
+  changed |= add_device_parts(message);
+  changed |= add_console_part(message);
+  if (!changed && !always) return {};
+  ++updates_made_;
   return message.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
@@ -266,6 +351,12 @@ void ViewSession::console_output(const std::string& board, const uint8_t* data, 
     console_dropped_[board] += text.size() - kMaxConsoleBytesPerUpdate;
     text.erase(0, text.size() - kMaxConsoleBytesPerUpdate);
   }
+}
+
+uint64_t ViewSession::console_dropped_bytes() const {
+  uint64_t total = 0;
+  for (const auto& [board, dropped] : console_dropped_) total += dropped;
+  return total;
 }
 
 std::vector<std::string> ViewSession::receive(std::string_view text) {
@@ -283,7 +374,10 @@ std::vector<std::string> ViewSession::receive(std::string_view text) {
   if (*type == "save") {
     return {json{{"type", "drawing"}, {"t_s", to_seconds(simulation_.now())}, {"svg", simulation_.drawing_svg()}}.dump()};
   }
-  if (*type == "hello") return {hello()};
+  if (*type == "hello") {
+    start_over();  // the page starts its drawing afresh from a hello
+    return {hello()};
+  }
   std::string problem;
   if (*type == "input") {
     problem = apply_input(message);

@@ -12,12 +12,14 @@
 
 #include "assembly/simulation.hpp"
 #include "view/run_control.hpp"
+#include "view/sent_state.hpp"
 #include "view/stroke_stream.hpp"
 
 namespace stepdance::sim::view {
 
 /// The protocol's version, sent in "hello"; a page refuses a version it does not know.
-constexpr int kProtocolVersion = 1;
+/// Version 2: an update carries only what changed since the last one (a delta).
+constexpr int kProtocolVersion = 2;
 /// At most this many updates per second of wall time, whatever the frame rate.
 constexpr double kMaxUpdatesPerSecond = 60;
 /// Incoming messages longer than this are refused (an error message; the run goes on).
@@ -36,6 +38,12 @@ constexpr size_t kMaxConsoleBytesPerUpdate = 16384;
 /// and answers the page's messages in receive(). Inputs are applied as the scenario timeline's
 /// actions would be, at the simulation's current time. Nothing here knows about sockets,
 /// threads or terminals. Context: the thread running the simulation, between run_until() calls.
+///
+/// Updates are deltas: each carries `t_s` and only the parts of the state (the run's pace, the
+/// pen, new strokes, each motor, board, screen or arm) that differ from what the page was last
+/// sent, and console text since. Nothing changed (a paused run): no update at all. The session
+/// assumes every update it makes reaches the page; a front end that loses one calls
+/// start_over(), and the next update carries the whole state again.
 class ViewSession {
  public:
   ViewSession(Simulation& simulation, RunControl& control);
@@ -43,10 +51,30 @@ class ViewSession {
   /// {"type": "hello", …}: what the page draws (machine, page, boards, devices, controls).
   std::string hello() const;
   /// {"type": "update", …} if at least 1/kMaxUpdatesPerSecond of wall time (`wall_s`, any
-  /// monotonic origin) has passed since the last one, else nothing.
+  /// monotonic origin) has passed since the last one (or hold_back()) and anything changed,
+  /// else nothing.
   std::optional<std::string> update(double wall_s);
-  /// The update due now, whatever the time (the last one of a run, tests).
+  /// The update due now, whatever the time and even if nothing changed (then only `t_s`): the
+  /// last one of a run, a replay's instant, tests.
   std::string update_now();
+  /// Whether an update would be made now (1/kMaxUpdatesPerSecond since the last one).
+  bool due(double wall_s) const;
+  /// The front end skips a due update (its page has not read the last one yet): counted, and
+  /// the next is due a period later. Nothing is lost: the next update is a delta against what
+  /// the page was actually sent, so it carries everything since.
+  void hold_back(double wall_s);
+  /// Updates held back so far (hold_back()).
+  uint64_t held_back() const { return held_back_; }
+  /// Console bytes dropped so far, every board's (kMaxConsoleBytesPerUpdate).
+  uint64_t console_dropped_bytes() const;
+  /// Updates made so far (update() and update_now()).
+  uint64_t updates_made() const { return updates_made_; }
+  /// The page has lost track (it asked for hello again, or an update did not reach it): the
+  /// next update carries the whole state, the drawing from its first stroke.
+  void start_over();
+  /// The run is over (a live run stopped by its user): updates say "ended" from now on. A run
+  /// at its duration or stopped by its sketch says so without it.
+  void end_run();
   /// The page's message `text`: applies it and returns the replies (an error, a drawing).
   std::vector<std::string> receive(std::string_view text);
   /// Whether the last update left points of the drawing for the next (kMaxPointsPerUpdate).
@@ -59,13 +87,24 @@ class ViewSession {
     std::string board;
     char port = 'A';
     int64_t last_steps = 0;
+    double rate_steps_per_s = 0;
   };
-  std::string apply(const nlohmann::json& message);
+  /// The update's parts that changed, added to `message`; whether any did.
+  bool add_run_parts(nlohmann::json& message);
+  bool add_machine_parts(nlohmann::json& message);
+  /// "travel": the machine's excursions past its travel area (as the summary counts them).
+  bool add_travel_part(nlohmann::json& message);
+  bool add_board_parts(nlohmann::json& message);
+  bool add_device_parts(nlohmann::json& message);
+  bool add_console_part(nlohmann::json& message);
+  std::string make_update(bool always);
   std::string apply_input(const nlohmann::json& message);
   std::string apply_console(const nlohmann::json& message);
   std::string apply_run(const nlohmann::json& message);
-  nlohmann::json motors_json(double dt_s);
-  nlohmann::json boards_state_json() const;
+  void update_motor_rates(double dt_s);
+  nlohmann::json board_state_json(const std::string& name) const;
+  /// Adds `value` under `key` to the array `message[field]` if it changed since last sent.
+  bool add_if_changed(nlohmann::json& message, const char* field, const std::string& key, nlohmann::json value);
 
   Simulation& simulation_;
   RunControl& control_;
@@ -75,6 +114,10 @@ class ViewSession {
   std::map<std::string, uint64_t> console_dropped_;
   std::optional<double> last_update_wall_s_;
   SimTime last_update_sim_ = 0;
+  SentState sent_;
+  uint64_t held_back_ = 0;
+  uint64_t updates_made_ = 0;
+  bool run_ended_ = false;
 };
 
 }  // namespace stepdance::sim::view

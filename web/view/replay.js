@@ -22,10 +22,12 @@
       buildControls();
       seek(samples.length - 1);
     }, 0);
-    return { send: () => {} };  // a replay takes no inputs: the knobs show what the run had
+    // A replay takes no inputs (the knobs show what the run had); the page draws each message as
+    // it is delivered (immediate), since seek() reads the page right after.
+    return { send: () => {}, immediate: true, label: "replay" };
   };
 
-  if (recording.format !== "stepdance-replay" || recording.version !== 1) {
+  if (recording.format !== "stepdance-replay" || recording.version !== 2) {
     throw new Error(`not a replay this page reads (format ${recording.format}, version ${recording.version})`);
   }
 

@@ -27,6 +27,7 @@ from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import WebDriverWait
 
 from headless_chromium import Chromium, svg_strokes
+from view_client import page_strokes_from_dom  # noqa: E402
 
 STEPDANCE, SOURCE_DIR, WORK_DIR = sys.argv[1:4]
 OUT = os.path.join(WORK_DIR, "replay-page")
@@ -94,11 +95,7 @@ class ReplayPageTest(unittest.TestCase):
         return self.script(f"return window.stepdanceReplay.recording.samples[{index}].update.t_s")
 
     def page_strokes(self):
-        strokes = []
-        for line in self.browser.find_elements(By.CSS_SELECTOR, "#strokes polyline"):
-            numbers = [float(n) for n in re.split(r"[ ,]+", line.get_attribute("points").strip())]
-            strokes.append(list(zip(numbers[0::2], numbers[1::2])))
-        return strokes
+        return page_strokes_from_dom(self.browser)
 
     def assert_points_equal(self, page, svg):
         self.assertEqual(len(page), len(svg))

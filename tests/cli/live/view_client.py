@@ -45,27 +45,44 @@ def svg_pieces(path):
     return pieces
 
 
+# The page's strokes, as the DOM holds them: per stroke a <g class="stroke"> under #strokes with,
+# for a black stroke, its settled paths ("M x,y L x,y …", each sharing its last point with what
+# follows) and one polyline with the rest; for a shaded stroke, one polyline per shade, coloured.
+_DOM_STROKES = """
+return Array.from(document.querySelectorAll('#strokes g.stroke')).map(g => Array.from(g.children).map(e =>
+    [e.tagName, e.tagName === 'path' ? (e.getAttribute('d') || '') : (e.getAttribute('points') || ''),
+     e.getAttribute('stroke')]));"""
+
+
+def _numbers_to_points(text):
+    numbers = [float(n) for n in re.split(r"[ ,MLml]+", text.strip()) if n]
+    return list(zip(numbers[0::2], numbers[1::2]))
+
+
+def _dom_groups(browser):
+    """Per stroke group: [(points, colour or None)] for its elements, a black stroke's joined into one."""
+    groups = []
+    for elements in browser.execute_script(_DOM_STROKES):
+        if any(tag == "path" for tag, _, _ in elements):
+            joined = []
+            for _, text, _ in elements:
+                points = _numbers_to_points(text)
+                joined.extend(points if not joined else points[1:])
+            groups.append([(joined, None)])
+        else:
+            groups.append([(_numbers_to_points(text), colour) for _, text, colour in elements])
+    return groups
+
+
 def page_pieces_from_dom(browser):
-    """The page's polylines under #strokes with their own colour: [(points, "#rrggbb" or None)]."""
-    found = browser.execute_script(
-        "return Array.from(document.querySelectorAll('#strokes polyline'))"
-        ".map(p => [p.getAttribute('points') || '', p.getAttribute('stroke')]);")
-    pieces = []
-    for text, colour in found:
-        numbers = [float(n) for n in re.split(r"[ ,]+", text.strip())] if text.strip() else []
-        pieces.append((list(zip(numbers[0::2], numbers[1::2])), colour))
-    return pieces
+    """The page's strokes with their own colour: [(points, "#rrggbb" or None)], a shaded stroke's
+    pieces one by one, a black stroke's settled paths and polyline joined into one."""
+    return [piece for group in _dom_groups(browser) for piece in group]
 
 
 def page_strokes_from_dom(browser):
-    """The strokes the page drew: the points of each polyline under #strokes, as (x, y) lists."""
-    texts = browser.execute_script(
-        "return Array.from(document.querySelectorAll('#strokes polyline')).map(p => p.getAttribute('points') || '');")
-    strokes = []
-    for text in texts:
-        numbers = [float(n) for n in re.split(r"[ ,]+", text.strip())] if text.strip() else []
-        strokes.append(list(zip(numbers[0::2], numbers[1::2])))
-    return strokes
+    """The strokes the page drew, as (x, y) lists: each black stroke whole, each shaded piece apart."""
+    return [points for points, _ in page_pieces_from_dom(browser)]
 
 
 def _distance(a, b):

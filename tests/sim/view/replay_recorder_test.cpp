@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../assembly/simulation_fixture.hpp"
+#include "page_model.hpp"
 #include "view/replay_recorder.hpp"
 
 namespace stepdance::sim::view {
@@ -116,21 +117,13 @@ TEST(ReplayRecorder, InputsAreTheTimelineAtEachInstant) {
 
 TEST(ReplayRecorder, TheUpdatesAddUpToTheStrokeAndTheFinalPen) {
   const json recording = record(ReplayLimits{}, "replay_strokes");
-  std::vector<std::vector<std::pair<double, double>>> strokes;
-  for (const json& sample : recording["samples"]) {
-    for (const json& part : sample["update"]["strokes"]) {
-      const size_t index = part["i"];
-      if (strokes.size() <= index) strokes.resize(index + 1);
-      strokes[index].resize(part["from"].get<size_t>());
-      for (const json& point : part["points"]) strokes[index].emplace_back(point[0], point[1]);
-    }
-  }
-  ASSERT_EQ(strokes.size(), 1u);
-  EXPECT_EQ(strokes[0].front(), std::make_pair(0.0, 0.0));
-  EXPECT_EQ(strokes[0].back(), std::make_pair(24.0, 0.0));
-  const json& pen = recording["samples"].back()["update"]["pen"];
-  EXPECT_EQ(pen["x_mm"], 24);
-  EXPECT_EQ(pen["down"], true);
+  page_test::PageModel page;
+  for (const json& sample : recording["samples"]) page.apply(sample["update"]);
+  ASSERT_EQ(page.strokes.size(), 1u);
+  EXPECT_EQ(page.strokes[0].front(), std::make_pair(0.0, 0.0));
+  EXPECT_EQ(page.strokes[0].back(), std::make_pair(24.0, 0.0));
+  EXPECT_EQ(page.pen["x_mm"], 24);
+  EXPECT_EQ(page.pen["down"], true);
 }
 
 TEST(ReplayRecorder, TheWireAroundAnInstantHoldsStepdancePulses) {

@@ -156,15 +156,21 @@ TEST(StrokeStream, AFirstShadeMeasuredLateStillStartsTheStroke) {
 }
 
 TEST(StrokeStream, NothingNewGivesNoParts) {
-  const std::vector<Polyline> strokes{{{1, 1}, {2, 2}}, {{3, 3}}};
+  std::vector<Polyline> strokes{{{1, 1}, {2, 2}}, {{3, 3}}};
   StrokeStream stream;
   stream.take(strokes, 100);
-  const std::vector<StrokePart> again = stream.take(strokes, 100);
-  // The last stroke's head is re-sent (it may move), nothing else.
-  ASSERT_EQ(again.size(), 1u);
-  EXPECT_EQ(again[0].index, 1u);
-  EXPECT_EQ(again[0].from, 0u);
-  EXPECT_EQ(again[0].points.size(), 1u);
+  // The pen down and still: the last stroke's head has not moved, so nothing is sent again (a
+  // paused run's updates carry nothing).
+  EXPECT_TRUE(stream.take(strokes, 100).empty());
+  EXPECT_TRUE(stream.take(strokes, 100).empty());
+  // The head moves: it is re-sent in its place (the page keeps 0 points of stroke 1).
+  strokes[1][0] = {3, 4};
+  const std::vector<StrokePart> moved = stream.take(strokes, 100);
+  ASSERT_EQ(moved.size(), 1u);
+  EXPECT_EQ(moved[0].index, 1u);
+  EXPECT_EQ(moved[0].from, 0u);
+  ASSERT_EQ(moved[0].points.size(), 1u);
+  EXPECT_EQ(moved[0].points[0], (PenPoint{3, 4}));
 }
 
 }  // namespace

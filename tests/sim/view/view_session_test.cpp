@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../assembly/simulation_fixture.hpp"
+#include "page_model.hpp"
 #include "view/view_session.hpp"
 
 namespace stepdance::sim::view {
@@ -147,7 +148,7 @@ TEST(ViewSession, UpdatesCarryTheDrawingAndComeAtMostSixtyTimesASecond) {
   auto simulation = make(kTimeline, "view_updates");
   RunControl control;
   ViewSession session(*simulation, control);
-  std::vector<Polyline> page;
+  page_test::PageModel page;
   int updates = 0;
   double wall_s = 0;
   for (SimTime t = 0; t < 3 * kSecond; t += kMillisecond) {
@@ -155,24 +156,128 @@ TEST(ViewSession, UpdatesCarryTheDrawingAndComeAtMostSixtyTimesASecond) {
     wall_s += 0.001;  // 1 ms of wall time a step: 3000 steps → at most 3 / (1/60) + 1 = 181 updates
     if (const auto text = session.update(wall_s)) {
       ++updates;
-      const json update = json::parse(*text);
-      for (const json& part : update["strokes"]) {
-        const size_t index = part["i"];
-        if (page.size() <= index) page.resize(index + 1);
-        page[index].resize(part["from"].get<size_t>());
-        for (const json& point : part["points"]) page[index].push_back({point[0], point[1]});
-      }
+      page.apply(json::parse(*text));
     }
   }
   EXPECT_LE(updates, 181);
-  EXPECT_GE(updates, 170);
-  ASSERT_EQ(page.size(), 1u);
-  EXPECT_EQ(page[0].front(), (PenPoint{0, 0}));
-  EXPECT_EQ(page[0].back(), (PenPoint{24, 0}));
-  const json last = json::parse(session.update_now());
-  EXPECT_EQ(last["motors"][0]["steps"], -1920);
-  EXPECT_EQ(last["motors"][0]["rate_steps_per_s"], 0);  // at rest since the last update
-  EXPECT_TRUE(last["pen"]["down"]);  // one click: the pen stays down
+  EXPECT_GE(updates, 170);  // the run moves on (t_s, the frame count): every due update is made
+  ASSERT_EQ(page.strokes.size(), 1u);
+  EXPECT_EQ(page.strokes[0].front(), std::make_pair(0.0, 0.0));
+  EXPECT_EQ(page.strokes[0].back(), std::make_pair(24.0, 0.0));
+  page.apply(json::parse(session.update_now()));
+  EXPECT_EQ(page.motors["driver A"]["steps"], -1920);
+  EXPECT_EQ(page.motors["driver A"]["rate_steps_per_s"], 0);  // at rest since the turn ended at 1.5 s
+  EXPECT_TRUE(page.pen["down"]);  // one click: the pen stays down
+}
+
+// Version 2's deltas: an update carries a part only when it differs from what the page has.
+TEST(ViewSession, UpdatesCarryOnlyWhatChanged) {
+  auto simulation = make(kTimeline, "view_deltas");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  simulation->run_until(800 * kMillisecond);  // the pen went down at 0.2 s; the turn starts at 1.0 s
+  const json first = json::parse(session.update_now());
+  for (const char* part : {"run", "pen", "motors", "boards"}) EXPECT_TRUE(first.contains(part)) << part;
+  simulation->run_until(900 * kMillisecond);  // nothing moved: time and the frame count did
+  const json still = json::parse(session.update_now());
+  for (const char* part : {"run", "pen", "strokes", "motors", "console"}) EXPECT_FALSE(still.contains(part)) << part;
+  ASSERT_TRUE(still.contains("boards"));
+  EXPECT_EQ(still["boards"][0]["frames"].get<int64_t>() - first["boards"][0]["frames"].get<int64_t>(),
+            100 * 25);  // 0.1 s of 25 kHz frames
+  simulation->run_until(1200 * kMillisecond);  // the turn under way: the pen, both motors, a stroke
+  const json moving = json::parse(session.update_now());
+  EXPECT_TRUE(moving.contains("pen"));
+  EXPECT_EQ(moving["motors"].size(), 2u);
+  EXPECT_EQ(moving["strokes"].size(), 1u);
+}
+
+TEST(ViewSession, APausedRunSendsNothing) {
+  auto simulation = make(kTimeline, "view_paused");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  simulation->run_until(1200 * kMillisecond);  // mid-turn: the motors have a rate
+  ASSERT_TRUE(session.update(0.0));
+  ASSERT_TRUE(session.receive(R"({"type":"run","action":"pause"})").empty());
+  const auto paused = session.update(1.0);  // says "paused", once
+  ASSERT_TRUE(paused);
+  EXPECT_EQ(json::parse(*paused)["run"]["paused"], true);
+  for (int second = 2; second < 60; ++second) EXPECT_FALSE(session.update(second)) << second;
+  EXPECT_EQ(session.updates_made(), 2u);
+}
+
+// A page that follows the deltas has what a new page gets in its first, whole update.
+TEST(ViewSession, DeltasAddUpToTheWholeState) {
+  auto simulation = make(kTimeline, "view_delta_sum");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  page_test::PageModel page;
+  for (SimTime t = 100 * kMillisecond; t <= 3 * kSecond; t += 100 * kMillisecond) {
+    simulation->run_until(t);
+    page.apply(json::parse(session.update_now()));
+    ViewSession fresh(*simulation, control);
+    page_test::PageModel whole;
+    whole.apply(json::parse(fresh.update_now()));
+    EXPECT_TRUE(page.same_state(whole)) << "at " << to_seconds(t) << " s";
+  }
+}
+
+// A page that asks for hello starts over: its next update is the whole state, the drawing from
+// its first stroke.
+TEST(ViewSession, HelloStartsThePageOver) {
+  auto simulation = make(kTimeline, "view_hello_again");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  simulation->run_until(3 * kSecond);
+  page_test::PageModel before;
+  before.apply(json::parse(session.update_now()));
+  EXPECT_EQ(only_message(session.receive(R"({"type":"hello"})"))["type"], "hello");
+  page_test::PageModel after;
+  after.apply(json::parse(session.update_now()));
+  EXPECT_TRUE(after.same_state(before));
+  ASSERT_EQ(after.strokes.size(), 1u);
+  EXPECT_EQ(after.strokes[0].back(), std::make_pair(24.0, 0.0));
+}
+
+// Off the paper: knob 1 turned the "natural" way (+2400 counts, inverted: −24 mm along x) takes
+// the pen past the travel area's x = 0 edge; the update says so the moment it does, with where
+// and when it left (the turn starts at 1.0 s from x = 0; one microstep is 1/80 mm, the area's
+// tolerance), and again when it is back inside after turning back.
+TEST(ViewSession, UpdatesMarkThePenLeavingTheTravelArea) {
+  auto simulation = make(R"(
+[[at]]
+time_s = 1.0
+turn = "knob_x"
+counts = 2400
+over_s = 0.5
+[[at]]
+time_s = 2.0
+turn = "knob_x"
+counts = -4800
+over_s = 1
+)", "view_travel");
+  RunControl control;
+  ViewSession session(*simulation, control);
+  page_test::PageModel page;
+  simulation->run_until(900 * kMillisecond);
+  page.apply(json::parse(session.update_now()));
+  EXPECT_EQ(page.travel["excursions"], 0);
+  EXPECT_EQ(page.travel["outside"], false);
+  simulation->run_until(1600 * kMillisecond);
+  page.apply(json::parse(session.update_now()));
+  EXPECT_EQ(page.travel["excursions"], 1);
+  EXPECT_EQ(page.travel["outside"], true);
+  ASSERT_EQ(page.travel["first_points"].size(), 1u);
+  const json& left = page.travel["first_points"][0];
+  EXPECT_GE(left["t_s"].get<double>(), 1.0);
+  EXPECT_LT(left["t_s"].get<double>(), 1.05);  // 24 mm in 0.5 s: 0.1 mm in about 2 ms
+  EXPECT_LT(left["x_mm"].get<double>(), -1.0 / 80);
+  EXPECT_GT(left["x_mm"].get<double>(), -0.1);
+  EXPECT_NEAR(page.travel["first_points"][0]["y_mm"].get<double>(), 0, 0.1);
+  simulation->run_until(3 * kSecond);
+  page.apply(json::parse(session.update_now()));
+  EXPECT_EQ(page.travel["excursions"], 1);
+  EXPECT_EQ(page.travel["outside"], false);  // back at x = +24 mm
+  EXPECT_EQ(simulation->machine()->stats().travel_excursions, 1u);  // what the summary counts
 }
 
 TEST(ViewSession, SaveGivesTheSvgTheRunWritesAtThatInstant) {

@@ -84,7 +84,7 @@ TEST(ViewShades, AShadedDrawingArrivesInTheSvgsPiecesAndColours) {
   std::vector<std::vector<std::pair<size_t, double>>> shades;
   json scale;
   const auto apply = [&](const json& update) {
-    for (const json& part : update["strokes"]) {
+    for (const json& part : update.value("strokes", json::array())) {  // version 2: absent when none
       const size_t i = part["i"], from = part["from"];
       if (strokes.size() <= i) strokes.resize(i + 1), shades.resize(i + 1);
       strokes[i].resize(from);

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../assembly/simulation_fixture.hpp"
+#include "page_model.hpp"
 #include "view/view_session.hpp"
 
 namespace stepdance::sim::view {
@@ -40,11 +41,13 @@ TEST(ViewTurntable, UpdatesCarryTheTablesAngleAndTheArmsRadius) {
   RunControl control;
   ViewSession session(*simulation, control);
   EXPECT_EQ(json::parse(session.hello())["machine"]["kind"], "polar");
+  page_test::PageModel page;
   int moving = 0;
   for (SimTime t = 0; t < 8 * kSecond; t += 500 * kMillisecond) {  // the table turning, the arm moving out
     simulation->run_until(t + 500 * kMillisecond);
-    const json update = json::parse(session.update_now());
-    ASSERT_TRUE(update.contains("table"));
+    page.apply(json::parse(session.update_now()));  // the table and pen come when they moved (version 2)
+    ASSERT_TRUE(page.table.is_object());
+    const json& update = json{{"table", page.table}, {"pen", page.pen}};
     // The documented geometry (sim/models/polar_turntable.hpp): θ = 2π · A steps / steps_per_rev,
     // r = B steps / steps_per_mm, and the pen on the paper at r (cos −θ, sin −θ).
     const double steps_a = static_cast<double>(simulation->stepper("driver", 'A')->position_steps());
