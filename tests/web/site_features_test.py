@@ -11,7 +11,8 @@ a plain static file server:
   width; the screenshot is kept (WORK_DIR/phone-390.png);
 - loading logs nothing (no sketch-server probe, a favicon); from file:// it says how to serve;
 - the first visit opens Step-A-Sketch with a "press Run" hint; the sketch has line numbers;
-  compiler warnings are told apart from errors; dark mode follows prefers-color-scheme.
+  compiler warnings are told apart from errors; dark mode follows prefers-color-scheme;
+- a running view is handed at most 30 updates a second (it draws no more often), and still some.
 
 Usage: site_features_test.py SITE_DIR SOURCE_DIR WORK_DIR
 """
@@ -260,6 +261,34 @@ class SmallThings(PageTest):
         dark = self.browser.execute_script("return getComputedStyle(document.body).backgroundColor;")
         self.assertEqual(light, "rgb(246, 246, 244)")
         self.assertEqual(dark, "rgb(27, 29, 31)")
+
+
+# Notes the page's clock at each update the page hands its view (the worker's, through the page).
+WATCH_UPDATES = """
+window.updateTimesMs = [];
+const transport = window.stepdanceTransport;
+window.stepdanceTransport = (onMessage, onState) => transport((text) => {
+  if (text.includes('"type":"update"')) window.updateTimesMs.push(performance.now());
+  onMessage(text);
+}, onState);
+"""
+
+
+class ViewCadence(PageTest):
+    # The view draws at most about 30 times a second: the worker hands it no more updates than
+    # that (the protocol allows 60), and at least a few while the pen moves.
+    SECONDS = 3
+
+    def test_the_worker_hands_the_view_at_most_30_updates_a_second(self):
+        self.open_page()
+        self.browser.execute_script(WATCH_UPDATES)
+        self.browser.find_element(By.ID, "run").click()  # at 1×: the house is drawn over 42 s
+        self.wait_for(lambda: self.browser.execute_script("return window.updateTimesMs.length > 0;"))
+        time.sleep(self.SECONDS + 0.5)
+        times = self.browser.execute_script("return window.updateTimesMs;")
+        window = [t for t in times if times[0] + 250 <= t < times[0] + 250 + self.SECONDS * 1000]
+        self.assertLessEqual(len(window), 30 * self.SECONDS + 2)
+        self.assertGreaterEqual(len(window), 5 * self.SECONDS)
 
 
 if __name__ == "__main__":

@@ -25,11 +25,17 @@ const MAX_SPEED_STEP_S = 0.01;
 /// At a set speed, the run never catches up more than this much wall time at once (a tab that
 /// was in the background resumes from where it is instead of racing).
 const LONGEST_CATCH_UP_S = 0.25;
+/// The shortest wall time between two updates handed to the view (s). The view draws at most
+/// about 30 times a second (web/view/app.js, SHORTEST_FRAME_MS), so the protocol's 60 updates a
+/// second would be made, copied to the page, parsed and merged twice for each drawing seen; on a
+/// machine of two cores that work is taken from the simulation (docs/web.md, "Figures").
+const SHORTEST_UPDATE_PERIOD_S = 1 / 30;
 
 let sim = null;      // the module, loaded by the first run
 let runId = null;    // the page's number of the run going (its messages carry it)
 let anchor = null;   // {wall_s, sim_s, speed}: where wall clock and simulated time were tied
 let finished = true;
+let lastUpdateWallS = -Infinity; // when the view was last handed an update
 const addedBoards = new Set(); // sketch folder names whose boards the module has
 
 const wallSeconds = () => performance.now() / 1000;
@@ -75,6 +81,7 @@ async function writeFiles(request) {
 async function start(request) {
   finished = true; // the run before (if any) ticks no more
   anchor = null;
+  lastUpdateWallS = -Infinity;
   runId = request.run;
   if (!sim) sim = await StepdanceSim.create(createStepdanceModule, { print: () => {}, printErr: () => {} });
   sim.close();
@@ -129,6 +136,16 @@ function tick(run) {
   }
 }
 
+// The view's update, if the protocol has one due and the view's last is SHORTEST_UPDATE_PERIOD_S old.
+function postDueUpdate() {
+  const now = wallSeconds();
+  if (now - lastUpdateWallS < SHORTEST_UPDATE_PERIOD_S) return;
+  const update = sim.update(now);
+  if (!update) return;
+  post(update);
+  lastUpdateWallS = now;
+}
+
 // One step of the run: as far as the pace allows, an update if one is due, the result at the end.
 function paceOnce() {
   const state = sim.state();
@@ -137,8 +154,7 @@ function paceOnce() {
   } else if (!state.done) {
     advance(state);
   }
-  const update = sim.update(wallSeconds());
-  if (update) post(update);
+  postDueUpdate();
   if (sim.state().done) {
     finished = true;
     post(sim.updateNow());
