@@ -17,9 +17,11 @@ the figure is their median.
 Both clocks are read where the work is: the page's run is timed in the page (performance.now()
 at the max click and when the result arrives), and this script looks at it only every
 POLL_S, so that watching costs the page nearly nothing. While the page runs at max, the CPU
-time of every Chromium thread is read from /proc and printed by thread name per wall second
-(the Web Worker's thread is DedicatedWorker; the page's main thread CrRendererMain), to show
-where the page's time goes.
+time of every Chromium thread is read from /proc and printed by process type and thread name
+per wall second (the Web Worker's thread is renderer/DedicatedWorker, the page's main thread
+renderer/chromium), to show where the page's time goes; and the simulated seconds per CPU
+second of the worker's thread against native's process (the code's own speed, whatever share
+of the machine each got).
 
 Usage: bench/web_page_speed.py SITE [--example StepASketch] [--seconds 600] [--runs 3]
                                [--stepdance BINARY]
