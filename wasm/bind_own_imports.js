@@ -86,9 +86,10 @@
     let bound = 0;
     for (let slot = base; slot < base + size; ++slot) {
       const entry = wasmTable.get(slot);
-      // A slot holding an import is named by the import's index; the module's own functions
-      // come after its imports (and a name section's names are not numbers: nothing is bound).
-      const index = entry ? Number(entry.name) : NaN;
+      // A slot holding an import is named by the import's index (V8); the module's own functions
+      // come after its imports. A name that is not an index (a name section's, a JavaScript
+      // function's own) binds nothing.
+      const index = entry && /^\d+$/.test(entry.name) ? Number(entry.name) : NaN;
       if (!(index < names.length)) continue;
       const own = exports[names[index]];
       if (typeof own !== 'function' || resolveGlobalSymbol(names[index], false)) continue;
