@@ -19,7 +19,7 @@ stage scripts/build-target.sh
 stage scripts/build-teensy.sh
 stage scripts/test-target-qemu.sh
 stage scripts/build-host.sh
-stage ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)"
+stage ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(nproc)" -LE image_full
 echo "== again under AddressSanitizer and UBSan"
 stage env STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
 # Slow integration tests (live pseudo-terminals, browsers, npm clients) run once, above.

@@ -10,14 +10,16 @@
 // counters (summary.json) show every line answered and every queued command started, and motion
 // commands that found the FIFO full and waited (saxi waits for every reply; a lost one would hang it).
 //
-// Usage: node saxi_plot_test.js STEPDANCE SCENARIO OUT_DIR {LM|XM}
+// Usage: node saxi_plot_test.js STEPDANCE SCENARIO OUT_DIR {LM|XM} [IMAGE]
+// With IMAGE (a Teensy 4.1 ELF), the board `driver` runs that firmware image on the emulated chip
+// (`--image driver=IMAGE`) and saxi talks to the image's own USB serial.
 'use strict';
 const { spawn } = require('child_process');
 const fs = require('fs');
 const path = require('path');
 const assert = require('assert');
 
-const [stepdance, scenario, outDir, expectedPath] = process.argv.slice(2);
+const [stepdance, scenario, outDir, expectedPath, image] = process.argv.slice(2);
 const { EBB } = require('saxi/dist/server/ebb');
 const { SerialPortSerialPort } = require('saxi/dist/server/serialport-serialport');
 const planning = require('saxi/dist/server/planning');
@@ -41,7 +43,9 @@ function drawing() {
 
 function startSimulator() {
   fs.rmSync(outDir, { recursive: true, force: true });
-  const sim = spawn(stepdance, ['sim', scenario, '--live', '--speed', '4', '--out', outDir], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const imageArgs = image ? ['--image', `driver=${image}`] : [];
+  const sim = spawn(stepdance, ['sim', scenario, '--live', '--speed', '4', '--out', outDir, ...imageArgs],
+                    { stdio: ['ignore', 'pipe', 'pipe'] });
   let stdout = '';
   let stderr = '';
   sim.stderr.on('data', (d) => { stderr += d; });
