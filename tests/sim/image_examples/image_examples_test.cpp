@@ -208,9 +208,10 @@ INSTANTIATE_TEST_SUITE_P(
                       ImageExample{"ClayTexturizer", {{"driver", "teensy41/ClayTexturizer"}}, kSmokeS},
                       ImageExample{"GCodeStepASketch", {{"driver", "teensy41/GCodeStepASketch"}}, kSmokeS, true},
                       ImageExample{"AxiDrawInterface", {{"driver", "teensy41/AxiDrawInterface"}}, kSmokeS, true},
-                      ImageExample{"ChainedPlotterDriver",
-                                   {{"knobs", "teensy40/ChainedKnobsBasic"}, {"plotter", "teensy41/ChainedPlotterDriver"}},
-                                   kSmokeS / 2}),  // two images, and a cable's pulses: the costliest
+                      // The plotter on its image, the knobs' Basic Module host-compiled, over their
+                      // cable. (Both on images, the two emulated cores bound each other's runs to
+                      // a block or so: about 100 times slower; issue 37's notes.)
+                      ImageExample{"ChainedPlotterDriver", {{"plotter", "teensy41/ChainedPlotterDriver"}}, kSmokeS / 2}),
     [](const ::testing::TestParamInfo<ImageExample>& param) { return param.param.folder; });
 
 }  // namespace
