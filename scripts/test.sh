@@ -23,7 +23,7 @@ stage ctest --test-dir "${STEPDANCE_BUILD_DIR:-build}" --output-on-failure -j"$(
 echo "== again under AddressSanitizer and UBSan"
 stage env STEPDANCE_BUILD_DIR=build-sanitize scripts/build-host.sh -DSTEPDANCE_SANITIZE=ON -DSTEPDANCE_BENCH=OFF
 # Slow integration tests (live pseudo-terminals, browsers, npm clients) run once, above.
-stage ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)" -LE integration
+stage ctest --test-dir build-sanitize --output-on-failure -j"$(nproc)" -LE "integration|image_full"
 echo "== fuzz smoke runs"
 stage scripts/fuzz.sh
 echo "== [${SECONDS} s] all tests passed"
