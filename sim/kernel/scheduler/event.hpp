@@ -1,4 +1,5 @@
-// One scheduled happening of the discrete-event kernel: a time, a tie-break sequence and a handler.
+// One scheduled happening of the discrete-event kernel: a time, a place in its time's queue and a
+// handler.
 #pragma once
 
 #include <cstddef>
@@ -9,6 +10,7 @@
 namespace stepdance::sim {
 
 class Scheduler;
+struct TimeSlot;
 
 /// An intrusive event. The scheduler never owns events: periodic timers embed one and reschedule
 /// it from their handler, one-shot events come from an EventPool. An event is in the queue at
@@ -27,25 +29,20 @@ class Event {
   SimTime time() const { return time_; }
   /// True while the event waits in a scheduler's queue (not while its own handler runs, unless
   /// the handler scheduled it again).
-  bool scheduled() const { return heap_index_ != kNotQueued && !in_dispatch_; }
+  bool scheduled() const { return slot_ != nullptr; }
   /// Replaces the handler (for pooled events that are reused for different jobs).
   void set_handler(Handler handler) { handler_ = handler; }
 
  private:
   friend class Scheduler;
-  static constexpr size_t kNotQueued = static_cast<size_t>(-1);
-
-  /// Strict (time, insertion sequence) order: earlier first, then first scheduled first.
-  bool before(const Event& other) const {
-    return time_ != other.time_ ? time_ < other.time_ : sequence_ < other.sequence_;
-  }
 
   SimTime time_ = 0;
-  uint64_t sequence_ = 0;
-  size_t heap_index_ = kNotQueued;
-  /// True while the handler runs and the event is still parked at the heap's root (see
-  /// Scheduler::step): rescheduling it then is a cheap sift-down from the root.
-  bool in_dispatch_ = false;
+  /// The queue of events due at time_ that holds this one, while it is queued.
+  TimeSlot* slot_ = nullptr;
+  /// Neighbours in that queue: the event scheduled just before this one for the same time, and
+  /// the one just after.
+  Event* earlier_ = nullptr;
+  Event* later_ = nullptr;
   Handler handler_;
 };
 

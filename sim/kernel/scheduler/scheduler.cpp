@@ -1,25 +1,26 @@
-// The discrete-event kernel's binary heap and its dispatch loop.
+// The discrete-event kernel: slots of same-time events, their heap, and the dispatch loop.
 #include "kernel/scheduler/scheduler.hpp"
 
 namespace stepdance::sim {
 
 Scheduler::~Scheduler() {
-  for (Event* event : heap_) {
-    event->heap_index_ = Event::kNotQueued;
-    event->in_dispatch_ = false;
+  for (TimeSlot* slot : heap_) {
+    for (Event* event = slot->first; event != nullptr; event = event->later_) event->slot_ = nullptr;
   }
 }
 
-void Scheduler::place(Event* event, size_t index) {
-  heap_[index] = event;
-  event->heap_index_ = index;
+// ---- the slots' heap, by time (no two slots share a time) -------------------------------------
+
+void Scheduler::place(TimeSlot* slot, size_t index) {
+  heap_[index] = slot;
+  slot->heap_index = index;
 }
 
 void Scheduler::sift_up(size_t index) {
-  Event* const moving = heap_[index];
+  TimeSlot* const moving = heap_[index];
   while (index > 0) {
     const size_t parent = (index - 1) / 2;
-    if (!moving->before(*heap_[parent])) break;
+    if (heap_[parent]->time <= moving->time) break;
     place(heap_[parent], index);
     index = parent;
   }
@@ -27,68 +28,96 @@ void Scheduler::sift_up(size_t index) {
 }
 
 void Scheduler::sift_down(size_t index) {
-  Event* const moving = heap_[index];
+  TimeSlot* const moving = heap_[index];
   const size_t size = heap_.size();
   for (;;) {
     size_t child = 2 * index + 1;
     if (child >= size) break;
-    if (child + 1 < size && heap_[child + 1]->before(*heap_[child])) ++child;
-    if (!heap_[child]->before(*moving)) break;
+    if (child + 1 < size && heap_[child + 1]->time < heap_[child]->time) ++child;
+    if (heap_[child]->time >= moving->time) break;
     place(heap_[child], index);
     index = child;
   }
   place(moving, index);
 }
 
-void Scheduler::remove_at(size_t index) {
-  Event* const removed = heap_[index];
-  Event* const last = heap_.back();
+TimeSlot* Scheduler::new_slot(SimTime time) {
+  TimeSlot* slot = nullptr;
+  if (free_slots_.empty()) {
+    slot = &slots_.emplace_back();
+  } else {
+    slot = free_slots_.back();
+    free_slots_.pop_back();
+  }
+  slot->time = time;
+  slot->first = slot->last = nullptr;
+  index_.insert(slot);
+  heap_.push_back(slot);
+  slot->heap_index = heap_.size() - 1;
+  sift_up(slot->heap_index);
+  return slot;
+}
+
+void Scheduler::free_slot(TimeSlot* slot) {
+  index_.erase(slot);
+  const size_t index = slot->heap_index;
+  TimeSlot* const last = heap_.back();
   heap_.pop_back();
-  removed->heap_index_ = Event::kNotQueued;
-  if (last == removed) return;
-  place(last, index);
-  sift_down(index);
-  sift_up(last->heap_index_);
+  if (last != slot) {
+    place(last, index);
+    sift_down(index);
+    sift_up(last->heap_index);
+  }
+  free_slots_.push_back(slot);
+}
+
+// ---- events in their slots -----------------------------------------------------------------------
+
+void Scheduler::append(Event& event, SimTime time) {
+  TimeSlot* slot = index_.find(time);
+  if (slot == nullptr) slot = new_slot(time);
+  event.time_ = time;
+  event.slot_ = slot;
+  event.earlier_ = slot->last;
+  event.later_ = nullptr;
+  if (slot->last != nullptr) {
+    slot->last->later_ = &event;
+  } else {
+    slot->first = &event;
+  }
+  slot->last = &event;
+  ++pending_;
+}
+
+void Scheduler::unlink(Event& event) {
+  TimeSlot* const slot = event.slot_;
+  (event.earlier_ != nullptr ? event.earlier_->later_ : slot->first) = event.later_;
+  (event.later_ != nullptr ? event.later_->earlier_ : slot->last) = event.earlier_;
+  event.slot_ = nullptr;
+  event.earlier_ = event.later_ = nullptr;
+  --pending_;
+  if (slot->first == nullptr) free_slot(slot);
 }
 
 void Scheduler::schedule(Event& event, SimTime time) {
-  const bool parked_at_root = event.in_dispatch_;
-  event.in_dispatch_ = false;
-  const SimTime due = time < now_ ? now_ : time;
-  if (parked_at_root) {
-    // The event being handled sits at the root and its new key (due ≥ now, fresh sequence)
-    // is larger than before: one sift-down replaces a pop and a push.
-    event.time_ = due;
-    event.sequence_ = next_sequence_++;
-    sift_down(0);
-    return;
-  }
-  if (event.heap_index_ != Event::kNotQueued) remove_at(event.heap_index_);
-  event.time_ = due;
-  event.sequence_ = next_sequence_++;
-  heap_.push_back(&event);
-  event.heap_index_ = heap_.size() - 1;
-  sift_up(event.heap_index_);
+  if (event.slot_ != nullptr) unlink(event);
+  append(event, time < now_ ? now_ : time);
 }
 
 void Scheduler::cancel(Event& event) {
-  event.in_dispatch_ = false;
-  if (event.heap_index_ != Event::kNotQueued) remove_at(event.heap_index_);
+  if (event.slot_ != nullptr) unlink(event);
 }
 
-// The event stays at the root while its handler runs (no element can sort before it: every
-// other key is later in time or in sequence). If the handler reschedules it, schedule() moves
-// it down from there; otherwise it is removed afterwards. A nested step() (a handler running
-// the world, as delay() does) first removes any such parked event.
+// The earliest slot's first event leaves the queue before its handler runs, so the handler may
+// schedule it again, and a nested step() (a handler running the world, as delay() does) goes on
+// with the events after it.
 bool Scheduler::step(SimTime end) {
-  if (!heap_.empty() && heap_.front()->in_dispatch_) cancel(*heap_.front());
-  if (heap_.empty() || heap_.front()->time_ > end) return false;
-  Event* const event = heap_.front();
+  if (heap_.empty() || heap_.front()->time > end) return false;
+  Event* const event = heap_.front()->first;
   if (event->time_ > now_) now_ = event->time_;
   ++handled_;
-  event->in_dispatch_ = true;
+  unlink(*event);
   if (event->handler_ != nullptr) event->handler_(*event, *this);
-  if (event->in_dispatch_) cancel(*event);
   return true;
 }
 

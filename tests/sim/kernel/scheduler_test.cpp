@@ -1,6 +1,9 @@
 // The discrete-event kernel: (time, sequence) order, periodic timers, pooled one-shots, nesting.
 #include <gtest/gtest.h>
 
+#include <random>
+#include <set>
+#include <tuple>
 #include <vector>
 
 #include "kernel/scheduler/one_shot_pool.hpp"
@@ -9,6 +12,11 @@
 
 namespace stepdance::sim {
 namespace {
+
+// The id of the model's earliest event, or −1.
+int first_of(const std::set<std::tuple<SimTime, uint64_t, int>>& model) {
+  return model.empty() ? -1 : std::get<2>(*model.begin());
+}
 
 struct Recorder {
   std::vector<std::pair<SimTime, int>> seen;
@@ -113,6 +121,76 @@ TEST(SchedulerTest, NestedRunUntilHandlesEventsInsideAHandler) {
   scheduler.run_until(300);
   const std::vector<std::pair<SimTime, int>> expected{{10, 1}, {50, 2}, {110, 10}, {200, 3}};
   EXPECT_EQ(recorder.seen, expected);
+}
+
+
+// The slots, their heap and the time index against the plainest model of the contract: an
+// ordered set of (time, order of scheduling, event). 200,000 random schedules (150 distinct
+// times, so many events share one; some in the past), cancels and steps, with handlers that
+// reschedule themselves as the periodic timers do.
+TEST(SchedulerTest, MatchesAnOrderedSetModelOverRandomOperations) {
+  std::set<std::tuple<SimTime, uint64_t, int>> model;
+  std::vector<std::set<std::tuple<SimTime, uint64_t, int>>::iterator> where;
+  uint64_t order = 0;
+  std::mt19937_64 random(20261128);
+  std::vector<int> fired;
+  struct Probe : Event {
+    Probe() : Event(&fire) {}
+    static void fire(Event& event, Scheduler& scheduler) {
+      auto& self = static_cast<Probe&>(event);
+      self.log->push_back(self.id);
+      if (self.again_ns > 0) scheduler.schedule(self, scheduler.now() + self.again_ns);
+    }
+    int id = 0;
+    SimTime again_ns = 0;
+    std::vector<int>* log = nullptr;
+  };
+  constexpr int kEvents = 300;
+  std::vector<Probe> probes(kEvents);
+  Scheduler scheduler;  // after the probes: it lets go of them when it ends
+  where.resize(kEvents);
+  std::vector<bool> queued(kEvents, false);
+  for (int i = 0; i < kEvents; ++i) {
+    probes[i].id = i;
+    probes[i].log = &fired;
+    probes[i].again_ns = i % 7 == 0 ? 40 * (1 + i % 3) : 0;
+  }
+  auto model_schedule = [&](int id, SimTime time) {
+    if (queued[id]) model.erase(where[id]);
+    where[id] = model.emplace(std::max(time, scheduler.now()), order++, id).first;
+    queued[id] = true;
+  };
+  for (int op = 0; op < 200000; ++op) {
+    const int id = static_cast<int>(random() % kEvents);
+    const unsigned kind = static_cast<unsigned>(random() % 10);
+    if (kind < 6) {
+      const SimTime time = scheduler.now() - 20 + static_cast<SimTime>(random() % 150) * 40;
+      scheduler.schedule(probes[id], time);
+      model_schedule(id, time);
+    } else if (kind < 7) {
+      scheduler.cancel(probes[id]);
+      if (queued[id]) model.erase(where[id]);
+      queued[id] = false;
+    } else {
+      const SimTime end = scheduler.now() + static_cast<SimTime>(random() % 60) * 40;
+      const bool expected = !model.empty() && std::get<0>(*model.begin()) <= end;
+      fired.clear();
+      ASSERT_EQ(scheduler.step(end), expected) << "operation " << op;
+      if (!expected) continue;
+      const auto [time, unused, first] = *model.begin();
+      model.erase(model.begin());
+      queued[first] = false;
+      ASSERT_EQ(fired, std::vector<int>{first}) << "operation " << op;
+      ASSERT_EQ(scheduler.now(), time);
+      if (probes[first].again_ns > 0) model_schedule(first, time + probes[first].again_ns);
+    }
+    ASSERT_EQ(scheduler.pending(), model.size()) << "operation " << op;
+    for (int probe : {id, first_of(model)}) {
+      if (probe < 0) continue;
+      ASSERT_EQ(probes[probe].scheduled(), queued[probe]) << "operation " << op;
+    }
+    ASSERT_EQ(scheduler.next_time(-1), model.empty() ? -1 : std::get<0>(*model.begin()));
+  }
 }
 
 }  // namespace
