@@ -40,6 +40,9 @@ class BoardFirmware {
   virtual void pulse_arrived(uint8_t port, const ArrivingPulse& pulse) = 0;
   /// The board's counters as the board ABI reports them (frames, faults, load).
   virtual StepdanceBoardStatsV1 stats() const = 0;
+  /// Whether the firmware has set input port `port` up to receive, as a sketch's InputPort
+  /// begin() does (for the summary's ports). Context: between the firmware's runs.
+  virtual bool input_port_begun(uint8_t port) const { return port < 4; }
   /// How the firmware ran, for the summary's "firmware" object: named numbers (instructions
   /// retired, the frame interrupt's cost, …) in a fixed order.
   virtual std::vector<std::pair<std::string, double>> figures() const { return {}; }

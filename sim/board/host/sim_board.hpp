@@ -165,7 +165,10 @@ class SimBoard {
   /// Pulses that reached an input port no InputPort had begun (they went nowhere).
   uint64_t unclaimed_pulses(uint8_t port) const { return ports_[port].unclaimed; }
   bool output_claimed(uint8_t port) const { return ports_[port].output_claimed; }
-  bool input_begun(uint8_t port) const { return ports_[port].input_begun; }
+  /// Whether the sketch began input port `port` (a firmware image: whether it set the port up).
+  bool input_begun(uint8_t port) const {
+    return firmware_ ? firmware_->input_port_begun(port) : ports_[port].input_begun;
+  }
   /// The board's own counters (frames, overruns, faults, pulses sent, signals carried).
   StepdanceBoardStatsV1 stats() const;
   /// One named counter of one block on the board.

@@ -79,6 +79,8 @@ void ImageProgram::power_on(SimTime time_ns) {
 
 void ImageProgram::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) { motion_->capture().pulse_arrived(port, pulse); }
 
+bool ImageProgram::input_port_begun(uint8_t port) const { return motion_ != nullptr && port < 4 && motion_->capture().routed(port); }
+
 // A stop ends the run as a host-compiled sketch's crash or hang does: exit status 5 or 6.
 void ImageProgram::stopped(const ImageStop& stop) {
   SketchStop report;

@@ -37,6 +37,8 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   SimTime now_ns() const override { return chip_.now_ns(); }
   void pulse_arrived(uint8_t port, const ArrivingPulse& pulse) override;
   StepdanceBoardStatsV1 stats() const override;
+  /// The port's STEP pad is routed to its capture input (the backend's InputPort begin()).
+  bool input_port_begun(uint8_t port) const override;
   std::vector<std::pair<std::string, double>> figures() const override;
   /// Asks the image itself: a debugger's call to its stepdance_debug_counters or
   /// stepdance_debug_warnings (src/stepdance/platform/teensy/debug_entries.cpp). Nothing if the

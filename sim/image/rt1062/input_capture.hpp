@@ -42,6 +42,9 @@ class InputCapture {
   static uint8_t dir_pin(uint8_t port);
   /// Edges that did not reach a capture input because the pad was not routed to it. Context: any.
   uint64_t unrouted_edges() const { return unrouted_; }
+  /// True while input port `port`'s STEP pad is routed to its capture input (the firmware began
+  /// the port). Context: any.
+  bool routed(uint8_t port) const;
 
  private:
   struct Edge {
@@ -51,7 +54,6 @@ class InputCapture {
   };
   static void deliver(void* context, SimTime now, const Edge& edge);
   void edge(uint8_t port, bool rising, SimTime at_ns);
-  bool routed(uint8_t port) const;
 
   const PeripheralBus& bus_;
   ChipContext& chip_;

@@ -26,6 +26,7 @@ class MotionBlocks {
   FlexPwm& flexpwm(unsigned index) { return pwm_[index]; }
   /// Where the lead delivers input-port pulses (InputCapture::pulse_arrived).
   InputCapture& capture() { return capture_; }
+  const InputCapture& capture() const { return capture_; }
   Xbar1& xbar1() { return xbar1_; }
   /// ENC1, ENC2 by index 0, 1.
   Enc& enc(unsigned index) { return enc_[index]; }

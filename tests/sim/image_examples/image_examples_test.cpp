@@ -147,6 +147,21 @@ size_t expect_same_frames(const ExampleRun& host, const ExampleRun& image, bool 
   return total;
 }
 
+/// The ports the summary lists ("driver:OUT_A", "driver:IN_A", …): those each board used (an
+/// image's input ports count when its firmware routed their pads, as a sketch's begin() does).
+std::vector<std::string> port_names(const scenario::Scenario& scenario, const ExampleRun& run) {
+  std::vector<std::string> names;
+  for (const scenario::BoardConfig& config : scenario.boards) {
+    const SimBoard* board = run.simulation->board(config.name);
+    for (uint8_t port = 0; port < 4; ++port) {
+      const std::string letter(1, static_cast<char>('A' + port));
+      if (board->output_claimed(port)) names.push_back(config.name + ":OUT_" + letter);
+      if (board->input_begun(port)) names.push_back(config.name + ":IN_" + letter);
+    }
+  }
+  return names;
+}
+
 /// Every motor's position (and with `forward_too` its forward steps) match; returns the forward
 /// steps of the host run.
 int64_t expect_same_steps(const scenario::Scenario& scenario, const ExampleRun& host, const ExampleRun& image,
@@ -195,6 +210,7 @@ TEST_P(ImageExamples, RunLikeTheHostCompiledSketch) {
   if (duration || timed_alike) {
     EXPECT_GT(expect_same_frames(host, image, timed_alike), 0u) << "no port stepped: nothing was compared";
   }
+  EXPECT_EQ(port_names(scenario, image), port_names(scenario, host)) << "the summary lists other ports";
   if (duration) return;
   ASSERT_TRUE(host.report.all_expectations_met());
   for (const ExpectationResult& result : image.report.expectations) EXPECT_TRUE(result.met) << result.message;
