@@ -28,6 +28,7 @@ test_packages=(
   gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev
   sigrok-cli
   clang  # libFuzzer targets (scripts/fuzz.sh)
+  libclang-rt-14-dev  # clang's libFuzzer and sanitizer runtimes: only a Recommends of clang, so a bare Debian lacks them
   time  # /usr/bin/time: CPU seconds in bench/image_board_speed.sh
   universal-ctags  # function lengths for the structure check (scripts/check-function-length.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
