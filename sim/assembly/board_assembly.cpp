@@ -116,6 +116,7 @@ std::unique_ptr<SimBoard> Simulation::make_board(const scenario::BoardConfig& co
   board_options.name = config.name;
   board_options.frame_phase_ns = config.frame_phase_ns.value_or(SimTime{config.frame_phase_us} * kMicrosecond);
   board_options.khz_phase_ns = config.khz_phase_ns;
+  board_options.encoder_sample_phase_ns = config.encoder_sample_phase_ns;
   board_options.loop_period_ns = config.loop_period_us * kMicrosecond;
   board_options.storage_dir = (std::filesystem::path(output_directory_) / (config.name + ".sd")).string();
   board_options.sd_card = sd_card_settings(config.sd_card);

@@ -71,6 +71,7 @@ struct BoardConfig {
   /// clock at frame_phase_us, the kilohertz tick half a frame after it (sim_board.hpp).
   std::optional<SimTime> frame_phase_ns;
   std::optional<SimTime> khz_phase_ns;
+  std::optional<SimTime> encoder_sample_phase_ns;  ///< BoardOptions::encoder_sample_phase_ns
   /// Populated sockets, sorted by port (boards with driver sockets only).
   std::vector<SocketConfig> sockets;
   /// Speed and failures of the board's card.

@@ -152,7 +152,9 @@ int SimBoard::start_timer(int timer_id, uint32_t period_us) {
   if (period_us == 0) return static_cast<int>(Status::kBadArgument);
   const SimTime period = SimTime{period_us} * kMicrosecond;
   if (timer_id == STEPDANCE_TIMER_FRAME) {
-    frame_timer_.start(next_aligned(options_.frame_phase_ns, period), period);
+    frame_first_tick_ns_ = next_aligned(options_.frame_phase_ns, period);
+    frame_period_ns_ = period;
+    frame_timer_.start(frame_first_tick_ns_, period);
   } else if (timer_id == STEPDANCE_TIMER_KHZ) {
     khz_timer_.start(next_aligned(options_.khz_phase_ns.value_or(options_.frame_phase_ns + kKhzOffsetNs), period), period);
   } else {
@@ -163,6 +165,7 @@ int SimBoard::start_timer(int timer_id, uint32_t period_us) {
 
 void SimBoard::stop_timers() {
   frame_timer_.stop();
+  frame_first_tick_ns_ = -1;
   khz_timer_.stop();
 }
 
@@ -300,11 +303,25 @@ void SimBoard::connect_encoder(uint8_t index, Source<int64_t> counts) { encoders
 
 int64_t SimBoard::encoder_counts(uint8_t index) const { return encoders_.at(index) ? encoders_[index](now()) : 0; }
 
-int32_t SimBoard::read_quadrature(uint8_t index) {
-  return static_cast<int32_t>(encoder_counts(index) + encoder_offsets_[index]);
+// The last sample instant at or before `now_ns`, if it comes after the first frame tick.
+SimTime SimBoard::encoder_sample_time(SimTime now_ns) const {
+  if (!options_.encoder_sample_phase_ns || frame_first_tick_ns_ < 0 || frame_period_ns_ <= 0) return now_ns;
+  const SimTime phase = *options_.encoder_sample_phase_ns;
+  const SimTime steps = (now_ns - phase) >= 0 ? (now_ns - phase) / frame_period_ns_ : -1;
+  const SimTime sample = phase + steps * frame_period_ns_;
+  return sample > frame_first_tick_ns_ ? sample : now_ns;
 }
 
-void SimBoard::write_quadrature(uint8_t index, int32_t count) { encoder_offsets_[index] = count - encoder_counts(index); }
+int32_t SimBoard::read_quadrature(uint8_t index) {
+  const SimTime at = encoder_sample_time(now());
+  const int64_t counts = encoders_.at(index) ? encoders_[index](at) : 0;
+  return static_cast<int32_t>(counts + encoder_offsets_[index]);
+}
+
+void SimBoard::write_quadrature(uint8_t index, int32_t count) {
+  const SimTime at = encoder_sample_time(now());
+  encoder_offsets_[index] = count - (encoders_.at(index) ? encoders_[index](at) : 0);
+}
 
 uint16_t SimBoard::analog_level(uint8_t pin) const {
   if (pin >= kPins || !adcs_[pin].value) return 0;

@@ -36,6 +36,11 @@ struct BoardOptions {
   /// The kilohertz tick's phase on its 1 ms grid instead (ticks at phase + k × 1 ms): set to line
   /// a host board up with an image board's measured clocks. Unset: phase + 20 µs as above.
   std::optional<SimTime> khz_phase_ns;
+  /// Set: the sketch reads its encoders as a Teensy image does, from counts latched at
+  /// phase + k × the frame period (the backend's sample clock, src/stepdance/platform/teensy/
+  /// sample_clock.cpp), from the first such instant after the first frame tick on, until the
+  /// frame clock stops. Unset: the counts at the instant of reading.
+  std::optional<SimTime> encoder_sample_phase_ns;
   /// loop() runs every this long (each pass takes no simulated time).
   SimTime loop_period_ns = 200 * kMicrosecond;
   /// Folder behind the board's file storage ("" = no card).
@@ -305,6 +310,8 @@ class SimBoard {
   void play_words(PortState& port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns);
   void firmware_stopped(const SketchStop& stop);
   SimTime next_aligned(SimTime offset_ns, SimTime period_ns) const;
+  /// The instant an encoder read at `now_ns` sees (BoardOptions::encoder_sample_phase_ns).
+  SimTime encoder_sample_time(SimTime now_ns) const;
 
   // HAL answers (called through BoardCallbacks).
   int start_timer(int timer_id, uint32_t period_us);
@@ -330,6 +337,8 @@ class SimBoard {
   const BoardDefinition* definition_ = &kDriverModuleV1;
   std::unique_ptr<StepdanceHostV1> host_table_;
   PeriodicTimer frame_timer_;
+  SimTime frame_first_tick_ns_ = -1;  ///< the running frame clock's first tick (-1: stopped)
+  SimTime frame_period_ns_ = 0;
   PeriodicTimer khz_timer_;
   LoopEvent loop_event_;
   SetupEvent setup_event_;

@@ -66,6 +66,11 @@ bool ImageProgram::add_blocks(std::string& error) {
   BoardIo& world = *this;
   clocks_ = rt1062::add_clock_and_pin_blocks(chip_.bus(), chip_, world, model_);
   motion_ = clocks_ ? add_motion_blocks(chip_.bus(), chip_, world, model_) : nullptr;
+  if (motion_) {
+    clocks_->pit.set_trigger_sink([xbar = &motion_->xbar1()](unsigned channel) {
+      xbar->pulse(static_cast<uint8_t>(Xbar1::kInputPitTrigger0 + channel));
+    });
+  }
   usb_ = motion_ ? usb::add_usb_blocks(chip_.bus(), chip_, world) : nullptr;
   if (usb_) return true;
   error = "the RT1062 model's peripheral windows overlap (a simulator bug)";
@@ -102,6 +107,15 @@ ImageChip::HandlerCost ImageProgram::frame_cost() const {
   return {tick.entries, tick.instructions + stages.instructions, tick.first_entry_ns};
 }
 
+double ImageProgram::first_encoder_sample_s() const {
+  SimTime first = -1;
+  for (unsigned index = 0; index < 2 && motion_; ++index) {
+    const SimTime at = motion_->enc(index).first_trigger_ns();
+    if (at >= 0 && (first < 0 || at < first)) first = at;
+  }
+  return first < 0 ? -1.0 : to_seconds(first);
+}
+
 double ImageProgram::frame_isr_instructions() const {
   const ImageChip::HandlerCost cost = frame_cost();
   return cost.entries == 0 ? 0.0 : static_cast<double>(cost.instructions) / static_cast<double>(cost.entries);
@@ -130,7 +144,8 @@ std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
           {"instructions_to_setup", setup_reached_ ? static_cast<double>(instructions_to_setup_) : -1.0},
           {"time_to_setup_s", setup_reached_ ? to_seconds(time_to_setup_ns_) : -1.0},
           {"frame_interrupt_first_s", first_entry_s(frame)},
-          {"khz_interrupt_first_s", first_entry_s(chip_.handler_cost(exception_of_irq(kKhzTickIrq)))}};
+          {"khz_interrupt_first_s", first_entry_s(chip_.handler_cost(exception_of_irq(kKhzTickIrq)))},
+          {"encoder_sample_first_s", first_encoder_sample_s()}};
 }
 
 // ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------

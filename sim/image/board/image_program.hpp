@@ -72,6 +72,8 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   void watch_setup();
   /// The frame interrupts (tick entries) and the instructions of the tick and stage handlers.
   ImageChip::HandlerCost frame_cost() const;
+  /// When the sample clock first latched an encoder's holds, s; -1 if it never has.
+  double first_encoder_sample_s() const;
   void stopped(const ImageStop& stop);
 
   TeensyModel model_;

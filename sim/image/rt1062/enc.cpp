@@ -13,6 +13,7 @@ constexpr uint32_t kLinit = 0x18, kCtrl2 = 0x1E, kUmod = 0x20, kLmod = 0x22, kUc
 constexpr uint16_t kSwip = 1u << 11, kRevDir = 1u << 10;
 constexpr uint16_t kIrqFlags = (1u << 15) | (1u << 8) | (1u << 4) | 1u;   // w1c
 constexpr uint16_t kRefused = (1u << 14) | (1u << 9) | (1u << 7) | (1u << 3) | (1u << 2) | (1u << 1);
+constexpr uint16_t kUpdateHolds = 1u << 0;  // CTRL2 UPDHLD; the other CTRL2 bits are refused
 
 /// Each encoder's phase pins: XBAR1 output, the INOUT input it must select, and the pad
 /// (SW_MUX_CTL offset, ALT, XBAR1_INnn_SELECT_INPUT offset and value), RM §11.7 / chapter 4:
@@ -75,6 +76,12 @@ void Enc::routing_changed() {
   routed_ = routed;
 }
 
+void Enc::trigger() {
+  if (!(ctrl2_ & kUpdateHolds)) return;
+  if (first_trigger_ns_ < 0) first_trigger_ns_ = chip_.now_ns();
+  latch_holds();
+}
+
 void Enc::latch_holds() {
   const uint32_t pos = position();
   posdh_ = static_cast<uint16_t>(static_cast<int64_t>(pos) - posd_base_);
@@ -100,7 +107,7 @@ Access Enc::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
     case kLposh: value = lposh_; break;
     case kUinit: value = uinit_; break;
     case kLinit: value = linit_; break;
-    case kCtrl2: value = 0; break;
+    case kCtrl2: value = ctrl2_; break;
     case kUmod: value = umod_; break;
     case kLmod: value = lmod_; break;
     case kUcomp: value = ucomp_; break;
@@ -128,7 +135,10 @@ Access Enc::write(uint32_t offset, uint8_t bytes, uint32_t value) {
     case kWtr: wtr_ = half; break;
     case kUinit: uinit_ = half; break;
     case kLinit: linit_ = half; break;
-    case kCtrl2: if (half != 0) return Access::kUnmodelled; break;  // modulus, update modes
+    case kCtrl2:
+      if (half & ~kUpdateHolds) return Access::kUnmodelled;  // modulus, UPDPOS, interrupts
+      ctrl2_ = half;
+      break;
     case kUmod: umod_ = half; break;
     case kLmod: lmod_ = half; break;
     case kUcomp: ucomp_ = half; break;

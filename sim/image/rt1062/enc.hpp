@@ -17,7 +17,8 @@ namespace stepdance::sim::image {
 /// XBAR1_INOUT inputs, and, if an IOMUXC answers on the bus, the pads are in that ALT with the
 /// input select and GPR6 direction set: quadrature.cpp's wiring); SWIP loads UINIT/LINIT; CTRL
 /// REV reverses the count. Reading POSD, REV, UPOS or LPOS latches all four into their hold
-/// registers and clears POSD (RM §56.3, "holding registers"). Refused (kUnmodelled): interrupt
+/// registers and clears POSD (RM §56.3, "holding registers"); with CTRL2 UPDHLD, so does a rising
+/// edge on the TRIGGER input (XBAR1 output 70 / 75; trigger()). Refused (kUnmodelled): interrupt
 /// enables, single-phase mode, modulus counting and the other CTRL2 modes, TST, IMR, writes of
 /// the position registers.
 class Enc final : public Peripheral {
@@ -36,6 +37,14 @@ class Enc final : public Peripheral {
   void routing_changed();
   /// The 32-bit position now. Context: any.
   uint32_t position();
+  /// A rising edge on TRIGGER now: with CTRL2 UPDHLD the hold registers take the position (the
+  /// edge is synchronised to the IPG clock on the chip, a few ns; here it is taken at once).
+  /// Context: the event that made the edge.
+  void trigger();
+  /// When a trigger first updated the holds, ns; -1 if none has. Context: any.
+  SimTime first_trigger_ns() const { return first_trigger_ns_; }
+  /// XBAR1 output that drives this encoder's TRIGGER (RM chapter 4).
+  uint8_t trigger_output() const { return index_ == 0 ? 70 : 75; }
 
  private:
   bool phases_routed() const;
@@ -51,6 +60,8 @@ class Enc final : public Peripheral {
   int64_t held_ = 0;        // position while not routed (and the base when routing starts)
   int64_t offset_ = 0;      // position = direction × counts + offset while routed
   int64_t posd_base_ = 0;   // position at the last POSD clear
+  SimTime first_trigger_ns_ = -1;
+  uint16_t ctrl2_ = 0;
   uint16_t ctrl_ = 0, filt_ = 0, wtr_ = 0, uinit_ = 0, linit_ = 0, umod_ = 0, lmod_ = 0;
   uint16_t ucomp_ = 0xFFFFu, lcomp_ = 0xFFFFu;  // reset values (RM §56.8)
   uint16_t posdh_ = 0, revh_ = 0, uposh_ = 0, lposh_ = 0;

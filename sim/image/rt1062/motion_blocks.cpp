@@ -15,6 +15,7 @@ MotionBlocks::MotionBlocks(const PeripheralBus& bus, ChipContext& chip, BoardIo&
     enc_[0].routing_changed();
     enc_[1].routing_changed();
   });
+  for (Enc& enc : enc_) xbar1_.on_output_edge(enc.trigger_output(), [&enc] { enc.trigger(); });
 }
 
 namespace {

@@ -57,6 +57,7 @@ void Pit::expire(size_t index) {
   channel.period_ldval = channel.ldval;  // reload with the LDVAL written by now
   schedule_expiry(channel);
   update_irq();
+  if (trigger_sink_) trigger_sink_(static_cast<unsigned>(index));
 }
 
 // PERCLK changed or MDIS flipped: every running channel starts afresh from LDVAL now.

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 
 #include "image/chip/chip_context.hpp"
@@ -18,7 +19,8 @@ namespace stepdance::sim::image::rt1062 {
 /// stopped), per channel LDVAL, CVAL (read only), TCTRL (TEN, TIE), TFLG (TIF, write 1 to clear).
 /// A running channel counts LDVAL..0 at PERCLK, so it expires every LDVAL + 1 ticks; a new LDVAL
 /// takes effect at the next reload (RM §53.5.1). Expiries are scheduled events; the one IRQ (122)
-/// is high while any channel has TIF and TIE. Not modelled (refused as unmodelled): chained
+/// is high while any channel has TIF and TIE. Every expiry also pulses the channel's PIT_TRIGGERn
+/// output (XBAR1 inputs 56–59, RM chapter 4), whether or not TIE is set. Not modelled (refused as unmodelled): chained
 /// channels (TCTRL CHN) and the lifetime timer LTMR64H/L.
 class Pit : public Peripheral {
  public:
@@ -31,6 +33,11 @@ class Pit : public Peripheral {
   ClockGate gate() const override { return ClockGate{1, 6}; }
   Access read(uint32_t offset, uint8_t bytes, uint32_t& value) override;
   Access write(uint32_t offset, uint8_t bytes, uint32_t value) override;
+
+  /// Where the PIT_TRIGGERn pulses go: called with n at each expiry of channel n, at its time.
+  using TriggerSink = std::function<void(unsigned channel)>;
+  /// Sets the sink (one; the chip wires it to XBAR1). Context: board construction.
+  void set_trigger_sink(TriggerSink sink) { trigger_sink_ = std::move(sink); }
 
  private:
   struct Channel {
@@ -55,6 +62,7 @@ class Pit : public Peripheral {
   std::array<Channel, 4> channels_;
   bool irq_high_ = false;
   uint32_t perclk_hz_ = 0;  ///< the PERCLK the running periods count
+  TriggerSink trigger_sink_;
 };
 
 }  // namespace stepdance::sim::image::rt1062

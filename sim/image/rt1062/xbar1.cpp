@@ -43,3 +43,13 @@ Access Xbar1::write(uint32_t offset, uint8_t bytes, uint32_t value) {
 }
 
 }  // namespace stepdance::sim::image
+
+namespace stepdance::sim::image {
+
+void Xbar1::pulse(uint8_t input) const {
+  for (const EdgeListener& edge : edge_listeners_) {
+    if (edge.output < kOutputs && select_[edge.output] == input) edge.listener();
+  }
+}
+
+}  // namespace stepdance::sim::image

@@ -17,13 +17,13 @@ namespace {
 const std::string kStepASketch = STEPDANCE_SOURCE_DIR "/examples/StepASketch/StepASketch.ino";
 const std::string kCache = STEPDANCE_BUILD_DIR "/sketch-cache";
 
-std::unique_ptr<SimBoard> load_board(Scheduler& scheduler, const std::string& sketch, const std::string& name) {
+std::unique_ptr<SimBoard> load_board(Scheduler& scheduler, const std::string& sketch, const std::string& name,
+                                     BoardOptions options = {}) {
   const SketchBuild build = SketchBuilder(kCache).build(sketch);
   EXPECT_TRUE(build.ok) << build.error;
   std::string error;
   auto library = BoardLibrary::load(build.library_path, error);
   EXPECT_NE(library, nullptr) << error;
-  BoardOptions options;
   options.name = name;
   auto board = std::make_unique<SimBoard>(scheduler, options, std::move(library));
   EXPECT_TRUE(board->attach(error)) << error;
@@ -45,6 +45,34 @@ TEST(SimBoardTest, StepASketchTurnsKnobCountsIntoMotorPulses) {
   EXPECT_EQ(board->port_counter("OutputPort", 0, "sent_e_forward"), 80u);  // the board's own count agrees with the wire
   EXPECT_EQ(stats.frames, 2500u);               // frames at 40 µs … 100 ms
   EXPECT_FALSE(board->pin_level(14));           // ENABLE A driven low: driver on
+}
+
+// BoardOptions::encoder_sample_phase_ns: reads see the counts of the last instant phase + k × 40 µs
+// (the Teensy backend's sample clock), from the first such instant after the first frame tick on.
+TEST(SimBoardTest, WithASamplePhaseEncoderReadsSeeTheLastSampleInstant) {
+  Scheduler scheduler;
+  BoardOptions options;
+  options.frame_phase_ns = 5 * kMicrosecond;
+  options.encoder_sample_phase_ns = 3 * kMicrosecond + 123;  // 2 µs minus a little before each tick
+  auto board = load_board(scheduler, kStepASketch, "driver", options);
+  std::vector<SimTime> asked;
+  board->connect_encoder(0, [&asked](SimTime time) {
+    asked.push_back(time);
+    return int64_t{0};
+  });
+  board->power_on(0);
+  scheduler.run_until(2 * kMillisecond);
+  ASSERT_GT(asked.size(), 40u);
+  size_t sampled = 0;
+  for (const SimTime time : asked) {
+    if (time % (40 * kMicrosecond) == 3 * kMicrosecond + 123) {
+      ++sampled;
+      EXPECT_GT(time, 5 * kMicrosecond) << "no sample before the first tick (at 5 µs) counts";
+    } else {
+      EXPECT_LE(time, 43 * kMicrosecond + 123) << "read live only until the first sample";
+    }
+  }
+  EXPECT_GT(sampled, 40u) << "the frames' reads, one a frame at least";
 }
 
 TEST(SimBoardTest, TwoBoardsRunningOneSketchKeepSeparateGlobals) {

@@ -98,6 +98,10 @@ scenario::Scenario on_image_clocks(scenario::Scenario scenario, const ExampleRun
     EXPECT_GE(first_khz_ns, 0);
     board.frame_phase_ns = first_frame_ns % (40 * kMicrosecond);
     board.khz_phase_ns = first_khz_ns % kMillisecond;
+    const double first_sample_s = figure(image, board.name, "encoder_sample_first_s");
+    if (first_sample_s >= 0) {  // the sketch began an encoder: read them as the image's sample clock does
+      board.encoder_sample_phase_ns = static_cast<SimTime>(std::llround(first_sample_s * 1e9)) % (40 * kMicrosecond);
+    }
     board.loop_period_us = 1;
   }
   return scenario;

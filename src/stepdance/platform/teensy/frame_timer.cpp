@@ -1,7 +1,8 @@
 // The frame timer: FlexIO3's hardware frame clock, the tick ISR and the frame ISR.
 //
 //   tick k (hardware) ─► all claimed ports start shifting the words in their buffers
-//        └► tick ISR (priority 16): zero the buffers, count the tick, pend the frame ISR
+//        └► tick ISR (priority 16): zero the buffers, count the tick, pend the frame ISR (the
+//           first one after a start also starts the input sample clock: sample_clock.cpp)
 //             └► frame ISR (priority 48): run the frame stages, then commit the staged words
 //                  (launched by the hardware at tick k+1)
 //
@@ -53,6 +54,7 @@ volatile uint32_t stopped_at_cycles = 0;  // DWT cycles at the last frame_timer_
 void tick_isr() {
   flexio::clear_tick_flag();
   output_ports_disarm();
+  sample_clock_on_tick();
   tick_count = tick_count + 1;
   irq::pend(kFrameIrq);
 }
@@ -105,6 +107,7 @@ void frame_isr() {
 
 void frame_timer_stop() {
   flexio::stop_frame_clock();
+  sample_clock_stop();
   stopped_at_cycles = hal::cycles_now();
   stopped_once = true;
   irq::disable(kTickIrq);
@@ -135,6 +138,7 @@ Status frame_timer_start(uint32_t period_us, Isr on_frame) {
   teensy::irq::install(teensy::kTickIrq, &teensy::tick_isr, teensy::irq::kTickPriority);
   teensy::running = true;
   teensy::wait_after_stop(period_us);
+  teensy::sample_clock_arm(period_us);  // if it cannot, the encoders are read live
   const uint32_t ticks_before = teensy::tick_count;  // read first: the first tick comes at once
   const Status started = teensy::flexio::start_frame_clock(period_us);
   if (started != Status::kOk) {

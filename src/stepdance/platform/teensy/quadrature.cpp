@@ -1,4 +1,6 @@
 // Quadrature decoders: pins 0/1 → ENC1 and 2/3 → ENC2 through XBAR1 (RM chapters 56 and 61).
+// While frames run, each counter is read from its hold registers, which the sample clock's
+// trigger fills at one instant before every frame tick (sample_clock.cpp); before that, live.
 #if defined(__IMXRT1062__)
 
 #include "stepdance/boards/board.hpp"
@@ -8,6 +10,7 @@
 #include "stepdance/platform/teensy/regs_ccm.hpp"
 #include "stepdance/platform/teensy/regs_enc.hpp"
 #include "stepdance/platform/teensy/regs_xbar.hpp"
+#include "stepdance/platform/teensy/timers.hpp"
 
 namespace stepdance::platform::teensy {
 namespace {
@@ -30,6 +33,7 @@ struct PhaseWiring {
 struct EncoderWiring {
   PhaseWiring a;
   PhaseWiring b;
+  uint8_t trigger_output;  // XBAR1 output of this ENC's TRIGGER input
   ccm::ClockGate gate;
 };
 
@@ -40,9 +44,11 @@ constexpr const uint8_t (&kPins)[2][2] = kDriverModuleV1.encoder_pins;
 constexpr EncoderWiring kWiring[2] = {
     {{kPins[0][0], 1, 17, iomuxc::kSelectXbar1In17, 1, xbar1::kOutEnc1PhaseA},
      {kPins[0][1], 1, 16, iomuxc::kSelectXbar1In16, 0, xbar1::kOutEnc1PhaseB},
+     xbar1::kOutEnc1Trigger,
      ccm::kGateEnc1},
     {{kPins[1][0], 3, 6, iomuxc::kSelectXbar1In06, 0, xbar1::kOutEnc2PhaseA},
      {kPins[1][1], 3, 7, iomuxc::kSelectXbar1In07, 0, xbar1::kOutEnc2PhaseB},
+     xbar1::kOutEnc2Trigger,
      ccm::kGateEnc2},
 };
 static_assert(pin_pad(kPins[0][0]).mux == pad::ad_b0(3).mux && pin_pad(kPins[0][1]).mux == pad::ad_b0(2).mux,
@@ -64,6 +70,9 @@ constexpr bool boards_match_wiring() {
 static_assert(boards_match_wiring(), "a board's encoder n is not wired as encoder n of this backend");
 
 volatile bool begun[2] = {false, false};
+// What quadrature_write() set: the position the sketch sees is the counter's plus this (the
+// counter itself is never rewritten, so the hold registers stay true to the last sample).
+volatile int32_t offsets[2] = {0, 0};
 
 void attach_phase(const PhaseWiring& phase) {
   const PinInfo& pin = *pin_info(phase.pin);
@@ -80,6 +89,22 @@ uint16_t filter_setting() {
   if (period < 1) period = 1;
   if (period > 255) period = 255;
   return enc::filter(2, static_cast<uint16_t>(period));
+}
+
+// The counter's 32-bit position: the last sample's while the sample clock runs (read until two
+// reads agree, in case a trigger came between the halves), else now. Context: any, guarded.
+uint32_t counter_position(uint8_t index) {
+  if (!sample_clock_sampled()) {
+    const uint32_t upper = enc::upos(index);  // latches LPOSH
+    return (upper << 16) | enc::lposh(index);
+  }
+  uint32_t last = (uint32_t{enc::uposh(index)} << 16) | enc::lposh(index);
+  for (int tries = 0; tries < 3; ++tries) {
+    const uint32_t again = (uint32_t{enc::uposh(index)} << 16) | enc::lposh(index);
+    if (again == last) break;
+    last = again;
+  }
+  return last;
 }
 
 }  // namespace
@@ -99,34 +124,29 @@ Status quadrature_begin(uint8_t index) {
   teensy::attach_phase(wiring.b);
   CriticalSection guard;
   enc::ctrl(index) = 0;  // quadrature mode (x4: every edge counts), no interrupts
-  enc::ctrl2(index) = 0;  // free 32-bit position counter
+  enc::ctrl2(index) = enc::kCtrl2UpdateHoldsOnTrigger;  // free 32-bit counter, sampled on TRIGGER
+  teensy::xbar1::connect(teensy::xbar1::in_pit_trigger(teensy::kSampleClockPitChannel), wiring.trigger_output);
   enc::umod(index) = 0;
   enc::lmod(index) = 0;
   enc::filt(index) = teensy::filter_setting();
   enc::uinit(index) = 0;
   enc::linit(index) = 0;
   enc::ctrl(index) = enc::kCtrlSoftwareInitPosition;
+  teensy::offsets[index] = 0;
   teensy::begun[index] = true;
   return Status::kOk;
 }
 
 int32_t quadrature_read(uint8_t index) {
   if (index >= 2 || !teensy::begun[index]) return 0;
-  namespace enc = teensy::enc;
   CriticalSection guard;  // the UPOS read latches LPOSH: no other reader may come in between
-  const uint32_t upper = enc::upos(index);
-  const uint32_t lower = enc::lposh(index);
-  return static_cast<int32_t>((upper << 16) | lower);
+  return static_cast<int32_t>(teensy::counter_position(index) + static_cast<uint32_t>(teensy::offsets[index]));
 }
 
 void quadrature_write(uint8_t index, int32_t count) {
   if (index >= 2 || !teensy::begun[index]) return;
-  namespace enc = teensy::enc;
-  const uint32_t value = static_cast<uint32_t>(count);
   CriticalSection guard;
-  enc::uinit(index) = static_cast<uint16_t>(value >> 16);
-  enc::linit(index) = static_cast<uint16_t>(value & 0xFFFFu);
-  enc::ctrl(index) = enc::kCtrlSoftwareInitPosition;
+  teensy::offsets[index] = static_cast<int32_t>(static_cast<uint32_t>(count) - teensy::counter_position(index));
 }
 
 }  // namespace stepdance::hal

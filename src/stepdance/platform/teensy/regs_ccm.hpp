@@ -43,6 +43,7 @@ struct ClockGate {
 constexpr ClockGate kGateGpt2Bus = {0, 12};
 constexpr ClockGate kGateGpt2Serial = {0, 13};
 constexpr ClockGate kGateAdc2 = {1, 4};
+constexpr ClockGate kGatePit = {1, 6};
 constexpr ClockGate kGateAdc1 = {1, 8};
 constexpr ClockGate kGateXbar1 = {2, 11};
 constexpr ClockGate kGateFlexio2 = {3, 0};

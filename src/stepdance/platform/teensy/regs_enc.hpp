@@ -25,11 +25,16 @@ constexpr uint16_t filter(uint16_t count, uint16_t period) {
 inline Reg16 upos(unsigned index) { return reg16(base(index) + 0x0Eu); }
 /// LPOSH: lower position hold, latched by the UPOS read. RM §56.8, ENC_LPOSH.
 inline Reg16 lposh(unsigned index) { return reg16(base(index) + 0x14u); }
+/// UPOSH: upper position hold, latched with LPOSH by a UPOS read or (CTRL2 UPDHLD) a TRIGGER
+/// edge. RM §56.8, ENC_UPOSH.
+inline Reg16 uposh(unsigned index) { return reg16(base(index) + 0x12u); }
 /// UINIT / LINIT: upper / lower initial position. RM §56.8, ENC_UINIT, ENC_LINIT.
 inline Reg16 uinit(unsigned index) { return reg16(base(index) + 0x16u); }
 inline Reg16 linit(unsigned index) { return reg16(base(index) + 0x18u); }
-/// CTRL2: control 2; 0 = free 32-bit counting, no modulus, no interrupts. RM §56.8, ENC_CTRL2.
+/// CTRL2: control 2; 0 = free 32-bit counting, no modulus, no interrupts; UPDHLD (bit 0): the
+/// TRIGGER input's rising edge updates the hold registers. RM §56.8, ENC_CTRL2.
 inline Reg16 ctrl2(unsigned index) { return reg16(base(index) + 0x1Eu); }
+constexpr uint16_t kCtrl2UpdateHoldsOnTrigger = 1u << 0;
 /// UMOD / LMOD: modulus (unused, kept 0). RM §56.8, ENC_UMOD, ENC_LMOD.
 inline Reg16 umod(unsigned index) { return reg16(base(index) + 0x20u); }
 inline Reg16 lmod(unsigned index) { return reg16(base(index) + 0x22u); }

@@ -1,4 +1,4 @@
-// XBARA1: routes the encoder pads to the ENC phase inputs. RM chapter 61 (XBAR), memory map §61.4;
+// XBARA1: routes the encoder pads to the ENC phase inputs, and the sample clock to their TRIGGER. RM chapter 61 (XBAR), memory map §61.4;
 // input and output numbers from RM chapter 4 (XBAR1 input/output assignments).
 #pragma once
 
@@ -25,6 +25,11 @@ constexpr uint8_t kOutEnc1PhaseA = 66;
 constexpr uint8_t kOutEnc1PhaseB = 67;
 constexpr uint8_t kOutEnc2PhaseA = 71;
 constexpr uint8_t kOutEnc2PhaseB = 72;
+/// ENCn TRIGGER: with CTRL2 UPDHLD its rising edge copies the position into the hold registers.
+constexpr uint8_t kOutEnc1Trigger = 70;
+constexpr uint8_t kOutEnc2Trigger = 75;
+/// PIT_TRIGGERn, a pulse at every expiry of PIT channel n (RM chapter 4, XBAR1 input assignments).
+constexpr uint8_t in_pit_trigger(unsigned channel) { return static_cast<uint8_t>(56u + channel); }
 // Inputs IOMUX_XBAR_INOUTnn are XBAR1 input number nn (RM chapter 4, XBAR1 input assignments).
 
 }  // namespace stepdance::platform::teensy::regs::xbar1

@@ -130,6 +130,37 @@ TEST_F(EncTest, PadsOutOfTheirXbarFunctionDoNotCount) {
   EXPECT_EQ(read_position(0), 2);
 }
 
+// RM §56.8 ENC_CTRL2 UPDHLD (bit 0): a TRIGGER rising edge updates the hold registers. The
+// trigger comes through XBAR1 (ENC1 TRIGGER = output 70, ENC2 = 75; PIT_TRIGGER3 = input 59).
+TEST_F(EncTest, ATriggerThroughTheXbarLatchesTheHoldsOnlyWithUpdhld) {
+  xbar.on_output_edge(70, [this] { enc1.trigger(); });
+  xbar.on_output_edge(75, [this] { enc2.trigger(); });
+  begin(0);
+  begin(1);
+  constexpr uint32_t kUposh = 0x12;
+  rig.io.encoders[0] = 300;
+  rig.io.encoders[1] = 70000;  // past 16 bits: UPOSH 1, LPOSH 4464
+  connect(59, 70);
+  connect(59, 75);
+  xbar.pulse(59);
+  EXPECT_EQ(r16(enc(0, kLposh)), 0u) << "UPDHLD clear: the trigger does nothing";
+  ASSERT_TRUE(w16(enc(0, kCtrl2), 1));
+  ASSERT_TRUE(w16(enc(1, kCtrl2), 1));
+  EXPECT_EQ(r16(enc(0, kCtrl2)), 1u);
+  xbar.pulse(58);  // another input: not routed to either TRIGGER
+  EXPECT_EQ(r16(enc(0, kLposh)), 0u);
+  EXPECT_EQ(enc1.first_trigger_ns(), -1);
+  rig.run_until(1234);
+  xbar.pulse(59);
+  rig.io.encoders[0] = 310;  // after the sample
+  EXPECT_EQ(r16(enc(0, kUposh)), 0u);
+  EXPECT_EQ(r16(enc(0, kLposh)), 300u);
+  EXPECT_EQ(r16(enc(1, kUposh)), 1u);
+  EXPECT_EQ(r16(enc(1, kLposh)), 70000u - 65536u);
+  EXPECT_EQ(enc1.first_trigger_ns(), 1234);
+  EXPECT_TRUE(w16(enc(0, kCtrl2), 1u << 1) == false) << "UPDPOS (clear on trigger) is not modelled";
+}
+
 TEST_F(EncTest, UnexpectedUsesAreRefused) {
   EXPECT_FALSE(w16(enc(0, kCtrl), kHie)) << "home interrupt";
   EXPECT_FALSE(w16(enc(0, kCtrl2), 1u << 2)) << "modulus counting";

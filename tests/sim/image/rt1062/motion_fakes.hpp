@@ -135,6 +135,23 @@ class FakeClockBlock : public Peripheral {
   uint32_t base_;
 };
 
+/// The PIT as plain storage, except that TFLGn (0x10C + 0x10 n) is write-1-to-clear as on the
+/// chip (RM §53.4): no channel ever expires by itself; a test makes an expiry by setting TFLG
+/// through `registers` and pulsing the XBAR input itself.
+class FakePit : public FakeClockBlock {
+ public:
+  FakePit() : FakeClockBlock("PIT", 0x40084000u) {}
+  Access write(uint32_t offset, uint8_t bytes, uint32_t value) override {
+    writes.emplace_back(offset, value);
+    if (offset >= 0x100 && (offset & 0xFu) == 0xC) {
+      registers[offset] &= ~value;
+      return Access::kOk;
+    }
+    return FakeClockBlock::write(offset, bytes, value);
+  }
+  std::vector<std::pair<uint32_t, uint32_t>> writes;  ///< (offset, value), in order
+};
+
 /// The fake chip, world and clock registers on one bus, clocked as Teensyduino leaves them:
 /// PLL3 locked at 480 MHz, IPG = 600 MHz / 4, and the FlexIO2/3 root as the backend's
 /// power_up() sets it (PLL3 / 2 / 2 = 120 MHz) unless a test changes CS1CDR.

@@ -2,6 +2,9 @@
 // IntervalTimer drive it; expiry times from the counter arithmetic of RM §52.5 and §53.5.
 #include <gtest/gtest.h>
 
+#include <utility>
+#include <vector>
+
 #include "image/chip/peripheral_bus.hpp"
 #include "image/rt1062/gpt.hpp"
 #include "image/rt1062/pit.hpp"
@@ -130,6 +133,28 @@ TEST_F(TimerChip, PitPeriodsOfFractionalNanosecondsDoNotDrift) {
   EXPECT_EQ(rd(kPit + 0x104), 6u);
   chip.advance_to(start + 7 * kMillisecond + 42);  // 42 ns = 1.008 ticks later
   EXPECT_EQ(rd(kPit + 0x104), 5u);
+}
+
+// The backend's sample clock (sample_clock.cpp) at PERCLK 24 MHz: LDVAL 911 then TEN (912 ticks =
+// 38 µs), then LDVAL 959 (960 ticks = 40 µs) for every later period. Each expiry pulses
+// PIT_TRIGGER3, interrupt or not (RM chapter 4 and §53.3).
+TEST_F(TimerChip, PitTriggersComeAtEachExpiryAndANewLdvalWaitsForTheFirst) {
+  std::vector<std::pair<unsigned, SimTime>> pulses;
+  pit.set_trigger_sink([&](unsigned channel) { pulses.emplace_back(channel, chip.now_ns()); });
+  wr(kPit + 0x000, 0);
+  chip.advance_to(3 * kMicrosecond);
+  const SimTime start = chip.now_ns();
+  wr(kPit + 0x130, 911);
+  wr(kPit + 0x138, 1);
+  wr(kPit + 0x130, 959);
+  chip.advance_to(start + 38 * kMicrosecond + 3 * 40 * kMicrosecond);
+  const std::vector<std::pair<unsigned, SimTime>> expected = {{3u, start + 38 * kMicrosecond},
+                                                              {3u, start + 78 * kMicrosecond},
+                                                              {3u, start + 118 * kMicrosecond},
+                                                              {3u, start + 158 * kMicrosecond}};
+  EXPECT_EQ(pulses, expected);
+  EXPECT_FALSE(chip.irq_levels[122]) << "TIE clear: no interrupt";
+  EXPECT_EQ(rd(kPit + 0x13C), 1u) << "TIF set all the same";
 }
 
 TEST_F(TimerChip, PitStaysStillWhileTheModuleIsDisabled) {

@@ -132,7 +132,7 @@ World::World() {
   ccm.registers[0x20] = 0x13192F06u;
   ccm.registers[0x28] = 0x0EC102C1u;  // CS1CDR reset value; the backend's power_up() sets its own
   analog.registers[0x10] = 0x80003040u;
-  for (auto* block : std::initializer_list<stepdance::sim::image::Peripheral*>{&ccm, &analog, &iomuxc, &gpr}) {
+  for (auto* block : std::initializer_list<stepdance::sim::image::Peripheral*>{&ccm, &analog, &iomuxc, &gpr, &pit}) {
     bus.add(*block);
   }
   for (auto& port : gpio) bus.add(port);
@@ -147,6 +147,8 @@ World& world() {
 World& reset() {
   World& w = world();
   w.io.frames.clear();
+  w.pit.registers.clear();  // no channel held, nothing expired
+  w.pit.writes.clear();
   return w;
 }
 

@@ -31,6 +31,7 @@ struct World {
   stepdance::sim::image::testing::FakeClockBlock analog{"CCM_ANALOG", 0x400D8000u};
   stepdance::sim::image::testing::FakeClockBlock iomuxc{"IOMUXC", 0x401F8000u};
   stepdance::sim::image::testing::FakeClockBlock gpr{"IOMUXC_GPR", 0x400AC000u};
+  stepdance::sim::image::testing::FakePit pit;
   stepdance::sim::image::testing::FakeClockBlock gpio[4] = {{"GPIO6", 0x42000000u},
                                                             {"GPIO7", 0x42004000u},
                                                             {"GPIO8", 0x42008000u},
