@@ -290,6 +290,44 @@ int exit_status(const sim::SimulationReport& report) {
   return report.all_expectations_met() ? kExitOk : kExitExpectationFailed;
 }
 
+/// A [[host]] client cannot run with --live (there the host is the program on the terminal).
+bool hosts_allowed(const SimCommandOptions& options, const sim::scenario::Scenario& scenario) {
+  if (!options.live || scenario.hosts.empty()) return true;
+  std::cerr << scenario.file << ":" << scenario.hosts.front().line
+            << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";
+  return false;
+}
+
+/// The live run, until interrupted, with the live view when asked (it ends with the run).
+LiveTiming run_live_with_view(sim::Simulation& simulation, const SimCommandOptions& options,
+                              const sim::scenario::Scenario& scenario, LiveOptions& live, uint16_t view_port) {
+  std::vector<std::string> boards;
+  for (const auto& board : scenario.boards) boards.push_back(board.name);
+  std::unique_ptr<LiveView> view;
+  if (options.view) {
+    if (!options.make_view) throw std::runtime_error("--view: this build has no live view");
+    view = options.make_view(simulation, view_port);
+    live.view = view.get();
+  }
+  return run_live(simulation, boards, live);
+}
+
+/// Runs (live or at once) to the end, then writes the replay page and the result JSON when asked.
+/// Throws std::exception when the run or a file fails.
+sim::SimulationReport run_to_end(sim::Simulation& simulation, const SimCommandOptions& options,
+                                 const sim::scenario::Scenario& scenario, LiveOptions& live, uint16_t view_port,
+                                 LiveTiming& live_timing) {
+  std::unique_ptr<sim::view::ReplayRecorder> replay = make_replay(simulation, options.live, live);
+  if (options.live) live_timing = run_live_with_view(simulation, options, scenario, live, view_port);
+  sim::SimulationReport report = simulation.finish();
+  if (replay) {
+    sim::write_text_file(simulation.html_path(), replay_page_html(replay->recording()));
+    report.files.push_back(simulation.html_path());
+  }
+  if (!options.result_json.empty()) write_result_json(options.result_json, sim::run_result_json(simulation, report));
+  return report;
+}
+
 }  // namespace
 
 CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
@@ -364,12 +402,7 @@ int run_sim_command(const SimCommandOptions& options) {
     std::cerr << loaded.error_text();
     return kExitBadInput;
   }
-  if (!serial_links_name_boards(live, loaded.scenario)) return kExitBadInput;
-  if (options.live && !loaded.scenario.hosts.empty()) {
-    std::cerr << loaded.scenario.file << ":" << loaded.scenario.hosts.front().line
-              << ": a [[host]] client cannot run with --live: there the host is the program on the terminal\n";
-    return kExitBadInput;
-  }
+  if (!serial_links_name_boards(live, loaded.scenario) || !hosts_allowed(options, loaded.scenario)) return kExitBadInput;
   ProgressBar progress(!options.quiet && !options.live);
   ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;
@@ -384,24 +417,7 @@ int run_sim_command(const SimCommandOptions& options) {
   Containment containment(numbers.watchdog_s.value_or(kDefaultWatchdogS));
   LiveTiming live_timing;
   try {
-    std::unique_ptr<sim::view::ReplayRecorder> replay = make_replay(*simulation, options.live, live);
-    if (options.live) {
-      std::vector<std::string> boards;
-      for (const auto& board : loaded.scenario.boards) boards.push_back(board.name);
-      std::unique_ptr<LiveView> view;
-      if (options.view) {
-        if (!options.make_view) throw std::runtime_error("--view: this build has no live view");
-        view = options.make_view(*simulation, view_port);
-        live.view = view.get();
-      }
-      live_timing = run_live(*simulation, boards, live);
-    }
-    report = simulation->finish();
-    if (replay) {
-      sim::write_text_file(simulation->html_path(), replay_page_html(replay->recording()));
-      report.files.push_back(simulation->html_path());
-    }
-    if (!options.result_json.empty()) write_result_json(options.result_json, sim::run_result_json(*simulation, report));
+    report = run_to_end(*simulation, options, loaded.scenario, live, view_port, live_timing);
   } catch (const std::exception& failure) {
     progress.clear();
     std::cerr << failure.what() << "\n";

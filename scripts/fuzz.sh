@@ -21,11 +21,11 @@ declare -A target_sources=(
   [grbl]="$gcode_link_sources"
   [ebb]="core"
   [rpc]="core"
-  [scenario]="sim/scenario sim/kinds sim/kinds/devices sim/kinds/machines sim/models servo/pulse/servo_pulse.c"
+  [scenario]="sim/scenario sim/kinds sim/kinds/devices sim/kinds/machines sim/kinds/expectations sim/models servo/pulse/servo_pulse.c"
   [vcd]="cli/decode/vcd_reader.cpp cli/decode/vcd_tokenizer.cpp cli/decode/step_dir_pairs.cpp cli/decode/capture_decoder.cpp src/stepdance/protocol/pulse_decoder.cpp"
 )
-# Extra compiler flags: the scenario reader sees sim/ (it also links the device and machine kinds,
-# whose rows hold their models' factories), the capture reader sim/ and cli/; toml++ is compiled in from its header
+# Extra compiler flags: the scenario reader sees sim/ (it also links the device, machine and
+# expectation kinds, whose rows hold their models' factories and their checks), the capture reader sim/ and cli/; toml++ is compiled in from its header
 # (Debian's libtomlplusplus-dev) so the fuzzer also instruments the TOML parser.
 declare -A target_flags=(
   [scenario]="-Isim -Iservo/pulse -DTOML_HEADER_ONLY=1"

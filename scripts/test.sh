@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Sets up the machine, then builds and runs the whole test suite: the core's portability check,
+# the function-length limits (60 lines in src/, sim/ and cli/; 40 in sim/scenario/),
 # the Cortex-M7 builds (core, Teensy backend, every example sketch, firmware image, Arduino zip),
 # the core's unit tests on a Cortex-M7 under QEMU, the host tests (CTest: unit, example sketches,
 # simulator, servo firmware under simavr), the host tests again under AddressSanitizer + UBSan,
@@ -15,6 +16,8 @@ stage scripts/setup.sh --web
 stage scripts/setup-npm-clients.sh
 stage scripts/check-core-portability.sh
 stage scripts/check-interfaces-structure.sh
+stage scripts/check-function-length.sh 60 src sim cli
+stage scripts/check-function-length.sh 40 sim/scenario
 stage scripts/build-target.sh
 stage scripts/build-teensy.sh
 stage scripts/test-target-qemu.sh

@@ -4,20 +4,12 @@
 #include <string>
 #include <vector>
 
+#include "kinds/expectation_kind.hpp"
 #include "scenario/scenario.hpp"
 
 namespace stepdance::sim {
 
 class Simulation;
-
-/// The outcome of one [[expect]] entry.
-struct ExpectationResult {
-  bool met = false;
-  /// `file:line: what was expected, and what happened` (also when met, for a report).
-  std::string message;
-  /// False when the run was stopped before its end and nothing was compared (never met then).
-  bool checked = true;
-};
 
 /// Checks every expectation of `scenario` against the state of `simulation` at its end.
 std::vector<ExpectationResult> evaluate_expectations(const scenario::Scenario& scenario, const Simulation& simulation);

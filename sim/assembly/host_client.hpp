@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "board/host/sim_board.hpp"
+#include "kinds/finished_run.hpp"
 #include "scenario/line_pattern.hpp"
 #include "scenario/scenario.hpp"
 #include "kernel/scheduler/periodic_timer.hpp"
@@ -33,12 +34,8 @@ namespace stepdance::sim {
 /// its time, in the transcript.
 class HostClient {
  public:
-  struct Entry {
-    SimTime time = 0;
-    bool from_host = true;  ///< true: the host sent it; false: the board printed it
-    std::string text;       ///< without its line ending; control bytes escaped as \xNN
-    bool cut = false;       ///< the line went on past 1,000 bytes: the next entry continues it
-  };
+  /// One line of the transcript (kinds/finished_run.hpp: the [[expect]] checks read it too).
+  using Entry = HostLine;
 
   /// The transcript keeps the first kTranscriptEntries lines (later ones are counted, and the
   /// file says how many); at most kUnreadLines received lines wait for a step (the oldest go

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -62,6 +63,44 @@ std::string missing_scenario_message(const std::string& path, bool folder) {
   return message;
 }
 
+/// The TOML tree of `text`, or nothing with the error reported.
+std::optional<toml::table> parse_toml(std::string_view text, const std::string& file, Reporter& reporter) {
+  // toml++ 3.3 asserts or reaches an unreachable point on some text TOML only calls an error;
+  // that text is refused first (toml_guard.hpp lists it).
+  if (const UnsafeToml unsafe = find_unsafe_toml(text); unsafe.line > 0) {
+    reporter.error(unsafe.line, unsafe.message);
+    return std::nullopt;
+  }
+  try {
+    return toml::parse(text, file);
+  } catch (const toml::parse_error& error) {
+    reporter.error(static_cast<int>(error.source().begin.line), std::string(error.description()));
+    return std::nullopt;
+  }
+}
+
+/// `file` made absolute (as given when that fails), normalized.
+std::filesystem::path absolute_path(const std::string& file) {
+  std::error_code error;
+  std::filesystem::path absolute = std::filesystem::absolute(std::filesystem::path(file), error);
+  if (error) absolute = std::filesystem::path(file);
+  return absolute.lexically_normal();
+}
+
+/// Every section, in the order the readers need (later ones refer to earlier ones).
+void read_sections(TableReader& top, ParseContext& context) {
+  read_top_level(top, context);
+  read_boards(top, context);
+  read_machine(top, context);
+  read_devices(top, context);
+  read_cables(top, context);
+  read_timeline(top, context);
+  read_output(top, context);
+  read_hosts(top, context);
+  read_expectations(top, context);
+  top.finish();
+}
+
 }  // namespace
 
 std::string LoadResult::error_text() const {
@@ -90,43 +129,18 @@ LoadResult load_scenario(const std::string& path) {
 LoadResult parse_scenario(std::string_view text, const std::string& file) {
   LoadResult result;
   Reporter reporter(file);
-  // toml++ 3.3 asserts or reaches an unreachable point on some text TOML only calls an error;
-  // that text is refused first (toml_guard.hpp lists it).
-  if (const UnsafeToml unsafe = find_unsafe_toml(text); unsafe.line > 0) {
-    reporter.error(unsafe.line, unsafe.message);
+  std::optional<toml::table> root = parse_toml(text, file, reporter);
+  if (!root) {
     result.errors = reporter.sorted();
     return result;
   }
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& error) {
-    reporter.error(static_cast<int>(error.source().begin.line), std::string(error.description()));
-    result.errors = reporter.sorted();
-    return result;
-  }
-
   Scenario& scenario = result.scenario;
-  std::error_code error;
-  std::filesystem::path absolute = std::filesystem::absolute(std::filesystem::path(file), error);
-  if (error) absolute = std::filesystem::path(file);
-  absolute = absolute.lexically_normal();
+  const std::filesystem::path absolute = absolute_path(file);
   scenario.file = absolute.string();
   scenario.directory = absolute.parent_path().string();
   ParseContext context{reporter, absolute.parent_path(), scenario, false, {}};
-
-  TableReader top(root, "the scenario", reporter);
-  read_top_level(top, context);
-  read_boards(top, context);
-  read_machine(top, context);
-  read_devices(top, context);
-  read_cables(top, context);
-  read_timeline(top, context);
-  read_output(top, context);
-  read_hosts(top, context);
-  read_expectations(top, context);
-  top.finish();
-
+  TableReader top(*root, "the scenario", reporter);
+  read_sections(top, context);
   std::stable_sort(scenario.timeline.begin(), scenario.timeline.end(),
                    [](const Action& a, const Action& b) { return a.time < b.time; });
   result.errors = reporter.sorted();

@@ -15,6 +15,56 @@ constexpr int kFramePeriodUs = 40;
 
 bool valid_microsteps(int64_t value) { return value >= 1 && value <= 64 && (value & (value - 1)) == 0; }
 
+/// A stepper socket's keys: microsteps, full_steps_per_rev, reversed (and no servo 'build').
+bool read_stepper_socket(TableReader& reader, SocketConfig& socket) {
+  socket.device = SocketDevice::kStepper;
+  bool ok = true;
+  if (const auto microsteps = reader.integer("microsteps")) {
+    if (valid_microsteps(*microsteps)) {
+      socket.microsteps = static_cast<int>(*microsteps);
+    } else {
+      reader.error("microsteps", "'microsteps' must be 1, 2, 4, 8, 16, 32 or 64, got " + std::to_string(*microsteps));
+      ok = false;
+    }
+  }
+  if (reader.has("full_steps_per_rev")) {
+    const auto full_steps = reader.integer("full_steps_per_rev", IntegerRange{1, 100000, "full steps"});
+    if (full_steps) socket.full_steps_per_rev = static_cast<int>(*full_steps);
+    ok = ok && full_steps.has_value();
+  }
+  if (const auto reversed = reader.boolean("reversed")) socket.reversed = *reversed;
+  if (reader.has("build")) {
+    reader.accept("build");
+    reader.error("build", "'build' does not apply to a stepper");
+    ok = false;
+  }
+  return ok;
+}
+
+/// A servo socket's keys: build (and none of a stepper's).
+bool read_servo_socket(TableReader& reader, SocketConfig& socket) {
+  socket.device = SocketDevice::kServo;
+  bool ok = true;
+  if (const auto build = reader.string("build")) {
+    if (*build == "90deg") {
+      socket.build = ServoBuild::k90deg;
+    } else if (*build == "180deg") {
+      socket.build = ServoBuild::k180deg;
+    } else {
+      reader.error("build", "'build' must be \"90deg\" or \"180deg\", got \"" + *build + "\"");
+      ok = false;
+    }
+  }
+  for (const char* key : {"microsteps", "full_steps_per_rev", "reversed"}) {
+    if (reader.has(key)) {
+      reader.accept(key);
+      reader.error(key, "'" + std::string(key) + "' does not apply to a servo");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 std::optional<SocketConfig> read_socket(char port, const toml::node& value, Reporter& reporter) {
   const toml::table* table = value.as_table();
   if (table == nullptr) {
@@ -32,46 +82,9 @@ std::optional<SocketConfig> read_socket(char port, const toml::node& value, Repo
   if (!device) {
     ok = false;
   } else if (*device == "stepper") {
-    socket.device = SocketDevice::kStepper;
-    if (const auto microsteps = reader.integer("microsteps")) {
-      if (valid_microsteps(*microsteps)) {
-        socket.microsteps = static_cast<int>(*microsteps);
-      } else {
-        reader.error("microsteps",
-                     "'microsteps' must be 1, 2, 4, 8, 16, 32 or 64, got " + std::to_string(*microsteps));
-        ok = false;
-      }
-    }
-    if (reader.has("full_steps_per_rev")) {
-      const auto full_steps = reader.integer("full_steps_per_rev", IntegerRange{1, 100000, "full steps"});
-      if (full_steps) socket.full_steps_per_rev = static_cast<int>(*full_steps);
-      ok = ok && full_steps.has_value();
-    }
-    if (const auto reversed = reader.boolean("reversed")) socket.reversed = *reversed;
-    if (reader.has("build")) {
-      reader.accept("build");
-      reader.error("build", "'build' does not apply to a stepper");
-      ok = false;
-    }
+    ok = read_stepper_socket(reader, socket);
   } else if (*device == "servo") {
-    socket.device = SocketDevice::kServo;
-    if (const auto build = reader.string("build")) {
-      if (*build == "90deg") {
-        socket.build = ServoBuild::k90deg;
-      } else if (*build == "180deg") {
-        socket.build = ServoBuild::k180deg;
-      } else {
-        reader.error("build", "'build' must be \"90deg\" or \"180deg\", got \"" + *build + "\"");
-        ok = false;
-      }
-    }
-    for (const char* key : {"microsteps", "full_steps_per_rev", "reversed"}) {
-      if (reader.has(key)) {
-        reader.accept(key);
-        reader.error(key, "'" + std::string(key) + "' does not apply to a servo");
-        ok = false;
-      }
-    }
+    ok = read_servo_socket(reader, socket);
   } else {
     reader.error("device", "'device' must be \"stepper\" or \"servo\", got \"" + *device + "\"");
     ok = false;

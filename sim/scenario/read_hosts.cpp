@@ -84,10 +84,8 @@ bool read_stream_options(TableReader& reader, HostStep& step) {
   return ok;
 }
 
-std::optional<HostStep> read_step(const toml::table& table, const ParseContext& context) {
-  TableReader reader(table, "[[host.step]]", context.reporter);
-  HostStep step;
-  step.line = reader.line();
+/// The one step kind the table has, or null (reported) for none or two.
+const char* choose_step_kind(TableReader& reader) {
   const char* kind = nullptr;
   for (const char* candidate : kKinds) {
     if (!reader.has(candidate)) continue;
@@ -95,115 +93,160 @@ std::optional<HostStep> read_step(const toml::table& table, const ParseContext& 
       reader.accept(kind);
       reader.accept(candidate);
       reader.error(candidate, std::string("a step does one thing, but has both '") + kind + "' and '" + candidate + "'");
-      reader.finish();
-      return std::nullopt;
+      return nullptr;
     }
     kind = candidate;
   }
   if (kind == nullptr) {
     reader.reporter().error(reader.line(), "a [[host.step]] needs one of send, stream, stream_file, wait or pause_s");
-    reader.finish();
-    return std::nullopt;
   }
-  const std::string chosen(kind);
-  const bool streams = chosen == "stream" || chosen == "stream_file";
+  return kind;
+}
+
+bool is_stream(const std::string& kind) { return kind == "stream" || kind == "stream_file"; }
+
+/// Reports the keys of kStepKeys that the step's kind does not take; false if there was one.
+bool refuse_other_step_keys(TableReader& reader, const std::string& kind) {
   bool ok = true;
   for (const auto& [key, owner] : kStepKeys) {
     const std::string_view name(key);
     const bool for_wait = name == "timeout_s" || name == "poll" || name == "poll_every_s";
-    const bool belongs = streams || (chosen == "wait" && for_wait);
+    const bool belongs = is_stream(kind) || (kind == "wait" && for_wait);
     if (!belongs && reader.has(key)) {
       reader.accept(key);
       reader.error(key, "'" + std::string(key) + "' only goes with " + owner);
       ok = false;
     }
   }
-  if (chosen == "send") {
+  return ok;
+}
+
+/// stream = "text" or stream_file = "path" (its text), then the stream's options.
+bool read_stream_step(TableReader& reader, const std::string& kind, const ParseContext& context, HostStep& step) {
+  step.kind = HostStep::Kind::kStream;
+  bool ok = true;
+  if (kind == "stream") {
+    const auto text = reader.string("stream");
+    ok = text.has_value();
+    if (text) step.bytes = *text;
+  } else {
+    ok = read_file_text(reader, "stream_file", context, step.bytes);
+    if (ok) step.file = context.resolve(*reader.string("stream_file"));
+  }
+  return read_stream_options(reader, step) && ok;
+}
+
+/// The key that names the step: what it sends, streams, waits for, or how long it pauses.
+bool read_step_action(TableReader& reader, const std::string& kind, const ParseContext& context, HostStep& step) {
+  if (kind == "send") {
     step.kind = HostStep::Kind::kSend;
     const auto text = reader.string("send");
-    ok = text.has_value() && ok;
     if (text) step.bytes = *text;
-  } else if (streams) {
-    step.kind = HostStep::Kind::kStream;
-    if (chosen == "stream") {
-      const auto text = reader.string("stream");
-      ok = text.has_value() && ok;
-      if (text) step.bytes = *text;
-    } else {
-      const bool read = read_file_text(reader, "stream_file", context, step.bytes);
-      if (read) step.file = context.resolve(*reader.string("stream_file"));
-      ok = read && ok;
-    }
-    ok = read_stream_options(reader, step) && ok;
-  } else if (chosen == "wait") {
+    return text.has_value();
+  }
+  if (is_stream(kind)) return read_stream_step(reader, kind, context, step);
+  if (kind == "wait") {
     step.kind = HostStep::Kind::kWait;
-    ok = read_pattern(reader, "wait", step.pattern) && ok;
-  } else {
-    step.kind = HostStep::Kind::kPause;
-    const auto pause = read_seconds(reader, "pause_s", true);
-    ok = pause.has_value() && ok;
-    if (pause) step.pause = *pause;
+    return read_pattern(reader, "wait", step.pattern);
   }
-  if (streams || chosen == "wait") {
-    if (const auto poll = reader.string("poll")) step.poll = *poll;
-    if (reader.has("poll_every_s")) {
-      const auto every = read_seconds(reader, "poll_every_s", true, kMinPollSeconds);
-      ok = every.has_value() && ok;
-      if (every) step.poll_interval = *every;
-    }
+  step.kind = HostStep::Kind::kPause;
+  const auto pause = read_seconds(reader, "pause_s", true);
+  if (pause) step.pause = *pause;
+  return pause.has_value();
+}
+
+/// poll, poll_every_s and timeout_s of a stream or wait step.
+bool read_poll_and_timeout(TableReader& reader, HostStep& step) {
+  bool ok = true;
+  if (const auto poll = reader.string("poll")) step.poll = *poll;
+  if (reader.has("poll_every_s")) {
+    const auto every = read_seconds(reader, "poll_every_s", true, kMinPollSeconds);
+    ok = every.has_value() && ok;
+    if (every) step.poll_interval = *every;
   }
-  if ((streams || chosen == "wait") && reader.has("timeout_s")) {
+  if (reader.has("timeout_s")) {
     const auto timeout = read_seconds(reader, "timeout_s", false);
     ok = timeout.has_value() && ok;
     if (timeout) step.timeout = *timeout;
   }
+  return ok;
+}
+
+std::optional<HostStep> read_step(const toml::table& table, const ParseContext& context) {
+  TableReader reader(table, "[[host.step]]", context.reporter);
+  HostStep step;
+  step.line = reader.line();
+  const char* chosen = choose_step_kind(reader);
+  if (chosen == nullptr) {
+    reader.finish();
+    return std::nullopt;
+  }
+  const std::string kind(chosen);
+  bool ok = refuse_other_step_keys(reader, kind);
+  ok = read_step_action(reader, kind, context, step) && ok;
+  if (is_stream(kind) || kind == "wait") ok = read_poll_and_timeout(reader, step) && ok;
   reader.finish();
   if (!ok) return std::nullopt;
   return step;
+}
+
+/// board: an existing board with no other [[host]].
+bool read_host_board(TableReader& reader, const ParseContext& context, HostClientConfig& host) {
+  const auto board = reader.string("board", Need::kRequired);
+  if (!board) return false;
+  host.board = *board;
+  bool ok = true;
+  if (context.scenario.board(*board) == nullptr) {
+    reader.error("board", "unknown board '" + *board + "'");
+    ok = false;
+  }
+  for (const HostClientConfig& other : context.scenario.hosts) {
+    if (other.board == *board) {
+      reader.error("board", "board '" + *board + "' already has a [[host]] (line " + std::to_string(other.line) + ")");
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+/// start_s: within the run.
+bool read_host_start(TableReader& reader, const ParseContext& context, HostClientConfig& host) {
+  if (!reader.has("start_s")) return true;
+  const auto start = read_seconds(reader, "start_s", true);
+  if (!start) return false;
+  host.start = *start;
+  if (context.duration_valid && *start > context.scenario.duration) {
+    reader.error("start_s", "'start_s' is after the end of the run (duration_s = " +
+                                format_number(to_seconds(context.scenario.duration)) + ")");
+    return false;
+  }
+  return true;
+}
+
+/// transcript: a file name inside the output folder.
+bool read_transcript(TableReader& reader, const ParseContext& context, HostClientConfig& host) {
+  const auto transcript = reader.string("transcript");
+  if (!transcript) return true;
+  if (transcript->empty()) {
+    reader.error("transcript", "'transcript' must name a file");
+    return false;
+  }
+  if (const std::string problem = inside_path_problem(*transcript); !problem.empty()) {
+    reader.error("transcript", "'transcript' (\"" + *transcript + "\") " + problem);
+    return false;
+  }
+  host.transcript = (std::filesystem::path(context.scenario.output.directory) / *transcript).lexically_normal().string();
+  host.transcript_line = reader.line_of("transcript");
+  return true;
 }
 
 void read_host(const toml::table& table, ParseContext& context) {
   TableReader reader(table, "[[host]]", context.reporter);
   HostClientConfig host;
   host.line = reader.line();
-  bool ok = true;
-  if (const auto board = reader.string("board", Need::kRequired)) {
-    host.board = *board;
-    if (context.scenario.board(*board) == nullptr) {
-      reader.error("board", "unknown board '" + *board + "'");
-      ok = false;
-    }
-    for (const HostClientConfig& other : context.scenario.hosts) {
-      if (other.board == *board) {
-        reader.error("board", "board '" + *board + "' already has a [[host]] (line " + std::to_string(other.line) + ")");
-        ok = false;
-      }
-    }
-  } else {
-    ok = false;
-  }
-  if (reader.has("start_s")) {
-    const auto start = read_seconds(reader, "start_s", true);
-    ok = start.has_value() && ok;
-    if (start) host.start = *start;
-    if (start && context.duration_valid && *start > context.scenario.duration) {
-      reader.error("start_s", "'start_s' is after the end of the run (duration_s = " +
-                                  format_number(to_seconds(context.scenario.duration)) + ")");
-      ok = false;
-    }
-  }
-  if (const auto transcript = reader.string("transcript")) {
-    if (transcript->empty()) {
-      reader.error("transcript", "'transcript' must name a file");
-      ok = false;
-    } else if (const std::string problem = inside_path_problem(*transcript); !problem.empty()) {
-      reader.error("transcript", "'transcript' (\"" + *transcript + "\") " + problem);
-      ok = false;
-    } else {
-      host.transcript = (std::filesystem::path(context.scenario.output.directory) / *transcript).lexically_normal().string();
-      host.transcript_line = reader.line_of("transcript");
-    }
-  }
+  bool ok = read_host_board(reader, context, host);
+  ok = read_host_start(reader, context, host) && ok;
+  ok = read_transcript(reader, context, host) && ok;
   for_each_table(reader, "step", [&](const toml::table& step_table) {
     if (auto step = read_step(step_table, context)) {
       host.steps.push_back(std::move(*step));

@@ -36,10 +36,8 @@ void read_vcd_ports(TableReader& reader, const std::string& vcd, OutputConfig& o
   }
 }
 
-}  // namespace
-
-void read_output(TableReader& top, ParseContext& context) {
-  OutputConfig& output = context.scenario.output;
+/// The names [output] gives: its folder, and each file in it ("" = not written).
+struct OutputNames {
   std::string directory = "sim-out";
   std::string svg = "drawing.svg";
   std::string png = "drawing.png";
@@ -47,45 +45,61 @@ void read_output(TableReader& top, ParseContext& context) {
   std::string csv;
   std::string html;
   std::string summary = "summary.json";
-  if (const toml::table* table = top.table("output")) {
-    TableReader reader(*table, "[output]", context.reporter);
-    if (const auto value = reader.string("directory")) {
-      if (value->empty()) {
-        reader.error("directory", "'directory' must not be empty (use \".\" for the scenario's folder)");
-      } else {
-        directory = *value;
-      }
+};
+
+/// directory, and each file key: a path inside the output folder (its line kept in output.lines).
+void read_file_names(TableReader& reader, OutputNames& names, OutputConfig& output) {
+  if (const auto value = reader.string("directory")) {
+    if (value->empty()) {
+      reader.error("directory", "'directory' must not be empty (use \".\" for the scenario's folder)");
+    } else {
+      names.directory = *value;
     }
-    for (const auto& [key, target] : {std::pair<const char*, std::string*>{"svg", &svg},
-                                {"png", &png},
-                                {"vcd", &vcd},
-                                {"csv", &csv},
-                                {"html", &html},
-                                {"summary", &summary}}) {
-      const auto value = reader.string(key);
-      if (!value) continue;
-      if (const std::string problem = inside_path_problem(*value); !value->empty() && !problem.empty()) {
-        reader.error(key, "'" + std::string(key) + "' (\"" + *value + "\") " + problem);
-        continue;
-      }
-      *target = *value;
-      output.lines[key] = reader.line_of(key);
-    }
-    if (const auto px = reader.number("png_px_per_mm", NumberRange{0, 100, true, "px/mm"})) output.png_px_per_mm = *px;
-    if (const auto travel = reader.boolean("pen_up_travel")) output.pen_up_travel = *travel;
-    if (const auto interval = reader.number("csv_interval_ms", ranges::kCsvIntervalMs)) {
-      output.csv_interval_ms = *interval;
-    }
-    read_vcd_ports(reader, vcd, output, context);
-    reader.finish();
   }
-  output.directory = context.resolve(directory);
-  output.svg = output_file(output.directory, svg);
-  output.png = output_file(output.directory, png);
-  output.vcd = output_file(output.directory, vcd);
-  output.csv = output_file(output.directory, csv);
-  output.html = output_file(output.directory, html);
-  output.summary = output_file(output.directory, summary);
+  for (const auto& [key, target] : {std::pair<const char*, std::string*>{"svg", &names.svg},
+                              {"png", &names.png},
+                              {"vcd", &names.vcd},
+                              {"csv", &names.csv},
+                              {"html", &names.html},
+                              {"summary", &names.summary}}) {
+    const auto value = reader.string(key);
+    if (!value) continue;
+    if (const std::string problem = inside_path_problem(*value); !value->empty() && !problem.empty()) {
+      reader.error(key, "'" + std::string(key) + "' (\"" + *value + "\") " + problem);
+      continue;
+    }
+    *target = *value;
+    output.lines[key] = reader.line_of(key);
+  }
+}
+
+/// The [output] table: the names, the drawing and CSV settings, and the VCD's ports.
+void read_output_table(const toml::table& table, OutputNames& names, ParseContext& context) {
+  OutputConfig& output = context.scenario.output;
+  TableReader reader(table, "[output]", context.reporter);
+  read_file_names(reader, names, output);
+  if (const auto px = reader.number("png_px_per_mm", NumberRange{0, 100, true, "px/mm"})) output.png_px_per_mm = *px;
+  if (const auto travel = reader.boolean("pen_up_travel")) output.pen_up_travel = *travel;
+  if (const auto interval = reader.number("csv_interval_ms", ranges::kCsvIntervalMs)) {
+    output.csv_interval_ms = *interval;
+  }
+  read_vcd_ports(reader, names.vcd, output, context);
+  reader.finish();
+}
+
+}  // namespace
+
+void read_output(TableReader& top, ParseContext& context) {
+  OutputConfig& output = context.scenario.output;
+  OutputNames names;
+  if (const toml::table* table = top.table("output")) read_output_table(*table, names, context);
+  output.directory = context.resolve(names.directory);
+  output.svg = output_file(output.directory, names.svg);
+  output.png = output_file(output.directory, names.png);
+  output.vcd = output_file(output.directory, names.vcd);
+  output.csv = output_file(output.directory, names.csv);
+  output.html = output_file(output.directory, names.html);
+  output.summary = output_file(output.directory, names.summary);
 }
 
 }  // namespace stepdance::sim::scenario

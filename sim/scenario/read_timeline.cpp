@@ -73,72 +73,90 @@ bool read_target(TableReader& reader, Action& action, const ParseContext& contex
   return true;
 }
 
-bool read_details(TableReader& reader, Action& action, ParseContext& context) {
+/// Reports the keys of kActionKeys that go with another action; false if there was one.
+bool refuse_other_action_keys(TableReader& reader, ActionType type) {
   bool ok = true;
   for (const auto& [key, owner] : kActionKeys) {
-    if (owner != action.type && reader.has(key)) {
+    if (owner != type && reader.has(key)) {
       reader.accept(key);
-      reader.error(key, "'" + std::string(key) + "' does not go with '" + action_name(action.type) + "'");
+      reader.error(key, "'" + std::string(key) + "' does not go with '" + action_name(type) + "'");
       ok = false;
     }
   }
+  return ok;
+}
+
+/// turn: counts (required) over over_s, ending within the run.
+bool read_turn(TableReader& reader, Action& action, const ParseContext& context) {
+  const auto counts = reader.integer("counts", ranges::kEncoderCounts, Need::kRequired);
+  bool ok = counts.has_value();
+  if (counts) action.counts = *counts;
+  if (reader.has("over_s")) {
+    const auto over = reader.number("over_s", ranges::kTimeS);
+    if (over) action.over = to_time(*over);
+    ok = ok && over.has_value();
+  }
+  check_end(reader, context, reader.has("over_s") ? "over_s" : "time_s", action.time + action.over, "the turn ends");
+  return ok;
+}
+
+/// click: held for hold_ms, released within the run.
+bool read_click(TableReader& reader, Action& action, const ParseContext& context) {
+  bool ok = true;
+  if (reader.has("hold_ms")) {
+    const auto hold = reader.number("hold_ms", ranges::kTimeMs);
+    if (hold) action.hold = to_time(*hold / 1000);
+    ok = hold.has_value();
+  }
+  check_end(reader, context, reader.has("hold_ms") ? "hold_ms" : "time_s", action.time + action.hold,
+            "the click releases");
+  return ok;
+}
+
+/// serial file = "path": its bytes (reported when it cannot be read).
+bool read_serial_file(TableReader& reader, Action& action, const ParseContext& context, const std::string& file) {
+  action.serial_file = context.resolve(file);
+  std::error_code error;
+  std::ifstream in;
+  if (std::filesystem::is_regular_file(action.serial_file, error)) in.open(action.serial_file, std::ios::binary);
+  if (!in.is_open()) {
+    reader.error("file", "serial file not found: " + action.serial_file);
+    return false;
+  }
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  action.serial_bytes = bytes.str();
+  return true;
+}
+
+/// serial: text = "…" or file = "path", one of them.
+bool read_serial(TableReader& reader, Action& action, const ParseContext& context) {
+  const auto text = reader.string("text");
+  const auto file = reader.string("file");
+  if (text && file) {
+    reader.error("file", "'serial' takes 'text' or 'file', not both");
+    return false;
+  }
+  if (text) {
+    action.serial_bytes = *text;
+    return true;
+  }
+  if (file) return read_serial_file(reader, action, context, *file);
+  if (!reader.has("text") && !reader.has("file")) reader.reporter().error(reader.line(), "'serial' needs 'text' or 'file'");
+  return false;
+}
+
+bool read_details(TableReader& reader, Action& action, ParseContext& context) {
+  bool ok = refuse_other_action_keys(reader, action.type);
   switch (action.type) {
-    case ActionType::kTurn: {
-      const auto counts = reader.integer("counts", ranges::kEncoderCounts, Need::kRequired);
-      ok = ok && counts.has_value();
-      if (counts) action.counts = *counts;
-      if (reader.has("over_s")) {
-        const auto over = reader.number("over_s", ranges::kTimeS);
-        if (over) action.over = to_time(*over);
-        ok = ok && over.has_value();
-      }
-      check_end(reader, context, reader.has("over_s") ? "over_s" : "time_s", action.time + action.over, "the turn ends");
-      break;
-    }
-    case ActionType::kClick:
-      if (reader.has("hold_ms")) {
-        const auto hold = reader.number("hold_ms", ranges::kTimeMs);
-        if (hold) action.hold = to_time(*hold / 1000);
-        ok = ok && hold.has_value();
-      }
-      check_end(reader, context, reader.has("hold_ms") ? "hold_ms" : "time_s", action.time + action.hold,
-                "the click releases");
-      break;
+    case ActionType::kTurn: return read_turn(reader, action, context) && ok;
+    case ActionType::kClick: return read_click(reader, action, context) && ok;
     case ActionType::kSet: {
       const auto position = reader.number("position", NumberRange{0, 1, false, ""}, Need::kRequired);
       if (position) action.position = *position;
-      ok = ok && position.has_value();
-      break;
+      return position.has_value() && ok;
     }
-    case ActionType::kSerial: {
-      const auto text = reader.string("text");
-      const auto file = reader.string("file");
-      if (text && file) {
-        reader.error("file", "'serial' takes 'text' or 'file', not both");
-        ok = false;
-      } else if (text) {
-        action.serial_bytes = *text;
-      } else if (file) {
-        action.serial_file = context.resolve(*file);
-        std::error_code error;
-        std::ifstream in;
-        if (std::filesystem::is_regular_file(action.serial_file, error)) in.open(action.serial_file, std::ios::binary);
-        if (!in.is_open()) {
-          reader.error("file", "serial file not found: " + action.serial_file);
-          ok = false;
-        } else {
-          std::ostringstream bytes;
-          bytes << in.rdbuf();
-          action.serial_bytes = bytes.str();
-        }
-      } else if (!reader.has("text") && !reader.has("file")) {
-        reader.reporter().error(reader.line(), "'serial' needs 'text' or 'file'");
-        ok = false;
-      } else {
-        ok = false;
-      }
-      break;
-    }
+    case ActionType::kSerial: return read_serial(reader, action, context) && ok;
     case ActionType::kPress:
     case ActionType::kRelease:
       break;

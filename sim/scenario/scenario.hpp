@@ -15,6 +15,7 @@
 
 namespace stepdance::sim {
 struct DeviceKind;
+struct ExpectationKind;
 struct MachineKind;
 }  // namespace stepdance::sim
 
@@ -230,77 +231,19 @@ struct OutputConfig {
   std::map<std::string, int> lines;
 };
 
-/// Kinds of end-of-run checks.
-enum class ExpectationType {
-  kMotorSteps,
-  kPenPosition,
-  kStrokes,
-  kPortPulses,
-  kCableCountsMatch,
-  kRejected,
-  kHostReplies,    ///< lines a host client received (count, order, timing)
-  kHostCompleted,  ///< a host client ran all its steps without a timeout
-  kBounds,         ///< the bounding box of every pen-down stroke
-  kDrawnLength,    ///< the total pen-down path length
-  kZPosition,      ///< the machine's final z (mm)
-  kExtrusionRatio, ///< extruder advance per mm of pen-down (extruding) path
-  kTraces,         ///< the drawing copies a five-bar arm's stylus path
-  kScreenText,     ///< an OLED shows a line of text at the end
-  kI2cLoopTime,    ///< no loop pass of a board spent more than a bound in I2C transfers
-};
-
-/// One end-of-run check. Only the fields of its type are meaningful.
+/// One end-of-run check ([[expect]]): its line, its kind (kinds/expectation_kind.hpp: the key
+/// that names it, its reader and its check) and the kind's settings (its own struct, e.g.
+/// MotorStepsCheck in kinds/expectations/motor_steps.cpp).
 struct Expectation {
-  ExpectationType type = ExpectationType::kStrokes;
-  /// Motor steps: the stepper socket and its final position in microsteps.
-  PortRef motor;
-  int64_t steps = 0;
-  /// Pen position (mm) and tolerance.
-  double pen_x_mm = 0;
-  double pen_y_mm = 0;
-  double tolerance_mm = 0.01;
-  /// Pen-down strokes.
-  int64_t strokes = 0;
-  /// Bounding box of the pen-down strokes: x_min, y_min, x_max, y_max (mm); each edge within
-  /// tolerance_mm.
-  double bounds_mm[4] = {0, 0, 0, 0};
-  /// Pen-down path length (mm), within tolerance_mm.
-  double drawn_mm = 0;
-  /// Final z (mm), within tolerance_mm.
-  double z_mm = 0;
-  /// Extruder mm per mm of pen-down path, within relative_tolerance (0.01 = 1 %).
-  double extruded_per_mm = 0;
-  double relative_tolerance = 0.01;
-  /// Traces: the five-bar arm device, the shift from its coordinates to the page's, and the
-  /// first path point that must be drawn (0 = path_mm[0]); within tolerance_mm both ways.
-  std::string traces;
-  double offset_mm[2] = {0, 0};
-  int64_t from_point = 0;
-  /// Port pulses / rejections: the port; for pulses also the signal (0..5 = X, Y, R, T, Z, E)
-  /// and the expected forward and/or reverse counts.
-  PortLineRef port;
-  int signal = 0;
-  std::optional<int64_t> forward;
-  std::optional<int64_t> reverse;
-  /// Rejected pulses on an input port.
-  int64_t rejected = 0;
-  /// Host checks: the client's board; the regexes of received lines that must arrive in this
-  /// order (one regex: at least one such line, or exactly `count`); `within` bounds the time
-  /// from the first sent line matching `after` (or the client's start) to the first match.
-  std::string host;
-  std::vector<std::string> replies;
-  std::optional<int64_t> count;
-  std::optional<SimTime> within;
-  std::string after;
-  /// Screen text: the OLED device, the text a row must show (trailing blanks ignored), and the
-  /// row (0..3; −1 = any row).
-  std::string screen;
-  std::string shows;
-  int64_t screen_row = -1;
-  /// I2C loop time: the board and the most µs of I2C wire time any one loop pass may take.
-  std::string i2c_board;
-  double i2c_loop_pass_max_us = 0;
+  const ExpectationKind* kind = nullptr;
+  std::any settings;
   int line = 0;
+
+  /// The settings if they are a T (the check is of T's kind), else null.
+  template <typename T>
+  const T* settings_as() const {
+    return std::any_cast<T>(&settings);
+  }
 };
 
 /// A whole scenario.

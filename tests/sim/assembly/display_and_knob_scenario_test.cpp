@@ -2,6 +2,7 @@
 // it; the time any loop pass spends on I2C at 400 kHz; a missing display and a broken bus.
 #include <algorithm>
 
+#include "kinds/expectations/screen_text.hpp"
 #include "models/ssd1306_display.hpp"
 #include "simulation_fixture.hpp"
 
@@ -42,7 +43,7 @@ TEST(DisplayAndKnobScenario, MissingDisplayIsReportedAndTheDrawingIsUnaffected) 
                         without.devices.end());
   without.expectations.erase(
       std::remove_if(without.expectations.begin(), without.expectations.end(),
-                     [](const scenario::Expectation& e) { return e.type == scenario::ExpectationType::kScreenText; }),
+                     [](const scenario::Expectation& e) { return e.kind == &screen_text_expectation(); }),
       without.expectations.end());
   auto simulation = create(without, "display_and_knob_missing", false);
   ASSERT_NE(simulation, nullptr);

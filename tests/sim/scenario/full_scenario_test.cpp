@@ -7,6 +7,12 @@
 #include "kinds/devices/encoder.hpp"
 #include "kinds/devices/limit_switch.hpp"
 #include "kinds/devices/potentiometer.hpp"
+#include "kinds/expectations/cable_counts.hpp"
+#include "kinds/expectations/motor_steps.hpp"
+#include "kinds/expectations/pen_position.hpp"
+#include "kinds/expectations/port_pulses.hpp"
+#include "kinds/expectations/rejected.hpp"
+#include "kinds/expectations/strokes.hpp"
 #include "kinds/machines/cartesian.hpp"
 #include "kinds/machines/corexy_plotter.hpp"
 #include "kinds/machines/polar_turntable.hpp"
@@ -190,26 +196,34 @@ TEST(FullScenario, Expectations) {
   const Scenario s = load_ok(kFixtures + "/full");
   ASSERT_EQ(s.expectations.size(), 6u);
   const std::vector<Expectation>& e = s.expectations;
-  EXPECT_EQ(e[0].type, ExpectationType::kMotorSteps);
-  EXPECT_EQ(e[0].motor.board, "driver");
-  EXPECT_EQ(e[0].motor.port, 'A');
-  EXPECT_EQ(e[0].steps, 3200);
-  EXPECT_EQ(e[1].type, ExpectationType::kPenPosition);
-  EXPECT_EQ(e[1].pen_x_mm, 10);
-  EXPECT_EQ(e[1].pen_y_mm, 5.5);
-  EXPECT_EQ(e[1].tolerance_mm, 0.05);
-  EXPECT_EQ(e[2].type, ExpectationType::kStrokes);
-  EXPECT_EQ(e[2].strokes, 3);
-  EXPECT_EQ(e[3].type, ExpectationType::kPortPulses);
-  EXPECT_EQ(e[3].port.board, "basic");
-  EXPECT_TRUE(e[3].port.output);
-  EXPECT_EQ(e[3].signal, 0);
-  EXPECT_EQ(e[3].forward, 2400);
-  EXPECT_EQ(e[3].reverse, 0);
-  EXPECT_EQ(e[4].type, ExpectationType::kCableCountsMatch);
-  EXPECT_EQ(e[5].type, ExpectationType::kRejected);
-  EXPECT_EQ(e[5].rejected, 0);
-  EXPECT_FALSE(e[5].port.output);
+  EXPECT_EQ(e[0].kind, &motor_steps_expectation());
+  ASSERT_NE(e[0].settings_as<MotorStepsCheck>(), nullptr);
+  EXPECT_EQ(e[0].settings_as<MotorStepsCheck>()->motor.board, "driver");
+  EXPECT_EQ(e[0].settings_as<MotorStepsCheck>()->motor.port, 'A');
+  EXPECT_EQ(e[0].settings_as<MotorStepsCheck>()->steps, 3200);
+  EXPECT_EQ(e[1].kind, &pen_position_expectation());
+  const PenPositionCheck* pen = e[1].settings_as<PenPositionCheck>();
+  ASSERT_NE(pen, nullptr);
+  EXPECT_EQ(pen->x_mm, 10);
+  EXPECT_EQ(pen->y_mm, 5.5);
+  EXPECT_EQ(pen->tolerance_mm, 0.05);
+  EXPECT_EQ(e[2].kind, &strokes_expectation());
+  ASSERT_NE(e[2].settings_as<StrokesCheck>(), nullptr);
+  EXPECT_EQ(e[2].settings_as<StrokesCheck>()->strokes, 3);
+  EXPECT_EQ(e[3].kind, &port_pulses_expectation());
+  const PortPulsesCheck* port = e[3].settings_as<PortPulsesCheck>();
+  ASSERT_NE(port, nullptr);
+  EXPECT_EQ(port->port.board, "basic");
+  EXPECT_TRUE(port->port.output);
+  EXPECT_EQ(port->signal, 0);
+  EXPECT_EQ(port->forward, 2400);
+  EXPECT_EQ(port->reverse, 0);
+  EXPECT_EQ(e[4].kind, &cable_counts_expectation());
+  EXPECT_EQ(e[5].kind, &rejected_expectation());
+  const RejectedCheck* rejected = e[5].settings_as<RejectedCheck>();
+  ASSERT_NE(rejected, nullptr);
+  EXPECT_EQ(rejected->rejected, 0);
+  EXPECT_FALSE(rejected->port.output);
 }
 
 TEST(OtherMachines, CartesianWithDefaultsAndInlineSockets) {

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "kinds/devices/oled.hpp"
+#include "kinds/expectations/i2c_loop_time.hpp"
+#include "kinds/expectations/screen_text.hpp"
 #include "scenario/load_scenario.hpp"
 
 namespace stepdance::sim::scenario {
@@ -46,10 +48,12 @@ TEST(QwiicDevices, ScreenAndKnobShareQwiic1WithDefaultAddresses) {
   EXPECT_EQ(scenario.device("knob")->i2c_address, 0x3F);
   EXPECT_EQ(scenario.device("screen")->settings_as<OledConfig>()->snapshots_s, (std::vector<double>{1, 2.5}));
   ASSERT_EQ(scenario.expectations.size(), 2u);
-  EXPECT_EQ(scenario.expectations[0].type, ExpectationType::kScreenText);
-  EXPECT_EQ(scenario.expectations[0].screen_row, 2);
-  EXPECT_EQ(scenario.expectations[1].type, ExpectationType::kI2cLoopTime);
-  EXPECT_DOUBLE_EQ(scenario.expectations[1].i2c_loop_pass_max_us, 1000);
+  EXPECT_EQ(scenario.expectations[0].kind, &screen_text_expectation());
+  ASSERT_NE(scenario.expectations[0].settings_as<ScreenTextCheck>(), nullptr);
+  EXPECT_EQ(scenario.expectations[0].settings_as<ScreenTextCheck>()->row, 2);
+  EXPECT_EQ(scenario.expectations[1].kind, &i2c_loop_time_expectation());
+  ASSERT_NE(scenario.expectations[1].settings_as<I2cLoopTimeCheck>(), nullptr);
+  EXPECT_DOUBLE_EQ(scenario.expectations[1].settings_as<I2cLoopTimeCheck>()->max_us, 1000);
 }
 
 TEST(QwiicDevices, BadValuesAreReportedWhereTheyAre) {
