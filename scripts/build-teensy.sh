@@ -131,7 +131,7 @@ third_party_compile() {
 # ---- The IDE's sketch preparation, as a host tool -------------------------------------------------
 
 prep="$out/tools/stepdance-sketch-prep"
-prep_sources=(sim/board/loader/sketch_prep_main.cpp sim/board/loader/sketch_prototypes.cpp
+prep_sources=(tools/sketch/sketch_prep_main.cpp sim/board/loader/sketch_prototypes.cpp
   sim/board/loader/sketch_sources.cpp)
 prep_stale=0
 [ -x "$prep" ] || prep_stale=1

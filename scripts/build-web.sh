@@ -17,7 +17,7 @@ export NODE_PATH=${NODE_PATH:-/usr/share/nodejs}
 # The IDE's sketch preparation, as a host tool (as scripts/build-teensy.sh builds it).
 case $build_dir in /*) ;; *) build_dir="$PWD/$build_dir" ;; esac
 prep="$build_dir/tools/stepdance-sketch-prep"
-prep_sources=(sim/board/loader/sketch_prep_main.cpp sim/board/loader/sketch_prototypes.cpp
+prep_sources=(tools/sketch/sketch_prep_main.cpp sim/board/loader/sketch_prototypes.cpp
   sim/board/loader/sketch_sources.cpp)
 prep_stale=0
 [ -x "$prep" ] || prep_stale=1

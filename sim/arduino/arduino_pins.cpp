@@ -6,7 +6,7 @@
 #include "arduino_backend.hpp"
 #include "arduino_state.hpp"
 #include "stepdance/hal/hal.hpp"
-#include "stepdance/io/button.hpp"
+#include "stepdance/io/arduino_pin_mode.hpp"
 
 static_assert(INPUT == stepdance::arduino_pin_mode::kInput, "INPUT must match the core");
 static_assert(INPUT_PULLUP == stepdance::arduino_pin_mode::kInputPullup, "INPUT_PULLUP must match");

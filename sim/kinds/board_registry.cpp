@@ -41,11 +41,11 @@ std::string board_names() {
   return text;
 }
 
-ScopedBoard::ScopedBoard(const BoardDefinition& board) : board_(board) { registry().push_back(&board); }
+void BoardRegistry::add(const BoardDefinition& board) { registry().push_back(&board); }
 
-ScopedBoard::~ScopedBoard() {
+void BoardRegistry::remove(const BoardDefinition& board) {
   std::vector<const BoardDefinition*>& all = registry();
-  all.erase(std::remove(all.begin(), all.end(), &board_), all.end());
+  all.erase(std::remove(all.begin(), all.end(), &board), all.end());
 }
 
 }  // namespace stepdance::sim

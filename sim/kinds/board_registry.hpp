@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "kinds/scoped_kind.hpp"
 #include "stepdance/boards/board_definition.hpp"
 
 namespace stepdance::sim {
@@ -19,16 +20,12 @@ const BoardDefinition* find_board_named(std::string_view name);
 /// "\"driver\" or \"basic\"", for the message of an unknown module.
 std::string board_names();
 
-/// Adds a board for as long as it lives (a test's board); the table must outlive it.
-class ScopedBoard {
- public:
-  explicit ScopedBoard(const BoardDefinition& board);
-  ~ScopedBoard();
-  ScopedBoard(const ScopedBoard&) = delete;
-  ScopedBoard& operator=(const ScopedBoard&) = delete;
-
- private:
-  const BoardDefinition& board_;
+/// The run-time side of the list: a test adds its own board (the table must outlive it) with a
+/// ScopedKind<BoardRegistry>.
+struct BoardRegistry {
+  using Kind = BoardDefinition;
+  static void add(const BoardDefinition& board);
+  static void remove(const BoardDefinition& board);
 };
 
 }  // namespace stepdance::sim

@@ -67,8 +67,8 @@ constexpr ActionSet actions(std::initializer_list<scenario::ActionType> types) {
 }
 
 /// A device kind. Register it with one line in kinds/builtin_device_kinds.cpp (or, in a test,
-/// with a ScopedDeviceKind: kinds/device_registry.hpp); docs/architecture.md, "Where things go",
-/// has the map.
+/// with a ScopedKind<DeviceRegistry>: kinds/device_registry.hpp); docs/architecture.md, "Where
+/// things go", has the map.
 struct DeviceKind {
   std::string_view name;          ///< the `type` value in the file, e.g. "encoder"
   std::string_view with_article;  ///< for messages, e.g. "an encoder"

@@ -32,8 +32,8 @@ const DeviceKind* first_kind_taking(scenario::ActionType type) {
 
 std::string device_kind_names() { return registry().names(); }
 
-ScopedDeviceKind::ScopedDeviceKind(const DeviceKind& kind) : kind_(kind) { registry().add(kind); }
+void DeviceRegistry::add(const DeviceKind& kind) { registry().add(kind); }
 
-ScopedDeviceKind::~ScopedDeviceKind() { registry().remove(kind_); }
+void DeviceRegistry::remove(const DeviceKind& kind) { registry().remove(kind); }
 
 }  // namespace stepdance::sim

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kinds/device_kind.hpp"
+#include "kinds/scoped_kind.hpp"
 
 namespace stepdance::sim {
 
@@ -22,16 +23,11 @@ std::string device_kind_names();
 /// The built-in kinds, in order (kinds/builtin_device_kinds.cpp: one line per kind).
 std::vector<const DeviceKind*> builtin_device_kinds();
 
-/// Adds a kind for as long as it lives (a test's kind); the kind must outlive it.
-class ScopedDeviceKind {
- public:
-  explicit ScopedDeviceKind(const DeviceKind& kind);
-  ~ScopedDeviceKind();
-  ScopedDeviceKind(const ScopedDeviceKind&) = delete;
-  ScopedDeviceKind& operator=(const ScopedDeviceKind&) = delete;
-
- private:
-  const DeviceKind& kind_;
+/// The run-time side of the list: a test adds its own kind with a ScopedKind<DeviceRegistry>.
+struct DeviceRegistry {
+  using Kind = DeviceKind;
+  static void add(const DeviceKind& kind);
+  static void remove(const DeviceKind& kind);
 };
 
 }  // namespace stepdance::sim

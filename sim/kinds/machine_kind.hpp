@@ -46,7 +46,8 @@ struct SocketModels {
 };
 
 /// A machine kind. Register it with one line in kinds/builtin_machine_kinds.cpp (or, in a test,
-/// with a ScopedMachineKind: kinds/machine_registry.hpp); docs/architecture.md has the map.
+/// with a ScopedKind<MachineRegistry>: kinds/machine_registry.hpp); docs/architecture.md has the
+/// map.
 struct MachineKind {
   std::string_view name;  ///< the `type` value in the file, e.g. "corexy_plotter"
   /// The axes a limit switch may watch, e.g. "xy".

@@ -19,8 +19,8 @@ const MachineKind* find_machine_kind(std::string_view name) { return registry().
 
 std::string machine_kind_names() { return registry().names(); }
 
-ScopedMachineKind::ScopedMachineKind(const MachineKind& kind) : kind_(kind) { registry().add(kind); }
+void MachineRegistry::add(const MachineKind& kind) { registry().add(kind); }
 
-ScopedMachineKind::~ScopedMachineKind() { registry().remove(kind_); }
+void MachineRegistry::remove(const MachineKind& kind) { registry().remove(kind); }
 
 }  // namespace stepdance::sim

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "kinds/machine_kind.hpp"
+#include "kinds/scoped_kind.hpp"
 
 namespace stepdance::sim {
 
@@ -20,16 +21,11 @@ std::string machine_kind_names();
 /// The built-in kinds, in order (kinds/builtin_machine_kinds.cpp: one line per kind).
 std::vector<const MachineKind*> builtin_machine_kinds();
 
-/// Adds a kind for as long as it lives (a test's kind); the kind must outlive it.
-class ScopedMachineKind {
- public:
-  explicit ScopedMachineKind(const MachineKind& kind);
-  ~ScopedMachineKind();
-  ScopedMachineKind(const ScopedMachineKind&) = delete;
-  ScopedMachineKind& operator=(const ScopedMachineKind&) = delete;
-
- private:
-  const MachineKind& kind_;
+/// The run-time side of the list: a test adds its own kind with a ScopedKind<MachineRegistry>.
+struct MachineRegistry {
+  using Kind = MachineKind;
+  static void add(const MachineKind& kind);
+  static void remove(const MachineKind& kind);
 };
 
 }  // namespace stepdance::sim

@@ -4,6 +4,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "bench_timing.hpp"
+
 #ifndef STEPDANCE_BENCH_GRAPH_HEADER
 #define STEPDANCE_BENCH_GRAPH_HEADER "step_a_sketch_graph.hpp"
 #define STEPDANCE_BENCH_GRAPH_CLASS StepASketchGraph
@@ -16,47 +18,7 @@ using BenchGraph = stepdance::workloads::STEPDANCE_BENCH_GRAPH_CLASS;
 #define STEPDANCE_BENCH_FRAMES 20000
 #endif
 
-extern "C" {
-
-// bench/measure_target_frame.sh finds these names in QEMU's execution trace: only instructions
-// executed between the two markers are counted. They are never inlined and do nothing else.
-__attribute__((noinline)) void bench_region_begin(void) { __asm__ volatile("" ::: "memory"); }
-__attribute__((noinline)) void bench_region_end(void) { __asm__ volatile("" ::: "memory"); }
-
-// A loop of known cost: `subs` + `bne` per iteration, then `bx lr`, i.e. 2 * iterations + 1.
-__attribute__((noinline, naked)) void bench_known_loop(uint32_t) {
-  __asm__ volatile(
-      "1: subs r0, r0, #1\n\t"
-      "bne 1b\n\t"
-      "bx lr");
-}
-
-}  // extern "C"
-
-namespace {
-
-// CMSDK APB timer 0 of the mps2 boards (Cortex-M System Design Kit TRM, "APB timer"): a 32-bit
-// down-counter at the 25 MHz peripheral clock. Under `-icount shift=0` QEMU's virtual clock moves
-// 1 ns per instruction, so one timer tick is 40 executed instructions.
-struct CmsdkTimer {
-  volatile uint32_t ctrl;    // 0x00, bit 0: enable
-  volatile uint32_t value;   // 0x04, current count
-  volatile uint32_t reload;  // 0x08, value loaded on reaching zero
-};
-CmsdkTimer& timer0() { return *reinterpret_cast<CmsdkTimer*>(0x40000000u); }
-
-void timer_start() {
-  timer0().ctrl = 0;
-  timer0().reload = 0xFFFFFFFFu;
-  timer0().value = 0xFFFFFFFFu;
-  timer0().ctrl = 1;
-}
-// Ticks since timer_start(), counting up.
-uint32_t timer_ticks() { return 0xFFFFFFFFu - timer0().value; }
-
-constexpr uint32_t kKnownLoopIterations = 1000000;
-
-}  // namespace
+using namespace stepdance::bench;
 
 int main(int, char**) {
 #if defined(STEPDANCE_BENCH_FRAME_PERIOD_US)
@@ -64,15 +26,10 @@ int main(int, char**) {
 #endif
   BenchGraph graph;
   timer_start();
-
-  uint32_t start = timer_ticks();
-  bench_region_begin();
-  bench_known_loop(kKnownLoopIterations);
-  bench_region_end();
-  const uint32_t known_ticks = timer_ticks() - start;
+  const uint32_t known_ticks = measure_known_loop();
 
   const uint32_t frames = STEPDANCE_BENCH_FRAMES;
-  start = timer_ticks();
+  uint32_t start = timer_ticks();
   bench_region_begin();
   for (uint32_t frame = 0; frame < frames; ++frame) graph.run_busy_frame(frame);
   bench_region_end();
@@ -80,8 +37,7 @@ int main(int, char**) {
 
   const uint32_t pulses = graph.output_a.pulses_sent(stepdance::SIGNAL_E, stepdance::DIRECTION_FORWARD) +
                           graph.output_a.pulses_sent(stepdance::SIGNAL_E, stepdance::DIRECTION_REVERSE);
-  printf("known_loop iterations=%lu timer_ticks=%lu\n", static_cast<unsigned long>(kKnownLoopIterations),
-         static_cast<unsigned long>(known_ticks));
+  print_known_loop(known_ticks);
   printf("frames count=%lu timer_ticks=%lu pulses_a=%lu\n", static_cast<unsigned long>(frames),
          static_cast<unsigned long>(frame_ticks), static_cast<unsigned long>(pulses));
   return pulses > 0 ? 0 : 1;

@@ -8,7 +8,7 @@
 
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/block_port.hpp"
-#include "stepdance/core/file_storage.hpp"
+#include "stepdance/hal/storage.hpp"
 
 namespace stepdance::test_support {
 

@@ -32,8 +32,3 @@ class FileStorage {
 };
 
 }  // namespace stepdance
-
-// hal::console() and hal::storage() are the HAL facade's (hal/console.hpp, hal/storage.hpp);
-// included here too, so code that reached them through this header still compiles.
-#include "stepdance/hal/console.hpp"
-#include "stepdance/hal/storage.hpp"

@@ -28,7 +28,3 @@ class NonvolatileStore {
 };
 
 }  // namespace stepdance
-
-// hal::nonvolatile_store() is the HAL facade's (hal/nonvolatile.hpp); included here too, so code
-// that reached it through this header still compiles.
-#include "stepdance/hal/nonvolatile.hpp"

@@ -6,6 +6,7 @@
 #include "stepdance/core/block.hpp"
 #include "stepdance/core/status.hpp"
 #include "stepdance/hal/hal.hpp"
+#include "stepdance/io/arduino_pin_mode.hpp"
 
 namespace stepdance {
 
@@ -20,14 +21,6 @@ enum ButtonMode : uint8_t {
 /// Logical button states returned by read() (TOGGLE_THREE_STATE also returns 2).
 constexpr uint8_t BUTTON_STATE_RELEASED = 0;
 constexpr uint8_t BUTTON_STATE_PRESSED = 1;
-
-/// Pin-mode numbers of the Teensy core (Arduino's INPUT, INPUT_PULLUP, INPUT_PULLDOWN macros),
-/// for Button::begin(pin, mode). Sketches pass the Arduino macros themselves.
-namespace arduino_pin_mode {
-constexpr uint8_t kInput = 0;
-constexpr uint8_t kInputPullup = 2;
-constexpr uint8_t kInputPulldown = 3;
-}  // namespace arduino_pin_mode
 
 /// A button on a digital pin, sampled every millisecond (kilohertz stage).
 ///

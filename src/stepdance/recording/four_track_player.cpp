@@ -7,6 +7,7 @@
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/frame_period.hpp"
 #include "stepdance/hal/hal.hpp"
+#include "stepdance/hal/storage.hpp"
 
 namespace stepdance {
 namespace {

@@ -1,6 +1,6 @@
 // A test-only device kind, "test_crank": a hand crank on an encoder connector turning at a steady
 // rate until it stops. Its model, reader, factory and page control live here and nowhere else:
-// registering it (ScopedDeviceKind) is all the simulator needs.
+// registering it (ScopedKind<DeviceRegistry>) is all the simulator needs.
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // A test-only machine kind, "test_gauge": one stepper moves a pen along x (steps / steps_per_mm),
 // always down, on a fixed 100 × 10 mm page. Its model, reader and factory live here and nowhere
-// else: registering it (ScopedMachineKind) is all the simulator needs.
+// else: registering it (ScopedKind<MachineRegistry>) is all the simulator needs.
 #pragma once
 
 #include <memory>

@@ -1,7 +1,7 @@
 // The map of docs/architecture.md ("A new board"), proved: a board defined only in the test tree
-// (TestModuleSketch/test_module.hpp) and registered with a ScopedBoard is read from a scenario
-// file, checked against its own table, and runs a real sketch whose HAL and whose simulated board
-// both use that table — with no other file edited.
+// (TestModuleSketch/test_module.hpp) and registered with a ScopedKind<BoardRegistry> is read from
+// a scenario file, checked against its own table, and runs a real sketch whose HAL and whose
+// simulated board both use that table — with no other file edited.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -37,14 +37,14 @@ std::vector<std::string> errors_of(const std::string& text) {
 
 class TestOnlyBoard : public ::testing::Test {
  protected:
-  ScopedBoard board_{kTestModule};
+  ScopedKind<BoardRegistry> board_{kTestModule};
 };
 
 TEST(TestOnlyBoardRegistry, IsUnknownUntilRegisteredAndGoneAfter) {
   EXPECT_EQ(find_board("test"), nullptr);
   EXPECT_EQ(board_names(), "\"driver\" or \"basic\"");
   {
-    ScopedBoard board(kTestModule);
+    ScopedKind<BoardRegistry> board(kTestModule);
     EXPECT_EQ(find_board("test"), &kTestModule);
     EXPECT_EQ(find_board_named("Test Module v0"), &kTestModule);
     EXPECT_EQ(board_names(), "\"driver\", \"basic\" or \"test\"");

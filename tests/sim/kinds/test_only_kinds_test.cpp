@@ -34,16 +34,16 @@ std::vector<std::string> errors_of(const std::string& text) {
 
 class TestOnlyKinds : public ::testing::Test {
  protected:
-  ScopedDeviceKind crank_{test_crank_kind()};
-  ScopedMachineKind gauge_{test_gauge_kind()};
+  ScopedKind<DeviceRegistry> crank_{test_crank_kind()};
+  ScopedKind<MachineRegistry> gauge_{test_gauge_kind()};
 };
 
 TEST(TestOnlyKindsRegistry, AreUnknownUntilRegisteredAndGoneAfter) {
   EXPECT_EQ(find_device_kind("test_crank"), nullptr);
   EXPECT_EQ(find_machine_kind("test_gauge"), nullptr);
   {
-    ScopedDeviceKind crank(test_crank_kind());
-    ScopedMachineKind gauge(test_gauge_kind());
+    ScopedKind<DeviceRegistry> crank(test_crank_kind());
+    ScopedKind<MachineRegistry> gauge(test_gauge_kind());
     EXPECT_EQ(find_device_kind("test_crank"), &test_crank_kind());
     EXPECT_EQ(find_machine_kind("test_gauge"), &test_gauge_kind());
     EXPECT_EQ(machine_kind_names(), "\"corexy_plotter\", \"cartesian\", \"polar\" or \"test_gauge\"");

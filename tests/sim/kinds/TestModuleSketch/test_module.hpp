@@ -1,6 +1,7 @@
 // A test-only board, "Test Module": a table defined in the test tree alone, to show that a board
-// is its table plus its registration (ScopedBoard in a test, a line of stepdance::kBoards for a
-// built-in one) and nothing else. Its pins are deliberately unlike both real modules'.
+// is its table plus its registration (ScopedKind<BoardRegistry> in a test, a line of
+// stepdance::kBoards for a built-in one) and nothing else. Its pins are deliberately unlike both
+// real modules'.
 #pragma once
 
 #include "stepdance/boards/board_checks.hpp"
