@@ -32,7 +32,7 @@ struct ExpectationReading {
 };
 
 /// An expectation kind. Register it with one line in kinds/builtin_expectation_kinds.cpp (or, in a
-/// test, with a ScopedExpectationKind: kinds/expectation_kinds.hpp); docs/architecture.md,
+/// test, with a ScopedKind<ExpectationRegistry>: kinds/expectation_kinds.hpp); docs/architecture.md,
 /// "Where things go", has the map.
 struct ExpectationKind {
   /// The key that names the check, e.g. "motor" (`motor = "board:A"`).

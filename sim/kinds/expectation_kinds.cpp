@@ -23,8 +23,8 @@ const std::vector<const ExpectationKind*>& expectation_kinds() { return registry
 
 const ExpectationKind* find_expectation_kind(std::string_view name) { return registry().find(name); }
 
-ScopedExpectationKind::ScopedExpectationKind(const ExpectationKind& kind) : kind_(kind) { registry().add(kind); }
+void ExpectationRegistry::add(const ExpectationKind& kind) { registry().add(kind); }
 
-ScopedExpectationKind::~ScopedExpectationKind() { registry().remove(kind_); }
+void ExpectationRegistry::remove(const ExpectationKind& kind) { registry().remove(kind); }
 
 }  // namespace stepdance::sim

@@ -17,16 +17,11 @@ const ExpectationKind* find_expectation_kind(std::string_view name);
 /// The built-in kinds, in order (kinds/builtin_expectation_kinds.cpp: one line per kind).
 std::vector<const ExpectationKind*> builtin_expectation_kinds();
 
-/// Adds a kind for as long as it lives (a test's kind); the kind must outlive it.
-class ScopedExpectationKind {
- public:
-  explicit ScopedExpectationKind(const ExpectationKind& kind);
-  ~ScopedExpectationKind();
-  ScopedExpectationKind(const ScopedExpectationKind&) = delete;
-  ScopedExpectationKind& operator=(const ScopedExpectationKind&) = delete;
-
- private:
-  const ExpectationKind& kind_;
+/// The run-time side of the list: a test adds its own kind with a ScopedKind<ExpectationRegistry>.
+struct ExpectationRegistry {
+  using Kind = ExpectationKind;
+  static void add(const ExpectationKind& kind);
+  static void remove(const ExpectationKind& kind);
 };
 
 }  // namespace stepdance::sim

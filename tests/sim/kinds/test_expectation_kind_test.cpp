@@ -39,17 +39,17 @@ const std::string kNeedsOneCheck =
 
 class TestExpectationKind : public ::testing::Test {
  protected:
-  ScopedDeviceKind crank_{test_crank_kind()};
-  ScopedExpectationKind turns_{test_turns_kind()};
+  ScopedKind<DeviceRegistry> crank_{test_crank_kind()};
+  ScopedKind<ExpectationRegistry> turns_{test_turns_kind()};
 };
 
 TEST(TestExpectationKindRegistry, IsUnknownUntilRegisteredAndGoneAfter) {
-  ScopedDeviceKind crank(test_crank_kind());
+  ScopedKind<DeviceRegistry> crank(test_crank_kind());
   const std::string text = scenario_text("[[expect]]\n");
   EXPECT_EQ(find_expectation_kind("test_turns"), nullptr);
   EXPECT_EQ(errors_of(text), (std::vector<std::string>{kFile + kNeedsOneCheck + " or i2c_loop_pass_max_us"}));
   {
-    ScopedExpectationKind turns(test_turns_kind());
+    ScopedKind<ExpectationRegistry> turns(test_turns_kind());
     EXPECT_EQ(find_expectation_kind("test_turns"), &test_turns_kind());
     EXPECT_EQ(errors_of(text), (std::vector<std::string>{kFile + kNeedsOneCheck + ", i2c_loop_pass_max_us or test_turns"}))
         << "the list names the new kind last";

@@ -1,7 +1,7 @@
 // A test-only expectation kind, "test_turns": test_turns = "board:A", turns = T — the stepper in
 // a socket turned T revolutions (its microsteps over microsteps × full steps a revolution), to
 // within a thousandth of a turn. Its keys, reader, check and report line live here and nowhere
-// else: registering it (ScopedExpectationKind) is all the simulator needs.
+// else: registering it (ScopedKind<ExpectationRegistry>) is all the simulator needs.
 #pragma once
 
 #include <cmath>
@@ -9,6 +9,7 @@
 #include <string>
 
 #include "kinds/expectation_kinds.hpp"
+#include "kinds/scoped_kind.hpp"
 #include "models/stepper_driver.hpp"
 #include "scenario/names.hpp"
 
