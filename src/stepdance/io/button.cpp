@@ -12,8 +12,12 @@ bool valid_mode(uint8_t mode) { return mode <= BUTTON_MODE_MULTIPRESS; }
 
 }  // namespace
 
+// Default pull-down: a Stepdance button wired to 3.3 V reads high when pressed, and an open pin
+// reads released rather than floating.
 Status Button::begin(uint8_t pin) { return begin(pin, hal::PinMode::kInputPulldown); }
 
+// Accepts the Arduino pinMode constants (INPUT, INPUT_PULLUP, INPUT_PULLDOWN) so sketches written
+// against the original interface compile; OUTPUT or anything else is refused.
 Status Button::begin(uint8_t pin, uint8_t arduino_mode) {
   switch (arduino_mode) {
     case arduino_pin_mode::kInput: return begin(pin, hal::PinMode::kInput);
@@ -23,6 +27,8 @@ Status Button::begin(uint8_t pin, uint8_t arduino_mode) {
   }
 }
 
+// The first level is sampled before the tick starts so a button held at power-up is not seen as
+// a press edge. Sampling runs at 1 kHz (debounce counted in ms); callbacks run in loop context.
 Status Button::begin(uint8_t pin, hal::PinMode mode) {
   if (mode == hal::PinMode::kOutput) return Status::kBadArgument;
   const Status configured = hal::gpio_mode(pin, mode);
@@ -39,6 +45,9 @@ Status Button::begin(uint8_t pin, hal::PinMode mode) {
   return register_in(Stage::kLoop);
 }
 
+// Changing mode resynchronises everything: the state follows the pin level in the level-following
+// modes, and every counted but undelivered change or gesture is dropped, so the new mode never
+// fires callbacks for events that happened under the old one.
 void Button::set_mode(uint8_t mode) {
   if (!valid_mode(mode)) return;
   hal::CriticalSection guard;
@@ -51,6 +60,8 @@ void Button::set_mode(uint8_t mode) {
   gesture_presses_ = 0;
 }
 
+// Inverting flips meaning, not the pin: no edge is counted. delivered_state_ is flipped too so the
+// next real edge still delivers the right press/release instead of repeating the current state.
 void Button::set_inverted(bool inverted) {
   if (inverted == inverted_) return;
   hal::CriticalSection guard;
@@ -66,6 +77,8 @@ bool Button::sample_level() const { return pin_ != kNoButtonPin && hal::gpio_rea
 
 uint8_t Button::read_raw() const { return sample_level() ? BUTTON_STATE_PRESSED : BUTTON_STATE_RELEASED; }
 
+// Polling alternative to callbacks: true once per batch of state changes or completed gestures
+// since the previous call. Loop context only (it updates its own snapshot).
 bool Button::has_changed() {
   const uint32_t total = state_changes_ + gestures_[0] + gestures_[1] + gestures_[2];
   const bool changed = total != changes_seen_by_has_changed_;
@@ -73,6 +86,9 @@ bool Button::has_changed() {
   return changed;
 }
 
+// Kilohertz-tick context (interrupt). Debounce is a blackout, not a filter: the first edge is
+// taken at once (no latency on a press) and the pin is ignored for debounce_ms_ afterwards, which
+// swallows contact bounce. The multipress window is counted even during the blackout.
 void Button::sample() {
   if (pin_ == kNoButtonPin) return;
   count_multipress_window();  // before the edge, so a late press opens a new gesture
@@ -87,6 +103,8 @@ void Button::sample() {
   on_level_change(pressed);
 }
 
+// A gesture ends when multipress_window_ms_ passes without another press; it is then counted as a
+// single, double or triple press (kind = presses − 1). Tick context.
 void Button::count_multipress_window() {
   if (mode_ != BUTTON_MODE_MULTIPRESS || gesture_presses_ == 0) return;
   ms_since_press_ = ms_since_press_ + 1;
@@ -96,6 +114,9 @@ void Button::count_multipress_window() {
   gesture_presses_ = 0;
 }
 
+// Tick context: only counters change here; callbacks are fired later from loop context by
+// deliver_events(). Toggle modes advance on the press edge only; multipress counts presses and
+// restarts the gesture window on each.
 void Button::on_level_change(bool pressed) {
   switch (mode_) {
     case BUTTON_MODE_STANDARD:
@@ -119,6 +140,7 @@ void Button::on_level_change(bool pressed) {
   }
 }
 
+// Three-state toggle cycles 0 → 1 → 2 → 0; every other mode alternates pressed/released.
 uint8_t Button::next_state(uint8_t state) const {
   if (mode_ == BUTTON_MODE_TOGGLE_THREE_STATE) return static_cast<uint8_t>((state + 1) % kThreeStates);
   return state == BUTTON_STATE_PRESSED ? BUTTON_STATE_RELEASED : BUTTON_STATE_PRESSED;
@@ -138,6 +160,8 @@ void Button::deliver_state_changes() {
   }
 }
 
+// Three-state toggle fires one callback per state reached; a plain toggle fires on_toggle and then
+// the press/release callback for the new state (the fall-through is intended).
 void Button::fire_state_callbacks(uint8_t state) {
   switch (mode_) {
     case BUTTON_MODE_TOGGLE_THREE_STATE:
@@ -154,6 +178,8 @@ void Button::fire_state_callbacks(uint8_t state) {
   }
 }
 
+// Loop context: one callback per counted gesture, in order single, double, triple. Counters are
+// compared, not reset, so the tick may keep counting while this runs.
 void Button::deliver_gestures() {
   const Callback callbacks[kLongestGesture] = {on_press_, on_doublepress_, on_triplepress_};
   for (uint8_t kind = 0; kind < kLongestGesture; ++kind) {

@@ -29,6 +29,8 @@ int32_t counter_difference(int32_t now, int32_t before) {
 
 InputPort::InputPort() : outputs_{&output_x, &output_y, &output_r, &output_t, &output_z, &output_e} {}
 
+// Called on destruction: unhooks this port from the capture ISR's table. Only clears the slot if it
+// is still ours, since a later InputPort may have claimed the same hardware port.
 void InputPort::detach() {
   if (port_ < NUM_AVAILABLE_INPUT_PORTS && receivers[port_] == this) {
     hal::CriticalSection guard;
@@ -36,6 +38,8 @@ void InputPort::detach() {
   }
 }
 
+// counts_seen_ starts at the ISR's current counts so pulses received before begin() (or by a
+// previous owner) are not handed off as a jump. Hand-off runs in the kInputPorts frame stage.
 Status InputPort::begin(uint8_t port) {
   if (port >= active_board().input_port_count || port >= NUM_AVAILABLE_INPUT_PORTS) {
     hal::log_message("InputPort::begin: this board has no such input port");
@@ -56,11 +60,15 @@ Status InputPort::begin(uint8_t port) {
   return register_in(Stage::kInputPorts);
 }
 
+// Stepdance streams are read at the STEP falling edge, step/dir drivers' convention at the rising
+// edge (spec "Stepdance Ports": modules sample DIR at the fall so one interrupt per pulse suffices).
 Status InputPort::arm_capture() {
   const protocol::DirSampleEdge edge = protocol::dir_sample_edge(mode_);
   return hal::port_in_begin(port_, edge, &pulse_trampoline, reinterpret_cast<void*>(uintptr_t{port_}));
 }
 
+// INPUT_MODE_STEP_DIR accepts any pulse as one step of step_dir_signal (for a plain step/dir
+// source); INPUT_MODE_STEPDANCE decodes the signal from the pulse width (spec table X 2 µs … E 7 µs).
 Status InputPort::set_input_mode(InputMode mode, uint8_t step_dir_signal) {
   if (step_dir_signal >= kNumSignals) return Status::kBadArgument;
   if (mode != INPUT_MODE_STEPDANCE && mode != INPUT_MODE_STEP_DIR) return Status::kBadArgument;
@@ -93,6 +101,8 @@ void InputPort::set_ratio(double world_units, double pulses) {
   for (BlockPort* port : outputs_) port->set_ratio(world_units, pulses);
 }
 
+// Counters for diagnosis of a cable or a sender: accepted pulses per signal and direction, and
+// pulses rejected by width (too short: noise; too long: a stretched or foreign pulse).
 void InputPort::report_counters(CounterSink& sink) const {
   static const char* const kReceived[kNumSignals][2] = {
       {"received_x_forward", "received_x_reverse"}, {"received_y_forward", "received_y_reverse"},
@@ -116,6 +126,8 @@ uint32_t InputPort::pulses_received(uint8_t signal, uint8_t direction) const {
 
 BlockPort& InputPort::output(uint8_t signal) { return *outputs_[signal < kNumSignals ? signal : 0]; }
 
+// Capture-ISR context: one call per STEP pulse. Only counters change here; the frame picks the
+// counts up in hand_off_pulses(). Disabled signals are counted as ignored, not as motion.
 void InputPort::receive_pulse(const protocol::CapturedPulse& pulse) {
   const protocol::DecodedPulse decoded =
       protocol::decode_pulse(pulse, hal::port_in_clock(port_), mode_, step_dir_signal_);
@@ -139,6 +151,9 @@ void InputPort::receive_pulse(const protocol::CapturedPulse& pulse) {
   received_[signal][slot] = received_[signal][slot] + 1;
 }
 
+// Frame context. The ISR only ever adds to counts_[], so the frame takes the difference from the
+// last snapshot instead of resetting it: no read-modify-write race with the ISR and no lost pulse.
+// Each axis port gets the frame's pulses as an incremental move, pushed downstream at once.
 void InputPort::hand_off_pulses() {
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
     const int32_t snapshot = counts_[signal];  // the one read of an ISR-owned counter

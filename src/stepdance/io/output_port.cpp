@@ -28,6 +28,8 @@ uint8_t bit(uint8_t signal) { return static_cast<uint8_t>(1u << signal); }
 
 void OutputPort::forget(OutputPort* port) { begun_ports().remove(port); }
 
+// Two OutputPort objects on one hardware port would both transmit each frame; the newest begin()
+// wins and the previous owner is removed from the engine and marked unbegun (port_ 255).
 void OutputPort::release_previous_owner(uint8_t port) {
   OutputPort* previous = nullptr;
   for (OutputPort* other : begun_ports()) {
@@ -41,6 +43,8 @@ void OutputPort::release_previous_owner(uint8_t port) {
 
 Status OutputPort::begin(uint8_t port) { return claim(port, kFormatForPeriod, OUTPUT_TRANSMIT_ON_FRAME); }
 
+// A fixed format must end before the frame period does (frame_format.hpp); it is checked against
+// the current period now and again whenever the period changes (accept_frame_period).
 Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
   if (format >= kNumOutputFrameFormats) {
     fault(FaultReason::kBadConfiguration, "OutputPort::begin: unknown format (OUTPUT_FRAME_32US/16US/8US/4US)");
@@ -55,6 +59,9 @@ Status OutputPort::begin(uint8_t port, uint8_t format, uint8_t transmit_mode) {
   return claim(port, format, transmit_mode);
 }
 
+// Engine hook, called when the frame period changes. Without a requested format the layout grows
+// or shrinks with the period; a fixed format that no longer fits is a configuration fault, since
+// pulses would run into the next frame and a receiver would misread their widths.
 bool OutputPort::accept_frame_period(uint32_t period_us) {
   if (requested_format_ == kFormatForPeriod) {
     layout_ = protocol::layout_for_period(period_us);
@@ -70,6 +77,8 @@ bool OutputPort::accept_frame_period(uint32_t period_us) {
   return false;
 }
 
+// Lets a caller check a wiring before committing it: a step/dir port carries its one signal; a
+// Stepdance port carries a signal if its pulse and slot fit the layout at that period at all.
 bool OutputPort::can_carry(uint8_t signal, uint32_t period_us) const {
   if (mode_ == OUTPUT_MODE_STEP_DIR) return signal == step_dir_signal_;
   const protocol::FrameLayout layout = requested_format_ == kFormatForPeriod ? protocol::layout_for_period(period_us)
@@ -87,6 +96,8 @@ Status OutputPort::set_output_mode(OutputMode mode, uint8_t step_dir_signal) {
   return Status::kOk;
 }
 
+// OUTPUT_TRANSMIT_MANUAL ports are claimed but not registered: the sketch calls transmit_frame()
+// itself (e.g. from its own timer), so the engine must not transmit them too.
 Status OutputPort::claim(uint8_t port, uint8_t format, uint8_t transmit_mode) {
   requested_format_ = format;
   if (format == kFormatForPeriod) accept_frame_period(frame_period_us());
@@ -105,6 +116,8 @@ Status OutputPort::claim(uint8_t port, uint8_t format, uint8_t transmit_mode) {
   return register_in(Stage::kOutputPorts);
 }
 
+// Pulses are accumulated as a signed count per signal: a forward and a reverse in the same frame
+// cancel instead of sending two opposite pulses. Frame or critical-section context.
 void OutputPort::add_signal(uint8_t signal, uint8_t direction) {
   if (signal >= kNumSignals) return;
   const bool carried = mode_ == OUTPUT_MODE_STEP_DIR ? signal == step_dir_signal_ : protocol::signal_fits(layout_, signal);
@@ -115,12 +128,16 @@ void OutputPort::add_signal(uint8_t signal, uint8_t direction) {
   set_pending(signal, pending_[signal] + (direction == DIRECTION_FORWARD ? 1 : -1));
 }
 
+// Warns once per port (the counter keeps counting) so a miswired signal does not flood the log
+// at 25 kHz.
 void OutputPort::refuse_pulse() {
   if (pulses_refused_++ != 0) return;
   report_fault(FaultLevel::kWarning, FaultReason::kBadConfiguration, "OutputPort",
                "pulse refused: a STEP_DIR port sends one signal, and a short frame has no room for the wide ones");
 }
 
+// Keeps the two masks the encoder wants (which signals have pulses, which of them go forward) in
+// step with the counts, so encoding a frame needs no loop over all six signals.
 void OutputPort::set_pending(uint8_t signal, int32_t count) {
   pending_[signal] = count;
   const uint8_t mask = bit(signal);
@@ -133,12 +150,17 @@ void OutputPort::step_now(uint8_t direction, uint8_t signal) {
   add_signal(signal, direction);
 }
 
+// Frame context (kOutputPorts stage), once per frame: encodes at most one frame's worth of pulses;
+// the rest stays pending for the next frames.
 void OutputPort::transmit_frame() {
   if (idle_timeout_ms_ != 0) idle_check(pending_mask_ != 0);
   const protocol::FrameWords words = mode_ == OUTPUT_MODE_STEP_DIR ? encode_step_dir() : encode_stepdance();
   if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, words);
 }
 
+// Spec "Frames": each signal occurs at most once per frame. When the pending signals do not all
+// fit, those left over last frame (carried_mask_) go first, so no signal is starved while others
+// keep it busy; a signal with several pending pulses is sent one per frame.
 protocol::FrameWords OutputPort::encode_stepdance() {
   protocol::FrameRequest request;
   request.active_mask = pending_mask_;
@@ -152,6 +174,8 @@ protocol::FrameWords OutputPort::encode_stepdance() {
   return frame.words;
 }
 
+// Step/dir mode sends as many equal (X-width) pulses of the one signal as fit the frame window,
+// one direction per frame; a remainder is counted as carried and waits for the next frame.
 protocol::FrameWords OutputPort::encode_step_dir() {
   const uint8_t signal = step_dir_signal_;
   const int32_t pending = pending_[signal];
@@ -190,6 +214,8 @@ void OutputPort::clear_statistics() {
   }
 }
 
+// One pulse per sent signal moves its pending count one step toward zero, in the pulse's
+// direction, and is counted as sent.
 void OutputPort::account_sent(uint8_t sent_mask) {
   for (uint8_t rest = sent_mask; rest != 0; rest &= static_cast<uint8_t>(rest - 1)) {
     const uint8_t signal = lowest_signal(rest);
@@ -205,6 +231,8 @@ const OutputPortPins* OutputPort::pins() const {
   return &board.output_ports[port_];
 }
 
+// The driver ENABLE pin is active low (the Driver Module's stepper drivers), hence writing false
+// to enable. Re-enabling also clears the idle timer so the idle timeout starts over.
 Status OutputPort::enable_driver() {
   const OutputPortPins* p = pins();
   if (p == nullptr || p->enable == kNoPin) {
@@ -258,6 +286,9 @@ void OutputPort::write_enable_pin(bool enabled) {
 
 float OutputPort::read_drive_current_amps() { return read_drive_current_amps(current_gain_a_per_v_); }
 
+// The driver's VREF is read on the 10-bit ADC (0…1023 over 0…3.3 V); the current per volt depends
+// on the driver and its sense resistor, hence the gain parameter. −1 means the board has no VREF
+// pin here or the ADC could not start.
 float OutputPort::read_drive_current_amps(float amps_per_volt) {
   const OutputPortPins* p = pins();
   if (p == nullptr || p->vref == kNoPin) return -1.0f;
@@ -280,6 +311,8 @@ uint32_t OutputPort::pulses_sent(uint8_t signal, uint8_t direction) const {
   return sent_[signal][direction == DIRECTION_FORWARD ? 1 : 0];
 }
 
+// Every begun port, OUTPUT_TRANSMIT_MANUAL ones included (they are in begun_ports() too). Ports begun
+// with OUTPUT_TRANSMIT_ON_FRAME are also sent by the engine's kOutputPorts stage on their own.
 void transmit_frames_on_all_output_ports() {
   for (OutputPort* port : begun_ports()) port->transmit_frame();
 }
