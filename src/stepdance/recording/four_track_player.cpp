@@ -23,6 +23,9 @@ FourTrackPlayer::FourTrackPlayer() {
   for (BlockPort& port : output_BlockPorts) port.set_ratio(resolution_, 1.0);
 }
 
+// The player registers in the input-port stage, like the original (original-library.md §4.12), so its steps
+// enter the frame where received pulses do and reach the channels in the same frame; the loop stage
+// refills the RAM ring from the card.
 Status FourTrackPlayer::begin() {
   for (size_t track = 0; track < recording::kTracks; ++track) {
     output_BlockPorts[track].begin(&positions_[track], BLOCKPORT_OUTPUT, this);
@@ -31,11 +34,15 @@ Status FourTrackPlayer::begin() {
   return status != Status::kOk ? status : register_in(Stage::kLoop);
 }
 
+// Applies to original-format files only (they carry no resolution); a Stepdance-format file sets
+// each track's resolution from its header. A zero ratio is ignored rather than dividing by it.
 void FourTrackPlayer::set_resolution(double world_units, double per_steps) {
   if (world_units == 0.0 || per_steps == 0.0) return;
   resolution_ = world_units / per_steps;
 }
 
+// Validates the name before touching the card, so a bad name leaves the previous state stopped
+// but the card untouched. Loop context.
 Status FourTrackPlayer::start(const char* name) {
   stop();
   FileName probe;
@@ -86,6 +93,9 @@ Status FourTrackPlayer::open_files(const char* name) {
   return status;
 }
 
+// The frame count lives in a separate ASCII file (<name>_len.bin, the original's layout) because the
+// recorder only knows it at the end. Without it the player plays to the end of the data file
+// instead of refusing: the steps are still valid.
 Status FourTrackPlayer::read_length_file(const char* name) {
   max_num_playback_samples = UINT64_MAX;
   FileName length_name;
@@ -107,6 +117,9 @@ Status FourTrackPlayer::read_length_file(const char* name) {
 }
 
 // Chooses the format from the first bytes and sets the outputs' resolution from it.
+// A file without our magic is taken as the original format (one byte per frame, no header), which
+// only has a meaning at the original 40 µs frame. Our format records its frame period, and a
+// recording played at another period would play at the wrong speed, so it is refused.
 Status FourTrackPlayer::take_header(const uint8_t* data, size_t length, size_t& data_start) {
   recording::RecordingHeader header;
   const recording::HeaderCheck check = recording::read_header(data, length, header);
@@ -136,6 +149,7 @@ Status FourTrackPlayer::take_header(const uint8_t* data, size_t length, size_t& 
   return Status::kOk;
 }
 
+// Loop context: the ring is emptied so a later start() cannot play bytes of this recording.
 void FourTrackPlayer::stop() {
   playback_active = false;
   if (file_open_) hal::storage().close(handle_);
@@ -145,12 +159,17 @@ void FourTrackPlayer::stop() {
   while (ring_.pop(stale) == Status::kOk) {}
 }
 
+// Frame context (input-port stage). The ports are pushed every frame, playing or not, so a
+// downstream block always sees this frame's (possibly unchanged) positions.
 void FourTrackPlayer::run() {
   if (playback_active && !paused_ && !play_frame()) playback_active = false;
   for (BlockPort& port : output_BlockPorts) port.push();
 }
 
 // Plays one recorded frame; false when the recording has ended.
+// An empty ring before the end of file is an underrun: the frame waits (playback stretches in
+// time) rather than skipping steps, which would shift the drawing. Warned once per underrun.
+// A frame's bytes are only popped when the whole frame is in the ring.
 bool FourTrackPlayer::play_frame() {
   if (current_sample_index >= max_num_playback_samples) return false;
   const size_t bytes = recording::bytes_per_frame(file_format_);
@@ -180,6 +199,8 @@ bool FourTrackPlayer::play_frame() {
   return true;
 }
 
+// Loop context: the card is only read here, never in the frame (SD reads take milliseconds).
+// Playback ended by the frame (playback_active false) is finished here, closing the file.
 void FourTrackPlayer::loop() {
   if (!file_open_) return;
   if (!playback_active) {
@@ -195,6 +216,7 @@ void FourTrackPlayer::loop() {
   }
 }
 
+// Card errors count as hardware faults; refusals (bad name, wrong format) as refused requests.
 void FourTrackPlayer::fail(const char* message, Status status) {
   hal::log_message(message);
   const bool storage = status == Status::kIoError;

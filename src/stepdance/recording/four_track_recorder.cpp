@@ -17,6 +17,8 @@ constexpr const char* kSource = "recorder";
 
 FourTrackRecorder::FourTrackRecorder() = default;
 
+// Post-channel stage, as in the original (original-library.md §4.12): it records what the channels did this
+// frame. The loop stage writes the RAM ring to the card.
 Status FourTrackRecorder::begin() {
   for (RecorderTrack& track : tracks) track.begin(this);
   const Status status = register_in(Stage::kPostChannel);
@@ -27,6 +29,10 @@ void FourTrackRecorder::set_resolution(double world_units, double per_steps) {
   for (RecorderTrack& track : tracks) track.set_resolution(world_units, per_steps);
 }
 
+// Loop context. start() while recording resumes (the original's behaviour). The planned length in
+// frames is computed in 64 bits: the original's minutes × 60 × 1 000 000 overflowed a 32-bit long
+// from 36 minutes on (original-library.md §7.6 #37). Our header records the frame period and each track's
+// resolution so the player can refuse a recording it would play at the wrong scale or speed.
 Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
   if (recorder_active) {
     resume();
@@ -81,6 +87,8 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
   return Status::kOk;
 }
 
+// Loop context. Distinguishes a user stop from a stop the frame already decided (full, overrun),
+// so finish() logs the real cause.
 Status FourTrackRecorder::stop() {
   if (!file_open_) return Status::kNotStarted;
   if (recorder_active) stop_cause_ = StopCause::kUser;
@@ -88,6 +96,10 @@ Status FourTrackRecorder::stop() {
   return finish();
 }
 
+// Frame context (post-channel). While paused or idle the tracks follow their input silently, so
+// resuming records only motion made after the resume and not the jump accumulated meanwhile.
+// A full ring stops the recording instead of dropping a frame: a recording with a hole would play
+// back displaced, one that ends early is merely short.
 void FourTrackRecorder::run() {
   for (RecorderTrack& track : tracks) track.follow_input();
   if (!recorder_active || paused_) {
@@ -110,6 +122,8 @@ void FourTrackRecorder::run() {
 }
 
 // Packs this frame's steps and queues them whole, or not at all when the ring lacks room.
+// The original format holds at most one step per track per frame (2 bits), ours a signed byte
+// (±127); faster motion is spread over later frames by step_toward_input().
 bool FourTrackRecorder::queue_sample() {
   const bool original = file_format_ == RecordingFormat::kOriginal;
   const size_t bytes = recording::bytes_per_frame(file_format_);
@@ -131,6 +145,8 @@ bool FourTrackRecorder::queue_sample() {
   return true;
 }
 
+// Loop context: writes whole 512-byte chunks while recording (card-friendly), and everything left
+// once the frame has stopped the recording.
 void FourTrackRecorder::loop() {
   if (!file_open_) return;
   const Status status = recording::drain_ring_to_file(ring_, hal::storage(), handle_, false, bytes_written_);
@@ -141,6 +157,8 @@ void FourTrackRecorder::loop() {
   if (!recorder_active) finish();
 }
 
+// Flushes, closes, then writes the length file; the first error wins, but the file is always
+// closed so what reached the card stays readable.
 Status FourTrackRecorder::finish() {
   if (!file_open_) return Status::kNotStarted;
   FileStorage& storage = hal::storage();
@@ -162,6 +180,7 @@ Status FourTrackRecorder::finish() {
   return status;
 }
 
+// The frame count as ASCII digits and CRLF in <name>_len.bin, the original's companion file.
 Status FourTrackRecorder::write_length_file() {
   FileStorage& storage = hal::storage();
   int handle = -1;

@@ -14,6 +14,8 @@ constexpr uint8_t kCodeReverse = 0b10;
 constexpr uint8_t kStepBit = 0b10;
 constexpr uint8_t kForwardBit = 0b01;
 
+// The header is little-endian by definition, written byte by byte so the file is the same on any
+// host (the simulator) and on the Teensy.
 void put_le(uint8_t* out, uint64_t value, size_t bytes) {
   for (size_t i = 0; i < bytes; ++i) out[i] = static_cast<uint8_t>(value >> (8 * i));
 }
@@ -26,6 +28,8 @@ uint64_t get_le(const uint8_t* in, size_t bytes) {
 
 }  // namespace
 
+// The original format (original-library.md §4.12): one byte per frame, 2 bits per track from bit 0,
+// 11 = forward step, 10 = reverse step, 00 = none. Track 1 is the lowest pair.
 uint8_t pack_original_frame(const int8_t (&steps)[kTracks]) {
   uint8_t byte = 0;
   for (size_t track = 0; track < kTracks; ++track) {
@@ -35,6 +39,7 @@ uint8_t pack_original_frame(const int8_t (&steps)[kTracks]) {
   return byte;
 }
 
+// Code 01 (never written) has no step bit and reads as no step.
 void unpack_original_frame(uint8_t byte, int8_t (&steps)[kTracks]) {
   for (size_t track = 0; track < kTracks; ++track) {
     const uint8_t code = static_cast<uint8_t>((byte >> (2 * track)) & 0b11);
@@ -42,6 +47,9 @@ void unpack_original_frame(uint8_t byte, int8_t (&steps)[kTracks]) {
   }
 }
 
+// Our 64-byte header: "SDRECORD", version u16 @8, header size u16 @10, frame period ns u32 @12,
+// track count @16, bytes per track per frame @17 (1: a signed step count), then the tracks'
+// resolutions as IEEE-754 doubles @24. Unused bytes are zero for later versions to use.
 void write_header(const RecordingHeader& header, uint8_t (&out)[kHeaderBytes]) {
   memset(out, 0, sizeof(out));
   memcpy(out, kMagic, sizeof(kMagic));
@@ -57,6 +65,8 @@ void write_header(const RecordingHeader& header, uint8_t (&out)[kHeaderBytes]) {
   }
 }
 
+// Everything this version cannot play exactly is kUnsupported (never guessed): another version or
+// layout, a period that is not a whole number of µs the engine supports, a resolution ≤ 0 or NaN.
 HeaderCheck read_header(const uint8_t* data, size_t length, RecordingHeader& out) {
   if (length < sizeof(kMagic) || memcmp(data, kMagic, sizeof(kMagic)) != 0) return HeaderCheck::kNotOurs;
   if (length < kHeaderBytes) return HeaderCheck::kTruncated;
@@ -77,6 +87,7 @@ HeaderCheck read_header(const uint8_t* data, size_t length, RecordingHeader& out
   return HeaderCheck::kOk;
 }
 
+// Decimal without printf (not on the real-time build) and 64 bits wide: 20 digits + CRLF + NUL.
 size_t format_length(uint64_t frames, char (&out)[kLengthTextBytes]) {
   char digits[20];
   size_t count = 0;
@@ -92,6 +103,8 @@ size_t format_length(uint64_t frames, char (&out)[kLengthTextBytes]) {
   return length;
 }
 
+// Accepts digits followed only by white space (the original wrote CRLF); overflow and stray
+// characters fail, so a corrupt length file falls back to playing the whole data file.
 bool parse_length(const char* text, size_t length, uint64_t& frames) {
   uint64_t value = 0;
   size_t i = 0;
