@@ -14,6 +14,8 @@ namespace stepdance {
 namespace {
 
 // A serial port's far end: bytes for the sketch, bytes from it, and an optional size limit.
+// A finite capacity lets a test model a full USB buffer: write_bytes() then accepts only what fits, the
+// way a real port's non-blocking write does, so reply queues can be tested for loss.
 class MemoryPort final : public ByteStream {
  public:
   size_t bytes_available() override { return incoming.size(); }
@@ -39,6 +41,7 @@ class MemoryPort final : public ByteStream {
   bool connected = true;
 };
 
+// delayed_us and delay_calls let a test check that a sketch waited (and how long) without real time.
 struct ManualArduino {
   std::array<MemoryPort, arduino_backend::kSerialPortCount> ports;
   uint64_t delayed_us = 0;
@@ -55,6 +58,9 @@ MemoryPort& port_of(arduino_backend::SerialPortId port) {
 
 namespace arduino_backend {
 
+// A sketch's delay() on the manual backend advances simulated time by running whole frames (and the
+// kilohertz tick with them), the order the simulator uses, so a sketch that waits in setup() or loop()
+// sees its motion progress as on a board. The remainder below one frame only moves the clock.
 void delay_us(uint32_t us) {
   the_state.delayed_us += us;
   ++the_state.delay_calls;
@@ -66,6 +72,8 @@ void delay_us(uint32_t us) {
   arduino::run_interval_timers();
 }
 
+// A disconnected port returns no stream, as an unplugged USB serial would: Serial reads nothing and
+// `if (Serial)` is false.
 ByteStream* serial_stream(SerialPortId port) {
   MemoryPort& memory = port_of(port);
   return memory.connected ? &memory : nullptr;
@@ -75,6 +83,7 @@ ByteStream* serial_stream(SerialPortId port) {
 
 namespace arduino_manual {
 
+// Takes (and clears) what the sketch wrote, so each test step sees only its own replies.
 std::string take_serial_output(arduino_backend::SerialPortId port) {
   std::string out;
   out.swap(port_of(port).outgoing);
@@ -103,6 +112,7 @@ void reset() {
   the_state.delay_calls = 0;
 }
 
+// One call for a test fixture: HAL board, serial ports and the Arduino layer's globals (timers, pins).
 void reset_all(uint32_t start_us) {
   hal_manual::reset(start_us);
   reset();

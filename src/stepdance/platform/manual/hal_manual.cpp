@@ -37,6 +37,7 @@ struct PinState {
   bool adc_begun = false;
 };
 
+// The console never fills (1 MiB of space), so log messages are never dropped in a test.
 class ConsoleStream final : public ByteStream {
  public:
   size_t bytes_available() override { return input.size(); }
@@ -55,6 +56,9 @@ class ConsoleStream final : public ByteStream {
   std::string output;
 };
 
+// An in-memory SD card. Reading a missing file is an I/O error and an absent card kUnsupported, the
+// two cases the recorder and player report differently (no file versus a board without a slot).
+// Handles are never reused, so a stale handle stays invalid after close.
 class MemoryStorage final : public FileStorage {
  public:
   Status open(const char* name, FileMode mode, int& handle) override {
@@ -161,6 +165,8 @@ bool valid_pin(uint8_t pin) { return pin <= hal_manual::kMaxPin; }
 namespace hal {
 
 uint32_t micros_now() { return board().micros; }
+// Each read advances the counter by cycles_per_read, so a test can give a frame a known cost and check
+// the engine's overrun and load arithmetic against it. 600 MHz is the Teensy 4.x core clock.
 uint32_t cycles_now() {
   const uint32_t now = board().cycles;
   board().cycles += board().cycles_per_read;
@@ -168,6 +174,8 @@ uint32_t cycles_now() {
 }
 uint32_t cycles_per_second() { return 600000000u; }
 
+// The timers only store their ISR: time moves when a test calls run_frames(), never by itself, which
+// makes every test deterministic.
 Status frame_timer_start(uint32_t, Isr on_frame) {
   board().frame_isr = on_frame;
   return Status::kOk;
@@ -181,9 +189,12 @@ void timers_stop() {
   board().khz_isr = nullptr;
 }
 
+// Single-threaded: no interrupt can preempt the test, so critical sections are empty.
 uint32_t irq_save() { return 0; }
 void irq_restore(uint32_t) {}
 
+// A port can be claimed once (kBusy after), as on the board where one timer channel drives it; the
+// OutputPort above is responsible for releasing a previous owner.
 Status port_out_begin(uint8_t port) {
   if (port >= kPorts) return Status::kNoSuchPin;
   if (board().outputs_claimed[port]) return Status::kBusy;
@@ -201,6 +212,8 @@ Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink,
   board().inputs[port] = {true, edge, sink, context};
   return Status::kOk;
 }
+// The Teensy 4.x capture clock at its usual 150 MHz bus clock (150 ticks per µs) into a 16-bit
+// counter, so pulse-width tests wrap where the hardware's counter does.
 protocol::CaptureClock port_in_clock(uint8_t) { return protocol::CaptureClock{150, 0xFFFFu}; }
 
 Status quadrature_begin(uint8_t index) {
@@ -221,6 +234,7 @@ Status adc_begin(uint8_t pin) {
 uint16_t adc_read(uint8_t pin) { return valid_pin(pin) ? board().pins[pin].adc : 0; }
 uint32_t adc_sample_count(uint8_t pin) { return valid_pin(pin) ? board().pins[pin].adc_samples : 0; }
 
+// An unconnected pin with a pull resistor reads the pull's level; a test overrides it with set_pin().
 Status gpio_mode(uint8_t pin, PinMode mode) {
   if (!valid_pin(pin)) return Status::kNoSuchPin;
   PinState& state = board().pins[pin];
@@ -235,6 +249,7 @@ void gpio_write(uint8_t pin, bool high) {
   if (valid_pin(pin)) board().pins[pin].level = high;
 }
 
+// A fatal fault stops the timers as the firmware does; in_safe_state() lets a test check it happened.
 void enter_safe_state() {
   board().safe_state = true;
   timers_stop();
@@ -261,6 +276,7 @@ void reset(uint32_t start_us) {
   board().micros = start_us;
 }
 
+// A power cycle: everything resets except the EEPROM, so settings persistence can be tested.
 void reboot(uint32_t start_us) {
   const MemoryEeprom kept = board().eeprom;
   reset(start_us);
@@ -271,6 +287,8 @@ uint8_t* eeprom_bytes() { return board().eeprom.bytes.data(); }
 uint32_t eeprom_writes() { return board().eeprom.writes; }
 void set_storage_present(bool present) { board().storage.present = present; }
 
+// Advances time one frame at a time and fires the kilohertz ISR every frames_per_kilohertz_tick()
+// frames, after the frame ISR of the same instant, so tick-stage blocks see that frame's results.
 void run_frames(uint32_t n) {
   for (uint32_t i = 0; i < n; ++i) {
     board().micros += frame_period_us();
@@ -300,6 +318,8 @@ bool inject_pulse(uint8_t port, const protocol::CapturedPulse& pulse) {
 protocol::DirSampleEdge input_edge(uint8_t port) { return board().inputs.at(port).edge; }
 
 void set_quadrature(uint8_t index, int32_t count) { board().quadrature.at(index) = count; }
+// Each value counts as a new conversion, so inputs that act on new samples (AnalogInput's callback,
+// its pending deadband centre) see one.
 void set_adc(uint8_t pin, uint16_t value) {
   board().pins.at(pin).adc = value;
   ++board().pins.at(pin).adc_samples;

@@ -22,6 +22,9 @@ ManualI2c& state() {
   return instance;
 }
 
+// Records every transfer, then lets the test's responder answer. The read buffer is first filled with
+// 0xFF, what an idle I2C bus reads (the lines are pulled high), so a device that does not answer
+// gives the same bytes as on hardware.
 hal::I2cResult answer(uint8_t bus, const hal::I2cTransfer& transfer) {
   I2cRecord record;
   record.bus = bus;
@@ -38,6 +41,8 @@ hal::I2cResult answer(uint8_t bus, const hal::I2cTransfer& transfer) {
 
 void i2c_reset() { state() = ManualI2c{}; }
 void i2c_set_responder(I2cResponder responder) { state().responder = std::move(responder); }
+// Holding keeps transfers kPending until i2c_release(), so a test can check that the drivers poll
+// instead of blocking on the bus.
 void i2c_hold(bool hold) { state().holding = hold; }
 void i2c_release(uint8_t bus) {
   if (bus < hal::kI2cBusCount && state().latest[bus] == hal::I2cResult::kPending) {
@@ -51,6 +56,7 @@ uint32_t i2c_clock(uint8_t bus) { return bus < hal::kI2cBusCount ? state().clock
 
 namespace stepdance::hal {
 
+// Accepts the I2C standard-mode to fast-mode-plus range (100 kHz … 1 MHz), as the Teensy backend does.
 Status i2c_begin(uint8_t bus, uint32_t clock_hz) {
   if (bus >= kI2cBusCount) return Status::kNoSuchPin;
   if (clock_hz < 100000 || clock_hz > 1000000) return Status::kBadArgument;
@@ -58,6 +64,7 @@ Status i2c_begin(uint8_t bus, uint32_t clock_hz) {
   return Status::kOk;
 }
 
+// One transfer in flight per bus, as on the hardware's single I2C controller; addresses are 7-bit.
 Status i2c_start(uint8_t bus, const I2cTransfer& transfer) {
   auto& bus_state = hal_manual::state();
   if (bus >= kI2cBusCount || bus_state.clock_hz[bus] == 0) return Status::kNotStarted;
@@ -75,6 +82,8 @@ Status i2c_start(uint8_t bus, const I2cTransfer& transfer) {
   return Status::kOk;
 }
 
+// A finished result is reported once and then the bus reads idle, so a caller cannot take one answer
+// twice.
 I2cResult i2c_poll(uint8_t bus) {
   if (bus >= kI2cBusCount) return I2cResult::kIdle;
   I2cResult& latest = hal_manual::state().latest[bus];
