@@ -12,6 +12,7 @@ namespace {
 
 }  // namespace
 
+// Only the sign of direction counts (toward the switch), and velocity is a speed in world units/s.
 void HomingAxis::configure(uint8_t limit_pin, double value_at_limit, float direction, float velocity,
                            BlockPort* target) {
   pin_ = limit_pin;
@@ -22,6 +23,10 @@ void HomingAxis::configure(uint8_t limit_pin, double value_at_limit, float direc
   set_debounce_ms(debounce_ms_);
 }
 
+// An active-low switch (wired to ground) gets a pull-up, an active-high one (wired to 3.3 V) a
+// pull-down, so an open switch reads inactive either way. The output is
+// incremental so homing adds motion to the target instead of overwriting its position. Pre-channel
+// stage: the move reaches the channel in the same frame.
 Status HomingAxis::begin() {
   const Status pin = hal::gpio_mode(pin_, active_low_ ? hal::PinMode::kInputPullup : hal::PinMode::kInputPulldown);
   if (pin != Status::kOk) return pin;
@@ -31,6 +36,7 @@ Status HomingAxis::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Debounce in frames, rounded, at least one: the switch is sampled once per frame.
 void HomingAxis::set_debounce_ms(double ms) {
   debounce_ms_ = ms;
   const double frames = ms * 1000.0 / frame_period_us();
@@ -49,6 +55,9 @@ void HomingAxis::abort() { state_ = HOMING_AXIS_STATE_WAITING; }
 
 bool HomingAxis::read_switch() const { return hal::gpio_read(pin_) != active_low_; }
 
+// Frame context. The switch is sampled every frame, even idle, so the debouncer's record of where the
+// last change happened (value_at_change) is current when the approach trips it. The timeout covers
+// the whole routine.
 void HomingAxis::run() {
   switch_.sample(read_switch(), position_);
   const uint8_t state = state_;
@@ -65,6 +74,9 @@ void HomingAxis::run() {
   output.push();
 }
 
+// The routine (as Grbl's homing cycle): back off if already on the switch, seek it fast, pull off,
+// approach again slowly for a repeatable trip point, then pull off a last time so the machine
+// does not rest on the switch. The slow speed defaults to a tenth of the fast one.
 void HomingAxis::run_state(bool active, bool released) {
   const double slow = slow_velocity_ > 0 ? slow_velocity_ : fast_velocity_ / 10.0;
   switch (state_) {
@@ -102,6 +114,7 @@ void HomingAxis::run_state(bool active, bool released) {
 
 // Moves one frame at `velocity`; a pull-off lands exactly on its distance. False when a seek or
 // approach has gone farther than the maximum travel.
+// Frame context; velocity in world units/s, one frame's worth per call.
 bool HomingAxis::move(double velocity) {
   double step = velocity * frame_period_s();
   const double moved = fabs(position_ - phase_start_);
@@ -111,6 +124,8 @@ bool HomingAxis::move(double velocity) {
   return max_travel_ <= 0 || pulling || fabs(position_ - phase_start_) <= max_travel_;
 }
 
+// Both conditions: clear of the switch and the full pull-off distance (with a relative tolerance for
+// floating-point sums of per-frame steps).
 bool HomingAxis::pull_off_done(bool released) {
   return released && fabs(position_ - phase_start_) >= pull_off_ * (1 - 1e-12);
 }
@@ -120,6 +135,7 @@ void HomingAxis::enter(uint8_t state) {
   state_ = state;
 }
 
+// An alarm, not a fatal fault: the machine stays usable and the sketch can retry after fixing it.
 void HomingAxis::fail(const char* detail) {
   state_ = HOMING_AXIS_STATE_FAILED;
   report_fault(FaultLevel::kAlarm, FaultReason::kTimeout, "homing", detail);

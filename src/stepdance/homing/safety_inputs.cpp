@@ -11,10 +11,13 @@ Status SafetyInputs::add_limit(uint8_t pin, bool normally_closed, FaultLevel lev
   return add(Role::kLimit, pin, normally_closed, level, nullptr);
 }
 
+// Always fatal: the engine stops every output at once (enter_safe_state), whatever the sketch asks.
 Status SafetyInputs::add_emergency_stop(uint8_t pin, bool normally_closed) {
   return add(Role::kEmergencyStop, pin, normally_closed, FaultLevel::kFatal, nullptr);
 }
 
+// Feed hold and cycle start act on a planner's speed override, like Grbl's `!` and `~` realtime
+// commands: motion pauses on its path and resumes where it stopped.
 Status SafetyInputs::add_feed_hold(uint8_t pin, TimeBasedInterpolator* planner, bool normally_closed) {
   if (planner == nullptr) return Status::kBadArgument;
   return add(Role::kFeedHold, pin, normally_closed, FaultLevel::kWarning, planner);
@@ -42,6 +45,11 @@ Status SafetyInputs::add(Role role, uint8_t pin, bool normally_closed, FaultLeve
 
 void SafetyInputs::set_debounce_ms(uint32_t ms) { debounce_ms_ = ms; }
 
+// Sampled at 1 kHz, so debounce_ms_ is the number of stable samples. Active level: high for a
+// normally open switch, low for a normally closed loop (the header's contract: a broken loop must
+// read as pressed). Caution: with the pull-up chosen here for a normally closed loop, an open loop
+// (pressed or cut) is pulled high, i.e. inactive, on real pins; a pull-down would make it read
+// active. The manual backend's set_pin() overrides pulls, so its tests cannot show this.
 Status SafetyInputs::begin() {
   for (size_t i = 0; i < count_; ++i) {
     Input& input = inputs_[i];
@@ -56,6 +64,8 @@ Status SafetyInputs::begin() {
 
 bool SafetyInputs::read(const Input& input) const { return hal::gpio_read(input.pin) != input.normally_closed; }
 
+// Kilohertz-ISR context: acts on the debounced rising edge only, once per activation, so a switch held
+// closed raises one fault, not one per millisecond.
 void SafetyInputs::run_kilohertz() {
   for (size_t i = 0; i < count_; ++i) {
     Input& input = inputs_[i];
@@ -63,6 +73,8 @@ void SafetyInputs::run_kilohertz() {
   }
 }
 
+// A feed hold remembers the override in force before the first hold so a repeated hold cannot save
+// 0 and make cycle start resume at zero speed. Cycle start without a hold does nothing.
 void SafetyInputs::on_activated(Input& input) {
   switch (input.role) {
     case Role::kLimit:
