@@ -7,6 +7,9 @@
 namespace stepdance::rpc {
 namespace {
 
+// A reader over one request line with no heap: strings are copied into a caller's pool, and the first
+// error is kept (later ones would only describe the damage it caused). Only what docs/rpc.md promises
+// is accepted: an object with "name", "args" (flat: numbers, strings, booleans, null) and "id".
 class Reader {
  public:
   Reader(const char* text, size_t length, char* pool, size_t pool_size)
@@ -38,6 +41,8 @@ class Reader {
   }
 
   /// A string into the pool; `out` points at it.
+  // JSON forbids raw control characters in strings (RFC 8259 §7), so they are a syntax error. The pool
+  // keeps a byte for the terminating NUL, hence `+ 1 >=`.
   bool string(const char*& out) {
     if (!take('"')) return false;
     const size_t start = pool_used_;
@@ -74,6 +79,8 @@ class Reader {
   }
 
   /// \uXXXX: ASCII names and text only (1..0x7F).
+  // Names and arguments are ASCII, so \uXXXX beyond 0x7F (and \u0000, which would cut the C string)
+  // is refused rather than half-decoded; surrogate pairs are therefore never needed.
   bool unicode_escape(char& c) {
     if (position_ + 4 > length_) return fail(JsonError::kSyntax);
     unsigned code = 0;
@@ -89,6 +96,10 @@ class Reader {
     return true;
   }
 
+  // JSON's number grammar (RFC 8259 §6): no leading '+', no bare '.', at least one digit on each side
+  // of the point. Built digit by digit instead of strtod, which is locale-dependent and not on every
+  // firmware libc; the last bit may differ from a correctly rounded parse, well below the 9
+  // significant digits the replies carry.
   bool number(double& out) {
     skip_space();
     const size_t start = position_;
@@ -122,6 +133,8 @@ class Reader {
   }
 
   /// An optional "e[+-]digits", applied to `value`.
+  // The exponent is capped at 1000 while reading so a long digit string cannot overflow an int; pow()
+  // then gives 0 or infinity, and the argument check rejects a non-finite value (code 13).
   bool exponent(double& value) {
     if (position_ >= length_ || (text_[position_] != 'e' && text_[position_] != 'E')) return true;
     ++position_;
@@ -147,6 +160,8 @@ class Reader {
     return true;
   }
 
+  // Arrays and objects are not arguments of any enrolled function, so they are reported as code 3
+  // ("too many or nested arguments") instead of a generic syntax error.
   bool value(JsonValue& out) {
     skip_space();
     if (position_ >= length_) return fail(JsonError::kSyntax);
@@ -170,6 +185,8 @@ class Reader {
   }
 
   /// The id's JSON text, copied as sent (a number or a string with its quotes).
+  // JSON-RPC style: the id is echoed back exactly as sent, so it is kept as text, not parsed. The pool
+  // space used while checking it is given back.
   bool id(char* out, size_t capacity) {
     skip_space();
     const size_t start = position_;
@@ -185,6 +202,8 @@ class Reader {
   }
 
   /// Skips any value (an unknown key's).
+  // Unknown keys are skipped, nested values included, so a client may add fields (a newer client, a
+  // bridge's own tags) without the board refusing its requests.
   bool skip_value() {
     skip_space();
     if (peek('[') || peek('{')) {
@@ -223,6 +242,7 @@ class Reader {
   size_t pool_used_ = 0;
 };
 
+// At most JsonRequest::kMaxArgs (8) arguments; a ninth is code 3, never silently dropped.
 bool read_args(Reader& reader, JsonRequest& out) {
   if (!reader.take('[')) return false;
   out.has_args = true;
@@ -240,6 +260,7 @@ bool read_args(Reader& reader, JsonRequest& out) {
 }
 
 /// One "key": value member of the request object.
+// Keys may come in any order (JSON objects are unordered); "args": null means no arguments.
 bool read_member(Reader& reader, JsonRequest& out, bool& have_name) {
   const char* key;
   if (!reader.string(key) || !reader.take(':')) return false;
@@ -259,6 +280,9 @@ bool read_member(Reader& reader, JsonRequest& out, bool& have_name) {
 
 }  // namespace
 
+// Loop context. Anything after the closing brace is a syntax error (one request per line), and a
+// request without "name" is code 2 even if otherwise well formed. `out` is reset first so a failed
+// parse never leaves a previous request's arguments behind.
 JsonError parse_request(const char* line, size_t length, JsonRequest& out, char* pool, size_t pool_size) {
   out = JsonRequest{};
   Reader reader(line, length, pool, pool_size);

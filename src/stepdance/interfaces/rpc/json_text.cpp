@@ -5,6 +5,8 @@
 
 namespace stepdance::rpc {
 
+// Nine significant digits: enough to read a float parameter back exactly, and the format docs/rpc.md
+// describes (exponent form only for very large or small values).
 void write_json_number(TextWriter& out, double value) {
   if (!isfinite(value)) {
     out.text("null");  // JSON has no NaN or infinity
@@ -13,6 +15,8 @@ void write_json_number(TextWriter& out, double value) {
   out.significant(value, 9);
 }
 
+// Escapes what RFC 8259 requires (quote, backslash, control characters) and every non-ASCII byte as
+// \u00XX, so a reply is plain ASCII whatever a fault detail or name contains.
 void write_json_string(TextWriter& out, const char* text) {
   out.character('"');
   for (const char* c = text; *c != '\0'; ++c) {

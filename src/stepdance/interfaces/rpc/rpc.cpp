@@ -12,6 +12,7 @@ constexpr int kRequestsPerLoop = 8;
 
 }  // namespace
 
+// RPC runs only in loop context: requests call sketch methods that are not written to be ISR-safe.
 Status RPC::begin_stream(ByteStream& stream) {
   (void)stream;  // the link keeps it: link_stream()
   return register_in(Stage::kLoop);
@@ -19,6 +20,8 @@ Status RPC::begin_stream(ByteStream& stream) {
 
 // ---- enrolling ---------------------------------------------------------------------------------------
 
+// The member-function pointer is stored as bytes next to its object; the typed invoker chosen at
+// enroll time (rpc_arguments.hpp) copies it back to its type. No heap and no std::function on firmware.
 rpc::Entry* RPC::add_method(const char* instance_name, const char* name, void* instance, const void* method,
                             size_t method_bytes) {
   rpc::Entry* entry = registry_.add(instance_name, name, false);
@@ -37,6 +40,10 @@ void RPC::enroll_port(const char* instance_name, const char* name, BlockPort& po
 
 // ---- requests -----------------------------------------------------------------------------------------
 
+// Loop context. Back-pressure instead of loss: a request is read only when its reply surely fits the
+// reply ring (kReplyRoomNeeded), so a host that stops reading makes the board stop taking requests
+// rather than drop answers. At most kRequestsPerLoop requests per call keep dance_loop() responsive,
+// and a half-sent __index__ reply goes on before any new request so its lines are not interleaved.
 void RPC::loop() {
   ByteStream* stream = link_stream();
   if (stream == nullptr) return;
@@ -54,6 +61,8 @@ void RPC::loop() {
   flush_replies();
 }
 
+// The order of checks follows docs/rpc.md's codes: 14 line too long, 1–4 parse errors, then the
+// built-in names (__index__, __describe__, __subscribe__, __unsubscribe__), then 10 unknown name.
 void RPC::handle_line() {
   if (lines_.overflowed()) {
     reply_error(14, "line too long", "");
@@ -75,6 +84,8 @@ void RPC::handle_line() {
   }
 }
 
+// The invoker writes ",\"return\":…" after the "ok" prefix; on a problem the partial reply is
+// discarded and an error reply is sent instead, so a client never sees both.
 void RPC::call(rpc::Entry& entry, const rpc::JsonRequest& request) {
   char storage[256];
   TextWriter reply(storage, sizeof(storage));
@@ -100,6 +111,7 @@ void RPC::reply_ok(const char* id) {
   replies_.send_line(reply);
 }
 
+// The id is echoed only when the request had one; a request that failed to parse may have none.
 void RPC::reply_error(int code, const char* message, const char* id) {
   ++errors_replied_;
   char storage[192];
@@ -113,6 +125,8 @@ void RPC::reply_error(int code, const char* message, const char* id) {
   replies_.send_line(reply);
 }
 
+// The index can be larger than the reply ring, so it is sent as one JSON line in pieces, each
+// waiting for room (continue_index); loop() sends nothing else until the line is complete.
 void RPC::reply_index(const rpc::JsonRequest& request, bool describe) {
   memcpy(index_id_, request.id, sizeof(index_id_));
   index_describes_ = describe;
@@ -147,6 +161,8 @@ void RPC::continue_index() {
   }
 }
 
+// A signature "args:return" (one letter per type, see rpc_arguments.hpp) becomes
+// "function <args> <return>", with '-' for no arguments and 'v' (void) when there is no return part.
 void RPC::write_description(TextWriter& out, const rpc::Entry& entry) {
   if (entry.parameter) {
     out.text(":\"parameter ").text(entry.signature).character('"');

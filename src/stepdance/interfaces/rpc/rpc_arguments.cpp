@@ -5,6 +5,8 @@
 
 namespace stepdance::rpc {
 
+// The three port operations Registry::add_port enrolls, chosen by callable[0]: 0 read (the port's
+// absolute position), 1 read_deep (through the chain), 2 reset_deep(position) (no motion).
 Problem invoke_port(Entry& entry, const JsonRequest& request, TextWriter& reply) {
   BlockPort& port = *static_cast<BlockPort*>(entry.object);
   const uint8_t operation = entry.callable[0];

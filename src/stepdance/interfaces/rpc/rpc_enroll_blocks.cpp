@@ -8,6 +8,8 @@
 
 namespace stepdance {
 
+// The names follow the original library's RPC (docs/rpc.md), so its clients work unchanged; the
+// parameter is spelt "speed_override" although the member keeps the original's speed_overide.
 void RPC::enroll_block(const char* name, TimeBasedInterpolator& interpolator) {
   using Tbi = TimeBasedInterpolator;
   enroll(name, "add_move", interpolator, &Tbi::add_move);

@@ -15,6 +15,8 @@ const char* subscribe_error_text(int code) {
 
 }  // namespace
 
+// __subscribe__(name) and __unsubscribe__(name), or __unsubscribe__() for everything. Subscribing twice
+// is not an error; codes 10, 15 and 16 as docs/rpc.md lists them.
 bool RPC::handle_subscription(const rpc::JsonRequest& request) {
   const bool adding = strcmp(request.name, "__subscribe__") == 0;
   if (!adding && strcmp(request.name, "__unsubscribe__") != 0) return false;
@@ -39,6 +41,8 @@ bool RPC::handle_subscription(const rpc::JsonRequest& request) {
   return true;
 }
 
+// Loop context. Events go out only between whole reply lines (never inside an __index__ line) and
+// only when one surely fits, so a slow host delays events instead of receiving a cut line.
 void RPC::send_events() {
   if (index_cursor_ >= 0) return;  // not in the middle of __index__'s line
   send_fault_events();
@@ -51,6 +55,7 @@ void RPC::send_events() {
   }
 }
 
+// Fault events first, all that fit: they are rarer and matter more than value changes.
 void RPC::send_fault_events() {
   while (replies_.reserve(kEventRoomNeeded)) {
     char storage[256];

@@ -8,6 +8,9 @@
 
 namespace stepdance::rpc {
 
+// Loop context (setup). A name that does not fit is refused and reported on the fault path, never
+// truncated: a truncated name could collide with another. Enrolling a name again replaces the entry,
+// so a sketch can re-enroll after changing a block.
 Entry* Registry::add(const char* prefix, const char* suffix, bool parameter) {
   const size_t prefix_length = strlen(prefix);
   const size_t suffix_length = strlen(suffix);
@@ -33,6 +36,7 @@ Entry* Registry::add(const char* prefix, const char* suffix, bool parameter) {
   return entry;
 }
 
+// A port is three entries: "<port>.read", ".read_deep" (both watchable) and ".reset_deep(position)".
 void Registry::add_port(const char* name, BlockPort& port) {
   static const char* const kOperations[] = {"read", "read_deep", "reset_deep"};
   for (uint8_t operation = 0; operation < 3; ++operation) {

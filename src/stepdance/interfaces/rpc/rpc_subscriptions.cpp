@@ -13,6 +13,9 @@ Subscriptions::~Subscriptions() {
   if (fault_listener_ == this) fault_listener_ = nullptr;
 }
 
+// Only readers and parameters can be watched (code 15): watching calls them repeatedly, so a function
+// with side effects must not be. on_fault() takes a plain function with no context pointer, so the
+// listener is found through a static: one Subscriptions object listens at a time (code 16 for another).
 int Subscriptions::subscribe(const Registry& registry, const char* name) {
   if (strcmp(name, kFaults) == 0) {
     if (fault_listener_ != this) {
@@ -51,6 +54,9 @@ void Subscriptions::unsubscribe_all() {
   fault_events_ = false;
 }
 
+// Loop context. The value is compared as its JSON text, so only a change that shows in the reply
+// makes an event, and each name sends at most one event per kMinEventIntervalUs (20 ms, 50/s).
+// The unsigned subtraction is correct across the 32-bit microsecond wrap (~71 minutes).
 bool Subscriptions::change_event(size_t slot_index, Registry& registry, uint32_t now_us, TextWriter& event) {
   Slot& slot = slots_[slot_index];
   if (slot.entry < 0) return false;
@@ -71,6 +77,8 @@ bool Subscriptions::change_event(size_t slot_index, Registry& registry, uint32_t
   return true;
 }
 
+// Called by the fault path in loop context (on_fault, core/fault.hpp), so no locking is needed. A full
+// queue counts the loss instead of overwriting an older report.
 void Subscriptions::on_fault_report(const FaultReport& report) {
   Subscriptions* self = fault_listener_;
   if (self == nullptr || !self->fault_events_) return;
@@ -81,6 +89,7 @@ void Subscriptions::on_fault_report(const FaultReport& report) {
   self->pending_faults_[self->pending_fault_count_++] = report;
 }
 
+// Oldest first; the queue is small (kMaxPendingFaultEvents), so shifting it down is cheap.
 bool Subscriptions::fault_event(TextWriter& event) {
   if (pending_fault_count_ == 0) return false;
   const FaultReport report = pending_faults_[0];
