@@ -38,6 +38,9 @@ constexpr uint8_t kLineUnknown = 0x01;  // a row cache entry that matches no tex
 
 }  // namespace
 
+// Loop context only: the display is drawn in RAM and sent over I2C from the loop, never from the frame
+// (a full 512-byte refresh is about 12 ms of wire time at 400 kHz). Everything starts dirty so the first pass after the
+// init sequence paints the whole panel, whatever it showed before a reset.
 Status OledDisplay::begin(uint8_t bus, uint8_t address) {
   if (address > 0x7F) return Status::kBadArgument;
   bus_ = &qwiic_bus(bus);
@@ -52,12 +55,16 @@ Status OledDisplay::begin(uint8_t bus, uint8_t address) {
   return register_in(Stage::kLoop);
 }
 
+// The text-row cache is invalidated too, so the next print_line() redraws even the same text.
 void OledDisplay::clear() {
   for (uint8_t& column : ram_) column = 0;
   dirty_chunks_ = 0xFFFF;
   for (auto& line : lines_) line[0] = static_cast<char>(kLineUnknown);
 }
 
+// SSD1306 display RAM layout (datasheet, GDDRAM): a byte is 8 vertical pixels of one page (8 rows), bit 0 at the
+// top, so y selects page y/8 and bit y%8. Only a real change marks its chunk dirty, keeping the bus idle
+// for a static picture.
 void OledDisplay::set_pixel(uint8_t x, uint8_t y, bool on) {
   if (x >= kWidthPx || y >= kHeightPx) return;
   const uint8_t page = y / 8;
@@ -75,6 +82,8 @@ bool OledDisplay::pixel(uint8_t x, uint8_t y) const {
   return (ram_[(y / 8) * kWidthPx + x] >> (y % 8)) & 1u;
 }
 
+// Text rows are the 4 pages of the 128×32 panel; each character is a 6-pixel cell (5 glyph columns and
+// one blank), 21 cells to a row. Only changed bytes are written to RAM and marked dirty.
 void OledDisplay::draw_text(uint8_t column, uint8_t row, const char* text) {
   if (row >= kTextRows || text == nullptr) return;
   uint8_t* page = &ram_[row * kWidthPx];
@@ -93,6 +102,8 @@ void OledDisplay::draw_text(uint8_t column, uint8_t row, const char* text) {
   lines_[row][0] = static_cast<char>(kLineUnknown);
 }
 
+// For a status screen redrawn every refresh: the row is padded to its full width (so shorter text
+// erases what was there) and skipped entirely when identical to what the row already shows.
 void OledDisplay::print_line(uint8_t row, const char* text) {
   if (row >= kTextRows || text == nullptr) return;
   char padded[kTextColumns + 1];
@@ -108,17 +119,23 @@ void OledDisplay::print_line(uint8_t row, const char* text) {
   for (uint8_t i = 0; i <= kTextColumns; ++i) lines_[row][i] = padded[i];
 }
 
+// Dirty state is one bit per 32-column chunk of a page: 4 pages × 4 chunks = the 16 bits of dirty_chunks_.
+// A chunk is the unit of transfer, small enough that one I2C write never holds the bus for long.
 void OledDisplay::mark_dirty(uint8_t page, uint8_t first_x, uint8_t last_x) {
   for (uint8_t run = first_x / kChunkColumns; run <= last_x / kChunkColumns; ++run) {
     dirty_chunks_ = static_cast<uint16_t>(dirty_chunks_ | (1u << (page * kChunksPerPage + run)));
   }
 }
 
+// A full bus queue is not an error: the request is left idle and send_next() tries again next pass.
 void OledDisplay::submit(uint8_t length) {
   request_.transfer = hal::I2cTransfer{address_, tx_, length, nullptr, 0};
   if (bus_->submit(request_) != Status::kOk) request_.result = hal::I2cResult::kIdle;  // full: retried next pass
 }
 
+// Loop context, one transfer in flight at a time. After a failure the panel is retried once per
+// kRetryMs with the full init (it may have been unplugged or lost power), so a display plugged in
+// later starts working without a reset.
 void OledDisplay::send_next() {
   if (state_ == State::kNotStarted || request_.in_flight()) return;
   if (state_ == State::kFailed) {
@@ -142,6 +159,8 @@ void OledDisplay::send_init() {
   if (bus_->submit(request_) != Status::kOk) request_.result = hal::I2cResult::kIdle;
 }
 
+// A chunk is two transfers: set the column and page address window (datasheet commands 0x21/0x22),
+// then the data; in horizontal addressing mode the data fills the window left to right.
 void OledDisplay::send_window(uint8_t chunk) {
   step_ = Step::kWindow;
   chunk_ = chunk;
@@ -166,6 +185,8 @@ void OledDisplay::send_data(uint8_t chunk) {
 
 void OledDisplay::on_done(void* self, hal::I2cResult result) { static_cast<OledDisplay*>(self)->finish(result); }
 
+// Bus completion callback (loop context, from QwiicBus::service): the window transfer chains the data
+// transfer of the same chunk.
 void OledDisplay::finish(hal::I2cResult result) {
   if (result != hal::I2cResult::kOk) {
     fail(result);
@@ -186,6 +207,7 @@ void OledDisplay::finish(hal::I2cResult result) {
   }
 }
 
+// Logs only a new kind of failure: a panel that stays absent would otherwise log every second.
 void OledDisplay::fail(hal::I2cResult result) {
   ++failures_;
   // A display that came back after a failure may have lost power: it gets the whole init again

@@ -17,6 +17,9 @@ uint8_t high_byte(uint16_t value) { return static_cast<uint8_t>(value >> 8); }
 
 }  // namespace
 
+// Two stages: the loop polls the knob over I2C, the frame (pre-channel) hands the latest count to the
+// output port. The count starts at 0 whatever the knob's register holds, so plugging in a knob that
+// was turned before never moves the machine.
 Status QwiicTwist::begin(uint8_t bus, uint8_t address) {
   if (address > 0x7F) return Status::kBadArgument;
   bus_ = &qwiic_bus(bus);
@@ -35,12 +38,16 @@ Status QwiicTwist::begin(uint8_t bus, uint8_t address) {
   return register_in(Stage::kLoop);
 }
 
+// 5 ms at the fastest: each poll is a 13-byte transfer on a bus shared with other devices (a display).
 Status QwiicTwist::set_poll_interval_ms(uint16_t interval_ms) {
   if (interval_ms < 5 || interval_ms > 1000) return Status::kBadArgument;
   poll_interval_ms_ = interval_ms;
   return Status::kOk;
 }
 
+// Loop context. Identification (the ID register must read 0x5C, SparkFun's Qwiic Twist register map)
+// comes before any poll, and is retried once per kRetryMs after a failure or a wrong device. Writes
+// (colour, clearing events) go out only when the knob is known to be ready.
 void QwiicTwist::service() {
   if (state_ == State::kNotStarted) return;
   const uint32_t now_us = hal::micros_now();
@@ -65,6 +72,8 @@ void QwiicTwist::service() {
   }
 }
 
+// One write-then-read transfer: register 0x01 (status) through 0x0C (time since the button), so one
+// poll gives status, version, count and both timers consistently.
 void QwiicTwist::start_read() {
   const bool identifying = state_ == State::kIdentifying;
   read_command_ = identifying ? twist::kId : kFirstPolled;
@@ -99,6 +108,10 @@ void QwiicTwist::finish_read(hal::I2cResult result) {
   take_registers();
 }
 
+// The knob's count register is a 16-bit signed value that wraps; the position is the sum of the
+// wrapped differences, so it grows past ±32767 without a jump. The first poll after identification
+// (or after writing the count) only sets the baseline. Events (moved, clicked) latch in the status
+// register until written back as 0, so exactly those bits are cleared, and a click is counted once.
 void QwiicTwist::take_registers() {
   const auto at = [this](uint8_t reg) { return &registers_[reg - kFirstPolled]; };
   const uint8_t status = *at(twist::kStatus);
@@ -145,6 +158,8 @@ void QwiicTwist::fail(hal::I2cResult result, State state) {
   hal::log_message(line.c_str());
 }
 
+// A register write is the register address then its bytes (little-endian for 16-bit registers); the
+// small queue keeps them in order and refuses when full rather than overwrite one.
 Status QwiicTwist::queue_write(const uint8_t* bytes, uint8_t length) {
   if (length > sizeof writes_[0].bytes) return Status::kBadArgument;
   if (write_count_ == kWriteQueue) return Status::kFull;
@@ -168,6 +183,7 @@ Status QwiicTwist::connect_color(int16_t red_per_detent, int16_t green_per_deten
   return queue_write(bytes, sizeof bytes);
 }
 
+// Writes the knob's own count register; the machine-side count (count_) is not changed by it.
 Status QwiicTwist::set_register_count(int16_t count) {
   const auto value = static_cast<uint16_t>(count);
   const uint8_t bytes[] = {twist::kCount, low_byte(value), high_byte(value)};
@@ -187,6 +203,9 @@ Status QwiicTwist::set_turn_interrupt_timeout_ms(uint16_t timeout_ms) {
   return queue_write(bytes, sizeof bytes);
 }
 
+// Frame context (pre-channel). The loop pushes counts into a single-producer/single-consumer queue;
+// the frame drains it and uses the latest, so a slow loop never makes the frame wait and stale counts
+// are skipped. When the queue is full the loop drops that count and a later one carries the position.
 void QwiicTwist::run() {
   int32_t latest = 0;
   bool fresh = false;

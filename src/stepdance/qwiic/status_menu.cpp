@@ -10,6 +10,8 @@ constexpr uint8_t kMenuRows = OledDisplay::kTextRows - 1;  // row 0 is the title
 constexpr uint8_t kMaxDecimals = 6;
 }  // namespace
 
+// Loop context. The knob's count and clicks at begin() are the baseline, so turns made before the menu
+// existed do not move its cursor.
 Status StatusMenu::begin(OledDisplay* display, QwiicTwist* knob, const char* title) {
   if (display == nullptr) return Status::kBadArgument;
   display_ = display;
@@ -22,6 +24,8 @@ Status StatusMenu::begin(OledDisplay* display, QwiicTwist* knob, const char* tit
   return register_in(Stage::kLoop);
 }
 
+// The cursor starts on the first selectable item (a parameter or an action); read-only values are
+// skipped by the cursor.
 Status StatusMenu::add(const Item& item) {
   if (item_count_ == kMaxItems) return Status::kFull;
   if (item.decimals > kMaxDecimals) return Status::kBadArgument;
@@ -49,6 +53,7 @@ Status StatusMenu::add_value(const char* label, const volatile float* value, uin
   return add(item);
 }
 
+// Rejects a step that is not positive and a reversed range (the `!(…)` forms also reject NaN).
 Status StatusMenu::add_parameter(const char* label, ControlParameter* parameter, float step, float minimum,
                                  float maximum, uint8_t decimals, Changed on_change) {
   if (parameter == nullptr || !(step > 0) || !(minimum <= maximum)) return Status::kBadArgument;
@@ -74,12 +79,16 @@ Status StatusMenu::add_action(const char* label, Action action) {
   return add(item);
 }
 
+// 20 ms (50 Hz) at the fastest: a full text redraw is 4 rows of I2C traffic; 10 s at the slowest so
+// values do not look frozen.
 Status StatusMenu::set_refresh_ms(uint16_t refresh_ms) {
   if (refresh_ms < 20 || refresh_ms > 10000) return Status::kBadArgument;
   refresh_ms_ = refresh_ms;
   return Status::kOk;
 }
 
+// Redraws at once after a knob event (the cursor must follow the hand) and otherwise every refresh_ms_
+// for the live values.
 void StatusMenu::loop() {
   const bool changed = handle_knob();
   const uint32_t now_us = hal::micros_now();
@@ -90,6 +99,8 @@ void StatusMenu::loop() {
 }
 
 // True if the knob did something.
+// Differences of the knob's counters, not events, so no turn or click is lost between two passes.
+// A turn moves the cursor, or edits the value when a click has entered edit mode.
 bool StatusMenu::handle_knob() {
   if (knob_ == nullptr) return false;
   const int32_t detents = knob_->count() - seen_count_;
@@ -101,6 +112,7 @@ bool StatusMenu::handle_knob() {
   return detents != 0 || clicks != 0;
 }
 
+// One selectable item per detent, skipping read-only rows; the cursor stops at the ends (no wrap).
 void StatusMenu::move_cursor(int32_t detents) {
   if (selected_ == kMaxItems) return;
   const int32_t direction = detents > 0 ? 1 : -1;
@@ -112,6 +124,7 @@ void StatusMenu::move_cursor(int32_t detents) {
   }
 }
 
+// value += detents × step, clamped to the item's range; the callback sees the value actually stored.
 void StatusMenu::change_parameter(int32_t detents) {
   Item& item = items_[selected_];
   float value = *item.parameter + static_cast<float>(detents) * item.step;
@@ -131,6 +144,8 @@ void StatusMenu::click() {
   }
 }
 
+// Row format: a cursor mark ('>' selected, '*' editing), the label, then the value with its decimals;
+// TextWriter truncates a long row at the display's 21 columns.
 void StatusMenu::render_item(uint8_t index, char* row) const {
   const Item& item = items_[index];
   TextWriter line(row, OledDisplay::kTextColumns + 1);
@@ -142,6 +157,7 @@ void StatusMenu::render_item(uint8_t index, char* row) const {
   line.character(' ').fixed(value, item.decimals);
 }
 
+// The visible window scrolls just enough to keep the cursor on one of the rows below the title.
 void StatusMenu::render() {
   // Keep the cursor in the window of kMenuRows rows.
   if (selected_ != kMaxItems) {
