@@ -21,6 +21,8 @@ int index_of(Block* const* blocks, size_t count, const Block* block) {
 }
 
 /// +1: data flows from the port's owner to the peer's owner; -1: the other way; 0: unknown.
+// The direction of a mapping comes from whichever side declares it; an undeclared pair gives no
+// ordering constraint.
 int flow(const BlockPort& port, const BlockPort& peer) {
   if (port.direction() == BLOCKPORT_OUTPUT) return 1;
   if (port.direction() == BLOCKPORT_INPUT) return -1;
@@ -63,6 +65,9 @@ void name_unplaced(Block* const* blocks, size_t count, Mask placed, char* text, 
 
 }  // namespace
 
+// Kahn's algorithm, always taking the earliest-begun ready block, so blocks with no data dependency
+// keep their begin() order (stable: the order a sketch author expects). O(n²) over at most 64 blocks
+// with bitmask sets, at start only. On a cycle nothing is reordered.
 bool order_by_graph(Block** blocks, size_t count, char* cycle_names, size_t names_capacity) {
   if (names_capacity > 0) cycle_names[0] = '\0';
   if (count > kMaxOrderedBlocks) {

@@ -12,6 +12,8 @@ BlockPort::BlockPort() : target_(&own_state_) {}
 
 BlockPort::~BlockPort() { detach(); }
 
+// Every port with a parent joins one intrusive list (no heap), so the engine can order blocks by
+// their mappings and homing can find every source feeding a target.
 void BlockPort::attach() {
   if (attached_) return;
   next_attached_ = first_attached_;
@@ -31,6 +33,7 @@ void BlockPort::detach() {
   attached_ = false;
 }
 
+// The buffers start at the target's current value so the first update() produces no change.
 void BlockPort::begin(DecimalPosition* target, BlockPortDirection direction, Block* parent) {
   target_ = target != nullptr ? target : &own_state_;
   direction_ = direction;
@@ -41,12 +44,16 @@ void BlockPort::begin(DecimalPosition* target, BlockPortDirection direction, Blo
   update_has_run_ = true;
 }
 
+// world_units of the outside world per block_units inside the block (e.g. 1 mm per 40 steps); both
+// directions are stored so neither conversion divides. A zero is ignored rather than dividing by it.
 void BlockPort::set_ratio(double world_units, double block_units) {
   if (world_units == 0.0 || block_units == 0.0) return;
   world_per_block_ = world_units / block_units;
   block_per_world_ = block_units / world_units;
 }
 
+// The running totals start equal, so mapping a port to one that has already moved does not deliver
+// that past motion as a jump.
 void BlockPort::map(BlockPort* peer, PositionMode mode) {
   peer_ = peer;
   mode_ = mode;
@@ -54,6 +61,9 @@ void BlockPort::map(BlockPort* peer, PositionMode mode) {
   pulled_total_ = peer != nullptr ? peer->committed_total() : 0.0;
 }
 
+// The buffer algebra (original-library.md §3): several writers may write one port within a
+// frame; incremental writes add up, an absolute write replaces the base. The first write after an
+// update() starts a new frame's sum.
 void BlockPort::write(double world_value, PositionMode mode) {
   if (update_has_run_) {
     incremental_buffer = 0;
@@ -67,12 +77,15 @@ void BlockPort::write(double world_value, PositionMode mode) {
   }
 }
 
+// committed_world_ is the running total of every change in world units; pushes and pulls of peers
+// deliver differences of it, so nothing is lost or counted twice however often they run.
 void BlockPort::commit(double block_change) {
   incremental_buffer = block_change;
   committed_world_ += block_change * world_per_block_;
   update_has_run_ = true;
 }
 
+// Frame context, by the owner block: applies this frame's writes to the target.
 void BlockPort::update() {
   if (update_has_run_) incremental_buffer = 0;  // nothing written since the last update
   const double position = absolute_buffer + incremental_buffer;
@@ -82,6 +95,8 @@ void BlockPort::update() {
   commit(change);
 }
 
+// For a target changed directly (by an ISR, say) rather than through write(): the buffers take the
+// target's value and the change is committed for the peers.
 void BlockPort::reverse_update() {
   const double position = *target_;
   const double change = position - absolute_buffer;
@@ -89,6 +104,7 @@ void BlockPort::reverse_update() {
   commit(change);
 }
 
+// Like write() then update() in one step, in block units, for a source block that owns its value.
 void BlockPort::set(double block_value, PositionMode mode) {
   const double position = mode == INCREMENTAL ? *target_ + block_value : block_value;
   const double change = position - *target_;
@@ -97,6 +113,8 @@ void BlockPort::set(double block_value, PositionMode mode) {
   commit(change);
 }
 
+// Moves the port without motion: the target jumps but nothing is committed, so peers see no change.
+// raw: value is already in block units.
 void BlockPort::reset(double value, bool raw) {
   const double position = raw ? value : value * block_per_world_;
   hal::CriticalSection guard;
@@ -108,6 +126,8 @@ void BlockPort::reset(double value, bool raw) {
 
 void BlockPort::push() { push(mode_); }
 
+// A disabled (gated) port drops its changes instead of storing them, so re-enabling an input does not
+// deliver everything that happened while it was off in one jump.
 void BlockPort::push(PositionMode mode) {
   if (peer_ == nullptr) return;
   if (!enabled_) {
@@ -125,6 +145,7 @@ void BlockPort::push(PositionMode mode) {
 
 void BlockPort::pull() { pull(mode_); }
 
+// The mirror of push(): the reading side takes the difference of the peer's committed total.
 void BlockPort::pull(PositionMode mode) {
   if (peer_ == nullptr) return;
   if (!enabled_) {
@@ -141,6 +162,8 @@ void BlockPort::pull(PositionMode mode) {
   }
 }
 
+// Before update() has run this frame, the read includes the writes pending in the buffers; after it,
+// only what was applied. Result in world units.
 double BlockPort::read(PositionMode mode) const {
   if (update_has_run_) {
     return (mode == INCREMENTAL ? incremental_buffer : absolute_buffer) * world_per_block_;
@@ -163,6 +186,7 @@ void BlockPort::push_deep(double world_value) {
   }
 }
 
+// Asks the chain upstream for its position and resets every port on the way to it, without motion.
 double BlockPort::pull_deep() {
   hal::CriticalSection guard;
   if (direction_ == BLOCKPORT_OUTPUT && peer_ != nullptr) {
@@ -174,6 +198,7 @@ double BlockPort::pull_deep() {
   return read(ABSOLUTE);
 }
 
+// Reads the position at the end of the chain (the machine side) without changing anything.
 double BlockPort::read_deep() {
   if (direction_ == BLOCKPORT_OUTPUT && peer_ != nullptr) return peer_->read_deep();
   if (direction_ == BLOCKPORT_INPUT && parent_ != nullptr) return parent_->read_deep(*this);

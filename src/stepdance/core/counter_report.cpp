@@ -35,6 +35,8 @@ class CounterForwarder : public CounterSink {
 
 }  // namespace
 
+// Loop context (reports, the simulator's counter dump). Blocks are numbered per class in engine order
+// (Channel 0, Channel 1, …), the way a user names them.
 void report_block_counters(CounterEmit emit, void* context) {
   CounterForwarder forwarder(emit, context);
   engine().for_each_block([](Block* block, void* state) { static_cast<CounterForwarder*>(state)->visit(*block); },

@@ -14,6 +14,8 @@ stepdance::Status add_function_to_frame(void (*function)()) {
   return engine().add_frame_function(function);
 }
 
+// The original's CPU-usage calls, as fractions of the frame budget (frame time in cycles over cycles
+// per frame period), peak and average.
 float stepdance_get_cpu_usage() { return static_cast<float>(engine().load().peak_fraction()); }
 
 float stepdance_get_average_cpu_usage() {
@@ -24,6 +26,9 @@ uint32_t stepdance_get_frame_overruns() { return engine().load().overruns(); }
 
 void stepdance_metrics_reset() { engine().reset_load(); }
 
+// The first call only starts the clock. Later calls keep the schedule (last += interval) so the mean
+// rate is exact despite loop jitter, unless the loop fell more than a whole interval behind: then it
+// resynchronises instead of firing a burst of catch-up calls.
 void LoopDelay::periodic_call(void (*function)(), uint32_t interval_ms) {
   // Microseconds wrap every ~71.6 minutes; unsigned differences stay right across the wrap.
   const uint32_t now_us = stepdance::hal::micros_now();

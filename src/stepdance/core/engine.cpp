@@ -26,6 +26,8 @@ const char* to_string(Stage stage) {
   return index < kNumStages ? kRegistryNames[index] : "unknown stage";
 }
 
+// A function-local static, made on first use: blocks are often globals, constructed in an order
+// that is unspecified across files, so the engine must exist whenever the first of them asks.
 Engine& engine() {
   static Engine instance;
   return instance;
@@ -44,6 +46,9 @@ size_t Engine::capacity(Stage stage) {
   return 0;
 }
 
+// Registering twice is harmless (a begin() called again, several devices on one QwiicBus).
+// A full registry is fatal, not a warning: a block that silently never runs would be a machine that
+// ignores part of its sketch.
 Status Engine::add(Stage stage, Block* block) {
   if (block == nullptr) return Status::kBadArgument;
   Registry& blocks = registry(stage);
@@ -57,6 +62,7 @@ Status Engine::add(Stage stage, Block* block) {
   return blocks.push_back(block);
 }
 
+// Called from Block's destructor; under a critical section so a frame never runs a destroyed block.
 void Engine::remove(Block* block) {
   hal::CriticalSection guard;
   for (Registry& blocks : registries_) blocks.remove(block);
@@ -64,6 +70,9 @@ void Engine::remove(Block* block) {
 
 size_t Engine::count(Stage stage) const { return registry(stage).size(); }
 
+// The original's add_function_to_frame() (original-library.md §1.3): functions added before
+// dance_start() run before the input-port stage, those added while running after the post-channel
+// stage. Unlike the original, a full table is reported, not silently ignored.
 Status Engine::add_frame_function(FrameFunction function) {
   if (function == nullptr) return Status::kBadArgument;
   auto& functions = running_ ? late_functions_ : early_functions_;
@@ -75,6 +84,9 @@ Status Engine::add_frame_function(FrameFunction function) {
   return Status::kOk;
 }
 
+// Every block checks the frame period first (a refusal leaves nothing running), then the stages are
+// ordered once, here, not per frame. A fatal fault in force refuses the start until clear_fault().
+// The frame budget is the CPU cycles in one frame period, the denominator of the load figures.
 Status Engine::start() {
   if (fault_reason() != FaultReason::kNone) return Status::kBadArgument;
   if (running_) return Status::kOk;
@@ -102,6 +114,9 @@ bool Engine::blocks_accept_frame_period() {
   return accepted;
 }
 
+// Within a stage, a block must run after the blocks that feed it through BlockPorts, or its input
+// would be one frame late (the original ran registration order: original-library.md §1.3). A cycle cannot be ordered: begin() order is kept and a warning names
+// the blocks, since the sketch still runs (with one frame of delay in the loop).
 void Engine::order_stages() {
   for (uint8_t stage = 0; stage < kNumStages; ++stage) {
     Registry& blocks = registries_[stage];
@@ -116,6 +131,7 @@ void Engine::stop() {
   running_ = false;
 }
 
+// Frame context: a disabled block is skipped, not removed, so enable() resumes it in place.
 void Engine::run_stage(Registry& blocks) {
   uint32_t ran = 0;  // counted locally: a member would be reloaded around every virtual call
   for (Block* block : blocks) {
@@ -126,6 +142,10 @@ void Engine::run_stage(Registry& blocks) {
   blocks_run_ += ran;
 }
 
+// Frame-ISR context, once per frame period (40 µs by default; spec "Frames"). Stage order: input
+// ports, pre-channel, channels, output ports, post-channel (the original's, original-library.md §1.3),
+// so a pulse received or generated in a frame leaves on the output ports in that same frame. The
+// cycle count covers the whole frame, for stepdance_get_cpu_usage() and the overrun count.
 void Engine::run_frame() {
   blocks_run_ = 0;
   const uint32_t started = hal::cycles_now();
@@ -136,12 +156,15 @@ void Engine::run_frame() {
   load_.record(hal::cycles_now() - started, frame_budget_cycles_);
 }
 
+// Kilohertz-ISR context (1 ms): slow inputs (buttons, analog maps) that need not run every frame.
 void Engine::run_kilohertz_tick() {
   for (Block* block : registry(Stage::kKilohertz)) {
     if (block->is_enabled()) block->run_kilohertz();
   }
 }
 
+// Loop context (dance_loop). Fault subscribers are called here so a report made in an ISR is handled
+// where it may print or send a reply.
 void Engine::run_loop() {
   ++loop_passes_;
   for (Block* block : registry(Stage::kLoop)) {
@@ -150,6 +173,7 @@ void Engine::run_loop() {
   deliver_fault_reports();  // subscribers run here, in the loop, never in the frame
 }
 
+// A block registered in several stages is visited once, at its first stage.
 void Engine::for_each_block(void (*visit)(Block* block, void* context), void* context) {
   for (uint8_t stage = 0; stage < kNumStages; ++stage) {
     for (Block* block : registries_[stage]) {
@@ -160,6 +184,7 @@ void Engine::for_each_block(void (*visit)(Block* block, void* context), void* co
   }
 }
 
+// For tests and fuzzers: everything back to an empty, stopped engine.
 void Engine::clear() {
   stop();
   hal::CriticalSection guard;

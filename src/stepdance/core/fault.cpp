@@ -21,6 +21,8 @@ FaultSubscriber subscribers[kMaxFaultSubscribers] = {};
 WarningTally tallies[kWarningKinds];
 uint32_t tally_count = 0;
 
+// Sources are usually string literals, so the pointer test decides most calls; the loop covers the
+// same text from two translation units.
 bool same_source(const char* a, const char* b) {
   if (a == b) return true;
   while (*a != '\0' && *a == *b) {
@@ -31,6 +33,8 @@ bool same_source(const char* a, const char* b) {
 }
 
 // Adds one to the kind's tally (a new kind keeps `detail`). Call inside a critical section.
+// Warnings can repeat at frame rate (a refused pulse, an underrun), so they are tallied per
+// (reason, source) instead of stored one by one; a full tally table still counts in `warnings`.
 void tally_warning(FaultReason reason, const char* source, const char* detail) {
   warnings = warnings + 1;
   for (uint32_t i = 0; i < tally_count; ++i) {
@@ -45,6 +49,8 @@ void tally_warning(FaultReason reason, const char* source, const char* detail) {
 
 void fault_without_report(FaultReason reason, const char* detail);
 
+// Any context, frame ISR included: a fixed ring, no allocation, no I/O. When the loop falls behind,
+// the oldest reports are overwritten and counted as lost at delivery.
 void record(FaultLevel level, FaultReason reason, const char* source, const char* detail) {
   hal::CriticalSection guard;
   const uint32_t sequence = reports_made + 1;
@@ -86,6 +92,8 @@ const char* to_string(FaultLevel level) {
   return "unknown";
 }
 
+// Three levels: a warning counts and goes on; an alarm stays raised until clear_alarm() (interfaces
+// map it to their own alarm state, e.g. Grbl's); fatal stops the machine at once.
 void report_fault(FaultLevel level, FaultReason reason, const char* source, const char* detail) {
   record(level, reason, source, detail);
   if (level == FaultLevel::kFatal) {
@@ -123,6 +131,8 @@ void clear_fault_subscribers() {
   for (FaultSubscriber& slot : subscribers) slot = nullptr;
 }
 
+// Loop context. Copies each report out under a critical section (an ISR may be writing the ring) and
+// calls the subscribers outside it, so a slow subscriber never holds interrupts off.
 void deliver_fault_reports() {
   const uint32_t newest = reports_made;
   if (newest - reports_delivered > kFaultReportHistory) {
@@ -143,6 +153,7 @@ void deliver_fault_reports() {
   }
 }
 
+// The highest level in force: fatal, then alarm, then warning, 0 for none.
 uint8_t fault_level() {
   if (first_reason != FaultReason::kNone) return static_cast<uint8_t>(FaultLevel::kFatal);
   if (alarm_raised) return static_cast<uint8_t>(FaultLevel::kAlarm);
@@ -162,12 +173,15 @@ uint32_t warning_count() { return warnings; }
 bool alarm_active() { return alarm_raised; }
 void clear_alarm() { alarm_raised = false; }
 
+// The fatal path for the core's own broken invariants; the source is "core".
 void fault(FaultReason reason, const char* detail) {
   record(FaultLevel::kFatal, reason, "core", detail);
   fault_without_report(reason, detail);
 }
 
 namespace {
+// Only the first fatal fault is kept (later ones are usually consequences); all are counted. The
+// safe state is entered once, by the first, outside the critical section.
 void fault_without_report(FaultReason reason, const char* detail) {
   {
     hal::CriticalSection guard;
@@ -188,6 +202,7 @@ FaultReason fault_reason() { return first_reason; }
 const char* fault_detail() { return first_detail; }
 uint32_t fault_count() { return count; }
 
+// Clears the record only: the engine stays stopped until dance_start() is called again.
 void clear_fault() {
   hal::CriticalSection guard;
   first_reason = FaultReason::kNone;

@@ -8,6 +8,9 @@ namespace stepdance {
 
 FramePeriod detail::chosen_frame_period;
 
+// Only periods that divide 1 ms evenly (10, 20, 25, 40 µs) are accepted, so the kilohertz tick is a whole
+// number of frames and the rates derived here are exact. Before dance_start() only: blocks check the
+// period once, at start (accept_frame_period).
 Status set_frame_period_us(uint32_t period_us) {
   if (engine().running()) {
     fault(FaultReason::kBadConfiguration, "set_frame_period_us: the engine is running (call it before dance_start)");

@@ -11,6 +11,8 @@ void TextWriter::clear() {
   if (capacity_ > 0) data_[0] = '\0';
 }
 
+// Never writes past capacity and keeps the text terminated; overflow is remembered so a caller can
+// refuse a truncated reply instead of sending it.
 TextWriter& TextWriter::character(char value) {
   if (size_ + 1 >= capacity_) {
     overflowed_ = true;
@@ -37,6 +39,7 @@ TextWriter& TextWriter::unsigned_number(uint32_t value) {
   return *this;
 }
 
+// Negated in 64 bits: −INT32_MIN does not fit an int32.
 TextWriter& TextWriter::signed_number(int32_t value) {
   if (value < 0) {
     character('-');
@@ -45,6 +48,8 @@ TextWriter& TextWriter::signed_number(int32_t value) {
   return unsigned_number(static_cast<uint32_t>(value));
 }
 
+// Fixed-point text without printf (large on the firmware, and not something to call from an ISR).
+// At most 6 decimals, and ±1e9 or more prints "ovf": the whole part must fit a uint32.
 TextWriter& TextWriter::fixed(double value, uint8_t decimals) {
   if (isnan(value)) return text("nan");
   if (isinf(value)) return text(value < 0 ? "-inf" : "inf");
@@ -63,6 +68,8 @@ TextWriter& TextWriter::fixed(double value, uint8_t decimals) {
   return padded(static_cast<uint32_t>(scaled - whole * scale), decimals);
 }
 
+// Whole numbers below 10^15 print exactly (no exponent, no ".0"), as a JSON client expects an
+// integer-valued parameter; anything else goes through rounded() with `digits` significant digits.
 TextWriter& TextWriter::significant(double value, uint8_t digits) {
   if (isnan(value) || isinf(value)) return fixed(value, 0);
   if (digits < 1) digits = 1;
@@ -73,6 +80,8 @@ TextWriter& TextWriter::significant(double value, uint8_t digits) {
   return whole_number(magnitude);
 }
 
+// Trailing zeros of the fraction are dropped. Exponent form only below 10^-3 and from 10^15
+// (docs/rpc.md). Rounding up can give a mantissa of 10 (e.g. "10e5"): still the right value.
 TextWriter& TextWriter::rounded(double value, uint8_t digits) {
   const double magnitude = fabs(value);
   const int exponent = static_cast<int>(floor(log10(magnitude)));
