@@ -8,6 +8,8 @@ namespace {
 constexpr uint32_t bit_run(uint8_t first, uint8_t count) { return ((1u << count) - 1u) << first; }
 
 // Adds signals from `candidates` (lowest index first) while they still fit beside `chosen`.
+// Greedy, not optimal: lower signals (shorter pulses) are tried first, so more signals fit a frame,
+// and a signal that does not fit this frame is carried to the next one by the caller.
 uint8_t fill(uint8_t chosen, uint8_t candidates, const FrameLayout& layout) {
   for (uint8_t signal = 0; candidates >> signal; ++signal) {
     const uint8_t grown = static_cast<uint8_t>(chosen | (1u << signal));
@@ -21,8 +23,15 @@ constexpr uint8_t kStepDirSlotUs = slot_length_us(SIGNAL_X);
 
 }  // namespace
 
+// Frame context: a table lookup (one bit per subset of the six signals, computed once per layout)
+// instead of summing slot lengths on every frame.
 bool signals_fit(uint8_t mask, const FrameLayout& layout) { return (layout.fit_table >> (mask & kAllSignalsMask)) & 1u; }
 
+// Frame context. Spec "Frames": each signal at most once per frame, pulses of 2 µs (X) … 7 µs (E), a
+// 2 µs gap after each. Signals carried over from the previous frame (priority_mask) are placed first
+// so a busy signal cannot starve another. DIR is raised 1 µs before the STEP pulse rises and held
+// 1 µs after it falls, so a receiver reading DIR at either edge (ours at the fall, spec "Frames"
+// notes; drivers at the rise) reads a settled level. Pulses are laid out in signal order.
 EncodedFrame encode_frame(const FrameRequest& request, const FrameLayout& layout) {
   const uint8_t active = request.active_mask & kAllSignalsMask;
   EncodedFrame frame;
@@ -46,10 +55,13 @@ EncodedFrame encode_frame(const FrameRequest& request, const FrameLayout& layout
   return frame;
 }
 
+// Step/dir mode repeats X-width (2 µs) pulses with 2 µs gaps, as many as fit the window.
 uint8_t step_dir_pulses_per_frame(const FrameLayout& layout) {
   return static_cast<uint8_t>(slot_room_us(layout.window_us, layout.first_pulse_us) / kStepDirSlotUs);
 }
 
+// One direction per frame: DIR stays high across all the forward pulses of the frame (from 1 µs before
+// the first to 1 µs after the last), which any step/dir driver accepts.
 StepDirFrame encode_step_dir_frame(uint32_t count, bool forward, const FrameLayout& layout) {
   StepDirFrame frame;
   const uint8_t room = step_dir_pulses_per_frame(layout);

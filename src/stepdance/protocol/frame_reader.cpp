@@ -8,6 +8,9 @@ bool bit_at(uint32_t word, uint8_t us) { return us < kFrameBitsUs && ((word >> u
 
 }  // namespace
 
+// The inverse of the encoder, for the simulator's wires and the tests: one bit per µs, a pulse is a
+// run of high STEP bits, and DIR is sampled at both edges so either receiver convention can be
+// modelled. A pulse still high at the window's end ends there.
 size_t read_wire_pulses(const FrameWords& words, WirePulse* pulses, size_t capacity) {
   size_t found = 0;
   uint8_t us = 0;
@@ -27,6 +30,8 @@ size_t read_wire_pulses(const FrameWords& words, WirePulse* pulses, size_t capac
   return found;
 }
 
+// What a capture timer would record for the pulse: edge times in ticks of the given clock, wrapped to
+// its counter width, and DIR at the edge the port samples.
 CapturedPulse capture_wire_pulse(const WirePulse& pulse, const CaptureClock& clock,
                                  uint32_t frame_start_ticks, DirSampleEdge edge) {
   CapturedPulse captured;

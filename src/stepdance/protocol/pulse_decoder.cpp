@@ -3,6 +3,8 @@
 
 namespace stepdance::protocol {
 
+// For a source with 64-bit time (the simulator): a pulse longer than the counter's period keeps its
+// whole periods in extra_periods, so it is still measured as too long instead of wrapping short.
 CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool dir_high,
                                   const CaptureClock& clock) {
   const uint64_t period = uint64_t{clock.counter_mask} + 1;
@@ -16,11 +18,15 @@ CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool
   return pulse;
 }
 
+// The masked difference is right across one counter wrap between the edges (a 16-bit counter at
+// 150 MHz wraps every 437 µs, far beyond any valid pulse).
 uint64_t width_ticks(const CapturedPulse& pulse, const CaptureClock& clock) {
   const uint64_t wrapped = (pulse.fall_ticks - pulse.rise_ticks) & clock.counter_mask;
   return uint64_t{pulse.extra_periods} * (uint64_t{clock.counter_mask} + 1) + wrapped;
 }
 
+// Nearest microsecond, ties down, so a pulse stretched by the cable (spec "Signals": impedance can
+// stretch them) by less than half a microsecond still decodes as its signal. Saturates at 255.
 uint8_t rounded_width_us(const CapturedPulse& pulse, const CaptureClock& clock) {
   const uint64_t ticks = width_ticks(pulse, clock);
   const uint64_t per_us = clock.ticks_per_us > 0 ? clock.ticks_per_us : 1;
@@ -30,6 +36,10 @@ uint8_t rounded_width_us(const CapturedPulse& pulse, const CaptureClock& clock) 
   return static_cast<uint8_t>(rounded > 255 ? 255 : rounded);
 }
 
+// Capture-ISR context. Spec "Signals" table: width 2 µs = X, 3 = Y, 4 = R, 5 = θ, 6 = Z, 7 = E;
+// shorter is noise, longer is rejected (counted by the caller). DIR high = forward. In step/dir mode
+// any pulse from the minimum width up is one step of the configured signal, since step/dir sources
+// do not encode the axis in the width.
 DecodedPulse decode_pulse(const CapturedPulse& pulse, const CaptureClock& clock, InputMode mode,
                           uint8_t step_dir_signal) {
   DecodedPulse decoded;
