@@ -12,6 +12,8 @@ Status Attractor2D::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// An incremental target is relative to where the machine is now (read through the chain), not to
+// where this block last pushed.
 void Attractor2D::set_target(double x, double y, PositionMode mode, double max_speed) {
   if (mode == INCREMENTAL) {
     x += output_x.read_deep();
@@ -22,6 +24,9 @@ void Attractor2D::set_target(double x, double y, PositionMode mode, double max_s
   max_speed_ = max_speed;
 }
 
+// Frame context. Pulled toward the target by at most max_speed × frame period along the straight
+// line, measured from the machine's deep position, so other sources moving the same axes are taken
+// into account rather than fought. The 1e-9 guard avoids dividing by a zero distance.
 void Attractor2D::run() {
   const double dx = target_x_ - output_x.read_deep();
   const double dy = target_y_ - output_y.read_deep();

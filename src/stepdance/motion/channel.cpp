@@ -31,8 +31,12 @@ Status Channel::begin(OutputPort* port, uint8_t signal) {
   return start(port, signal);
 }
 
+// Without a port the channel still runs: current_position follows the target and pulses are counted,
+// but nothing is sent. The original never ran a port-less channel (original-library.md §4.2).
 Status Channel::begin() { return start(nullptr, 255); }
 
+// Checked at dance_start(), when the period is final: a channel whose signal can never leave its port
+// would silently never move its motor, so the start is refused instead.
 bool Channel::accept_frame_period(uint32_t period_us) {
   if (port_ == nullptr || port_->can_carry(signal_, period_us)) return true;
   fault(FaultReason::kBadConfiguration,
@@ -50,6 +54,8 @@ Status Channel::start(OutputPort* port, uint8_t signal) {
   return register_in(Stage::kChannels);
 }
 
+// Unlimited rate by default: one pulse per frame at most, the spec's frame rule (each signal at most
+// once per frame), which is 25 kHz at the default 40 µs period.
 void Channel::reset_state() {
   target_position = 0;
   target_position_2 = 0;
@@ -64,6 +70,8 @@ void Channel::reset_state() {
   pulses_withheld_ = 0;
 }
 
+// Rounded to the nearest milli-pulse per second. A rate ≤ 0 (or NaN) stops the channel's pulses
+// rather than removing the limit: a sketch asking for 0 means "do not move".
 void Channel::set_max_pulse_rate(double pulses_per_s) {
   if (!(pulses_per_s > 0.0)) {  // also catches NaN
     credit_per_frame_ = 0;
@@ -100,11 +108,15 @@ void Channel::disable_limits() {
   lower_enabled_ = false;
 }
 
+// Limits are kept in world units and converted again whenever the ratio changes, so
+// set_ratio() after set_upper_limit() still limits at the same world position.
 void Channel::update_limit_steps() {
   upper_limit_steps_ = input_target_position.convert_world_to_block_units(upper_limit_world_);
   lower_limit_steps_ = input_target_position.convert_world_to_block_units(lower_limit_world_);
 }
 
+// Looks at the commanded (filtered) target as well as the position, unlike the original, which only
+// checked current_position: a target beyond a limit is reported before the axis reaches it.
 int8_t Channel::is_outside_limits() const {
   const double current = current_position;
   const double commanded = filtered_target_position;
@@ -113,11 +125,15 @@ int8_t Channel::is_outside_limits() const {
   return 0;
 }
 
+// The original's smoothing (original-library.md §4.2): an exponential moving average with α = 1/n,
+// not a box average. n = 0 would divide by zero, so it means 1 (no smoothing).
 void Channel::enable_filtering(uint16_t samples) {
   filter_samples_ = samples == 0 ? 1 : samples;
   filtering_ = true;
 }
 
+// Deep sync (original-library.md §3.4): the position becomes the target, so the error is zero and no
+// pulse is produced for the jump.
 void Channel::push_deep() {
   hal::CriticalSection guard;
   const double summed = target_position + target_position_2;
@@ -125,6 +141,9 @@ void Channel::push_deep() {
   current_position = summed;
 }
 
+// Frame context (channel stage, after every block that feeds it; original-library.md §1.3). The
+// stepping law: the target (two summed inputs, e.g. a jog and a program) is followed to within half a
+// step, at most one pulse per frame, at most the set pulse rate.
 void Channel::run() {
   input_target_position.pull();
   input_target_position.update();
@@ -146,6 +165,8 @@ double Channel::advance_filter() {
   return filtered_target_position;
 }
 
+// Inside the dead band the last direction is kept (original §4.2 step 4), so a target hovering around
+// a half step does not flip DIR every frame.
 void Channel::track_direction(double error_steps) {
   if (error_steps >= kDeadBandSteps) {
     direction_ = 1;
@@ -154,6 +175,9 @@ void Channel::track_direction(double error_steps) {
   }
 }
 
+// A soft limit withholds the pulse and does not advance the position, so position and motor agree;
+// the original counted the step but did not emit it, leaving them out of step. Withheld pulses are
+// counted for diagnosis.
 int8_t Channel::demanded_step(double error_steps) {
   if (error_steps <= kDeadBandSteps && error_steps >= -kDeadBandSteps) return 0;
   if (!limit_allows(direction_)) {
@@ -169,6 +193,8 @@ bool Channel::limit_allows(int8_t step) const {
   return !lower_enabled_ || next >= lower_limit_steps_;
 }
 
+// A reversal costs two pulses' credit, as in the original: the motor gets at least one idle pulse
+// period before changing direction, so a driver never sees a reversal at full rate.
 uint32_t Channel::threshold_for(int8_t step) const {
   const bool reversing = step != 0 && last_pulse_step_ != 0 && step != last_pulse_step_;
   return reversing ? 2 * credit_per_pulse() : credit_per_pulse();
@@ -189,6 +215,8 @@ void Channel::meter_credit(int8_t step) {
   if (credit_ > price - 1) credit_ = price - 1;
 }
 
+// The position counts logical steps; inversion only flips what goes on the wire (DIR), so limits and
+// read-backs stay in the machine's own direction.
 void Channel::emit(int8_t step) {
   current_position = current_position + step;
   last_pulse_step_ = step;

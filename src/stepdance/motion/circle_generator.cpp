@@ -14,6 +14,9 @@ Status CircleGenerator::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. Increments of the closed form x = r sin θ, y = r (1 − cos θ) (the original's circle,
+// counter-clockwise from the start, original-library.md §4.8), taken as differences so the path
+// closes exactly after every turn. θ advances by time, or by the input's change.
 void CircleGenerator::run() {
   input.pull();
   input.update();

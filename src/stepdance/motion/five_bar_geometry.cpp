@@ -15,6 +15,8 @@ struct Point {
 };
 
 /// The two intersections of circles (a, ra) and (b, rb); false if they do not meet.
+// Standard two-circle intersection: `along` is the distance from a to the chord's midpoint, h half the
+// chord. Tangent circles give h = 0 (fmax guards a tiny negative from rounding).
 bool intersect(Point a, double ra, Point b, double rb, Point& first, Point& second) {
   const double dx = b.x - a.x, dy = b.y - a.y;
   const double d = hypot(dx, dy);
@@ -29,6 +31,8 @@ bool intersect(Point a, double ra, Point b, double rb, Point& first, Point& seco
 
 }  // namespace
 
+// The original's closed form (original-library.md §4.10), in double precision, with the acos
+// domain checked: base pivots at (±S/2, 0), y is flipped at the end as in the original.
 bool FiveBarGeometry::forward(double a1, double a2, double& x, double& y) const {
   // Runs every frame of a pantograph: each angle's sine and cosine share one argument reduction.
   const SineCosine w1 = sine_cosine(a1), w2 = sine_cosine(a2);
@@ -48,6 +52,9 @@ bool FiveBarGeometry::forward(double a1, double a2, double& x, double& y) const 
   return true;
 }
 
+// No closed form in the original. Up to four candidate poses (2 for C × 2 for D) are solved and each
+// is checked by running forward() on it; the one that lands closest to (x, y), within 1e-6 in the
+// link lengths' units, wins, so the inverse is consistent with the forward map.
 bool FiveBarGeometry::inverse(double x, double y, double& a1, double& a2) const {
   const Point t{x, -y};
   // The rigid link C–E–T: T − C = −L3·w(A5) + L5·w(A5 + A6) with w(φ) = (sin φ, cos φ), so

@@ -22,6 +22,8 @@ Status KinematicsCoreXY::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. Forward map a = x + y, b = x − y (original-library.md §4.10; no 1/2 or √2 factor),
+// set absolutely so rounding never accumulates.
 void KinematicsCoreXY::run() {
   input_x.pull();
   input_x.update();
@@ -35,6 +37,8 @@ void KinematicsCoreXY::run() {
   output_b.push();
 }
 
+// Deep push (original-library.md §3.4): the motors take the position the inputs now hold, without
+// motion.
 void KinematicsCoreXY::push_deep() {
   const double x = world_position(input_x);
   const double y = world_position(input_y);
@@ -48,6 +52,7 @@ void KinematicsCoreXY::pull_deep() {
   reset_inputs_from(a, b);
 }
 
+// Inverse map x = (a + b)/2, y = (a − b)/2 from the motors' deep positions.
 double KinematicsCoreXY::read_deep(BlockPort& port) {
   if (&port != &input_x && &port != &input_y) return port.read(ABSOLUTE);
   const double a = output_a.read_deep();

@@ -35,6 +35,8 @@ Status KinematicsFiveBarForward::begin(float s, float l1, float l2, float l3, fl
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. Where the links cannot close (the original's acos had no range check and produced
+// NaN), the outputs hold the last reachable pose and a warning is counted.
 void KinematicsFiveBarForward::run() {
   pull_both(input_r, input_l);
   double x, y;
@@ -55,6 +57,7 @@ Status KinematicsFiveBarInverse::begin(float s, float l1, float l2, float l3, fl
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. A point out of reach holds the last pose instead of moving the motors to NaN.
 void KinematicsFiveBarInverse::run() {
   pull_both(input_x, input_y);
   double a1, a2;

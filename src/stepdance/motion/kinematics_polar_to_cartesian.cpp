@@ -18,6 +18,7 @@ Status KinematicsPolarToCartesian::begin(double fixed_radius) {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context: x = r cos θ, y = r sin θ, set absolutely (original-library.md §4.10).
 void KinematicsPolarToCartesian::run() {
   input_radius.pull();
   input_radius.update();
@@ -31,6 +32,7 @@ void KinematicsPolarToCartesian::run() {
   output_y.push();
 }
 
+// The inverse for deep sync: r = |(x, y)|, θ = atan2(y, x) in (−π, π].
 void KinematicsPolarToCartesian::pull_deep() {
   const double x = output_x.pull_deep();
   const double y = output_y.pull_deep();

@@ -16,6 +16,8 @@ Status PathLengthGenerator<kInputs>::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context: output += ratio × √(Σ Δinput²), always ≥ 0 (e.g. extrusion that follows the XY path
+// length whatever its direction; original-library.md §4.8).
 template <int kInputs>
 void PathLengthGenerator<kInputs>::run() {
   double sum_of_squares = 0.0;
@@ -41,6 +43,7 @@ PathLengthGenerator2D::PathLengthGenerator2D() {
   output_ = &output;
 }
 
+// ratio = output per revolution / circumference (2πr).
 void PathLengthGenerator2D::set_ratio_for_circle(double radius, double output_per_revolution) {
   if (radius > 0.0) ratio = output_per_revolution / (2.0 * 3.14159265358979323846 * radius);
 }

@@ -34,6 +34,8 @@ Status PositionGenerator::go(double value, PositionMode mode) {
   return queue(command);
 }
 
+// Loop context. go() is queued for the frame (no locking of the frame's state), and the queued target is
+// tracked here so target() and an incremental go() after another one see where the machine is going.
 Status PositionGenerator::queue(const GoCommand& command) {
   const double base = commands_.empty() ? frame_target_world() : queued_target_world_;
   if (commands_.push(command) != Status::kOk) {
@@ -45,6 +47,7 @@ Status PositionGenerator::queue(const GoCommand& command) {
   return Status::kOk;
 }
 
+// Frame context. GLOBAL first adopts the downstream position (deep pull), as the original did.
 void PositionGenerator::apply(const GoCommand& command) {
   if (command.set_speed) set_speed(command.speed);
   const double value_block = output.convert_world_to_block_units(command.value);
@@ -59,6 +62,8 @@ void PositionGenerator::apply(const GoCommand& command) {
   target_ = value_block;
 }
 
+// Loop context: the frame's target plus a reset the frame has not seen yet, under a critical section
+// because both change in the frame.
 double PositionGenerator::frame_target_world() const {
   hal::CriticalSection guard;  // target_ and the reset shift change in the frame
   const double pending_shift = position_ - last_set_;  // a reset not yet seen by run()
@@ -75,6 +80,8 @@ bool PositionGenerator::is_idle() const {
   return last_set_ == target_;
 }
 
+// Frame context. Constant speed, no acceleration, exact arrival: steps of speed × frame period, the
+// last one shortened to land on the target (original-library.md §4.8).
 void PositionGenerator::run() {
   follow_output_reset();
   GoCommand command;
@@ -94,6 +101,7 @@ void PositionGenerator::run() {
   output.push();
 }
 
+// speed is in world units/s; one frame's worth, converted to block units.
 double PositionGenerator::max_step_block_units() const {
   const double speed = fabs(static_cast<double>(speed_units_per_sec));
   return speed * frame_period_s() / fabs(output.ratio());

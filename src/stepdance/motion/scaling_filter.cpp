@@ -14,6 +14,7 @@ Status ScalingFilter<kChannels>::begin(PositionMode mode) {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. INCREMENTAL scales each frame's change (a gear ratio), ABSOLUTE the position itself.
 template <int kChannels>
 void ScalingFilter<kChannels>::run() {
   for (int i = 0; i < kChannels; ++i) {

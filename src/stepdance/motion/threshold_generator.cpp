@@ -23,6 +23,8 @@ void ThresholdGenerator::setLowerThreshold(double value, bool clamp) {
   has_lower_ = true;
 }
 
+// Frame context. Crossings are counted on entering the region (≥ upper, ≤ lower), not every frame the
+// value stays beyond, as the original did (original-library.md §4.8): one callback per crossing.
 void ThresholdGenerator::run() {
   input.pull();
   input.update();

@@ -13,6 +13,9 @@ using planner::kPlannerAxes;
 
 
 /// Path length the speed refers to: XYZ if they move, else |E|, else the R/T length.
+// The length a speed (F) refers to, as Grbl and G-code readers expect: the XYZ distance, or for an
+// extruder-only move |E|, else the R/T length. The original mixed all seven axes (incl. a virtual
+// axis of length 1) into the norm, so its speeds were off for every move (original-library.md §4.9).
 double path_length(const double (&delta)[kPlannerAxes]) {
   const double xyz = sqrt(delta[0] * delta[0] + delta[1] * delta[1] + delta[2] * delta[2]);
   if (xyz > 0.0) return xyz;
@@ -26,6 +29,8 @@ TimeBasedInterpolator::TimeBasedInterpolator() {
   limits_.set_default_acceleration(kDefaultAccelerationPerS2);
 }
 
+// Two stages: moves are taken and planned in the loop (look-ahead is too slow for the frame), the
+// frame only follows committed profiles (docs/planner.md "What it guarantees").
 Status TimeBasedInterpolator::begin() {
   for (int axis = 0; axis < kPlannerAxes; ++axis) {
     state_[axis] = 0;
@@ -57,6 +62,8 @@ int16_t TimeBasedInterpolator::add_timed_move(uint8_t mode, float time_s, Decima
   return queue_move(mode, 0.0, time_s, values);
 }
 
+// The original's raw interface (original-library.md §4.9): returns free slots, or −1 when full (the
+// caller retries).
 int16_t TimeBasedInterpolator::add_block(motion_block* block) {
   if (block == nullptr) return refuse("null block");
   const position& p = block->block_position;
@@ -70,6 +77,12 @@ int16_t TimeBasedInterpolator::refuse(const char* why) {
   return -1;
 }
 
+// Loop context. A full queue is back-pressure (−1, retry), everything else wrong is refused and
+// reported, so nothing accepted is ever dropped. Targets are resolved against the planned end (not
+// the machine's current position), so a burst of incremental moves adds up exactly. GLOBAL adopts the
+// downstream position first (deep pull), as the original did, but only when idle: mid-path the planned
+// end is the truth. A timed move that the axis limits cannot honour is slowed and reported, never
+// driven beyond the limits. A move of zero length with a time is a dwell; without one, nothing.
 int16_t TimeBasedInterpolator::queue_move(uint8_t mode, double velocity, double time_s,
                                           const double (&values)[kPlannerAxes]) {
   if (planner_.full()) return -1;  // the caller retries: back-pressure, not an error
@@ -112,11 +125,16 @@ int16_t TimeBasedInterpolator::queue_move(uint8_t mode, double velocity, double 
   return static_cast<int16_t>(slots_remaining);
 }
 
+// When idle, something else (a jog, a deep reset) may have moved the outputs; planning from the old end
+// would produce a jump.
 void TimeBasedInterpolator::adopt_outputs_when_idle() {
   if (!is_idle()) return;
   for (int axis = 0; axis < kPlannerAxes; ++axis) planned_end_[axis] = axis_port(axis)->read_absolute();
 }
 
+// The look-ahead trade-off: a block handed to the frame can no longer be re-planned, so blocks wait in
+// the loop as long as the frame has enough committed motion ahead (kCommitAheadUs), which lets later
+// moves raise their junction speeds.
 bool TimeBasedInterpolator::must_commit_now() {
   if (planner_.full()) return true;  // the look-ahead cannot grow: waiting gains nothing
   const uint32_t now_us = hal::micros_now();
@@ -133,6 +151,8 @@ bool TimeBasedInterpolator::must_commit_now() {
   return ahead_us < static_cast<int32_t>(threshold_us);
 }
 
+// Hands final blocks to the frame through a single-producer queue (loop → frame), and keeps a clock of
+// how far ahead the frame is supplied.
 void TimeBasedInterpolator::commit_final_blocks() {
   while (!committed_.full()) {
     planner::PlannedBlock block;
@@ -155,6 +175,8 @@ bool TimeBasedInterpolator::is_idle() {
 
 bool TimeBasedInterpolator::queue_is_full() { return planner_.full(); }
 
+// Unlike the original (which aborted the active block at once, with no deceleration), the waiting
+// moves are dropped and the frame decelerates to a stop within the acceleration limits.
 void TimeBasedInterpolator::reset_block_queue() {
   planner_.clear();
   slots_remaining = static_cast<uint16_t>(planner_.free_slots());
@@ -165,6 +187,8 @@ void TimeBasedInterpolator::reset_block_queue() {
   stop_pending_ = true;
 }
 
+// Stops without deceleration, for Grbl's soft reset (Ctrl-X, GCodeInterface::soft_reset), which
+// halts at once; steps may be lost at speed (the caller learns whether it was moving).
 void TimeBasedInterpolator::emergency_stop() {
   planner_.clear();
   slots_remaining = static_cast<uint16_t>(planner_.free_slots());
@@ -175,6 +199,9 @@ void TimeBasedInterpolator::emergency_stop() {
   stop_pending_ = true;
 }
 
+// Loop context. During an alarm nothing waits to run after it (Grbl's behaviour: an alarm discards
+// the program's motion); once a stop has finished in the frame, the outputs are adopted as the new
+// planning origin.
 void TimeBasedInterpolator::loop() {
   if (alarm_active()) {
     planner_.clear();  // the frame decelerates and drops what it holds
@@ -189,6 +216,8 @@ void TimeBasedInterpolator::loop() {
   commit_final_blocks();
 }
 
+// Frame context: commands from the loop arrive through a queue, so the loop never changes the
+// executor's state while a frame runs.
 void TimeBasedInterpolator::apply_commands() {
   Command command;
   while (commands_.pop(command) == Status::kOk) {
@@ -206,6 +235,10 @@ void TimeBasedInterpolator::apply_commands() {
   }
 }
 
+// Frame context (pre-channel). The executor advances the profile by one frame, scaled by the speed
+// override (feed hold sets it to 0); only the axes that moved are pushed, so an idle axis leaves its
+// port to other sources. The progress (0→1) and duration outputs drive blocks such as
+// WaveGenerator2D that shape a move along its length.
 void TimeBasedInterpolator::run() {
   apply_commands();
   double now[kPlannerAxes];

@@ -13,6 +13,8 @@ Status Vector2DToAngle::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context: the direction of this frame's motion, atan2(Δy, Δx). Unlike the original (0 when
+// still), the last direction is kept, so a wave riding on the path does not snap to 0 at a stop.
 void Vector2DToAngle::run() {
   input_x.pull();
   input_x.update();
@@ -32,6 +34,8 @@ Status MoveDurationToFrequency::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// round(duration × target frequency), at least 1, so each move holds a whole number of half-waves
+// (original-library.md §4.11); without a duration the target frequency passes through.
 void MoveDurationToFrequency::run() {
   input_move_duration.pull();
   input_move_duration.update();

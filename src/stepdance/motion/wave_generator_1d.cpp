@@ -13,6 +13,10 @@ Status WaveGenerator1D::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. The output is the difference of the closed form amplitude·sin(θ + phase) between two
+// frames, so it never drifts, unlike the original's integrated cos θ·dθ increments; phase is a real
+// phase here (the original added it to the amplitude, original-library.md §4.8). With an input, θ
+// advances by frequency × input change (a spatial wave along a path); without, by time.
 void WaveGenerator1D::run() {
   input.pull();
   input.update();

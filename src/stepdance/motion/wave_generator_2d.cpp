@@ -20,6 +20,10 @@ Status WaveGenerator2D::begin() {
   return register_in(Stage::kPreChannel);
 }
 
+// Frame context. An offset perpendicular to the travel direction input_theta: (−v sin θd, v cos θd)
+// with v = amplitude·sin θ, set absolutely. θ = π·f·t with t the interpolator's 0→1 progress, so a
+// move holds f half-waves (with MoveDurationToFrequency, a whole number), or advances by time without
+// an input. π is exact here; the original used 3.1415 (original-library.md §4.8).
 void WaveGenerator2D::run() {
   BlockPort* inputs[3] = {&input_frequency, &input_t, &input_theta};
   for (BlockPort* port : inputs) {
