@@ -11,6 +11,10 @@ double max2(double a, double b) { return a > b ? a : b; }
 
 }  // namespace
 
+// Closed-form trapezoid (or triangle) duration: accelerate v0 → peak, cruise, decelerate peak → v1,
+// with peak the lower of the cruise speed and the triangle's apex. It feeds the loop's commit clock
+// and output_duration; the motion itself is integrated by advance_block(). Infinite acceleration:
+// constant speed.
 double block_time_s(const PlannedBlock& block) {
   if (block.length <= 0.0) return block.dwell_s;
   const double a = block.acceleration;
@@ -25,6 +29,8 @@ double block_time_s(const PlannedBlock& block) {
   return (peak - v0) / a + (peak - v1) / a + max2(cruise, 0.0) / max2(peak, 1e-12);
 }
 
+// Frame context. The block is followed from where the axes actually are, so a block starts cleanly
+// even after a stop inside the previous one.
 bool BlockExecutor::load(CommittedQueue& queue, const double (&position)[kPlannerAxes]) {
   if (queue.pop(block_) != Status::kOk) return false;
   active_ = true;
@@ -35,6 +41,10 @@ bool BlockExecutor::load(CommittedQueue& queue, const double (&position)[kPlanne
   return true;
 }
 
+// Frame context, once per frame. Time left over when a block ends inside a frame goes to the next block
+// (docs/planner.md "Exact endpoints"), so a run of short blocks is not slowed by a frame each; the
+// guard bounds the work per frame when many tiny blocks end in one. Negative or NaN override acts as
+// 0 (no running backwards along the path). Running dry while moving is counted as an underrun.
 void BlockExecutor::advance(double dt_s, double override_factor, CommittedQueue& queue,
                             double (&position)[kPlannerAxes]) {
   if (override_factor < 0.0 || isnan(override_factor)) override_factor = 0.0;
@@ -55,6 +65,11 @@ void BlockExecutor::advance(double dt_s, double override_factor, CommittedQueue&
   }
 }
 
+// The speed changes by at most a·dt per frame (the acceleration limit holds frame by frame) and never
+// exceeds what still allows braking to the exit speed in the distance left, so no block overshoots its
+// end. The override scales cruise; the exit is scaled only down (min(override, 1)), since the next
+// block was planned to enter at no more than its exit speed. A stop targets speed 0 at once. Positions
+// are placed by fraction of the straight block, so every axis stays on the line.
 double BlockExecutor::advance_block(double dt_s, double override_factor, double (&position)[kPlannerAxes]) {
   if (block_.length <= 0.0) {  // a dwell: time passes (at the override's pace), nothing moves
     const double used = override_factor > 0.0 ? min2(dt_s, dwell_left_s_ / override_factor) : dt_s;
@@ -103,6 +118,7 @@ void BlockExecutor::place(double fraction, double (&position)[kPlannerAxes]) con
   }
 }
 
+// Ends exactly on the block's target (no accumulated rounding), and only on the axes the block moves.
 void BlockExecutor::finish_block(double (&position)[kPlannerAxes]) {
   for (int axis = 0; axis < kPlannerAxes; ++axis) {
     if (block_.delta[axis] != 0.0) position[axis] = block_.end[axis];
@@ -117,6 +133,7 @@ double BlockExecutor::parameter() const {
   return travelled_ / block_.length;
 }
 
+// The frame is the only consumer of the committed queue, so draining it here is safe without a lock.
 void BlockExecutor::drop_all(CommittedQueue& queue) {
   PlannedBlock discard;
   while (queue.pop(discard) == Status::kOk) {

@@ -5,6 +5,10 @@
 
 namespace stepdance::planner {
 
+// Grbl's junction deviation: the corner is taken as a circular arc whose closest point stays
+// deviation_mm from the vertex, at centripetal acceleration a: v² = a·δ·sin(θ/2)/(1 − sin(θ/2)), with
+// θ the angle between the reversed incoming and the outgoing unit directions (docs/planner.md
+// "Corners"). Nearly straight: no limit; a full reversal: stop.
 double junction_speed(const double (&from)[3], const double (&to)[3], double deviation_mm, double acceleration) {
   const double cos_theta = -(from[0] * to[0] + from[1] * to[1] + from[2] * to[2]);
   if (cos_theta < -0.999999) return INFINITY;  // straight on
@@ -13,6 +17,8 @@ double junction_speed(const double (&from)[3], const double (&to)[3], double dev
   return sqrt(acceleration * deviation_mm * sin_half / (1.0 - sin_half));
 }
 
+// A second bound so a polyline approximating a curve runs at the curve's own speed: the arc that
+// touches both segments at half the shorter one's length has radius (L/2)·tan(θ/2), and v² = a·r.
 double centripetal_junction_speed(const double (&from)[3], const double (&to)[3], double shorter_length,
                                   double acceleration) {
   const double cos_theta = -(from[0] * to[0] + from[1] * to[1] + from[2] * to[2]);

@@ -11,12 +11,16 @@ namespace {
 double min2(double a, double b) { return a < b ? a : b; }
 
 /// Speed reachable from `from` over `length` at `acceleration` (either direction of time).
+// v² = v0² + 2aL: constant acceleration over a distance.
 double reachable(double from, double acceleration, double length) {
   return sqrt(from * from + 2.0 * acceleration * length);
 }
 
 }  // namespace
 
+// Loop context. A block's entry speed is capped by the corner it makes with the previous motion block
+// (both junction bounds, with the lower of the two accelerations) and by both cruise speeds. Only XYZ
+// directions make a corner; a dwell or an E-only move breaks the chain (entry 0), as a stop.
 Status LookaheadPlanner::add(const PlannedBlock& block) {
   if (count_ == kCapacity) return Status::kFull;
   PlannedBlock& slot = at(count_);
@@ -46,6 +50,9 @@ Status LookaheadPlanner::add(const PlannedBlock& block) {
   return Status::kOk;
 }
 
+// The classic two passes (as in Grbl's planner): backward, every block must be able to stop by the end
+// of what is known; forward, from the exit speed of the block last handed to the frame, no block can
+// be entered faster than acceleration allows. O(n) per added block over at most kCapacity blocks.
 void LookaheadPlanner::replan() {
   // Backward: the last block stops at its end; each entry is what still allows every later stop.
   double exit = 0.0;
@@ -67,6 +74,9 @@ void LookaheadPlanner::replan() {
   }
 }
 
+// The head may go to the frame only when no later block could raise its exit speed: when its limit
+// comes from itself or its corner rather than from the need to stop at the end of the queue. flush
+// forces it out when the frame would otherwise run dry (it then exits at the stop-safe speed).
 bool LookaheadPlanner::take_final(PlannedBlock& out, bool flush) {
   if (count_ == 0) return false;
   PlannedBlock& head = at(0);

@@ -11,6 +11,8 @@ void MotionLimits::set_axis_limit(int axis, double max_speed, double max_acceler
   axis_acceleration_[axis] = fabs(max_acceleration);
 }
 
+// A joint is a motor whose motion is a linear combination of the axes (row · delta), e.g. CoreXY's
+// a = x + y; limiting it keeps every motor within its rating whatever the path direction.
 bool MotionLimits::add_joint(const double (&row)[kPlannerAxes], double max_speed, double max_acceleration) {
   if (joint_count_ == kMaxJoints) return false;
   for (int i = 0; i < kPlannerAxes; ++i) joint_row_[joint_count_][i] = row[i];
@@ -20,6 +22,8 @@ bool MotionLimits::add_joint(const double (&row)[kPlannerAxes], double max_speed
   return true;
 }
 
+// CoreXY motors a = x + y, b = x − y (original-library.md §4.10): a diagonal move drives one motor at
+// twice the axis share, so it is limited by that motor, not by the axis limits.
 void MotionLimits::use_core_xy(double motor_max_speed, double motor_max_acceleration) {
   const double a[kPlannerAxes] = {1.0, 1.0, 0.0, 0.0, 0.0, 0.0};
   const double b[kPlannerAxes] = {1.0, -1.0, 0.0, 0.0, 0.0, 0.0};
@@ -49,6 +53,8 @@ double MotionLimits::max_speed(const double (&delta)[kPlannerAxes], double lengt
   return limit_along(delta, length, true);
 }
 
+// The default acceleration applies when it is tighter than every axis and joint limit (or none is
+// set), so a sketch without limits still gets a finite, trapezoidal profile.
 double MotionLimits::max_acceleration(const double (&delta)[kPlannerAxes], double length) const {
   const double limit = limit_along(delta, length, false);
   if (default_acceleration_ > 0.0 && default_acceleration_ < limit) return default_acceleration_;
