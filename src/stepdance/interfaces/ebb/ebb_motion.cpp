@@ -15,6 +15,9 @@ int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 
 }  // namespace
 
+// How many 40 µs ticks an LM axis needs for its steps: the accumulator gains rate + k·accel on tick
+// k, so distance D = steps × 2^31 is covered when rate·t + accel·t²/2 = D; t is the positive root of
+// that quadratic (ebb-protocol.md, LM row). A constant rate is the linear case.
 double ticks_to_cover(const EbbMove& move, int axis) {
   const double distance = static_cast<double>(move.steps[axis]) * kStepThreshold;
   const double rate = static_cast<double>(move.rate[axis]);
@@ -24,6 +27,10 @@ double ticks_to_cover(const EbbMove& move, int axis) {
   return discriminant > 0.0 ? (-rate + sqrt(discriminant)) / accel : 0.0;
 }
 
+// The fastest step rate the move asks of a motor, in steps per EBB tick (≤ 1: the accumulator can
+// step at most once per tick). Linear in time, so the peak is at the first or last tick; a rate that
+// goes negative wraps (as on the EBB) and is taken as the full rate. Used to stretch moves our frame
+// period cannot carry.
 double EbbMotionExecutor::peak_steps_per_tick() const {
   const bool accumulated = move_.kind == EbbMove::Kind::kSteps || move_.kind == EbbMove::Kind::kTime;
   if (!busy_ || !accumulated) return 0.0;  // kHome runs as kSteps (begin_home)
@@ -53,6 +60,8 @@ void EbbMotionExecutor::clear_global_steps() {
   accumulator_[0] = accumulator_[1] = 0;
 }
 
+// Frame context, when the move reaches the head of the FIFO. Every command takes effect in FIFO order,
+// as on the EBB: pen moves and EM too, so a client's "pen up, then move" never moves with the pen down.
 void EbbMotionExecutor::start(const EbbMove& move) {
   move_ = move;
   busy_ = false;
@@ -86,6 +95,10 @@ void EbbMotionExecutor::start(const EbbMove& move) {
 }
 
 // HM: a straight constant-rate line from the global step counters to the target.
+// HM (ebb-protocol.md): the axis with the longer distance runs at StepFrequency, the other
+// proportionally slower so the path is a straight line; rates are rounded up so the move never takes
+// longer than the longest axis at that frequency. The target is computed when HM starts, from the
+// step counters at that moment, which is why it is a FIFO entry and not a query.
 void EbbMotionExecutor::begin_home(const EbbMove& move) {
   EbbMove line = move;
   line.kind = EbbMove::Kind::kSteps;
@@ -108,6 +121,9 @@ void EbbMotionExecutor::begin_home(const EbbMove& move) {
   begin_accumulated(line);
 }
 
+// LM's first tick starts from Rate − Accel/2 (ebb-protocol.md, LM row): the rate at mid-tick, so the
+// distance over a tick matches the continuous motion. Clear bit n zeroes axis n's accumulator, so a
+// client can start a move without a fractional step left over from the previous one.
 void EbbMotionExecutor::begin_accumulated(const EbbMove& move) {
   enabled_[0] = enabled_[1] = true;  // motion commands enable both drivers, as the EBB does
   for (int axis = 0; axis < 2; ++axis) {
@@ -120,6 +136,9 @@ void EbbMotionExecutor::begin_accumulated(const EbbMove& move) {
   busy_ = move.kind == EbbMove::Kind::kTime ? ticks_left_ > 0 : (axis_active_[0] || axis_active_[1]);
 }
 
+// One EBB tick (40 µs of EBB time; the frame maps its own period onto it). Step moves end when every
+// axis has made its steps, LT moves after their tick count, delays and pen moves after their
+// duration. Returns whether the move still runs.
 bool EbbMotionExecutor::tick() {
   slew_servo();
   if (!busy_) return false;
@@ -144,6 +163,10 @@ bool EbbMotionExecutor::tick() {
   return busy_;
 }
 
+// The EBB's accumulator rule (ebb-protocol.md, LM row): every tick Rate += Accel and Accumulator +=
+// Rate; a step is taken when the accumulator reaches 2^31, which is then subtracted (the remainder
+// kept, so the long-run rate is exact). position_16_ counts in 1/16 steps whatever the microstep
+// mode, the unit the outputs are scaled from.
 void EbbMotionExecutor::step_axis(int axis) {
   int64_t rate = rate_[axis] + move_.accel[axis];
   if (rate < 0) rate += kStepThreshold;  // the EBB rolls a negative rate over
@@ -161,6 +184,8 @@ void EbbMotionExecutor::step_axis(int axis) {
   if (move_.kind != EbbMove::Kind::kTime && rate_[axis] == 0 && move_.accel[axis] == 0) axis_active_[axis] = false;
 }
 
+// The servo moves toward its target by the rate per tick (SC,11/12 rates are per 24 ms servo period,
+// 600 ticks); rate 0 jumps at once.
 void EbbMotionExecutor::slew_servo() {
   if (servo_position_ == servo_target_) return;
   if (servo_rate_per_tick_ <= 0.0) {
@@ -184,6 +209,7 @@ void EbbMotionExecutor::servo_now(uint16_t target, uint16_t rate, bool pen_up) {
   pen_up_ = pen_up;
 }
 
+// ES (ebb-protocol.md): abort the current move; the reply reports whether one was running.
 bool EbbMotionExecutor::stop() {
   const bool was_busy = busy_;
   busy_ = false;

@@ -3,6 +3,8 @@
 
 namespace stepdance::ebb {
 
+// EBB framing (ebb-protocol.md): parameters follow the command after commas, no spaces; the first
+// error is kept and every later read fails, so the reply names the first problem.
 bool EbbParameters::open_parameter(bool required) {
   if (error_ != EbbError::kNone) return false;
   if (position_ >= length_) {
@@ -18,6 +20,8 @@ bool EbbParameters::open_parameter(bool required) {
   return true;
 }
 
+// Values are read in 64 bits and saturate far beyond any range, so an overlong number is "invalid"
+// (!6) and never wraps into range. An empty optional field (",,") counts as absent.
 bool EbbParameters::integer(int64_t min, int64_t max, bool required, int64_t& out) {
   if (!open_parameter(required)) return false;
   bool negative = false;
@@ -72,6 +76,7 @@ bool EbbParameters::letter(bool required, char& out) {
   return true;
 }
 
+// Text beyond the capacity is dropped, not an error: ST keeps the tag's first bytes.
 bool EbbParameters::text(char* out, size_t capacity, bool required) {
   if (!open_parameter(required)) return false;
   size_t written = 0;
@@ -83,6 +88,7 @@ bool EbbParameters::text(char* out, size_t capacity, bool required) {
   return true;
 }
 
+// Anything left after the last expected parameter is "!7 Err: Extra parameter".
 bool EbbParameters::finish() {
   if (error_ == EbbError::kNone && position_ < length_) error_ = EbbError::kExtra;
   return error_ == EbbError::kNone;

@@ -26,6 +26,8 @@ void EbbPins::set_output(int port, int pin, bool high) {
   latch_[port] = static_cast<uint8_t>(high ? latch_[port] | bit : latch_[port] & ~bit);
 }
 
+// PI on a pin the EBB wires to its drivers or pen reads the emulated state (clients read MS1–MS3 and
+// the enables to learn the microstep mode); other pins read their latch when outputs, 0 as inputs.
 uint8_t EbbPins::read(int port, int pin, const EbbDriverState& driver) const {
   uint8_t level = 0;
   if (driver_pin(port, pin, driver, level)) return level;
@@ -33,6 +35,8 @@ uint8_t EbbPins::read(int port, int pin, const EbbDriverState& driver) const {
   return output ? static_cast<uint8_t>((latch_[port] >> pin) & 1) : 0;
 }
 
+// The EBB's wiring: RE0 motor 1 enable and RC1 motor 2 enable (active low), RE2/RE1/RA6 MS1/MS2/MS3,
+// RB4 pen (low = up in this emulation), RB1 the servo output (read low).
 bool EbbPins::driver_pin(int port, int pin, const EbbDriverState& driver, uint8_t& level) const {
   if (port == kPortE && pin == 0) level = driver.motor_enabled[0] ? 0 : 1;
   else if (port == kPortC && pin == 1) level = driver.motor_enabled[1] ? 0 : 1;

@@ -10,6 +10,8 @@ using ebb::EbbParameters;
 
 Eibotboard::Eibotboard() = default;
 
+// Two stages: commands are parsed and answered in the loop, moves are executed in the frame (as the
+// EBB's own 25 kHz ISR executes its FIFO).
 Status Eibotboard::begin_stream(ByteStream&) {
   BlockPort* ports[8] = {&output_x, &output_y, &output_z, &output_e, &output_r, &output_t,
                          &output_parameter, &output_duration};
@@ -23,6 +25,8 @@ Status Eibotboard::begin_stream(ByteStream&) {
   return register_in(Stage::kLoop);
 }
 
+// mm per EBB motor step, where an EBB step is a 1/16 microstep (the AxiDraw moves 80 per mm at 1/16,
+// ebb-protocol.md). Checked at start against the channels' own steps/mm (eibotboard_start.cpp).
 void Eibotboard::set_ratio_xy(float output_units_mm, float input_units_steps) {
   if (input_units_steps == 0.0f || !isfinite(output_units_mm)) return;
   mm_per_sixteenth_ = static_cast<double>(output_units_mm) / input_units_steps;
@@ -35,6 +39,8 @@ void Eibotboard::set_ratio_z(float output_units_mm, float input_units_steps) {
 
 // ---- the link -------------------------------------------------------------------------------------
 
+// Loop context: replies are flushed before and after reading so the reply ring is as empty as
+// possible when a command needs room.
 void Eibotboard::loop() {
   ByteStream* stream = link_stream();
   if (stream == nullptr) return;
@@ -43,6 +49,9 @@ void Eibotboard::loop() {
   replies_.flush(*stream);
 }
 
+// Flow control the EBB way: a motion command that finds the FIFO full is not answered and not
+// consumed; the client, waiting for its OK, sends nothing more, and the line is retried next pass.
+// A command is executed only when its largest reply surely fits, so no reply is ever dropped.
 void Eibotboard::read_lines(ByteStream& stream) {
   for (int lines = 0; lines < 16; ++lines) {
     // Reads up to the end of one line; a motion command that finds the FIFO full stays there.
@@ -53,6 +62,8 @@ void Eibotboard::read_lines(ByteStream& stream) {
   }
 }
 
+// A line longer than the EBB's buffer gets the EBB's own "!3 Err: RX Buffer overrun" (ebb-protocol.md:
+// at most 256 bytes per command), never a truncated command.
 void Eibotboard::execute_line() {
   if (lines_.overflowed()) {
     command_name_[0] = '\0';
@@ -100,6 +111,8 @@ void Eibotboard::report_counters(CounterSink& sink) const {
   sink.counter("moves_stretched", moves_stretched_);
 }
 
+// Idle means nothing queued, nothing pending from the loop, the frame not moving and the pen servo
+// at its target: what a sketch waits for before taking over the outputs.
 bool Eibotboard::is_idle() const {
   return moves_queued_ == moves_started_ && controls_.empty() && !frame_busy_ && frame_servo_settled_;
 }

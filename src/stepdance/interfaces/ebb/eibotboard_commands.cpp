@@ -26,12 +26,16 @@ int64_t abs64(int64_t value) { return value < 0 ? -value : value; }
 int64_t ceil_div(int64_t a, int64_t b) { return (a + b - 1) / b; }
 
 /// Accumulator rate that takes |steps| steps in `ticks` ticks (at most one step per tick).
+// Rounded up so the steps are done within the duration; capped at 2^31 (one step per tick, 25 kHz),
+// the EBB's maximum rate.
 int64_t constant_rate(int64_t steps, int64_t ticks) {
   const int64_t rate = ceil_div(abs64(steps) * kStepThreshold, ticks);
   return rate > kStepThreshold ? kStepThreshold : rate;
 }
 
 /// One LM/LT axis: the sign of Rate or of Steps gives the direction; |Rate| evolves by Accel.
+// ebb-protocol.md, LM row: negative Steps (preferred) or negative Rate means reverse; both negative
+// cancel out.
 void set_axis(EbbMove& move, int axis, int64_t rate, int64_t steps, int64_t accel) {
   int8_t direction = 1;
   if (rate < 0) {
@@ -81,6 +85,9 @@ const link::Command<Eibotboard::CommandHandler>* Eibotboard::find_command(const 
   return kTable.find(name);
 }
 
+// Unknown commands get an error, never silence and never a bare OK (ebb-protocol.md "Framing"; the
+// original answered OK to everything it did not know). Returns false only when a command must wait
+// for FIFO room.
 bool Eibotboard::dispatch(const char* name, EbbParameters& p) {
   const link::Command<CommandHandler>* command = find_command(name);
   if (command == nullptr) {
@@ -102,6 +109,8 @@ bool Eibotboard::reply_parameter_error(const EbbParameters& parameters) {
   return true;
 }
 
+// The FIFO depth a client sees is CU,4's (1 by default, as on the EBB: one move executing and one
+// waiting), up to kFifoCapacity. The command name travels with the move for the stretch warning.
 bool Eibotboard::queue(const EbbMove& move) {
   const uint32_t waiting = moves_queued_ - moves_started_;
   EbbMove named = move;
@@ -121,6 +130,9 @@ bool Eibotboard::queue_and_reply(const EbbMove& move) {
 bool Eibotboard::command_sm(EbbParameters& p) { return stepper_move(p, false); }
 bool Eibotboard::command_xm(EbbParameters& p) { return stepper_move(p, true); }
 
+// SM,Duration,Steps1[,Steps2[,Clear]] and XM,Duration,StepsA,StepsB[,Clear] (ebb-protocol.md):
+// Duration 0 is invalid; both step counts 0 make a timed delay capped at 100 000 ms; XM mixes
+// motor1 = A + B, motor2 = A − B for CoreXY machines.
 bool Eibotboard::stepper_move(EbbParameters& p, bool mixed) {
   int64_t duration_ms = 0, a = 0, b = 0, clear = 0;
   p.integer(mixed ? 1 : 0, mixed ? kInt32Max : kUint32Max, true, duration_ms);
@@ -142,6 +154,8 @@ bool Eibotboard::stepper_move(EbbParameters& p, bool mixed) {
 }
 
 // Fills a constant-rate SM/XM move; false (with the error reply) when it is refused.
+// A constant-rate move on each axis; ebb-protocol.md: an out-of-range XM rate is an error and the move is
+// not executed, while SM clamps the rate to 25 000 steps/s (the move then takes longer).
 bool Eibotboard::steps_move(const int64_t (&steps)[2], int64_t duration_ms, bool mixed, EbbMove& move) {
   const int64_t ticks = duration_ms * kTicksPerMs;
   for (int axis = 0; axis < 2; ++axis) {
@@ -162,6 +176,9 @@ bool Eibotboard::steps_move(const int64_t (&steps)[2], int64_t duration_ms, bool
 bool Eibotboard::command_lm(EbbParameters& p) { return low_level_move(p, false); }
 bool Eibotboard::command_lt(EbbParameters& p) { return low_level_move(p, true); }
 
+// LM,Rate1,Steps1,Accel1,Rate2,Steps2,Accel2[,Clear] and LT,Intervals,Rate1,Accel1,Rate2,Accel2[,Clear]:
+// the raw accumulator parameters, executed exactly as the EBB does (ebb_motion.cpp). saxi and the
+// AxiDraw software send their own planned acceleration this way.
 bool Eibotboard::low_level_move(EbbParameters& p, bool timed) {
   int64_t intervals = 0, rate[2] = {}, steps[2] = {}, accel[2] = {}, clear = 0;
   if (timed) p.integer(0, kUint32Max, true, intervals);
@@ -180,6 +197,8 @@ bool Eibotboard::low_level_move(EbbParameters& p, bool timed) {
   return queue_and_reply(move);
 }
 
+// HM,StepFrequency[,Position1,Position2]: StepFrequency 2…25000; without positions the target is
+// home (0, 0). Queued: it waits for earlier motion (ebb-protocol.md).
 bool Eibotboard::command_hm(EbbParameters& p) {
   int64_t frequency = 0, position[2] = {};
   p.integer(2, 25000, true, frequency);
@@ -194,6 +213,8 @@ bool Eibotboard::command_hm(EbbParameters& p) {
   return queue_and_reply(move);
 }
 
+// EM,Enable1[,Enable2]: 0 off, 1–5 on with 1/16 … full step; Enable1's mode applies to both motors
+// (ebb-protocol.md). Queued like the EBB's, and the step counters reset when it runs.
 bool Eibotboard::command_em(EbbParameters& p) {
   int64_t enable1 = 0, enable2 = -1;
   p.integer(0, 5, true, enable1);
@@ -210,6 +231,8 @@ bool Eibotboard::command_em(EbbParameters& p) {
   return true;
 }
 
+// Pen up goes to the SC,4 position at the SC,11 rate, down to SC,5 at SC,12; the delay holds the FIFO
+// so the next move waits for the pen.
 EbbMove Eibotboard::servo_move(bool up, uint32_t delay_ms) const {
   EbbMove move;
   move.kind = EbbMove::Kind::kServo;
@@ -220,6 +243,8 @@ EbbMove Eibotboard::servo_move(bool up, uint32_t delay_ms) const {
   return move;
 }
 
+// SP,Value[,Duration[,Pin]]: 1 up, 0 down, queued (ebb-protocol.md). Values 2 and 3 act at once,
+// outside the FIFO.
 bool Eibotboard::command_sp(EbbParameters& p) {
   int64_t value = 0, duration_ms = 0, pin = 1;
   p.integer(0, 3, true, value);
@@ -238,6 +263,8 @@ bool Eibotboard::command_sp(EbbParameters& p) {
   return true;
 }
 
+// TP[,Duration]: toggle the pen relative to the last commanded state, not the executed one, so two
+// TPs queued back to back cancel out.
 bool Eibotboard::command_tp(EbbParameters& p) {
   int64_t duration_ms = 0;
   p.integer(1, 65535, false, duration_ms);
@@ -247,6 +274,8 @@ bool Eibotboard::command_tp(EbbParameters& p) {
   return true;
 }
 
+// S2,Position,Pin[,Rate[,Delay]] (ebb-protocol.md): clients drive the pen through S2 on the pen servo
+// output (RB1, S2 pin 4); other outputs have no servo here and are accepted without effect.
 bool Eibotboard::command_s2(EbbParameters& p) {
   int64_t position = 0, pin = 0, rate = 0, delay_ms = 0;
   p.integer(0, 65535, true, position);

@@ -23,6 +23,8 @@ bool moves_motors(const EbbMove& move) {
 
 }  // namespace
 
+// Frame context (pre-channel). The loop talks to the frame only through queues (controls_, fifo_) and
+// the published frame state, so no command changes the executor in the middle of a tick.
 void Eibotboard::run() {
   apply_controls();
   if (alarm_active()) stop_motion_for_alarm();
@@ -62,12 +64,16 @@ void Eibotboard::publish_frame_state() {
   }
 }
 
+// Discarded moves still count as started so the loop's queued/started difference (its FIFO depth)
+// returns to zero.
 void Eibotboard::flush_fifo() {
   executor_.stop();
   EbbMove discard;
   while (fifo_.pop(discard) == Status::kOk) moves_started_ = moves_started_ + 1;
 }
 
+// Immediate commands (ES, CS, SP,2/3, R) bypass the FIFO, as on the EBB, through a separate queue
+// the frame drains before the next tick.
 void Eibotboard::apply_controls() {
   Control control;
   while (controls_.pop(control) == Status::kOk) {
@@ -101,6 +107,9 @@ void Eibotboard::stop_motion_for_alarm() {
   alarm_stops_ = alarm_stops_ + 1;
 }
 
+// Zero-time entries (EM, a pen move without delay) run back to back in one frame, up to
+// kZeroTimeMovesPerFrame, so a burst of them does not cost a frame each; a move that takes time is
+// ticked in the same frame it is loaded. Motor moves queued before an alarm was seen are dropped.
 void Eibotboard::load_next_move() {
   for (int i = 0; i < kZeroTimeMovesPerFrame; ++i) {
     EbbMove move;
@@ -118,6 +127,7 @@ void Eibotboard::load_next_move() {
   }
 }
 
+// For the output_duration port: the longer of the two axes for SM/LM, the tick count otherwise.
 double Eibotboard::move_duration_s(const EbbMove& move) const {
   switch (move.kind) {
     case EbbMove::Kind::kSteps: {
@@ -170,6 +180,10 @@ void Eibotboard::describe_stretch(double asked_per_s, double carried_per_s) {
   text.text(": it ran ").fixed(move_stretch_, 2).text("x as long (later ones counted in moves_stretched)");
 }
 
+// The motor positions become world positions: CoreXY (the AxiDraw: motor1 = x + y, motor2 = x − y,
+// ebb-protocol.md) inverted as x = (m1 + m2)/2, y = (m1 − m2)/2, else one motor per axis. Z is the
+// servo position relative to neutral 1.5 ms (servo units of 1/12 µs). Unchanged values are not set
+// again, so a deep reset downstream is not overwritten by a stale EBB position.
 void Eibotboard::update_outputs() {
   const double m1 = static_cast<double>(executor_.position_sixteenths(0)) * mm_per_sixteenth_;
   const double m2 = static_cast<double>(executor_.position_sixteenths(1)) * mm_per_sixteenth_;

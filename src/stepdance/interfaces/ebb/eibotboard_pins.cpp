@@ -7,6 +7,7 @@ using ebb::EbbError;
 using ebb::EbbParameters;
 
 // Reads "Port,Pin": false (with the error reply) when either is missing or out of range.
+// Port is a letter A–E and pin 0–7 on the EBB's PIC ports.
 bool Eibotboard::read_pin(EbbParameters& p, int& port, int& pin) {
   char letter = 0;
   int64_t number = 0;
@@ -19,6 +20,7 @@ bool Eibotboard::read_pin(EbbParameters& p, int& port, int& pin) {
   return true;
 }
 
+// PD,Port,Pin,Direction: 1 input, 0 output, as on the PIC (TRIS register convention).
 bool Eibotboard::command_pd(EbbParameters& p) {
   int port = 0, pin = 0;
   int64_t direction = 0;

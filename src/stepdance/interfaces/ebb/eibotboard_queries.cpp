@@ -15,6 +15,9 @@ constexpr char kHex[] = "0123456789ABCDEF";
 
 }  // namespace
 
+// SC,Parameter,Value (ebb-protocol.md): 4 pen-up servo position, 5 pen-down, 10 both slew rates, 11
+// up rate, 12 down rate. The others configure hardware we do not have; they are accepted with OK so
+// clients that send them at start-up carry on.
 bool Eibotboard::command_sc(EbbParameters& p) {
   int64_t parameter = 0, value = 0;
   p.integer(0, 255, true, parameter);
@@ -32,6 +35,8 @@ bool Eibotboard::command_sc(EbbParameters& p) {
   return true;
 }
 
+// CU,Parameter,Value: 1 acks (OK lines) on/off, 4 FIFO depth (clamped to ours), 10 the future reply
+// syntax, 54 checksums (only "off" is supported, so "on" is refused rather than silently ignored).
 bool Eibotboard::command_cu(EbbParameters& p) {
   int64_t parameter = 0, value = 0;
   p.integer(0, 255, true, parameter);
@@ -78,6 +83,7 @@ bool Eibotboard::switch_syntax(int64_t value) {
   return false;
 }
 
+// QU,2 FIFO capacity, QU,3 configured depth, QU,6 moves waiting (at least two digits).
 bool Eibotboard::command_qu(EbbParameters& p) {
   int64_t parameter = 0;
   p.integer(0, 255, true, parameter);
@@ -105,6 +111,9 @@ bool Eibotboard::command_qu(EbbParameters& p) {
   return true;
 }
 
+// ES[,DisableMotors]: abort the current move and flush the FIFO (ebb-protocol.md). The reply says
+// whether anything was interrupted, judged from the loop's view (the frame applies the stop next
+// frame); it ends "\n\r" like the EBB's legacy query lines.
 bool Eibotboard::command_es(EbbParameters& p) {
   int64_t disable = 0;
   p.integer(0, 1, false, disable);
@@ -116,11 +125,16 @@ bool Eibotboard::command_es(EbbParameters& p) {
   return true;
 }
 
+// Clients switch command sets on this version number (ebb-protocol.md "Settings and queries"): at
+// 2.5.3 saxi uses LM, at 2.6.0 SR. The sketch may choose the string (set_version_string()).
 bool Eibotboard::command_v(EbbParameters&) {
   reply_data(version_, false);
   return true;
 }
 
+// QM,CommandExecuting,Motor1Moving,Motor2Moving,FIFOStatus: clients poll it to wait for idle, so
+// "executing" includes moves still waiting in the FIFO. The legacy line ends "\n\r" and has no OK,
+// exactly as the EBB prints it (ebb-protocol.md).
 bool Eibotboard::command_qm(EbbParameters&) {
   const bool fifo = moves_queued_ != moves_started_;
   char data[24];
@@ -139,6 +153,9 @@ bool Eibotboard::command_qm(EbbParameters&) {
   return true;
 }
 
+// QG status byte in hex (ebb-protocol.md): b5 PRG button, b4 pen up, b3 command executing, b2/b1
+// motor 1/2 moving, b0 FIFO not empty; b7 limit switch and b6 power lost are never set here. Reading
+// it clears the button flag, like QB.
 bool Eibotboard::command_qg(EbbParameters&) {
   const bool fifo = moves_queued_ != moves_started_;
   uint8_t status = 0;
@@ -154,6 +171,8 @@ bool Eibotboard::command_qg(EbbParameters&) {
   return true;
 }
 
+// SR,Timeout[,State]: the servo power-off timeout is stored but not acted on: the pen "servo" here is
+// an output port's Z position, which has no servo power to switch off.
 bool Eibotboard::command_sr(EbbParameters& p) {
   int64_t timeout = 0, state = 0;
   p.integer(0, kUint32Max, true, timeout);
@@ -164,6 +183,7 @@ bool Eibotboard::command_sr(EbbParameters& p) {
   return true;
 }
 
+// SL,Value[,Index] / QL[,Index]: 32 bytes of user variables (the AxiDraw software keeps state there).
 bool Eibotboard::command_sl(EbbParameters& p) {
   int64_t value = 0, index = 0;
   p.integer(0, 255, true, value);
@@ -199,6 +219,7 @@ bool Eibotboard::command_qt(EbbParameters&) {
   return true;
 }
 
+// QS: the global signed 32-bit step counters as the frame last published them.
 bool Eibotboard::command_qs(EbbParameters&) {
   char data[32];
   TextWriter text(data, sizeof(data));
@@ -207,6 +228,7 @@ bool Eibotboard::command_qs(EbbParameters&) {
   return true;
 }
 
+// CS goes through the control queue so the counters are cleared between two ticks, never during one.
 bool Eibotboard::command_cs(EbbParameters&) {
   controls_.push(Control::kClearSteps);
   reply_ok();
@@ -245,6 +267,8 @@ bool Eibotboard::command_qr(EbbParameters&) {
   return true;
 }
 
+// R: back to the power-on state (legacy syntax, acks on, FIFO depth 1, pen up, motors off). The OK is
+// sent first, in the syntax in force when R arrived.
 bool Eibotboard::command_r(EbbParameters&) {
   reply_ok();
   controls_.push(Control::kReset);

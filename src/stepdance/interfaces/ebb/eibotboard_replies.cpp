@@ -5,6 +5,8 @@ namespace stepdance {
 
 using ebb::EbbError;
 
+// The two reply syntaxes (ebb-protocol.md "Framing"): legacy "OK\r\n" (or a bare "\r\n" with acks off
+// by CU,1,0), future "<CMD>\n".
 void Eibotboard::reply_ok() {
   if (future_syntax_) {
     send(command_name_);
@@ -14,6 +16,7 @@ void Eibotboard::reply_ok() {
   send(ack_enabled_ ? "OK\r\n" : "\r\n");
 }
 
+// Legacy line endings differ by command on the EBB (QM and QS end "\n\r"), hence the parameter.
 void Eibotboard::reply_data(const char* data, bool ok_after, const char* legacy_ending) {
   if (future_syntax_) {
     send(command_name_);
@@ -27,6 +30,9 @@ void Eibotboard::reply_data(const char* data, bool ok_after, const char* legacy_
   if (ok_after) send(ack_enabled_ ? "OK\r\n" : "\r\n");
 }
 
+// The EBB's error texts and "!n" codes (ebb-protocol.md "Framing"), with the command name first in the
+// future syntax. !9 (alarm) is ours: the EBB has no alarm state. An unknown command is echoed with
+// its bytes in hex so an invisible character in it can be seen.
 void Eibotboard::reply_error(EbbError error, const char* name, char offending) {
   ++errors_replied_;
   char storage[96];

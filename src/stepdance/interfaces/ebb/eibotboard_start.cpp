@@ -5,6 +5,9 @@
 
 namespace stepdance {
 
+// At dance_start(): one EBB 1/16 step must be one channel step on both axes, or the AxiDraw software's
+// step counts would draw at the wrong scale; a disagreement is refused (a configuration fault)
+// rather than guessed.
 bool Eibotboard::accept_frame_period(uint32_t) {
   ChannelRatios ratios;
   collect_channel_ratios(output_x, ratios);
