@@ -11,6 +11,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kFullTurnEpsilonRad = 1e-7;
 
 /// Sets the signed sweep from start to end around the centre already stored in arc.
+// The signed angle from start to end around the centre (atan2 of cross and dot products), then
+// forced to the commanded direction: G2 negative, G3 positive. Start = end makes a full circle.
 void set_sweep(Motion& arc, bool clockwise) {
   const double v0_0 = arc.start_mm[arc.plane_axis_0] - arc.center_0_mm;
   const double v0_1 = arc.start_mm[arc.plane_axis_1] - arc.center_1_mm;
@@ -25,6 +27,8 @@ void set_sweep(Motion& arc, bool clockwise) {
 
 }  // namespace
 
+// Grbl's radius check for the offset form: start and end radius may differ by 0.005 mm, or by up to
+// 0.5 mm if that is within 0.1 % of the radius; beyond, error:33.
 GrblError complete_arc_ijk(Motion& arc, bool clockwise, double offset_0_mm, double offset_1_mm) {
   arc.center_0_mm = arc.start_mm[arc.plane_axis_0] + offset_0_mm;
   arc.center_1_mm = arc.start_mm[arc.plane_axis_1] + offset_1_mm;
@@ -41,6 +45,9 @@ GrblError complete_arc_ijk(Motion& arc, bool clockwise, double offset_0_mm, doub
   return GrblError::kOk;
 }
 
+// Radius form (Grbl's gc_execute_line): the centre lies on the chord's perpendicular bisector at
+// height √(r² − (c/2)²); a negative R asks for the arc longer than half a circle. Start = end has
+// no defined centre (error:33); a radius too short for the chord is error:34.
 GrblError complete_arc_radius(Motion& arc, bool clockwise, double radius_mm) {
   const double chord_0 = arc.end_mm[arc.plane_axis_0] - arc.start_mm[arc.plane_axis_0];
   const double chord_1 = arc.end_mm[arc.plane_axis_1] - arc.start_mm[arc.plane_axis_1];
@@ -64,6 +71,8 @@ GrblError complete_arc_radius(Motion& arc, bool clockwise, double radius_mm) {
   return GrblError::kOk;
 }
 
+// The box an arc sweeps, for the soft-limit check before the arc runs: the end points, widened by each
+// axis extreme (0°, 90°, 180°, 270°) that the sweep passes.
 void arc_bounds_mm(const Motion& arc, double (&low_mm)[kAxisCount], double (&high_mm)[kAxisCount]) {
   for (int axis = 0; axis < kAxisCount; ++axis) {
     low_mm[axis] = fmin(arc.start_mm[axis], arc.end_mm[axis]);
@@ -86,6 +95,9 @@ void arc_bounds_mm(const Motion& arc, double (&low_mm)[kAxisCount], double (&hig
   }
 }
 
+// Chords short enough that none strays more than the tolerance ($12) from the true arc, at most a
+// quarter turn each; the tolerance is floored at 1 µm so a tiny setting cannot ask for millions of
+// chords. Grbl splits by the same criterion (mc_arc).
 ArcSegmenter::ArcSegmenter(const Motion& arc, double tolerance_mm) : arc_(arc) {
   const double tolerance = tolerance_mm < 1e-3 ? 1e-3 : tolerance_mm;
   // A chord spanning angle a deviates r(1 - cos(a/2)) from the arc.
@@ -102,6 +114,8 @@ ArcSegmenter::ArcSegmenter(const Motion& arc, double tolerance_mm) : arc_(arc) {
   }
 }
 
+// Chord end k: in-plane on the circle, the helix axis and E linear in the fraction. The last point
+// is the arc's exact end, so rounding never leaves the arc short.
 void ArcSegmenter::point_mm(uint32_t k, double (&out)[kAxisCount]) const {
   if (k >= count_) {
     for (int axis = 0; axis < kAxisCount; ++axis) out[axis] = arc_.end_mm[axis];

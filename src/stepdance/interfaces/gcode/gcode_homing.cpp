@@ -4,6 +4,8 @@
 
 namespace stepdance {
 
+// $H runs the sketch's own Homing block (its axes, switches and order); without one, error:5 as Grbl
+// answers when homing is disabled.
 gcode::GrblError GCodeInterface::home() {
   if (homing_ == nullptr) return gcode::GrblError::kHomingDisabled;
   homing_->start_homing_routine();

@@ -25,6 +25,8 @@ constexpr gcode::CommandCode kM5 = 50;
 
 }  // namespace
 
+// The stored settings are read when the protocol begins (the board's non-volatile store), before any
+// line, so the first move already runs with the host's $110…$132.
 Status GCodeInterface::begin_stream(ByteStream& stream) {
   const Status planner = interpolator_.begin();
   if (planner != Status::kOk) return planner;
@@ -35,6 +37,9 @@ Status GCodeInterface::begin_stream(ByteStream& stream) {
   return Status::kOk;
 }
 
+// Loop context. Pending requests are drained before and after reading lines, so a line's motion is in
+// the planner before the next line is admitted (ready_for_line). Arcs get a budget of chords per pass
+// so a large arc cannot stall the loop.
 void GCodeInterface::loop() {
   arc_chords_left_this_pass_ = kArcChordsPerLoopPass;
   drain_pending();
@@ -68,6 +73,7 @@ void GCodeInterface::on_spindle(gcode::CommandCode m_code, double speed) {
   push_pending(request);
 }
 
+// M0 is a program pause as in Grbl: a feed hold once the motion before it has finished.
 void GCodeInterface::on_program_flow(gcode::CommandCode m_code) {
   if (m_code != kM0) return;  // M1 (no optional-stop switch), M2 and M30 need nothing here
   Pending request;
@@ -95,6 +101,8 @@ void GCodeInterface::push_pending(const Pending& request) {
   drain_pending();
 }
 
+// In order, each request only when the previous one is done: a dwell or spindle change after a
+// motion waits for that motion to end, as Grbl synchronises them (protocol_buffer_synchronize).
 void GCodeInterface::drain_pending() {
   apply_settings_to_planner();
   while (pending_count_ > 0) {
@@ -131,6 +139,9 @@ void GCodeInterface::drain_pending() {
   }
 }
 
+// Speed < 0 marks a rapid (G0): as fast as the axis limits ($110…) allow along the move, scaled by
+// the rapid override. Targets are absolute machine positions, so queued moves never accumulate
+// rounding.
 bool GCodeInterface::queue_line_motion(const Motion& motion, double speed_mm_per_s, double time_s) {
   if (interpolator_.queue_is_full()) return false;
   const double* end = motion.end_mm;
@@ -153,6 +164,8 @@ bool GCodeInterface::queue_line_motion(const Motion& motion, double speed_mm_per
   return true;
 }
 
+// An arc becomes straight chords in the planner, fed as room and the per-pass budget allow; the
+// next chord index survives between passes. Under G93 the arc's time is split evenly.
 bool GCodeInterface::feed_arc(const Motion& arc) {
   const gcode::ArcSegmenter chords(arc, settings().arc_tolerance_mm());
   const uint32_t count = chords.segment_count();
@@ -171,6 +184,8 @@ bool GCodeInterface::feed_arc(const Motion& arc) {
   return true;
 }
 
+// Spindle changes and M0 wait for motion to stop (Grbl synchronises M3/M4/M5 with the planner), so
+// the spindle never changes under a moving tool.
 bool GCodeInterface::act_when_idle(const Pending& request) {
   if (!interpolator_.is_idle()) return false;
   if (request.kind == Pending::Kind::kPause) {
@@ -199,6 +214,8 @@ bool GCodeInterface::dwell_done(double seconds) {
   return true;
 }
 
+// Grbl's $110–$112 (mm/min) and $120–$122 (mm/s²) per axis, $11 junction deviation. E takes X's
+// limits: Grbl has no E settings. Applied every pass, so a `$` write acts from the next move.
 void GCodeInterface::apply_settings_to_planner() {
   gcode::GrblSettings& grbl = settings();
   planner::MotionLimits& limits = interpolator_.limits();
@@ -211,6 +228,7 @@ void GCodeInterface::apply_settings_to_planner() {
 
 // ---- state and realtime commands ----
 
+// Grbl's states as the status report shows them: a hold wins over running, a jog is its own state.
 MotionState GCodeInterface::motion_state() {
   // A dwell runs with the planner empty: Idle, as Grbl reports during mc_dwell.
   const bool busy = !interpolator_.is_idle() || (pending_count_ > 0 && !dwelling_);
@@ -239,6 +257,8 @@ uint16_t GCodeInterface::queue_slots_free() {
 
 uint16_t GCodeInterface::queue_slots_total() { return planner::LookaheadPlanner::kCapacity; }
 
+// A new line only when the last one's requests are all in the planner and it has room for three more
+// moves (a G28 makes two), so a line is never half queued when the planner fills.
 bool GCodeInterface::ready_for_line() {
   return pending_count_ == 0 && !interpolator_.stop_in_progress() && interpolator_.slots_remaining >= 3;
 }
@@ -262,6 +282,8 @@ void GCodeInterface::cycle_start() {
   apply_override();
 }
 
+// Grbl's Ctrl-X: everything stops at once, queued motion and overrides are dropped; the return says
+// whether the machine was moving (ALARM:3, position possibly lost).
 bool GCodeInterface::soft_reset() {
   const bool moving = interpolator_.current_speed() > 0.0;
   interpolator_.emergency_stop();
@@ -275,6 +297,7 @@ bool GCodeInterface::soft_reset() {
   return moving;
 }
 
+// Grbl's jog cancel (0x85): decelerate to a stop and drop the rest, without an alarm.
 void GCodeInterface::jog_cancel() {
   pending_count_ = 0;
   dwelling_ = false;
@@ -287,6 +310,8 @@ void GCodeInterface::set_overrides(uint8_t feed_percent, uint8_t rapid_percent) 
   apply_override();
 }
 
+// Feed hold is override 0 (the planner decelerates on the path); otherwise the feed override. Rapids
+// carry their override in their planned speed instead (queue_line_motion).
 void GCodeInterface::apply_override() {
   interpolator_.speed_overide = holding_ ? 0.0 : feed_percent_ / 100.0;
 }

@@ -19,6 +19,10 @@ constexpr uint32_t kAxisWords = letter_bit('X') | letter_bit('Y') | letter_bit('
 constexpr uint32_t kOffsetWords = letter_bit('I') | letter_bit('J') | letter_bit('K');
 
 /// Validates one block against a copy of the state and plans its requests.
+// One line, executed against a copy of the machine state (plan.next): if any step fails, the line is
+// refused whole and the real state is untouched, as Grbl's gc_execute_line validates a block
+// completely before acting on it. The steps follow Grbl 1.1's order of execution (the NIST RS274NGC
+// order): modes, feed, spindle/tool, dwell, tool length, non-modal commands, motion, program flow.
 class LineExecution {
  public:
   LineExecution(const GcodeBlock& block, MachineState& state) : block_(block), state_(state) {}
@@ -59,6 +63,8 @@ class LineExecution {
   double inverse_time_f_ = 0.0;
 };
 
+// Leaving G93 (inverse time) clears the feed rate, as in Grbl: an F given as 1/minutes must not be
+// reused as mm/min. G54…G59 are stored as 0…5 (code 540 + 10 per system).
 void LineExecution::apply_modes() {
   if (block_.has_g(GGroup::kFeedMode)) {
     const bool was_inverse = state_.modal.inverse_time;
@@ -75,6 +81,8 @@ void LineExecution::apply_modes() {
   use(letter_bit('N'));
 }
 
+// Under G93 the F word is this line's inverse time (1/minutes, not modal); otherwise the modal feed,
+// converted to mm/min under G20.
 GrblError LineExecution::apply_feed() {
   if (!block_.has_word('F')) return GrblError::kOk;
   use(letter_bit('F'));
@@ -86,6 +94,7 @@ GrblError LineExecution::apply_feed() {
   return GrblError::kOk;
 }
 
+// G4 requires P (seconds, as Grbl 1.1; error:28 without it).
 GrblError LineExecution::apply_spindle_and_dwell(LinePlan& plan) {
   if (block_.has_word('S')) state_.modal.spindle_speed = block_.word('S');
   if (block_.has_word('T')) state_.modal.tool = static_cast<uint8_t>(block_.word('T'));
@@ -107,6 +116,9 @@ GrblError LineExecution::apply_spindle_and_dwell(LinePlan& plan) {
   return GrblError::kOk;
 }
 
+// Machine-coordinate targets of the line's axis words. Absolute: word + work offset (G54…) + G92 +
+// tool length on Z; relative (G91): added to the current position; G53: the word itself (not for E).
+// E may be relative under M83 while XYZ stay absolute (the printer convention).
 void LineExecution::target_mm(bool machine_coordinates, double (&out)[kAxisCount]) const {
   for (int axis = 0; axis < kAxisCount; ++axis) {
     out[axis] = state_.position_mm[axis];
@@ -123,6 +135,8 @@ void LineExecution::target_mm(bool machine_coordinates, double (&out)[kAxisCount
   }
 }
 
+// Advances the planned position as it records the motion, so a later motion of the same line (G28's
+// second leg) starts where this one ends.
 Motion& LineExecution::add_motion(LinePlan& plan, MotionKind kind, const double (&end)[kAxisCount]) {
   Motion& motion = plan.motions[plan.motion_count++];
   motion = Motion{};
@@ -135,6 +149,8 @@ Motion& LineExecution::add_motion(LinePlan& plan, MotionKind kind, const double 
   return motion;
 }
 
+// G10, G28, G30 and G92 use the axis words themselves, so a motion command beside them would fight for
+// them: error:24 as in Grbl (G80 is allowed, it is no motion).
 GrblError LineExecution::apply_non_modal(LinePlan& plan) {
   if (!block_.has_g(GGroup::kNonModal)) return GrblError::kOk;
   const CommandCode code = block_.g_code(GGroup::kNonModal);
@@ -167,6 +183,8 @@ GrblError LineExecution::apply_non_modal(LinePlan& plan) {
 
 // G10 L2 / L20: set a coordinate system's offset (L2: the value; L20: so the current position
 // reads the value).
+// P0 is the system in use, P1…P6 G54…G59 (Grbl's G10 rules: error:28 without L or P, error:20 for
+// another L, error:29 for a P beyond the systems).
 GrblError LineExecution::set_coordinate_system(LinePlan& plan) {
   if (!block_.has_word('L') || !block_.has_word('P')) return GrblError::kValueWordMissing;
   use(letter_bit('L') | letter_bit('P'));
@@ -230,6 +248,9 @@ GrblError LineExecution::apply_tool_length() {
   return GrblError::kOk;
 }
 
+// The plane's two axes come from G17 (XY), G18 (ZX), G19 (YZ); the third is the helix axis. Radius
+// form (R) or centre-offset form (I/J/K) as in Grbl; an arc needs an end word in the plane (error:32)
+// and, in offset form, an offset in the plane (error:35).
 GrblError LineExecution::plan_arc(Motion& motion) {
   const CommandCode plane = state_.modal.plane;
   motion.plane_axis_0 = plane == 170 ? kAxisX : (plane == 180 ? kAxisZ : kAxisY);
@@ -265,6 +286,9 @@ GrblError LineExecution::apply_arc_turns(Motion& motion) {
   return GrblError::kOk;
 }
 
+// Grbl's motion checks in Grbl's order: G53 only with G0/G1 (error:30), axis words with G80 are
+// error:31, feed motions need a feed (error:22), arcs need axis words (error:26). Axis words without a
+// motion command on the line use the modal motion, as in every G-code dialect.
 GrblError LineExecution::apply_motion(LinePlan& plan) {
   if (block_.has_g(GGroup::kMotion)) state_.modal.motion = block_.g_code(GGroup::kMotion);
   const bool absolute_override = block_.has_g(GGroup::kNonModal) && block_.g_code(GGroup::kNonModal) == 530;
@@ -320,6 +344,9 @@ void LineExecution::apply_program_flow(LinePlan& plan) {
   plan.program_flow_code = block_.m_code(MGroup::kStopping);
 }
 
+// A word that no command used is an error, not ignored (Grbl: error:31 for axis words, error:36 for
+// others), so a typo such as "G1 X10 Q5" never runs half understood. Printer housekeeping lines
+// (block.ignored) succeed without effect.
 GrblError LineExecution::run(LinePlan& plan) {
   if (block_.ignored) return GrblError::kOk;
   apply_modes();
@@ -339,6 +366,8 @@ GrblError LineExecution::run(LinePlan& plan) {
 
 }  // namespace
 
+// Loop context. Does not change the interpreter: the caller checks the plan (soft limits) and then
+// commit()s it, or drops it.
 GrblError GcodeInterpreter::plan(const GcodeBlock& block, LinePlan& plan) const {
   plan.clear_requests();
   plan.next = state_;
@@ -346,6 +375,8 @@ GrblError GcodeInterpreter::plan(const GcodeBlock& block, LinePlan& plan) const 
   return line.run(plan);
 }
 
+// A null sink is Grbl's check mode ($C): the state advances, nothing moves. M2/M30 reset the modes to
+// Grbl's program-end defaults (G1, G17, G90, G94, G54, M5, M9).
 void GcodeInterpreter::commit(const LinePlan& plan, GcodeSink* sink) {
   state_ = plan.next;
   const bool program_end = plan.program_flow && (plan.program_flow_code == 20 || plan.program_flow_code == 300);
@@ -373,6 +404,8 @@ double GcodeInterpreter::work_offset_mm(int axis) const {
   return system + state_.g92_mm[axis] + tool_length;
 }
 
+// Only when the machine is idle (GrblProtocol::sync_position_when_idle): something else may have moved
+// the axes between programs (a knob, homing), and the next line must start from where they are.
 void GcodeInterpreter::set_position_mm(const double (&machine_mm)[kAxisCount]) {
   for (int axis = 0; axis < kAxisCount; ++axis) state_.position_mm[axis] = machine_mm[axis];
 }

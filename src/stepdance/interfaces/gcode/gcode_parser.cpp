@@ -55,6 +55,7 @@ constexpr double kLargestNumber = 1e12;
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
 /// Reads [+|-]digits[.digits] (at least one digit). False if none or not finite.
+// Grbl's read_float accepts exactly this (sign, digits, one point); exponents are not G-code.
 bool read_number(Cursor& cursor, double& value) {
   bool negative = false;
   char c = cursor.peek();
@@ -86,6 +87,8 @@ struct CommandEntry {
   uint8_t group;
 };
 
+// The G codes Grbl 1.1 accepts (×10, so G28.1 = 281) with their NIST modal groups; two codes of one
+// group on a line are error:21.
 constexpr CommandEntry kGCommands[] = {
     {0, uint8_t(GGroup::kMotion)},       {10, uint8_t(GGroup::kMotion)},
     {20, uint8_t(GGroup::kMotion)},      {30, uint8_t(GGroup::kMotion)},
@@ -116,6 +119,8 @@ constexpr CommandEntry kMCommands[] = {
 };
 
 /// Printer housekeeping M numbers accepted without action when printer codes are on.
+// When printer codes are on, a line with one of these M codes is accepted and skipped as a whole (the
+// motion planner has no heaters or fans); see docs/gcode.md.
 constexpr uint16_t kPrinterHousekeeping[] = {73,  84,  104, 105, 106, 107, 109, 115, 117, 140,
                                              190, 201, 202, 203, 204, 205, 220, 221, 862, 900};
 
@@ -143,6 +148,7 @@ bool is_printer_housekeeping(double value) {
   return false;
 }
 
+// G59.1–G59.3 exist in LinuxCNC but not in Grbl: error:29, as Grbl answers.
 GrblError add_g(GcodeBlock& block, CommandCode code) {
   if (code >= 591 && code <= 593) return GrblError::kUnsupportedCoordinateSystem;
   const CommandEntry* entry = find_command(kGCommands, code);
@@ -176,6 +182,8 @@ bool is_value_letter(char letter) {
   }
 }
 
+// Grbl's value checks: F, N, P, S, T and L must not be negative (error:4), N at most 10 000 000
+// (error:27), T at most 255 (error:38).
 GrblError check_value(char letter, double value) {
   const bool must_be_positive =
       letter == 'F' || letter == 'N' || letter == 'P' || letter == 'S' || letter == 'T' || letter == 'L';
@@ -185,6 +193,7 @@ GrblError check_value(char letter, double value) {
   return GrblError::kOk;
 }
 
+// Each value letter once per line (error:25); unknown letters are error:20.
 GrblError add_value(GcodeBlock& block, char letter, double value) {
   if (!is_value_letter(letter)) return GrblError::kUnsupportedCommand;
   const uint32_t bit = 1u << word_index(letter);
@@ -197,6 +206,7 @@ GrblError add_value(GcodeBlock& block, char letter, double value) {
 }
 
 /// A G/M number as a CommandCode (×10); false if it has more than one decimal or is out of range.
+// G/M numbers with one decimal at most (G38.2, G28.1): anything finer is not a command Grbl knows.
 bool to_command_code(double value, CommandCode& code) {
   if (value < 0.0 || value > 6000.0) return false;
   const double tenths = value * 10.0;
@@ -213,6 +223,7 @@ bool parse_number(const char* text, size_t length, double& value) {
   return read_number(cursor, value) && cursor.peek() == 0;
 }
 
+// Loop context. A line holding only "%" (a program delimiter) is accepted, as senders send it.
 GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const ParserOptions& options) {
   out = GcodeBlock{};
   Cursor cursor(text, length);

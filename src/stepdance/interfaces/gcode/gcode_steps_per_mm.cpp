@@ -40,6 +40,7 @@ bool GCodeInterface::accept_frame_period(uint32_t) {
 
 // The fault's text, naming the setting and both values (kept: the fault path holds the pointer).
 // `sketch` kChannelsDisagree: the axis's channels disagree among themselves.
+// Context: loop (dance_start); the text is written once into a member buffer, no heap.
 void GCodeInterface::describe_steps_fault(uint32_t number, char axis, double sketch, double channels) {
   TextWriter text(steps_fault_text_, sizeof(steps_fault_text_));
   text.text("GCodeInterface: $").unsigned_number(number);

@@ -3,6 +3,8 @@
 
 namespace stepdance::gcode {
 
+// Short texts for logs and the simulator (Grbl itself sends only "error:N"); the numbers are Grbl
+// 1.1's, listed in grbl_error.hpp.
 const char* describe(GrblError error) {
   switch (error) {
     case GrblError::kOk: return "accepted";

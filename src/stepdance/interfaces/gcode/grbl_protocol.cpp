@@ -14,6 +14,8 @@ constexpr uint8_t kAlarmHomingFailed = 9;   // Grbl's "homing fail: could not fi
 
 }  // namespace
 
+// The welcome line comes first, as Grbl prints it at power-up: senders wait for "Grbl 1.1h" before
+// sending. Stored settings are loaded after it so their messages follow the welcome.
 void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileStore* store) {
   stream_ = &stream;
   machine_ = &machine;
@@ -23,6 +25,9 @@ void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileSt
   flush_replies();
 }
 
+// Loop context, once per pass. Realtime bytes (?, !, ~, Ctrl-X, overrides) are acted on as they
+// arrive, ahead of any queued line, as Grbl's serial ISR picks them out of the stream. A status
+// report is sent only when it fits whole in the reply ring.
 void GrblProtocol::poll() {
   if (stream_ == nullptr) return;
   flush_replies();
@@ -41,6 +46,8 @@ void GrblProtocol::poll() {
   flush_replies();
 }
 
+// Lines are taken only while the machine can accept them (ready_for_line) and their largest reply
+// fits: the sender's character-counting or send-response flow control then sees Grbl's own pacing.
 void GrblProtocol::serve_lines() {
   for (int i = 0; i < kLinesPerPoll && answer_homing_when_done() && answer_line_when_taken(); ++i) {
     if (soft_limit_ != SoftLimit::kNone) return;
@@ -52,6 +59,8 @@ void GrblProtocol::serve_lines() {
   }
 }
 
+// Grbl 1.1's realtime commands: ? status, ! feed hold (cancels a jog instead), ~ cycle start, 0x18
+// soft reset, 0x85 jog cancel, 0x84 safety door; each acts only in the states where Grbl lets it.
 void GrblProtocol::on_realtime(uint8_t byte) {
   if (byte == 0x18) {
     reset_requested_ = true;
@@ -82,6 +91,8 @@ void GrblProtocol::on_realtime(uint8_t byte) {
   }
 }
 
+// Grbl 1.1's override bytes: feed 0x90–0x94 (reset, ±10 %, ±1 %), rapid 0x95–0x97 (100/50/25 %),
+// spindle 0x99–0x9D; feed and spindle clamped to Grbl's 10–200 %. The next status report carries Ov:.
 void GrblProtocol::handle_override(uint8_t byte) {
   auto clamp = [](int percent) { return static_cast<uint8_t>(percent < 10 ? 10 : (percent > 200 ? 200 : percent)); };
   int feed = feed_override_percent_;
@@ -135,6 +146,8 @@ void GrblProtocol::execute_line(const ReceivedLine& line) {
   }
 }
 
+// Plan, check, commit: the whole line is checked against the soft limits before any of it runs (a G28
+// with two legs, an arc by its box), so a refused line leaves no partial motion.
 GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
   GcodeBlock block;
   const GrblError syntax = parse_line(text, length, block, parser_options_);
@@ -163,6 +176,8 @@ void GrblProtocol::begin_soft_limit_alarm() {
   finish_soft_limit_stop();
 }
 
+// Called each pass until the feed hold has brought the machine to rest; only then is the queue
+// dropped, so the position is kept (no steps lost) and ALARM:2 needs no re-homing.
 void GrblProtocol::finish_soft_limit_stop() {
   const MotionState state = machine_->motion_state();
   const bool stopped = state == MotionState::kIdle || (state == MotionState::kHolding && machine_->hold_complete());
@@ -188,6 +203,8 @@ bool GrblProtocol::within_travel(const Motion& motion) const {
   return true;
 }
 
+// The interpreter's position is only refreshed when idle: while moving, the interpreter is ahead of
+// the machine (it plans queued lines), and overwriting it would break relative moves.
 void GrblProtocol::sync_position_when_idle() {
   if (machine_->motion_state() != MotionState::kIdle) return;
   double position[kAxisCount];
@@ -206,6 +223,8 @@ bool GrblProtocol::answer_homing_when_done() {
   return true;
 }
 
+// A line whose work outlasts its parsing (an arc still being fed, a dwell) gets its ok when it is done,
+// as Grbl answers after gc_execute_line returns; streaming senders count on that order.
 bool GrblProtocol::send_owed_ok() {
   if (machine_->line_in_progress() || reply_space() < 4) return false;
   ok_owed_ = false;
@@ -213,6 +232,7 @@ bool GrblProtocol::send_owed_ok() {
   return true;
 }
 
+// Grbl's ALARM:n line; the link then refuses G-code (error:9) until $X or $H.
 void GrblProtocol::raise_alarm(uint8_t code) {
   alarm_ = code;
   char storage[16];

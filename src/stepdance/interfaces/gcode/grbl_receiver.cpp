@@ -3,6 +3,9 @@
 
 namespace stepdance::gcode {
 
+// Loop context. Realtime bytes are taken out of the stream wherever they appear, even inside a line,
+// as Grbl's serial ISR does. When the ring is full reading stops (one byte held back): the rest stays
+// in the stream, so a realtime byte behind a full buffer waits, but nothing is lost.
 void GrblReceiver::pump(ByteStream& stream, RealtimeHandler& handler) {
   if (held_byte_ >= 0) {
     if (count_ == kBufferBytes) return;
@@ -25,12 +28,14 @@ void GrblReceiver::pump(ByteStream& stream, RealtimeHandler& handler) {
   }
 }
 
+// While locked after a soft-limit alarm, Grbl listens for the reset only; line bytes are dropped.
 void GrblReceiver::discard(ByteStream& stream, RealtimeHandler& handler) {
   for (int value = stream.read_byte(); value >= 0; value = stream.read_byte()) {
     if (is_realtime_byte(static_cast<uint8_t>(value))) handler.on_realtime(static_cast<uint8_t>(value));
   }
 }
 
+// CR and LF both end a line (Grbl accepts either); the line framing itself is LineReader's.
 bool GrblReceiver::next_line(ReceivedLine& line) {
   while (!line_.ready() && count_ > 0) {
     const uint8_t byte = ring_[head_];
@@ -62,6 +67,8 @@ void GrblReceiver::take_line() {
   overflowed_ = false;
 }
 
+// Grbl's protocol loop cleans lines as they arrive: ( ) and ; comments removed, control characters and
+// comments turned into one blank (so "G1X1(c)Y2" keeps its words apart), letters upper-cased.
 void GrblReceiver::assemble(uint8_t byte) {
   if (in_parentheses_ || in_semicolon_ || overflowed_) {
     if (byte == ')') in_parentheses_ = false;  // only a `( )` comment ends before the line does
@@ -79,6 +86,8 @@ void GrblReceiver::assemble(uint8_t byte) {
   }
 }
 
+// Blanks are kept only as word separators and never inside a `$` line, where Grbl strips them (the
+// `$` parser takes "$J=G1 X1" as "$J=G1X1"). A line beyond kMaxLength is answered error:11 at its end.
 void GrblReceiver::store(uint8_t byte) {
   if (characters_ == ReceivedLine::kMaxLength) {
     overflowed_ = true;  // the rest of the line is thrown away; its reply is error:11

@@ -24,6 +24,7 @@ const char* state_name(MotionState state, bool hold_complete) {
 
 }  // namespace
 
+// Three decimals in mm, four in inches ($13), as Grbl prints positions.
 void GrblProtocol::append_axes(TextWriter& line, const double* values_mm, int count) {
   const bool inches = settings_.report_inches();
   for (int axis = 0; axis < count; ++axis) {
@@ -32,11 +33,14 @@ void GrblProtocol::append_axes(TextWriter& line, const double* values_mm, int co
   }
 }
 
+// Senders detect Grbl by this line (blank line first, as Grbl's reset prints it).
 void GrblProtocol::report_welcome() {
   send_text("");
   send_text("Grbl 1.1h ['$' for help]");
 }
 
+// Grbl 1.1's status report: <State|MPos or WPos|Bf|FS|WCO|Ov>. Alarm and Check win over the motion
+// state, as in Grbl.
 void GrblProtocol::report_status() {
   char storage[160];
   TextWriter line(storage, sizeof(storage));
@@ -57,6 +61,7 @@ void GrblProtocol::report_status() {
   send_line(line.character('>'));
 }
 
+// $10 bit 0 chooses MPos (machine) or WPos (work = machine − WCO); senders compute the other from WCO.
 void GrblProtocol::append_position(TextWriter& line, const double (&offset)[kOffsetAxisCount]) {
   double position[kAxisCount];
   machine_->position_mm(position);
@@ -69,6 +74,8 @@ void GrblProtocol::append_position(TextWriter& line, const double (&offset)[kOff
   append_axes(line, position, kOffsetAxisCount);
 }
 
+// Bf: (with $10 bit 1) is free planner blocks and free receive bytes, which character-counting senders
+// use for pacing; FS: the current feed and the programmed spindle speed (0 when M5).
 void GrblProtocol::append_buffer_and_feed(TextWriter& line) {
   if (settings_.report_buffer_state()) {
     line.text("|Bf:").unsigned_number(machine_->queue_slots_free()).character(',').unsigned_number(
@@ -102,6 +109,7 @@ void GrblProtocol::append_offsets_and_overrides(TextWriter& line, const double (
   }
 }
 
+// $$: every setting in Grbl's order; $100–$102 show the sketch's channels' steps/mm, the true figures.
 void GrblProtocol::report_settings() {
   for (int i = 0; i < GrblSettings::kCount; ++i) {
     const GrblSetting& setting = settings_.at(i);
@@ -115,6 +123,8 @@ void GrblProtocol::report_settings() {
   }
 }
 
+// $#: the coordinate systems, G28/G30 positions, G92 and tool length offsets; no probe here, so
+// PRB is zero and unsuccessful.
 void GrblProtocol::report_parameters() {
   static const char* const kSystems[CoordinateData::kSystemCount] = {"G54", "G55", "G56", "G57", "G58", "G59"};
   const CoordinateData& data = interpreter_.coordinate_data();
@@ -145,6 +155,7 @@ void GrblProtocol::report_parameters() {
   send_text("[PRB:0.000,0.000,0.000:0]");
 }
 
+// $G: the modal state as Grbl prints it; F keeps one decimal in inches.
 void GrblProtocol::report_parser_state() {
   const ModalState& modal = interpreter_.modal();
   char storage[96];

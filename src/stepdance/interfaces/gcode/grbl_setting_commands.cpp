@@ -57,6 +57,7 @@ GrblError GrblProtocol::execute_setting_write(const char* text, size_t length) {
   return error;
 }
 
+// $RST=$ restores the settings, $RST=# the coordinate data, $RST=* both; a reset follows as in Grbl.
 GrblError GrblProtocol::execute_restore(const char* text, size_t length) {
   if (length != 1 || (text[0] != '$' && text[0] != '#' && text[0] != '*')) return GrblError::kInvalidDollarStatement;
   if (text[0] != '#') {
@@ -69,6 +70,8 @@ GrblError GrblProtocol::execute_restore(const char* text, size_t length) {
   return GrblError::kOk;
 }
 
+// A store that cannot be read, or holds another version, falls back to the defaults and says so, rather
+// than loading values of unknown meaning.
 void GrblProtocol::load_stored_settings() {
   if (store_ == nullptr) return;
   uint8_t version = 0;
@@ -91,6 +94,8 @@ void GrblProtocol::load_stored_settings() {
   }
 }
 
+// Every accepted $N=v is saved at once (as Grbl writes EEPROM); a board without a store still applies
+// it until reset and says so.
 void GrblProtocol::save_stored_settings() {
   if (store_ == nullptr) return;
   const Status saved = save_settings(*store_, settings_);

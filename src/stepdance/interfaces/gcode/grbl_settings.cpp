@@ -33,6 +33,7 @@ GrblSettings::GrblSettings()
   for (GrblSetting& setting : settings_) setting.default_value = setting.value;
 }
 
+// A linear search over ~35 settings: called from the loop only, on `$` commands and at start.
 const GrblSetting* GrblSettings::find(uint32_t number) const {
   for (const GrblSetting& setting : settings_) {
     if (setting.number == number) return &setting;
@@ -68,6 +69,8 @@ GrblError GrblSettings::write(uint32_t number, double value) {
   return GrblError::kOk;
 }
 
+// Loading from the store is stricter than a host write: a stored value that does not fit its setting
+// marks the whole image corrupt (no truncation, no silent repair).
 GrblError GrblSettings::load(uint32_t number, double value) {
   GrblSetting* setting = writable_setting(number);
   if (setting == nullptr) return GrblError::kInvalidDollarStatement;
@@ -82,6 +85,8 @@ GrblSetting* GrblSettings::writable_setting(uint32_t number) {
   return (setting != nullptr && setting->writable) ? setting : nullptr;
 }
 
+// The sketch sets the default; a value the host wrote ($N=v, stored) keeps precedence over it, and
+// $RST=$ returns to the sketch's value, not Grbl's.
 bool GrblSettings::set_from_sketch(uint32_t number, double value) {
   GrblSetting* setting = const_cast<GrblSetting*>(find(number));
   if (setting == nullptr || !fits(*setting, value)) return false;
@@ -91,6 +96,8 @@ bool GrblSettings::set_from_sketch(uint32_t number, double value) {
   return true;
 }
 
+// Like set_from_sketch (the channels' steps/mm become the default) without marking it as the sketch's
+// own choice, so the start-up check can still tell a sketch value from a derived one.
 bool GrblSettings::set_from_machine(uint32_t number, double value) {
   const GrblSetting* setting = find(number);
   const bool sketch_set = setting != nullptr && setting->sketch_set;

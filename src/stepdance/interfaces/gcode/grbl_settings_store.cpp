@@ -34,6 +34,8 @@ bool all_equal(const uint8_t* data, size_t length, uint8_t byte) {
 
 }  // namespace
 
+// CRC-16/CCITT-FALSE (polynomial 0x1021, initial 0xFFFF, no reflection): catches a half-written or
+// worn EEPROM image.
 uint16_t crc16_ccitt(const uint8_t* data, size_t length) {
   uint16_t crc = 0xFFFF;
   for (size_t i = 0; i < length; ++i) {
@@ -45,6 +47,9 @@ uint16_t crc16_ccitt(const uint8_t* data, size_t length) {
   return crc;
 }
 
+// Image: "SDGS", version, count, then count × (setting number, IEEE-754 double little-endian), then
+// the CRC. Erased (all 0xFF) or zeroed storage is blank, not corrupt. Only host-set settings are
+// stored, so defaults changed in a new firmware still apply to settings the host never wrote.
 SettingsLoad load_settings(NonvolatileStore& store, GrblSettings& settings, uint8_t& found_version) {
   found_version = 0;
   if (store.size_bytes() < kSettingsStoreMaxBytes) return SettingsLoad::kUnavailable;
@@ -71,6 +76,7 @@ SettingsLoad load_settings(NonvolatileStore& store, GrblSettings& settings, uint
   return SettingsLoad::kLoaded;
 }
 
+// Rewrites the whole image in one write: the CRC guards against a power cut in the middle of it.
 Status save_settings(NonvolatileStore& store, const GrblSettings& settings) {
   if (store.size_bytes() < kSettingsStoreMaxBytes) return Status::kUnsupported;
   uint8_t image[kSettingsStoreMaxBytes];

@@ -36,6 +36,8 @@ constexpr GrblProtocol::DollarTable GrblProtocol::kDollarCommands = link::make_c
 });
 
 // `text` follows the `$`, upper-cased and without blanks (the receiver's work).
+// A bare `$` prints Grbl's help line. The state check comes before the command, so a refused command
+// has no effect at all.
 GrblError GrblProtocol::execute_system(const char* text, size_t length) {
   if (length == 0) {
     send_text("[HLP:$$ $# $G $I $N $x=val $Nx=line $J=line $SLP $C $X $H ~ ! ? ctrl-x]");
@@ -82,6 +84,7 @@ GrblError GrblProtocol::dollar_check_mode(const char*, size_t length) {
   return GrblError::kOk;
 }
 
+// $X (kill alarm lock): the machine is trusted without homing, with Grbl's caution message.
 GrblError GrblProtocol::dollar_unlock(const char*, size_t length) {
   if (length != 0) return GrblError::kInvalidDollarStatement;
   if (alarm_ != 0) send_text("[MSG:Caution: Unlocked]");
@@ -95,6 +98,8 @@ GrblError GrblProtocol::dollar_parameters(const char*, size_t length) {
   return GrblError::kOk;
 }
 
+// $H answers only when the homing routine ends (answer_homing_when_done); a successful start clears
+// the alarm, as Grbl's homing cycle does.
 GrblError GrblProtocol::dollar_homing(const char*, size_t length) {
   if (!settings_.homing_enabled()) return GrblError::kHomingDisabled;
   if (length != 0) return GrblError::kInvalidDollarStatement;
@@ -151,6 +156,8 @@ GrblError check_jog_words(const GcodeBlock& block) {
 
 }  // namespace
 
+// $J= (Grbl 1.1 jogging): the motion is checked against the travel and refused with error:15 rather
+// than raising an alarm, so a jogging dial can run into the limit safely.
 GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
   GcodeBlock block;
   GrblError error = parse_line(text, length, block, parser_options_);
