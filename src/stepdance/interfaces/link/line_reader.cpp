@@ -22,6 +22,9 @@ constexpr uint8_t kLineFeed = 0x0A;
   return false;
 }
 
+// Loop context. Reads no further than the end of one line: the bytes after it stay in the stream, so
+// a protocol that cannot take the line yet (a full FIFO) applies back-pressure simply by not calling
+// take(). The rules are copied to a local so the per-byte loop does not reload them.
 bool LineReaderBase::pump(ByteStream& stream) {
   const LineRules rules = rules_;
   while (!ready_) {
@@ -32,11 +35,15 @@ bool LineReaderBase::pump(ByteStream& stream) {
   return ready_;
 }
 
+// For protocols that pre-filter bytes themselves (Grbl's realtime bytes, its comment stripping).
 bool LineReaderBase::feed(uint8_t byte) {
   if (ready_) return false;  // the caller broke the contract: keep the waiting line intact
   return step(byte, rules_);
 }
 
+// An overlong line is delivered as one line marked overflowed (its tail discarded), so the protocol
+// can answer it with its own error instead of executing a truncated command. Empty lines are skipped
+// only where the protocol says so (CR LF from one client is then not two commands).
 bool LineReaderBase::end_line() {
   if (rules_.strip_trailing_cr && length_ > 0 && buffer_[length_ - 1] == static_cast<char>(kCarriageReturn) &&
       !overflowed_) {

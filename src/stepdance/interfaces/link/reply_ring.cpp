@@ -23,6 +23,9 @@ bool ReplyRingBase::send(const char* text) {
   return true;
 }
 
+// All or nothing: a reply that does not fit is dropped whole and counted, never sent cut short (a
+// client would misparse half a line). Protocols reserve room before executing a command so this is
+// the exception, not the flow control.
 bool ReplyRingBase::send_line(const TextWriter& line, const char* ending) {
   const size_t ending_length = strlen(ending);
   if (line.size() + ending_length > space()) {
@@ -45,6 +48,8 @@ void ReplyRingBase::push(const char* bytes, size_t length) {
   count_ += length;
 }
 
+// Loop context. Written in at most two contiguous pieces (the ring's wrap), non-blocking: a host that
+// reads slowly leaves bytes in the ring, the loop never waits for USB.
 size_t ReplyRingBase::flush(ByteStream& stream) {
   size_t total = 0;
   while (count_ > 0) {

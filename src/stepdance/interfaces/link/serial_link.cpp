@@ -5,6 +5,7 @@
 
 namespace stepdance::link {
 
+// The board's USB serial (hal::console()): the default link of every host protocol.
 ByteStream* SerialLink::attach_console() {
   stream_ = &hal::console();
   return stream_;
