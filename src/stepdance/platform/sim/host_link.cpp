@@ -10,6 +10,9 @@ namespace {
 
 constexpr int kUnsupported = 7;  // stepdance::Status::kUnsupported
 
+// The detached table: what a board's shared object answers before the simulator attaches (global
+// constructors of the sketch run at load time) or after it detaches. Everything refuses or reads as
+// idle instead of crashing on a null table.
 int refuse_timer(void*, int, uint32_t) { return kUnsupported; }
 void ignore(void*) {}
 int64_t ignore_delay(void*, int64_t) { return 0; }
@@ -66,6 +69,8 @@ void* host_context() { return current_context; }
 int64_t now_ns() { return current_ns; }
 void set_now_ns(int64_t now) { current_ns = now; }
 
+// The table's abi_version has been checked by the board's entry point (board_entry.cpp) before it
+// gets here, so a board and a simulator of other versions never call through mismatched entries.
 void attach_host(const StepdanceHostV1* table, void* context) {
   current = table;
   current_context = context;

@@ -14,6 +14,8 @@ using sim_runtime::host_context;
 
 /// The board's USB serial: bytes go to the simulator's console log, input comes from the
 /// scenario's `serial` actions. Writing never refuses (the host buffers everything).
+// The large write space models a host that always reads; a slow reader is modelled by the manual
+// backend's MemoryPort instead.
 class SimulatedConsole final : public ByteStream {
  public:
   size_t bytes_available() override { return host().console_available(host_context()); }

@@ -45,6 +45,8 @@ bool has_gpio(uint8_t pin) { return has_pin(teensy(), pin); }
 
 namespace sim_runtime {
 
+// Called by the simulator at each frame tick, in simulated time; one thread runs board and simulator,
+// so the "ISR" is a plain call.
 void run_frame_isr() {
   for (bool& pending : frame_pending) pending = false;  // the host has just played them
   if (frame_isr != nullptr) frame_isr();
@@ -65,6 +67,8 @@ void deliver_captured_pulse(uint8_t port, const StepdanceCapturedPulseV1& pulse)
 namespace hal {
 
 uint32_t micros_now() { return static_cast<uint32_t>(sim_runtime::now_ns() / 1000); }
+// 600 MHz × simulated ns (×3/5 cycles per ns), plus a fixed cost per block already run this frame,
+// so load and overrun figures are deterministic and grow with the sketch's block graph.
 uint32_t cycles_now() {
   const uint64_t clock = static_cast<uint64_t>(sim_runtime::now_ns()) * 3 / 5;
   return static_cast<uint32_t>(clock + uint64_t{engine().blocks_run_in_frame()} * sim_runtime::kModelCyclesPerBlock);
@@ -100,6 +104,8 @@ Status port_out_begin(uint8_t port) {
   return status(host().port_out_begin(ctx(), port));
 }
 
+// Idle frames are sent only when the previous frame had pulses (the lines must be seen to go low once);
+// after that, silence is implied. This keeps the host's work proportional to motion, not to time.
 void port_out_frame(uint8_t port, const protocol::FrameWords& words) {
   if (port >= kPorts) return;
   const bool idle = (words.step_bits | words.dir_bits) == 0;
@@ -108,6 +114,8 @@ void port_out_frame(uint8_t port, const protocol::FrameWords& words) {
   host().port_out_frame(ctx(), port, words.step_bits, words.dir_bits);
 }
 
+// The simulator's wire model samples DIR at the edge the port asks for (spec "Frames": Stepdance
+// inputs read DIR at the falling edge; step/dir inputs at the rising one).
 Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink, void* context) {
   if (port >= active_board().input_port_count || port >= kPorts) return Status::kNoSuchPin;
   capture_sinks[port] = {sink, context};
@@ -115,6 +123,8 @@ Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink,
   return status(host().port_in_begin(ctx(), port, dir_edge));
 }
 
+// The Teensy 4.x capture timer at its usual 150 MHz bus clock, 16 bits wide, so the decoder's
+// wrap and rounding are exercised as on the board.
 protocol::CaptureClock port_in_clock(uint8_t) { return protocol::CaptureClock{150, 0xFFFFu}; }
 
 Status quadrature_begin(uint8_t index) {
@@ -126,6 +136,8 @@ void quadrature_write(uint8_t index, int32_t count) {
   if (index < kEncoders) host().quadrature_write(ctx(), index, count);
 }
 
+// Pins are checked against the modelled Teensy's pinout, so a sketch using a pin the real board lacks
+// fails in the simulator too.
 Status adc_begin(uint8_t pin) {
   if (!has_adc(pin)) return Status::kNoSuchPin;
   return status(host().adc_begin(ctx(), pin));
@@ -142,6 +154,8 @@ void gpio_write(uint8_t pin, bool high) {
   if (has_gpio(pin)) host().gpio_write(ctx(), pin, high ? 1 : 0);
 }
 
+// A fatal fault stops the board's timers, as the firmware's safe state does, and tells the simulator,
+// which records it.
 void enter_safe_state() {
   timers_stop();
   host().enter_safe_state(ctx());

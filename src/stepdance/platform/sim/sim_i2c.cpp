@@ -26,6 +26,8 @@ Status i2c_begin(uint8_t bus, uint32_t clock_hz) {
   return claimed;
 }
 
+// Answered at once by the host's device model; simulated time then advances by the transfer's wire
+// time, running the frames that fall in it, as a blocking Wire transfer would on a Teensy.
 Status i2c_start(uint8_t bus, const I2cTransfer& transfer) {
   const Status valid = i2c_check_start(bus, begun, transfer);
   if (valid != Status::kOk) return valid;
