@@ -216,6 +216,7 @@ Status port_in_begin(uint8_t port, protocol::DirSampleEdge edge, PulseSink sink,
 // counter, so pulse-width tests wrap where the hardware's counter does.
 protocol::CaptureClock port_in_clock(uint8_t) { return protocol::CaptureClock{150, 0xFFFFu}; }
 
+// Two encoder inputs, as on the boards; a count changes only when a test calls set_quadrature().
 Status quadrature_begin(uint8_t index) {
   if (index >= kEncoders) return Status::kNoSuchPin;
   board().quadrature_begun[index] = true;
@@ -300,6 +301,7 @@ void run_frames(uint32_t n) {
   }
 }
 
+// Moves the clock without running frames: for loop-side code that reads micros() (retries, pacing).
 void advance_us(uint32_t us) { board().micros += us; }
 void set_cycles_per_read(uint32_t cycles) { board().cycles_per_read = cycles; }
 bool frame_timer_running() { return board().frame_isr != nullptr; }
