@@ -115,8 +115,9 @@ bool Engine::blocks_accept_frame_period() {
 }
 
 // Within a stage, a block must run after the blocks that feed it through BlockPorts, or its input
-// would be one frame late (the original ran registration order: original-library.md §1.3). A cycle cannot be ordered: begin() order is kept and a warning names
-// the blocks, since the sketch still runs (with one frame of delay in the loop).
+// would be one frame late (the original ran registration order: original-library.md §1.3). A
+// cycle cannot be ordered: begin() order is kept and a warning names the blocks, since the sketch
+// still runs (with one frame of delay in the loop).
 void Engine::order_stages() {
   for (uint8_t stage = 0; stage < kNumStages; ++stage) {
     Registry& blocks = registries_[stage];
