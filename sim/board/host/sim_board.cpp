@@ -32,6 +32,7 @@ SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<B
       host_table_(std::make_unique<StepdanceHostV1>(BoardCallbacks::table())),
       frame_timer_(scheduler, &frame_tick, this),
       khz_timer_(scheduler, &khz_tick, this),
+      encoder_sampler_(scheduler, &encoder_sample, this),
       loop_event_(*this),
       setup_event_(*this),
       console_quiet_event_(*this),
@@ -51,6 +52,7 @@ SimBoard::~SimBoard() {
   scheduler_.cancel(console_quiet_event_);
   frame_timer_.stop();
   khz_timer_.stop();
+  encoder_sampler_.stop();
   library_.reset();  // the sketch's destructors may still call back: everything else is alive
   firmware_.reset();
 }
@@ -111,6 +113,7 @@ void SimBoard::escaped(SketchEntry entry) {
   frozen_ = true;
   frame_timer_.stop();
   khz_timer_.stop();
+  encoder_sampler_.stop();
   scheduler_.cancel(loop_event_);
   const EscapeRecord record = EntryMonitor::take_record();
   if (record.cause == EscapeCause::kRunOver) return;  // the run ended while the sketch waited
@@ -152,9 +155,13 @@ int SimBoard::start_timer(int timer_id, uint32_t period_us) {
   if (period_us == 0) return static_cast<int>(Status::kBadArgument);
   const SimTime period = SimTime{period_us} * kMicrosecond;
   if (timer_id == STEPDANCE_TIMER_FRAME) {
-    frame_first_tick_ns_ = next_aligned(options_.frame_phase_ns, period);
-    frame_period_ns_ = period;
-    frame_timer_.start(frame_first_tick_ns_, period);
+    const SimTime first_tick = next_aligned(options_.frame_phase_ns, period);
+    frame_timer_.start(first_tick, period);
+    if (options_.encoder_sample_phase_ns) {  // the first sample instant after the first tick
+      const SimTime phase = *options_.encoder_sample_phase_ns % period;
+      encoders_sampled_ = false;
+      encoder_sampler_.start(first_tick + 1 + ((phase - (first_tick + 1) % period) + period) % period, period);
+    }
   } else if (timer_id == STEPDANCE_TIMER_KHZ) {
     khz_timer_.start(next_aligned(options_.khz_phase_ns.value_or(options_.frame_phase_ns + kKhzOffsetNs), period), period);
   } else {
@@ -165,7 +172,8 @@ int SimBoard::start_timer(int timer_id, uint32_t period_us) {
 
 void SimBoard::stop_timers() {
   frame_timer_.stop();
-  frame_first_tick_ns_ = -1;
+  encoder_sampler_.stop();
+  encoders_sampled_ = false;
   khz_timer_.stop();
 }
 
@@ -303,25 +311,22 @@ void SimBoard::connect_encoder(uint8_t index, Source<int64_t> counts) { encoders
 
 int64_t SimBoard::encoder_counts(uint8_t index) const { return encoders_.at(index) ? encoders_[index](now()) : 0; }
 
-// The last sample instant at or before `now_ns`, if it comes after the first frame tick.
-SimTime SimBoard::encoder_sample_time(SimTime now_ns) const {
-  if (!options_.encoder_sample_phase_ns || frame_first_tick_ns_ < 0 || frame_period_ns_ <= 0) return now_ns;
-  const SimTime phase = *options_.encoder_sample_phase_ns;
-  const SimTime steps = (now_ns - phase) >= 0 ? (now_ns - phase) / frame_period_ns_ : -1;
-  const SimTime sample = phase + steps * frame_period_ns_;
-  return sample > frame_first_tick_ns_ ? sample : now_ns;
+// The sample clock's instant: both encoders' counts latched now, as the ENC hold registers are.
+void SimBoard::encoder_sample(void* context, SimTime) {
+  auto& board = *static_cast<SimBoard*>(context);
+  for (uint8_t index = 0; index < 2; ++index) board.encoder_samples_[index] = board.encoder_counts(index);
+  board.encoders_sampled_ = true;
+}
+
+int64_t SimBoard::encoder_counts_seen(uint8_t index) const {
+  return encoders_sampled_ ? encoder_samples_.at(index) : encoder_counts(index);
 }
 
 int32_t SimBoard::read_quadrature(uint8_t index) {
-  const SimTime at = encoder_sample_time(now());
-  const int64_t counts = encoders_.at(index) ? encoders_[index](at) : 0;
-  return static_cast<int32_t>(counts + encoder_offsets_[index]);
+  return static_cast<int32_t>(encoder_counts_seen(index) + encoder_offsets_[index]);
 }
 
-void SimBoard::write_quadrature(uint8_t index, int32_t count) {
-  const SimTime at = encoder_sample_time(now());
-  encoder_offsets_[index] = count - (encoders_.at(index) ? encoders_[index](at) : 0);
-}
+void SimBoard::write_quadrature(uint8_t index, int32_t count) { encoder_offsets_[index] = count - encoder_counts_seen(index); }
 
 uint16_t SimBoard::analog_level(uint8_t pin) const {
   if (pin >= kPins || !adcs_[pin].value) return 0;

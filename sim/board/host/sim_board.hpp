@@ -39,7 +39,9 @@ struct BoardOptions {
   /// Set: the sketch reads its encoders as a Teensy image does, from counts latched at
   /// phase + k × the frame period (the backend's sample clock, src/stepdance/platform/teensy/
   /// sample_clock.cpp), from the first such instant after the first frame tick on, until the
-  /// frame clock stops. Unset: the counts at the instant of reading.
+  /// frame clock stops. Each instant is an event that latches the counts then (a knob's counts
+  /// may be state its timeline events change, not a function of any time). Unset: the counts at
+  /// the instant of reading.
   std::optional<SimTime> encoder_sample_phase_ns;
   /// loop() runs every this long (each pass takes no simulated time).
   SimTime loop_period_ns = 200 * kMicrosecond;
@@ -310,8 +312,9 @@ class SimBoard {
   void play_words(PortState& port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns);
   void firmware_stopped(const SketchStop& stop);
   SimTime next_aligned(SimTime offset_ns, SimTime period_ns) const;
-  /// The instant an encoder read at `now_ns` sees (BoardOptions::encoder_sample_phase_ns).
-  SimTime encoder_sample_time(SimTime now_ns) const;
+  /// The counts an encoder read sees now: the last latched sample while sampling, else live.
+  int64_t encoder_counts_seen(uint8_t index) const;
+  static void encoder_sample(void* context, SimTime time);
 
   // HAL answers (called through BoardCallbacks).
   int start_timer(int timer_id, uint32_t period_us);
@@ -337,9 +340,10 @@ class SimBoard {
   const BoardDefinition* definition_ = &kDriverModuleV1;
   std::unique_ptr<StepdanceHostV1> host_table_;
   PeriodicTimer frame_timer_;
-  SimTime frame_first_tick_ns_ = -1;  ///< the running frame clock's first tick (-1: stopped)
-  SimTime frame_period_ns_ = 0;
   PeriodicTimer khz_timer_;
+  PeriodicTimer encoder_sampler_;  ///< BoardOptions::encoder_sample_phase_ns
+  bool encoders_sampled_ = false;  ///< the sampler has latched since it started
+  std::array<int64_t, 2> encoder_samples_{};
   LoopEvent loop_event_;
   SetupEvent setup_event_;
   ConsoleQuietEvent console_quiet_event_;
