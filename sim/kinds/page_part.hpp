@@ -14,7 +14,8 @@ namespace stepdance::sim {
 /// OLED picture, "arms": a linkage, "table": a turntable) and shows a field it does not know as
 /// text next to its device. A device's part is one entry of the array `field` and names the
 /// device in its "device" key; a machine's part is the object `field` itself. The view sends a
-/// part again only when its value changes.
+/// part again only when its value changes. A field is never one of the update's own keys (`type`,
+/// `t_s`, `run`, `pen`, `strokes`, `shade_scale`, `travel`, `motors`, `boards`, `console`).
 struct PagePart {
   std::string field;
   nlohmann::json value;
