@@ -7,11 +7,6 @@
 #include "assembly/simulation.hpp"
 
 namespace stepdance::sim {
-const FiveBarArm* Simulation::five_bar_arm(const std::string& name) const {
-  const auto found = devices_.find(name);
-  return found == devices_.end() ? nullptr : model_of<FiveBarArm>(found->second.get());
-}
-
 const SimDevice* Simulation::device(const std::string& name) const {
   const auto found = devices_.find(name);
   return found == devices_.end() ? nullptr : found->second.get();

@@ -12,7 +12,6 @@
 #include "board/host/board_source.hpp"
 #include "board/host/sim_board.hpp"
 #include "kinds/sim_device.hpp"
-#include "models/five_bar_arm.hpp"
 #include "models/machine.hpp"
 #include "models/servo_board.hpp"
 #include "models/stepper_driver.hpp"
@@ -161,8 +160,6 @@ class Simulation {
   /// The SVG document of the drawing as it stands now, on the page the run's SVG file would
   /// use (the same bytes write_drawings() would write at this instant); "" without a machine.
   std::string drawing_svg() const;
-  /// The five-bar arm device with this name, or null.
-  const FiveBarArm* five_bar_arm(const std::string& name) const;
   /// The JSON summary text as it would be written now (wall time left out).
   std::string summary_text() const;
   /// One line per kind of warning on each board's fault path, with its count and the first

@@ -87,6 +87,10 @@ struct DeviceKind {
   /// The files (in the output folder) the device writes at the end of the run, known before it
   /// is built; null for a kind that writes none.
   std::vector<std::string> (*output_names)(const scenario::DeviceConfig& device) = nullptr;
+  /// The live view's part types the device gives (SimDevice::add_page_parts, kinds/page_part.hpp),
+  /// e.g. "screens": declared in `hello` as the device's "parts", so that the page sets their
+  /// drawing up before the first update. Empty for a kind with none.
+  std::vector<std::string_view> page_parts = {};
 
   bool takes(scenario::ActionType type) const { return (actions >> static_cast<int>(type)) & 1; }
   bool has_key(std::string_view key) const;

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "kinds/page_part.hpp"
 #include "models/machine.hpp"
 #include "models/servo_board.hpp"
 #include "models/stepper_driver.hpp"
@@ -60,6 +61,13 @@ struct MachineKind {
   /// The page the drawing goes on, if the machine has a fixed one (its travel area, mm); without
   /// one the page is the drawing's bounding box, known only at the end.
   std::optional<TravelArea> (*page)(const scenario::MachineConfig& machine) = nullptr;
+  /// The live view's page: appends the machine's own state parts at `now` (ns) for an `update`,
+  /// each an object under its field (kinds/page_part.hpp; a turntable's "table"), beside the pen
+  /// and strokes every machine has. `machine` is the model `build` made. Null for a kind with
+  /// none. Context: the simulation's thread, between run_until() calls.
+  void (*add_page_parts)(const Machine& machine, SimTime now, PageParts& parts) = nullptr;
+  /// The fields add_page_parts gives, e.g. "table": declared in `hello` as the machine's "parts".
+  std::vector<std::string_view> page_parts = {};
 };
 
 }  // namespace stepdance::sim

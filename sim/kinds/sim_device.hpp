@@ -8,7 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "common/sim_time.hpp"
+#include "kinds/page_part.hpp"
 #include "scenario/scenario.hpp"
 
 namespace stepdance::sim {
@@ -49,6 +52,25 @@ class SimDevice {
   virtual void write_outputs(const std::string& name, PictureSink& sink) {
     (void)name;
     (void)sink;
+  }
+  /// The live view's page: appends the device's state parts at `now` (ns) for an `update`
+  /// (kinds/page_part.hpp), each naming the device `name` in its "device" key; the view sends
+  /// those that changed. Context: the simulation's thread, between run_until() calls.
+  virtual void add_page_parts(const std::string& name, SimTime now, PageParts& parts) const {
+    (void)name;
+    (void)now;
+    (void)parts;
+  }
+  /// The live view's page: adds what the page needs to draw the device's control to `control`,
+  /// the kind's PageControl as `hello` sends it (e.g. "counts_per_turn": the counts one turn of a
+  /// knob gives). Context: the simulation's thread.
+  virtual void describe_page_control(nlohmann::json& control) const { (void)control; }
+  /// The replay page: adds the device's inputs at `now` (ns) to `inputs`, its entry of a recorded
+  /// instant's "inputs" (e.g. "pressed": whether a hand holds a button), beside its CSV columns.
+  /// Context: the simulation's thread, as the run is recorded.
+  virtual void add_replay_inputs(SimTime now, nlohmann::json& inputs) const {
+    (void)now;
+    (void)inputs;
   }
 };
 

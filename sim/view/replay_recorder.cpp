@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "models/bouncing_button.hpp"
 #include "scenario/names.hpp"
 #include "stepdance/protocol/signals.hpp"
 
@@ -85,9 +84,11 @@ void ReplayRecorder::sample(SimTime now_ns) {
 json ReplayRecorder::inputs_json(SimTime now_ns) const {
   json inputs = json::object();
   for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
-    if (const auto* button = model_of<BouncingButton>(simulation_.device(device.name))) {
-      inputs[device.name]["pressed"] = button->pressed_at(now_ns);
-    }
+    const SimDevice* model = simulation_.device(device.name);
+    if (model == nullptr) continue;
+    json own = json::object();
+    model->add_replay_inputs(now_ns, own);
+    if (!own.empty()) inputs[device.name] = std::move(own);
   }
   for (const Probe& probe : probes_) inputs[probe.device][probe.key] = probe.read(now_ns);
   return inputs;

@@ -7,10 +7,6 @@
 
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
-#include "models/five_bar_arm.hpp"
-#include "models/polar_turntable.hpp"
-#include "models/quadrature_encoder.hpp"
-#include "models/ssd1306_display.hpp"
 #include "output/drawing.hpp"
 #include "scenario/names.hpp"
 #include "scenario/value_range.hpp"
@@ -20,8 +16,6 @@ namespace {
 
 using nlohmann::json;
 
-/// A Qwiic Twist's knob has 24 detents a turn (SparkFun's product page).
-constexpr int kTwistDetentsPerTurn = 24;
 /// The longest turn span and click hold a page may ask for (ms).
 constexpr double kMaxInputSpanMs = 60000;
 
@@ -41,20 +35,12 @@ const char* control_name(PageControl::Type type) {
 
 json point_json(const PenPoint& point) { return json::array({point.x_mm, point.y_mm}); }
 
-/// A row of an OLED picture as hex digits, 4 pixels a digit, leftmost pixel the high bit.
-std::vector<std::string> screen_rows(const OledImage& image) {
-  static const char kHex[] = "0123456789abcdef";
-  std::vector<std::string> rows;
-  for (int y = 0; y < OledImage::kHeight; ++y) {
-    std::string row;
-    for (int x = 0; x < OledImage::kWidth; x += 4) {
-      int nibble = 0;
-      for (int bit = 0; bit < 4; ++bit) nibble = nibble << 1 | (image.at(x + bit, y) ? 1 : 0);
-      row += kHex[nibble];
-    }
-    rows.push_back(std::move(row));
-  }
-  return rows;
+/// `hello`'s "parts" of a device or machine: the update fields its kind gives (none: no key).
+void add_declared_parts(json& entry, const std::vector<std::string_view>& parts) {
+  if (parts.empty()) return;
+  json fields = json::array();
+  for (std::string_view part : parts) fields.push_back(std::string(part));
+  entry["parts"] = std::move(fields);
 }
 
 /// The number at `key` if it is one, else nothing.
@@ -117,11 +103,8 @@ std::string ViewSession::hello() const {
                     {"connector", scenario::connector_name(device.connector)},
                     {"control", {{"type", control_name(control.type)}, {"low", control.low}, {"high", control.high},
                                  {"step", control.step}, {"unit", control.unit}}}};
-      if (const auto* encoder = model_of<QuadratureEncoder>(simulation_.device(device.name))) {
-        entry["control"]["counts_per_turn"] = encoder->counts_per_revolution();
-      } else if (control.type == PageControl::Type::kKnobWithButton) {
-        entry["control"]["counts_per_turn"] = kTwistDetentsPerTurn;
-      }
+      if (const SimDevice* model = simulation_.device(device.name)) model->describe_page_control(entry["control"]);
+      add_declared_parts(entry, device.kind->page_parts);
       devices.push_back(std::move(entry));
     }
     json motors = json::array();
@@ -138,6 +121,7 @@ std::string ViewSession::hello() const {
                {"pen_width_mm", style.pen_width_mm}, {"page_mm", nullptr}, {"travel_mm", nullptr},
                {"shade_name", simulation_.machine()->shade_name()}};
     const MachineKind& kind = *scenario.machine->kind;
+    add_declared_parts(machine, kind.page_parts);
     if (const auto page = kind.page ? kind.page(*scenario.machine) : std::nullopt) {
       machine["page_mm"] = {page->x_min_mm, page->x_max_mm, page->y_min_mm, page->y_max_mm};
     }
@@ -220,9 +204,11 @@ bool ViewSession::add_machine_parts(json& message) {
     parts.push_back(std::move(entry));
   }
   if (!parts.empty()) message["strokes"] = std::move(parts), changed = true;
-  if (const auto* table = dynamic_cast<const PolarTurntable*>(machine)) {
-    json state = {{"angle_rad", table->angle_rad()}, {"radius_mm", table->radius_mm()}};
-    if (sent_.changed("table", state)) message["table"] = std::move(state), changed = true;
+  PageParts own;
+  const auto& config = simulation_.scenario().machine;
+  if (config && config->kind->add_page_parts != nullptr) config->kind->add_page_parts(*machine, simulation_.now(), own);
+  for (PagePart& part : own) {
+    if (sent_.changed("machine " + part.field, part.value)) message[part.field] = std::move(part.value), changed = true;
   }
   if (const auto scale = shade_scale(*machine)) {
     json pair = json::array({scale->first, scale->second});
@@ -300,18 +286,13 @@ bool ViewSession::add_device_parts(json& message) {
   bool changed = false;
   for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {
     const SimDevice* model = simulation_.device(device.name);
-    if (const auto* display = model_of<Ssd1306Display>(model)) {
-      changed |= add_if_changed(message, "screens", "screen " + device.name,
-                                {{"device", device.name}, {"on", display->display_on()},
-                                 {"rows", screen_rows(display->image())}});
-    }
-    FiveBarArm::Linkage linkage;
-    if (const auto* arm = model_of<FiveBarArm>(model); arm && arm->last_linkage(linkage)) {
-      changed |= add_if_changed(message, "arms", "arm " + device.name,
-                                {{"device", device.name}, {"right_pivot", point_json(linkage.right_pivot)},
-                                 {"left_pivot", point_json(linkage.left_pivot)}, {"c", point_json(linkage.c)},
-                                 {"d", point_json(linkage.d)}, {"e", point_json(linkage.e)},
-                                 {"t", point_json(linkage.t)}});
+    if (model == nullptr) continue;
+    PageParts parts;
+    model->add_page_parts(device.name, simulation_.now(), parts);
+    // Each part is sent on its own when it changes: keyed by the device, its field and its place.
+    for (size_t k = 0; k < parts.size(); ++k) {
+      const std::string key = "device " + device.name + " " + parts[k].field + " " + std::to_string(k);
+      changed |= add_if_changed(message, parts[k].field.c_str(), key, std::move(parts[k].value));
     }
   }
   return changed;

@@ -40,8 +40,10 @@ constexpr size_t kMaxConsoleBytesPerUpdate = 16384;
 /// threads or terminals. Context: the thread running the simulation, between run_until() calls.
 ///
 /// Updates are deltas: each carries `t_s` and only the parts of the state (the run's pace, the
-/// pen, new strokes, each motor, board, screen or arm) that differ from what the page was last
-/// sent, and console text since. Nothing changed (a paused run): no update at all. The session
+/// pen, new strokes, each motor and board, and the parts each device's and the machine's kind
+/// gives: kinds/page_part.hpp) that differ from what the page was last sent, and console text
+/// since. The session names no kind: it asks each device (SimDevice::add_page_parts,
+/// describe_page_control) and the machine's row (MachineKind::add_page_parts). Nothing changed (a paused run): no update at all. The session
 /// assumes every update it makes reaches the page; a front end that loses one calls
 /// start_over(), and the next update carries the whole state again.
 class ViewSession {

@@ -119,7 +119,7 @@ function showError(text) {
 // ---- the machine from above ------------------------------------------------------------------
 
 const drawing = { svg: document.getElementById("drawing"), layer: null, pen: null, lines: [], fixedPage: false,
-  turntable: false, table: null, paper: null, arm: null, tableRadius: null };
+  turntable: false, table: null, paper: null, arm: null, tableRadius: null, machineParts: new Map() };
 
 function svgElement(name, attributes, parent) {
   const element = document.createElementNS(SVG_NS, name);
@@ -138,6 +138,8 @@ function setUpDrawing(machine) {
   drawing.redrawFrom = [];  // per stroke: its first point changed since it was last drawn
   drawing.settled = [];     // per stroke: points drawn in its settled paths (renderBlackStroke)
   drawing.tableRadius = null;
+  for (const node of drawing.machineParts.values()) if (node) node.remove();
+  drawing.machineParts = new Map();  // part type → its text (a type this page does not draw), or null
   if (!machine) { svg.setAttribute("viewBox", "0 0 100 20"); return; }
   const margin = machine.margin_mm;
   const page = machine.page_mm || machine.travel_mm;
@@ -152,19 +154,31 @@ function setUpDrawing(machine) {
     svgElement("rect", { x: tx0, y: ty0, width: tx1 - tx0, height: ty1 - ty0, stroke: "#bbb",
       "stroke-width": 0.3, "stroke-dasharray": "2 2", id: "travel-area" }, drawing.layer);
   }
-  // A turntable: the table seen from above, the paper on it turned by the table's angle (the
-  // drawing in paper mm inside), the radial arm fixed along +x from the centre.
-  let paper = drawing.layer;
-  drawing.turntable = machine.kind === "polar";
-  if (drawing.turntable) {
-    drawing.table = svgElement("circle", { cx: 0, cy: 0, r: 10, fill: "#f4efe4", stroke: "#bbb", "stroke-width": 0.5, id: "turntable" }, drawing.layer);
-    paper = drawing.paper = svgElement("g", { id: "paper", transform: "rotate(0)" }, drawing.layer);
-    svgElement("line", { x1: -3, y1: 0, x2: 3, y2: 0, stroke: "#bbb", "stroke-width": 0.4 }, paper);  // the paper's own axes,
-    svgElement("line", { x1: 0, y1: -3, x2: 0, y2: 3, stroke: "#bbb", "stroke-width": 0.4 }, paper);  // to see it turn
-  }
-  drawing.strokes = svgElement("g", { stroke: "black", "stroke-width": machine.pen_width_mm, id: "strokes" }, paper);
-  if (drawing.turntable) drawing.arm = svgElement("line", { x1: 0, y1: 0, x2: 0, y2: 0, stroke: "#666", "stroke-width": 1.5, "stroke-linecap": "round", id: "arm" }, drawing.layer);
-  drawing.pen = svgElement("circle", { r: 2, id: "pen", class: "up", "stroke-width": 0.4, stroke: "#c22", fill: "none" }, paper);
+  drawing.turntable = false;
+  drawing.strokes = svgElement("g", { stroke: "black", "stroke-width": machine.pen_width_mm, id: "strokes" }, drawing.layer);
+  drawing.pen = svgElement("circle", { r: 2, id: "pen", class: "up", "stroke-width": 0.4, stroke: "#c22", fill: "none" }, drawing.layer);
+  for (const part of machine.parts || []) setUpMachinePart(part);
+}
+
+/// A machine part type's drawing (hello's "parts", or the first update carrying it), once.
+function setUpMachinePart(part) {
+  if (!drawing.layer || drawing.machineParts.has(part)) return;
+  const drawer = MACHINE_PARTS[part];
+  drawing.machineParts.set(part, drawer ? drawer.setUp() || null : MACHINE_TEXT_PART.setUp(part));
+}
+
+/// A "table" part (a turntable): the table seen from above, the paper on it turned by the table's
+/// angle (the drawing and the pen in paper mm inside it), the radial arm fixed along +x from the
+/// centre.
+function setUpTable() {
+  const layer = drawing.layer;
+  drawing.turntable = true;
+  drawing.table = layer.insertBefore(svgElement("circle", { cx: 0, cy: 0, r: 10, fill: "#f4efe4", stroke: "#bbb", "stroke-width": 0.5, id: "turntable" }), drawing.strokes);
+  const paper = drawing.paper = layer.insertBefore(svgElement("g", { id: "paper", transform: "rotate(0)" }), drawing.strokes);
+  svgElement("line", { x1: -3, y1: 0, x2: 3, y2: 0, stroke: "#bbb", "stroke-width": 0.4 }, paper);  // the paper's own axes,
+  svgElement("line", { x1: 0, y1: -3, x2: 0, y2: 3, stroke: "#bbb", "stroke-width": 0.4 }, paper);  // to see it turn
+  paper.append(drawing.strokes, drawing.pen);
+  drawing.arm = layer.insertBefore(svgElement("line", { x1: 0, y1: 0, x2: 0, y2: 0, stroke: "#666", "stroke-width": 1.5, "stroke-linecap": "round", id: "arm" }), paper.nextSibling);
 }
 
 /// The turntable's state: the paper turned by the table's angle (SVG's rotate() maps paper mm to
@@ -242,8 +256,8 @@ function renderBlackStroke(i, group, points, from) {
 }
 
 /// What changed since the page last drew, drawn by render() once per batch of messages.
-const dirty = { strokes: new Set(), boards: new Set(), console: new Map(), screens: new Map(), fit: false, pen: false,
-  table: false, arms: false, travel: false, run: false };
+const dirty = { strokes: new Set(), boards: new Set(), console: new Map(), parts: new Map(), machineParts: new Set(),
+  fit: false, pen: false, travel: false, run: false };
 
 function applyStrokes(parts) {
   for (const part of parts) {
@@ -317,9 +331,11 @@ function showPen(pen) {
 
 // ---- boards: devices as controls, figures, console -------------------------------------------
 
-const boards = new Map();  // name → {figures, faults, console, screens}
-// The run's state as the updates built it (version 2: each update carries what changed).
-const state = { motors: new Map(), boards: new Map(), arms: new Map() };
+const boards = new Map();  // name → {figures, faults, console}
+const devices = new Map();  // name → {holder, label, parts: part type → its drawing}
+// The run's state as the updates built it (version 2: each update carries what changed); `parts`:
+// each device part type's entries by device.
+const state = { motors: new Map(), boards: new Map(), parts: new Map() };
 
 function element(tag, attributes = {}, parent = null, text = "") {
   const node = document.createElement(tag);
@@ -340,18 +356,20 @@ function onHello(hello) {
   view.run = hello.run;
   state.motors.clear();
   state.boards.clear();
-  state.arms.clear();
+  state.parts.clear();
   dirty.strokes.clear();
   dirty.boards.clear();
   dirty.console.clear();
-  dirty.screens.clear();
-  dirty.pen = dirty.table = dirty.arms = dirty.travel = false;
+  dirty.parts.clear();
+  dirty.machineParts.clear();
+  dirty.pen = dirty.travel = false;
   dirty.run = true;
   setUpDrawing(hello.machine);
   setUpTravel(hello.machine);
   const container = document.getElementById("boards");
   container.replaceChildren();
   boards.clear();
+  devices.clear();
   for (const board of hello.boards) boards.set(board.name, buildBoard(board, container));
   shownReason = undefined;  // new controls: their state is written at the next render
 }
@@ -359,23 +377,22 @@ function onHello(hello) {
 function buildBoard(board, container) {
   const box = element("section", { class: "board", id: `board-${board.name}`, "aria-label": `Board ${board.name}` }, container);
   element("h2", {}, box, `${board.name} (${board.module})`);
-  const devices = element("div", { class: "devices" }, box);
-  const screens = new Map();
+  const list = element("div", { class: "devices" }, box);
   for (const device of board.devices) {
-    const holder = element("div", { class: "device" }, devices);
+    const holder = element("div", { class: "device" }, list);
     const control = device.control;
     if (control.type === "knob" || control.type === "knob_with_button") addKnob(holder, device);
     if (control.type === "knob_with_button" || control.type === "button") addButton(holder, device);
     if (control.type === "slider") addSlider(holder, device);
-    if (control.type === "screen") screens.set(device.name, element("canvas", { class: "screen", width: 128, height: 32, id: `screen-${device.name}`, role: "img", "aria-label": `${device.name} screen` }, holder));
-    if (device.kind === "five_bar_arm") addArm(holder, device);
-    element("span", { class: "device-name" }, holder, `${device.name} · ${device.connector}`);
+    const label = element("span", { class: "device-name" }, holder, `${device.name} · ${device.connector}`);
+    devices.set(device.name, { holder, label, parts: new Map() });
+    for (const part of device.parts || []) devicePartDrawing(device.name, part);
   }
   const figures = element("table", { class: "figures", "aria-label": `${board.name} figures` }, box);
   const faults = element("p", { class: "fault", hidden: "" }, box);
   const consoleText = element("pre", { class: "console", id: `console-${board.name}`, tabindex: 0, role: "log", "aria-label": `${board.name} console` }, box);
   addConsoleLine(board, box, consoleText);
-  return { figures, faults, console: consoleText, screens, rows: new Map() };
+  return { figures, faults, console: consoleText, rows: new Map() };
 }
 
 /// The line to send to a board's console: what is sent is echoed in the console (marked "> "),
@@ -503,18 +520,17 @@ function addButton(holder, device) {
   button.addEventListener("blur", release);
 }
 
-/// A five-bar arm (the pantograph): its linkage from above, as the updates' "arms" give it.
-function addArm(holder, device) {
-  const svg = svgElement("svg", { class: "arm", id: `arm-${device.name}`, width: 160, height: 160, viewBox: "-100 -20 200 260", role: "img", "aria-label": `${device.name} linkage` }, holder);
+/// An "arms" part: a five-bar linkage from above (pivots, arms, elbow, stylus).
+function addArm(name) {
+  const svg = svgElement("svg", { class: "arm", id: `arm-${name}`, width: 160, height: 160, viewBox: "-100 -20 200 260", role: "img", "aria-label": `${name} linkage` });
   const style = { fill: "none", stroke: "#555", "stroke-width": 3, "stroke-linejoin": "round", "stroke-linecap": "round" };
   svgElement("polyline", { ...style, class: "right-side" }, svg);  // right pivot, C, E, stylus T
   svgElement("polyline", { ...style, class: "left-side" }, svg);   // left pivot, D, E
   svgElement("circle", { r: 4, fill: "#c22", class: "stylus" }, svg);
+  return svg;
 }
 
-function showArm(arm) {
-  const svg = document.getElementById(`arm-${arm.device}`);
-  if (!svg) return;
+function showArm(svg, arm) {
   const text = (points) => points.map(([x, y]) => `${x},${y}`).join(" ");
   svg.querySelector(".right-side").setAttribute("points", text([arm.right_pivot, arm.c, arm.e, arm.t]));
   svg.querySelector(".left-side").setAttribute("points", text([arm.left_pivot, arm.d, arm.e]));
@@ -566,6 +582,11 @@ function renderBoard(name) {
   if (figures.fault) board.faults.textContent = `fault: ${figures.fault.reason} ×${figures.fault.count} ${figures.fault.detail}`;
 }
 
+/// A "screens" part: a display's picture, 128 × 32 pixels.
+function addScreen(name) {
+  return element("canvas", { class: "screen", width: 128, height: 32, id: `screen-${name}`, role: "img", "aria-label": `${name} screen` });
+}
+
 function drawScreen(canvas, screen) {
   const context = canvas.getContext("2d");
   const image = context.createImageData(128, 32);
@@ -578,6 +599,83 @@ function drawScreen(canvas, screen) {
     }
   });
   context.putImageData(image, 0, 0);
+}
+
+// ---- the kinds' own parts ------------------------------------------------------------------------
+
+// A device or machine kind gives its own parts of the state (docs/simulator.md, "The view
+// protocol"): hello declares their types ("parts"), the updates carry them under that type. The
+// page draws each by its type, never by the kind: set up once (at hello, or at the first update
+// carrying a type hello did not declare), then shown at each change. A device part of a type not
+// listed here is shown as its text beside the device.
+const MACHINE_PARTS = { table: { setUp: setUpTable, show: showTable } };
+const MACHINE_TEXT_PART = {
+  setUp: (part) => {
+    const node = element("pre", { class: "part", id: `part-machine-${part}`, "aria-label": `machine ${part}` });
+    drawing.svg.after(node);
+    return node;
+  },
+  show: (node, value) => { node.textContent = JSON.stringify(value); },
+};
+const DEVICE_PARTS = { screens: { setUp: addScreen, show: drawScreen }, arms: { setUp: addArm, show: showArm } };
+const TEXT_PART = {
+  setUp: (name, part) => element("pre", { class: "part", id: `part-${name}-${part}`, "aria-label": `${name} ${part}` }),
+  show: (node, entry) => { node.textContent = JSON.stringify(entry, (key, value) => (key === "device" ? undefined : value)); },
+};
+
+/// Device `name`'s drawing of part type `part`, made (before the device's name) if it has none.
+function devicePartDrawing(name, part) {
+  const device = devices.get(name);
+  if (!device) return null;
+  if (!device.parts.has(part)) {
+    const drawer = DEVICE_PARTS[part] || TEXT_PART;
+    device.parts.set(part, device.holder.insertBefore(drawer.setUp(name, part), device.label));
+  }
+  return device.parts.get(part);
+}
+
+/// The update's device parts (arrays of entries naming their `device`): kept in `state.parts`, as
+/// `view[part]` for tests, and marked to be drawn.
+function applyDeviceParts(update) {
+  for (const [part, entries] of Object.entries(update)) {
+    if (!Array.isArray(entries) || !entries.every((entry) => entry && typeof entry.device === "string")) continue;
+    if (!state.parts.has(part)) state.parts.set(part, new Map());
+    for (const entry of entries) {
+      state.parts.get(part).set(entry.device, entry);
+      dirty.parts.set(`${part} ${entry.device}`, [part, entry]);
+    }
+    if (entries.length > 0) view[part] = [...state.parts.get(part).values()];
+  }
+}
+
+/// The update's machine parts: the fields hello declared, and those this page draws (a replay
+/// recorded before hello declared them), each kept as `view[part]`.
+function applyMachineParts(update) {
+  const declared = (view.hello.machine && view.hello.machine.parts) || [];
+  for (const part of new Set([...declared, ...Object.keys(MACHINE_PARTS)])) {
+    if (update[part] === undefined) continue;
+    view[part] = update[part];
+    dirty.machineParts.add(part);
+  }
+}
+
+function renderMachineParts() {
+  for (const part of dirty.machineParts) {
+    setUpMachinePart(part);
+    if (!drawing.machineParts.has(part)) continue;  // no machine drawn
+    const node = drawing.machineParts.get(part);
+    if (MACHINE_PARTS[part]) MACHINE_PARTS[part].show(view[part]);
+    else if (node) MACHINE_TEXT_PART.show(node, view[part]);
+  }
+  dirty.machineParts.clear();
+}
+
+function renderDeviceParts() {
+  for (const [part, entry] of dirty.parts.values()) {
+    const node = devicePartDrawing(entry.device, part);
+    if (node) (DEVICE_PARTS[part] || TEXT_PART).show(node, entry);
+  }
+  dirty.parts.clear();
 }
 
 // ---- off the paper: the travel area --------------------------------------------------------------
@@ -701,7 +799,7 @@ function onUpdate(update) {
   if (update.pen) view.pen = update.pen, dirty.pen = true;
   if (update.shade_scale) applyShadeScale(update.shade_scale);
   if (update.strokes) applyStrokes(update.strokes);
-  if (update.table && drawing.turntable) view.table = update.table, dirty.table = true;
+  applyMachineParts(update);
   if (update.travel) view.travel = update.travel, dirty.travel = true;
   for (const motor of update.motors || []) {
     state.motors.set(`${motor.board} ${motor.port}`, motor);
@@ -711,9 +809,7 @@ function onUpdate(update) {
     state.boards.set(figures.name, figures);
     dirty.boards.add(figures.name);
   }
-  for (const arm of update.arms || []) state.arms.set(arm.device, arm);
-  if (update.arms) view.arms = [...state.arms.values()], dirty.arms = true;
-  for (const screen of update.screens || []) dirty.screens.set(screen.device, screen);
+  applyDeviceParts(update);
   for (const output of update.console || []) dirty.console.set(output.board, (dirty.console.get(output.board) || "") + output.text);
   view.motors = [...state.motors.values()];
 }
@@ -724,9 +820,8 @@ function render() {
   setText(document.getElementById("sim-time"), `t = ${view.t_s.toFixed(3)} s`);
   renderStrokes();
   if (dirty.pen) showPen(view.pen);
-  if (dirty.table) showTable(view.table);
-  if (dirty.arms) for (const arm of state.arms.values()) showArm(arm);
-  dirty.pen = dirty.table = dirty.arms = false;
+  renderMachineParts();
+  dirty.pen = false;
   for (const name of dirty.boards) renderBoard(name);
   dirty.boards.clear();
   for (const [name, text] of dirty.console) {
@@ -734,13 +829,7 @@ function render() {
     if (board) appendConsole(board.console, text);
   }
   dirty.console.clear();
-  for (const [device, screen] of dirty.screens) {
-    for (const board of boards.values()) {
-      const canvas = board.screens.get(device);
-      if (canvas) drawScreen(canvas, screen);
-    }
-  }
-  dirty.screens.clear();
+  renderDeviceParts();
   if (dirty.travel) showTravel(view.travel);
   dirty.travel = false;
   if (dirty.run && view.run) showRun(view.run);

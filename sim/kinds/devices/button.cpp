@@ -20,6 +20,10 @@ class ButtonDevice : public ModelDevice<BouncingButton> {
       default: break;
     }
   }
+  /// The replay page shows whether the hand holds the button.
+  void add_replay_inputs(SimTime now, nlohmann::json& inputs) const override {
+    inputs["pressed"] = model().pressed_at(now);
+  }
 };
 
 std::any read(DeviceReading& reading) {

@@ -12,6 +12,10 @@ class EncoderDevice : public ModelDevice<QuadratureEncoder> {
  public:
   using ModelDevice::ModelDevice;
   void schedule(const scenario::Action& action) override { model().turn(action.time, action.counts, action.over); }
+  /// The page's knob turns the encoder one revolution per turn of the hand.
+  void describe_page_control(nlohmann::json& control) const override {
+    control["counts_per_turn"] = model().counts_per_revolution();
+  }
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     const QuadratureEncoder* encoder = &model();
     probes.push_back({name + "_counts", 0, [encoder](SimTime time) { return static_cast<double>(encoder->count_at(time)); }});

@@ -16,9 +16,21 @@ constexpr scenario::NumberRange kSpeedMmPerS{0, 10000, true, "mm/s"};
 constexpr scenario::NumberRange kRightMinDeg{-420, -60, false, "°"};
 constexpr scenario::NumberRange kLeftMaxDeg{240, 600, false, "°"};
 
+nlohmann::json point_json(const PenPoint& point) { return nlohmann::json::array({point.x_mm, point.y_mm}); }
+
+/// The arm's joint encoders as CSV columns; on the live page, its linkage as an "arms" part (none
+/// while the links cannot meet).
 class ArmDevice : public ModelDevice<FiveBarArm> {
  public:
   using ModelDevice::ModelDevice;
+  void add_page_parts(const std::string& name, SimTime, PageParts& parts) const override {
+    FiveBarArm::Linkage linkage;
+    if (!model().last_linkage(linkage)) return;
+    parts.push_back({"arms",
+                     {{"device", name}, {"right_pivot", point_json(linkage.right_pivot)},
+                      {"left_pivot", point_json(linkage.left_pivot)}, {"c", point_json(linkage.c)},
+                      {"d", point_json(linkage.d)}, {"e", point_json(linkage.e)}, {"t", point_json(linkage.t)}}});
+  }
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     const FiveBarArm* arm = &model();
     probes.push_back({name + "_right_counts", 0, [arm](SimTime time) { return static_cast<double>(arm->right_count_at(time)); }});
@@ -117,6 +129,8 @@ const DeviceKind& five_bar_arm_kind() {
       build,
       0,
       PageControl{},
+      nullptr,
+      {"arms"},
   };
   return kind;
 }

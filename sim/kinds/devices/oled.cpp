@@ -19,11 +19,31 @@ std::string snapshot_name(const std::string& name, SimTime time) {
   return name + stamp + ".png";
 }
 
+/// A row of an OLED picture as hex digits, 4 pixels a digit, leftmost pixel the high bit (the
+/// page's "screens" part, docs/simulator.md).
+std::vector<std::string> screen_rows(const OledImage& image) {
+  static const char kHex[] = "0123456789abcdef";
+  std::vector<std::string> rows;
+  for (int y = 0; y < OledImage::kHeight; ++y) {
+    std::string row;
+    for (int x = 0; x < OledImage::kWidth; x += 4) {
+      int nibble = 0;
+      for (int bit = 0; bit < 4; ++bit) nibble = nibble << 1 | (image.at(x + bit, y) ? 1 : 0);
+      row += kHex[nibble];
+    }
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 /// The screen as pictures, 4 px per pixel: "<name>.png" at the end and "<name>-<t>s.png" at each
-/// snapshot time.
+/// snapshot time; on the live page, a "screens" part.
 class OledDevice : public ModelDevice<Ssd1306Display> {
  public:
   using ModelDevice::ModelDevice;
+  void add_page_parts(const std::string& name, SimTime, PageParts& parts) const override {
+    parts.push_back({"screens", {{"device", name}, {"on", model().display_on()}, {"rows", screen_rows(model().image())}}});
+  }
   void write_outputs(const std::string& name, PictureSink& sink) override {
     model().finish();
     for (const auto& [time, picture] : model().snapshots()) write(sink, snapshot_name(name, time), picture);
@@ -94,6 +114,7 @@ const DeviceKind& oled_kind() {
       0,
       PageControl{PageControl::Type::kScreen, 0, 0, 1, "px"},
       output_names,
+      {"screens"},
   };
   return kind;
 }

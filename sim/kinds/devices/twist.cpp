@@ -9,6 +9,9 @@
 namespace stepdance::sim {
 namespace {
 
+/// A Qwiic Twist's knob has 24 detents a turn (SparkFun's product page).
+constexpr int kTwistDetentsPerTurn = 24;
+
 class TwistDevice : public ModelDevice<QwiicTwistModel> {
  public:
   using ModelDevice::ModelDevice;
@@ -20,6 +23,10 @@ class TwistDevice : public ModelDevice<QwiicTwistModel> {
       case scenario::ActionType::kClick: model().click(action.time, action.hold); break;
       default: break;
     }
+  }
+  /// The page's knob turns the Twist's detents, 24 per turn of the hand.
+  void describe_page_control(nlohmann::json& control) const override {
+    control["counts_per_turn"] = kTwistDetentsPerTurn;
   }
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     QwiicTwistModel* twist = const_cast<QwiicTwistModel*>(&model());  // count_at() applies due events

@@ -32,10 +32,17 @@ std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const Soc
                                           settings);
 }
 
+/// The page's "table" part: the table's angle and the pen's radius, to turn the paper by.
+void add_page_parts(const Machine& machine, SimTime, PageParts& parts) {
+  const auto* table = dynamic_cast<const PolarTurntable*>(&machine);
+  if (table == nullptr) return;  // not built by this kind
+  parts.push_back({"table", {{"angle_rad", table->angle_rad()}, {"radius_mm", table->radius_mm()}}});
+}
+
 }  // namespace
 
 const MachineKind& polar_turntable_kind() {
-  static const MachineKind kind{"polar", "x", read, build};
+  static const MachineKind kind{"polar", "x", read, build, nullptr, add_page_parts, {"table"}};
   return kind;
 }
 

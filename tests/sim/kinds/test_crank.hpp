@@ -1,6 +1,7 @@
 // A test-only device kind, "test_crank": a hand crank on an encoder connector turning at a steady
-// rate until it stops. Its model, reader, factory and page control live here and nowhere else:
-// registering it (ScopedKind<DeviceRegistry>) is all the simulator needs.
+// rate until it stops. Its model, reader, factory, page control and page state (a "cranks" part:
+// the count turned so far) live here and nowhere else: registering it (ScopedKind<DeviceRegistry>)
+// is all the simulator and its live view need.
 #pragma once
 
 #include <algorithm>
@@ -42,8 +43,17 @@ inline std::any read_test_crank(DeviceReading& reading) {
   return config;
 }
 
+/// The crank on the live view's page: a "cranks" part, the count it has turned so far.
+class TestCrankDevice : public ModelDevice<TestCrank> {
+ public:
+  using ModelDevice::ModelDevice;
+  void add_page_parts(const std::string& name, SimTime now, PageParts& parts) const override {
+    parts.push_back({"cranks", {{"device", name}, {"count", model().count_at(now)}}});
+  }
+};
+
 inline std::unique_ptr<SimDevice> build_test_crank(const scenario::DeviceConfig& device, DevicePlug& plug) {
-  auto built = std::make_unique<ModelDevice<TestCrank>>(std::make_unique<TestCrank>(*device.settings_as<TestCrankConfig>()));
+  auto built = std::make_unique<TestCrankDevice>(std::make_unique<TestCrank>(*device.settings_as<TestCrankConfig>()));
   const TestCrank* model = &built->model();
   plug.connect_encoder(device.connector, [model](SimTime time) { return model->count_at(time); });
   return built;
@@ -60,6 +70,8 @@ inline const DeviceKind& test_crank_kind() {
       build_test_crank,
       0,
       PageControl{PageControl::Type::kKnob, 0, 0, 1, "counts"},
+      nullptr,
+      {"cranks"},
   };
   return kind;
 }

@@ -1,6 +1,7 @@
 // A test-only machine kind, "test_gauge": one stepper moves a pen along x (steps / steps_per_mm),
-// always down, on a fixed 100 × 10 mm page. Its model, reader and factory live here and nowhere
-// else: registering it (ScopedKind<MachineRegistry>) is all the simulator needs.
+// always down, on a fixed 100 × 10 mm page. Its model, reader, factory and page state (a "gauge"
+// part: its motor's steps) live here and nowhere else: registering it (ScopedKind<MachineRegistry>)
+// is all the simulator and its live view need.
 #pragma once
 
 #include <memory>
@@ -21,6 +22,7 @@ class TestGauge : public Machine {
   TestGauge(const StepperDriver& motor, double steps_per_mm, const PenTraceSettings& trace)
       : Machine(trace, std::nullopt), motor_(motor), steps_per_mm_(steps_per_mm) {}
   std::optional<double> axis_mm(MachineAxis axis) const override { return pen_axis_mm(axis); }
+  int64_t motor_steps() const { return motor_.position_steps(); }
 
  protected:
   Sample sample(SimTime) override {
@@ -54,8 +56,14 @@ inline std::unique_ptr<Machine> build_test_gauge(const scenario::MachineConfig& 
 
 inline std::optional<TravelArea> test_gauge_page(const scenario::MachineConfig&) { return TravelArea{0, 100, 0, 10}; }
 
+/// The gauge on the live view's page: a "gauge" part, its motor's steps.
+inline void add_test_gauge_page_parts(const Machine& machine, SimTime, PageParts& parts) {
+  parts.push_back({"gauge", {{"steps", static_cast<const TestGauge&>(machine).motor_steps()}}});
+}
+
 inline const MachineKind& test_gauge_kind() {
-  static const MachineKind kind{"test_gauge", "x", read_test_gauge, build_test_gauge, test_gauge_page};
+  static const MachineKind kind{"test_gauge", "x", read_test_gauge, build_test_gauge, test_gauge_page,
+                                add_test_gauge_page_parts, {"gauge"}};
   return kind;
 }
 
