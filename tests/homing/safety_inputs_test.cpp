@@ -70,12 +70,24 @@ TEST_F(SafetyInputsTest, ALimitThatHomingOwnsRaisesNothingWhileHoming) {
 
 TEST_F(SafetyInputsTest, TheEmergencyStopIsFatal) {
   ASSERT_EQ(safety.add_emergency_stop(kStopPin), Status::kOk);  // normally closed: high = fine
-  hal_manual::set_pin(kStopPin, true);
   ASSERT_EQ(safety.begin(), Status::kOk);
+  hal_manual::set_pin(kStopPin, true);  // the closed loop holds the pin at 3.3 V over its pull-down
   ASSERT_EQ(dance_start(), Status::kOk);
   run_ms(20);
   EXPECT_EQ(fault_reason(), FaultReason::kNone);
   hal_manual::set_pin(kStopPin, false);  // the loop opens
+  run_ms(10);
+  EXPECT_EQ(fault_level(), static_cast<uint8_t>(FaultLevel::kFatal));
+  EXPECT_TRUE(hal_manual::in_safe_state());
+}
+
+// The header's contract: a broken wire reads as pressed. A cut loop leaves the pin to its pull
+// resistor (the manual backend reads an unconnected pin at its pull's level), so the pull must
+// take a normally closed input to its active level.
+TEST_F(SafetyInputsTest, ACutEmergencyStopWireStopsTheMachine) {
+  ASSERT_EQ(safety.add_emergency_stop(kStopPin), Status::kOk);
+  ASSERT_EQ(safety.begin(), Status::kOk);  // nothing drives the pin: the wire is cut
+  ASSERT_EQ(dance_start(), Status::kOk);
   run_ms(10);
   EXPECT_EQ(fault_level(), static_cast<uint8_t>(FaultLevel::kFatal));
   EXPECT_TRUE(hal_manual::in_safe_state());

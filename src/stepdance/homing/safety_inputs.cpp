@@ -45,16 +45,15 @@ Status SafetyInputs::add(Role role, uint8_t pin, bool normally_closed, FaultLeve
 
 void SafetyInputs::set_debounce_ms(uint32_t ms) { debounce_ms_ = ms; }
 
-// Sampled at 1 kHz, so debounce_ms_ is the number of stable samples. Active level: high for a
-// normally open switch, low for a normally closed loop (the header's contract: a broken loop must
-// read as pressed). Caution: with the pull-up chosen here for a normally closed loop, an open loop
-// (pressed or cut) is pulled high, i.e. inactive, on real pins; a pull-down would make it read
-// active. The manual backend's set_pin() overrides pulls, so its tests cannot show this.
+// Sampled at 1 kHz, so debounce_ms_ is the number of stable samples. Every switch closes to 3.3 V
+// over a pull-down (the original's wiring). Active level: high for a normally open switch, low
+// for a normally closed loop: the closed loop holds the pin high, and a press or a cut wire lets
+// the pull-down take it low, so a broken loop reads as pressed (the header's contract).
 Status SafetyInputs::begin() {
   for (size_t i = 0; i < count_; ++i) {
     Input& input = inputs_[i];
     const Status status =
-        hal::gpio_mode(input.pin, input.normally_closed ? hal::PinMode::kInputPullup : hal::PinMode::kInputPulldown);
+        hal::gpio_mode(input.pin, hal::PinMode::kInputPulldown);
     if (status != Status::kOk) return status;
     input.debouncer.set_stable_samples(debounce_ms_);
     input.debouncer.restart(false, 0);  // an input active at power-on still reports once

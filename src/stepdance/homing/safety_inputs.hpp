@@ -22,8 +22,9 @@ class TimeBasedInterpolator;
 ///  - an emergency stop is fatal: outputs stop at once and the drivers are disabled;
 ///  - feed hold sets a planner's speed override to 0 (it slows to a stop within its
 ///    acceleration limit); cycle start restores the override it had.
-/// A switch is normally open (active high with the pull-down, the original's wiring) unless
-/// added as normally closed (active low with the pull-up: a broken wire reads as pressed).
+/// Every switch closes to 3.3 V over the pin's pull-down (the original's wiring). It is normally
+/// open (active high) unless added as normally closed (active low: the closed loop holds the pin
+/// high, so a press or a broken wire reads as pressed).
 /// Soft limits stay the channels' (Channel::set_upper_limit / set_lower_limit).
 class SafetyInputs : public Block {
  public:
