@@ -42,8 +42,12 @@ uint32_t lead_ticks = 0;         // PERCLK ticks in kLeadUs
 
 bool sample_clock_arm(uint32_t period_us) {
   const uint32_t hz = perclk_hz();
-  if (hz % 1000000u != 0 || period_us <= kLeadUs) {
+  if (hz % 1000000u != 0) {
     hal::log_message("sample clock: PERCLK is not a whole number of MHz; encoders are read live");
+    return false;
+  }
+  if (period_us <= kLeadUs) {
+    hal::log_message("sample clock: the frame is shorter than the sample lead; encoders are read live");
     return false;
   }
   regs::ccm::gate_on(regs::ccm::kGatePit);
