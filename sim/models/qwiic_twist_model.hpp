@@ -11,7 +11,8 @@
 
 namespace stepdance::sim {
 
-/// Registers: 00h ID (5Ch), 01h status (bit 0 moved, 1 held, 2 clicked; writable to clear),
+/// Registers: 00h ID (5Ch), 01h status (bit 0 moved, 1 held, 2 clicked; a write replaces bits 0
+/// and 2, held is read only),
 /// 02h–03h version (1.2 here), 04h interrupt enables, 05h count (int16, little-endian),
 /// 07h difference (int16), 09h/0Bh ms since the last movement / button event (uint16,
 /// saturating), 0Dh–0Fh red/green/blue, 10h/12h/14h colour change per detent (int16),

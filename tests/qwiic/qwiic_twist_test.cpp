@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <functional>
 
 #include "qwiic/qwiic_fixture.hpp"
 #include "support/collector_block.hpp"
@@ -18,20 +19,32 @@ using Bytes = std::vector<uint8_t>;
 // 0x04 interrupt enables, 0x05 count (int16 LE), 0x07 difference, 0x09 / 0x0B ms since
 // movement / button, 0x0D..0F red green blue, 0x10/12/14 connect (int16 LE), 0x16 timeout,
 // 0x18 address. A write's first byte selects the register; later bytes go to the next ones.
+// Status as SparkFun's firmware 1.x keeps it: a write replaces the moved (bit 0) and clicked
+// (bit 2) bits and leaves the held bit (1) alone; a press toggles held, a release toggles it
+// back and sets clicked.
 struct FakeTwist {
+  static constexpr uint8_t kMoved = 0x01, kHeld = 0x02, kClicked = 0x04;
   std::array<uint8_t, 0x20> registers{};
+  std::function<void()> after_status_read;  // the hand, between a poll and the next transfer
   FakeTwist() { registers[0x00] = 0x5C; registers[0x02] = 1; registers[0x03] = 2; }
   void set_count(int16_t count) {
     registers[0x05] = static_cast<uint8_t>(count & 0xFF);
     registers[0x06] = static_cast<uint8_t>((count >> 8) & 0xFF);
   }
+  void press() { registers[0x01] |= kHeld; }
+  void release() { registers[0x01] = static_cast<uint8_t>((registers[0x01] & ~kHeld) | kClicked); }
+  void store(uint8_t reg, uint8_t value) {
+    if (reg == 0x01) value = static_cast<uint8_t>((registers[0x01] & kHeld) | (value & (kMoved | kClicked)));
+    registers[reg] = value;
+  }
   hal::I2cResult answer(const hal_manual::I2cRecord& transfer, uint8_t* read, uint16_t read_length) {
     if (transfer.address != 0x3F) return hal::I2cResult::kAddressNack;
     if (transfer.written.empty()) return hal::I2cResult::kOk;
     uint8_t reg = transfer.written[0];
-    for (size_t i = 1; i < transfer.written.size(); ++i) registers[reg++] = transfer.written[i];
+    for (size_t i = 1; i < transfer.written.size(); ++i) store(reg++, transfer.written[i]);
     reg = transfer.written[0];
     for (uint16_t i = 0; i < read_length; ++i) read[i] = registers[reg++];
+    if (read_length > 0 && transfer.written[0] == 0x01 && after_status_read) after_status_read();
     return hal::I2cResult::kOk;
   }
 };
@@ -80,6 +93,16 @@ TEST_F(QwiicTwistTest, CountsDetentsAcrossThe16BitWrap) {
   EXPECT_EQ(knob.count(), -5);
 }
 
+// Writes to the status register that a poll sent since `before`.
+std::vector<Bytes> status_writes(size_t before) {
+  std::vector<Bytes> writes;
+  for (size_t i = before; i < hal_manual::i2c_log().size(); ++i) {
+    const auto& transfer = hal_manual::i2c_log()[i];
+    if (transfer.read_length == 0 && !transfer.written.empty() && transfer.written[0] == 0x01) writes.push_back(transfer.written);
+  }
+  return writes;
+}
+
 TEST_F(QwiicTwistTest, ClickIsCountedOnceAndItsLatchClearedByWritingStatus) {
   QwiicTwist knob;
   start(knob);
@@ -87,21 +110,52 @@ TEST_F(QwiicTwistTest, ClickIsCountedOnceAndItsLatchClearedByWritingStatus) {
   static int* seen = nullptr;
   seen = &callbacks;
   knob.set_callback_on_click([] { ++*seen; });
-  fake.registers[0x01] = 0x04 | 0x02 | 0x01;  // clicked, held, moved
+  fake.registers[0x01] = 0x04 | 0x01;  // clicked, moved, the button up
   const size_t before = hal_manual::i2c_log().size();
   loop_passes(100);
   EXPECT_EQ(knob.clicks(), 1u);
   EXPECT_EQ(callbacks, 1);
-  EXPECT_TRUE(knob.pressed());
-  // The clear writes status with the clicked and moved bits off and the held bit kept.
-  bool cleared = false;
-  for (size_t i = before; i < hal_manual::i2c_log().size(); ++i) {
-    cleared = cleared || hal_manual::i2c_log()[i].written == Bytes{0x01, 0x02};
-  }
-  EXPECT_TRUE(cleared);
-  EXPECT_EQ(fake.registers[0x01], 0x02);
+  EXPECT_FALSE(knob.pressed());
+  EXPECT_EQ(status_writes(before), std::vector<Bytes>{Bytes({0x01, 0x00})});
+  EXPECT_EQ(fake.registers[0x01], 0x00);
   loop_passes(100);
   EXPECT_EQ(knob.clicks(), 1u);
+}
+
+// The bug: the knob turned with the button held; the poll saw "moved, held"; the button came
+// up before the clearing write, whose 0 in the clicked bit wiped the click. No write may go out
+// while the poll saw the button held (the release, which sets clicked, may come any moment).
+TEST_F(QwiicTwistTest, AClickReleasedBetweenThePollAndTheClearIsCounted) {
+  QwiicTwist knob;
+  start(knob);
+  fake.registers[0x01] = 0x01 | 0x02;  // moved, held
+  fake.after_status_read = [this] {
+    fake.release();
+    fake.after_status_read = nullptr;
+  };
+  loop_passes(300);  // three polls
+  EXPECT_EQ(knob.clicks(), 1u);
+  EXPECT_FALSE(knob.pressed());
+  EXPECT_EQ(fake.registers[0x01], 0x00);  // cleared once the button was seen up
+}
+
+// A click latched while the button is already down again for the next click: counted once at
+// once, the latch kept while the button is held, and the release seen later is the second click.
+TEST_F(QwiicTwistTest, TwoClicksInOneLatchWhileHeldAreBothCounted) {
+  QwiicTwist knob;
+  start(knob);
+  fake.registers[0x01] = 0x04 | 0x02;  // clicked, held (pressed again)
+  const size_t before = hal_manual::i2c_log().size();
+  loop_passes(300);
+  EXPECT_EQ(knob.clicks(), 1u);
+  EXPECT_TRUE(knob.pressed());
+  EXPECT_TRUE(status_writes(before).empty());  // nothing cleared under a held button
+  fake.release();
+  loop_passes(300);
+  EXPECT_EQ(knob.clicks(), 2u);
+  EXPECT_EQ(fake.registers[0x01], 0x00);
+  loop_passes(300);
+  EXPECT_EQ(knob.clicks(), 2u);
 }
 
 TEST_F(QwiicTwistTest, RegisterWritesFollowTheMap) {

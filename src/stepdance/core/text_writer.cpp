@@ -80,34 +80,78 @@ TextWriter& TextWriter::significant(double value, uint8_t digits) {
   return whole_number(magnitude);
 }
 
-// Trailing zeros of the fraction are dropped. Exponent form only below 10^-3 and from 10^15
-// (docs/rpc.md). Rounding up can give a mantissa of 10 (e.g. "10e5"): still the right value.
-TextWriter& TextWriter::rounded(double value, uint8_t digits) {
-  const double magnitude = fabs(value);
-  const int exponent = static_cast<int>(floor(log10(magnitude)));
-  const bool scientific = exponent < -3 || exponent >= 15;
-  double shown = magnitude;
-  if (scientific) {  // 10^exponent is subnormal below 10^-307: scale up first
-    shown = exponent < -307 ? magnitude * 1e20 / pow(10.0, exponent + 20) : magnitude / pow(10.0, exponent);
+namespace {
+
+// magnitude / 10^exponent. 10^exponent is subnormal (and inexact) below 10^-307: scaled up first.
+double mantissa_of(double magnitude, int exponent) {
+  return exponent < -307 ? magnitude * 1e20 / pow(10.0, exponent + 20) : magnitude / pow(10.0, exponent);
+}
+
+}  // namespace
+
+// `magnitude` (> 0) rounded to `digits` significant digits. log10 can land one off next to a power
+// of ten, so the mantissa is brought into [1, 10) first; a mantissa that rounds up to 10
+// (9.9999995 to seven digits) carries into the exponent: 1.000000 × 10^(exponent + 1).
+TextWriter::Significand TextWriter::round_significant(double magnitude, uint8_t digits) {
+  int exponent = static_cast<int>(floor(log10(magnitude)));
+  double mantissa = mantissa_of(magnitude, exponent);
+  if (mantissa >= 10.0) {
+    ++exponent;
+    mantissa /= 10.0;
+  } else if (mantissa < 1.0) {
+    --exponent;
+    mantissa *= 10.0;
   }
-  const int wanted_decimals = digits - 1 - (scientific ? 0 : exponent);
+  const double one = pow(10.0, digits - 1);  // the mantissa 1.0… as a whole number of digits
+  double rounded = floor(mantissa * one + 0.5);
+  if (rounded >= 10.0 * one) {
+    rounded = one;
+    ++exponent;
+  }
+  return {rounded, one, exponent};
+}
+
+// Trailing zeros of the fraction are dropped. The form follows the rounded value (docs/rpc.md):
+// an exponent below 10^-3 and from 10^15, so 0.00099999999 to six digits is "0.001" and
+// 999999999999999.9 to nine is "1e15".
+TextWriter& TextWriter::rounded(double value, uint8_t digits) {
+  const Significand significand = round_significant(fabs(value), digits);
+  if (value < 0) character('-');
+  if (significand.exponent < -3 || significand.exponent >= 15) return scientific(significand);
+  return plain(fabs(value), digits, significand.exponent);
+}
+
+// "d.ddde±x": one digit 1..9 before the point, the significand's digits after it.
+TextWriter& TextWriter::scientific(const Significand& significand) {
+  const double whole = floor(significand.digits / significand.one);
+  whole_and_fraction(static_cast<uint32_t>(significand.digits - whole * significand.one), whole, significand.one);
+  character('e');
+  const int exponent = significand.exponent;
+  if (exponent < 0) character('-');
+  return unsigned_number(static_cast<uint32_t>(exponent < 0 ? -exponent : exponent));
+}
+
+// Plain: digits − 1 − exponent decimals (none from 10^(digits − 1) up: every whole digit is kept).
+TextWriter& TextWriter::plain(double magnitude, uint8_t digits, int exponent) {
+  const int wanted_decimals = digits - 1 - exponent;
   const int decimals = wanted_decimals < 0 ? 0 : wanted_decimals;  // at most 11
   const double scale = pow(10.0, decimals);
-  const double scaled = floor(shown * scale + 0.5);  // below 10^digits (10 after rounding up)
+  const double scaled = floor(magnitude * scale + 0.5);
   const double whole = floor(scaled / scale);
-  uint32_t fraction = static_cast<uint32_t>(scaled - whole * scale);
-  uint8_t places = static_cast<uint8_t>(decimals);
+  return whole_and_fraction(static_cast<uint32_t>(scaled - whole * scale), whole, scale);
+}
+
+// Prints whole, then `fraction` out of `scale` (a power of ten) without its trailing zeros.
+TextWriter& TextWriter::whole_and_fraction(uint32_t fraction, double whole, double scale) {
+  uint8_t places = 0;
+  for (double unit = 1.0; unit < scale; unit *= 10.0) ++places;
   while (places > 0 && fraction % 10 == 0) {
     fraction /= 10;
     --places;
   }
-  if (value < 0) character('-');
   whole_number(whole);
   if (places > 0) character('.').padded(fraction, places);
-  if (!scientific) return *this;
-  character('e');
-  if (exponent < 0) character('-');
-  return unsigned_number(static_cast<uint32_t>(exponent < 0 ? -exponent : exponent));
+  return *this;
 }
 
 TextWriter& TextWriter::whole_number(double value) {

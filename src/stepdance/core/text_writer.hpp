@@ -34,7 +34,18 @@ class TextWriter {
  private:
   TextWriter& padded(uint32_t value, uint8_t places);
   TextWriter& whole_number(double value);
+  // A positive magnitude rounded to n significant digits: `digits` (a whole number,
+  // one ≤ digits < 10 × one, one = 10^(n − 1)) × 10^(exponent − n + 1).
+  struct Significand {
+    double digits;
+    double one;
+    int exponent;
+  };
+  static Significand round_significant(double magnitude, uint8_t digits);
   TextWriter& rounded(double value, uint8_t digits);
+  TextWriter& scientific(const Significand& significand);
+  TextWriter& plain(double magnitude, uint8_t digits, int exponent);
+  TextWriter& whole_and_fraction(uint32_t fraction, double whole, double scale);
 
   char* data_;
   size_t capacity_;

@@ -112,7 +112,11 @@ Status OutputPort::claim(uint8_t port, uint8_t format, uint8_t transmit_mode) {
   clear_statistics();
   release_previous_owner(port);
   if (!begun_ports().contains(this) && begun_ports().push_back(this) != Status::kOk) return Status::kFull;
-  if (transmit_mode == OUTPUT_TRANSMIT_MANUAL) return Status::kOk;
+  transmit_mode_ = transmit_mode;
+  if (transmit_mode == OUTPUT_TRANSMIT_MANUAL) {
+    engine().remove(this);  // begun again in manual mode: the engine no longer sends it
+    return Status::kOk;
+  }
   return register_in(Stage::kOutputPorts);
 }
 
@@ -150,9 +154,35 @@ void OutputPort::step_now(uint8_t direction, uint8_t signal) {
   add_signal(signal, direction);
 }
 
-// Frame context (kOutputPorts stage), once per frame: encodes at most one frame's worth of pulses;
-// the rest stays pending for the next frames.
+// The sketch's call. While the engine runs, the engine's output stage owns an ON_FRAME port's
+// frame (it comes after the channels, so their pulses leave in the frame that made them).
 void OutputPort::transmit_frame() {
+  if (transmit_mode_ == OUTPUT_TRANSMIT_ON_FRAME && engine().running()) {
+    refuse_transmit();
+    return;
+  }
+  transmit_once_this_frame();
+}
+
+void OutputPort::refuse_transmit() {
+  if (transmits_refused_++ != 0) return;
+  report_fault(FaultLevel::kWarning, FaultReason::kBadConfiguration, "OutputPort",
+               "transmit_frame() ignored: the port already sends once every frame (OUTPUT_TRANSMIT_ON_FRAME, or called twice)");
+}
+
+// Frame context, at most once per engine frame (the frame count changes only between frames);
+// with the engine stopped every call sends. Encodes at most one frame's worth of pulses; the rest
+// stays pending for the next frames.
+void OutputPort::transmit_once_this_frame() {
+  if (engine().running()) {
+    const uint32_t frame = engine().frame_count();
+    if (transmitted_ && transmitted_in_frame_ == frame) {
+      refuse_transmit();
+      return;
+    }
+    transmitted_ = true;
+    transmitted_in_frame_ = frame;
+  }
   if (idle_timeout_ms_ != 0) idle_check(pending_mask_ != 0);
   const protocol::FrameWords words = mode_ == OUTPUT_MODE_STEP_DIR ? encode_step_dir() : encode_stepdance();
   if (port_ < NUM_AVAILABLE_OUTPUT_PORTS) hal::port_out_frame(port_, words);
@@ -208,6 +238,7 @@ void OutputPort::clear_statistics() {
   carried_mask_ = 0;
   signals_carried_ = 0;
   pulses_refused_ = 0;
+  transmits_refused_ = 0;
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
     set_pending(signal, 0);
     sent_[signal][0] = sent_[signal][1] = 0;
@@ -311,10 +342,16 @@ uint32_t OutputPort::pulses_sent(uint8_t signal, uint8_t direction) const {
   return sent_[signal][direction == DIRECTION_FORWARD ? 1 : 0];
 }
 
-// Every begun port, OUTPUT_TRANSMIT_MANUAL ones included (they are in begun_ports() too). Ports begun
-// with OUTPUT_TRANSMIT_ON_FRAME are also sent by the engine's kOutputPorts stage on their own.
+// In the original this was the engine's own output stage, over the OUTPUT_TRANSMIT_ON_FRAME ports
+// (original-library.md §1.3). Here the engine's kOutputPorts stage sends those, so a sketch that
+// also called this every frame sent them twice a frame; now it adds only the frames the engine does
+// not send.
 void transmit_frames_on_all_output_ports() {
-  for (OutputPort* port : begun_ports()) port->transmit_frame();
+  const bool engine_sends_on_frame_ports = engine().running();
+  for (OutputPort* port : begun_ports()) {
+    if (engine_sends_on_frame_ports && port->transmit_mode() == OUTPUT_TRANSMIT_ON_FRAME) continue;
+    port->transmit_frame();
+  }
 }
 
 void iterate_across_all_output_ports(void (*fn)(OutputPort* port)) {

@@ -75,10 +75,20 @@ class OutputPort : public Block {
   /// Queues one pulse for the next frame (the original sent it at once and could collide with
   /// a frame on the wire). Context: any.
   void step_now(uint8_t direction, uint8_t signal = SIGNAL_E);
-  /// Encodes the pending pulses and hands the frame to the HAL. Called by the engine each frame
-  /// in OUTPUT_TRANSMIT_ON_FRAME mode, by the sketch in manual mode. Context: frame ISR.
+  /// Encodes the pending pulses and hands the frame to the HAL: by the sketch in manual mode,
+  /// at most once a frame while the engine runs (a second frame in one period would overlap
+  /// the first on the wire). An OUTPUT_TRANSMIT_ON_FRAME port is sent by the engine's output
+  /// stage, so while the engine runs the sketch's call is ignored. An ignored call is counted
+  /// (transmits_refused()) and the first one reported as a warning. With the engine stopped,
+  /// every call sends a frame. Context: frame ISR, or loop while the engine is stopped.
   void transmit_frame();
-  void run() override { transmit_frame(); }
+  /// The engine's output stage: the frame of an OUTPUT_TRANSMIT_ON_FRAME port. Context: frame ISR.
+  void run() override { transmit_once_this_frame(); }
+  /// OUTPUT_TRANSMIT_ON_FRAME or OUTPUT_TRANSMIT_MANUAL, as begun. Context: any.
+  uint8_t transmit_mode() const { return transmit_mode_; }
+  /// Calls of transmit_frame() ignored because the port had sent, or the engine sends, this
+  /// frame's frame. Context: any.
+  uint32_t transmits_refused() const { return transmits_refused_; }
 
   /// Drives the driver's ENABLE low (enabled). kNoSuchPin on a board without drivers.
   /// Context: loop.
@@ -133,6 +143,10 @@ class OutputPort : public Block {
   void account_sent(uint8_t sent_mask);
   // Counts a pulse the port cannot carry; the first one is reported. Context: any.
   void refuse_pulse();
+  // Sends the frame unless this port already sent one in the engine's current frame. Frame ISR.
+  void transmit_once_this_frame();
+  // Counts a transmit_frame() call that would have sent a second frame; the first is reported.
+  void refuse_transmit();
   // Every change of a pending count goes through here, so the masks always match the counts.
   void set_pending(uint8_t signal, int32_t count);
 
@@ -147,6 +161,10 @@ class OutputPort : public Block {
   volatile OutputMode mode_ = OUTPUT_MODE_STEPDANCE;
   uint8_t step_dir_signal_ = SIGNAL_X;
   uint32_t pulses_refused_ = 0;
+  uint8_t transmit_mode_ = OUTPUT_TRANSMIT_ON_FRAME;
+  uint32_t transmits_refused_ = 0;
+  bool transmitted_ = false;               // a frame has gone out while the engine ran …
+  uint32_t transmitted_in_frame_ = 0;      // … in this engine frame (Engine::frame_count())
   uint8_t carried_mask_ = 0;
   volatile int32_t pending_[kNumSignals] = {};
   // Signals with a non-zero / positive pending count: the frame reads these instead of scanning.
@@ -164,7 +182,10 @@ class OutputPort : public Block {
   bool vref_started_ = false;
 };
 
-/// Transmits the frames of every begun port (the engine does this itself). Context: frame ISR.
+/// Transmits the frames of the begun ports the engine does not send itself: the
+/// OUTPUT_TRANSMIT_MANUAL ones while the engine runs (the engine's output stage sends the
+/// OUTPUT_TRANSMIT_ON_FRAME ones), every begun port while it is stopped. Each port still sends at
+/// most one frame per engine frame. Context: frame ISR, or loop while the engine is stopped.
 void transmit_frames_on_all_output_ports();
 /// Calls fn for every begun output port. Context: loop.
 void iterate_across_all_output_ports(void (*fn)(OutputPort* port));

@@ -64,6 +64,7 @@ void QwiicTwist::service() {
     for (uint8_t i = 0; i < next.length; ++i) write_buffer_[i] = next.bytes[i];
     write_request_.transfer = hal::I2cTransfer{address_, write_buffer_, next.length, nullptr, 0};
     if (bus_->submit(write_request_) == Status::kOk) {
+      clear_on_wire_ = next.bytes[0] == twist::kStatus;
       write_head_ = static_cast<uint8_t>((write_head_ + 1) % kWriteQueue);
       --write_count_;
     } else {
@@ -83,8 +84,14 @@ void QwiicTwist::start_read() {
 
 void QwiicTwist::on_read_done(void* self, hal::I2cResult result) { static_cast<QwiicTwist*>(self)->finish_read(result); }
 
+// A status clear that reached the knob ends the latched click: the next clicked bit is a new one.
 void QwiicTwist::on_write_done(void* self, hal::I2cResult result) {
   auto* knob = static_cast<QwiicTwist*>(self);
+  if (knob->clear_on_wire_) {
+    knob->clear_on_wire_ = false;
+    knob->clear_queued_ = false;
+    if (result == hal::I2cResult::kOk) knob->click_latch_counted_ = false;
+  }
   if (result != hal::I2cResult::kOk) knob->fail(result, State::kFailed);
 }
 
@@ -110,11 +117,9 @@ void QwiicTwist::finish_read(hal::I2cResult result) {
 
 // The knob's count register is a 16-bit signed value that wraps; the position is the sum of the
 // wrapped differences, so it grows past ±32767 without a jump. The first poll after identification
-// (or after writing the count) only sets the baseline. Events (moved, clicked) latch in the status
-// register until written back as 0, so exactly those bits are cleared, and a click is counted once.
+// (or after writing the count) only sets the baseline.
 void QwiicTwist::take_registers() {
   const auto at = [this](uint8_t reg) { return &registers_[reg - kFirstPolled]; };
-  const uint8_t status = *at(twist::kStatus);
   version_ = static_cast<uint16_t>((at(twist::kVersion)[0] << 8) | at(twist::kVersion)[1]);
   const auto register_count = static_cast<int16_t>(little_endian(at(twist::kCount)));
   if (have_baseline_) {
@@ -124,18 +129,38 @@ void QwiicTwist::take_registers() {
   last_register_count_ = register_count;
   since_movement_ms_ = little_endian(at(twist::kSinceMovementMs));
   since_button_ms_ = little_endian(at(twist::kSinceButtonMs));
-  pressed_ = (status & twist::kStatusPressed) != 0;
   ++polls_;
   counts_to_frame_.push(count_);  // full: the frame is behind and takes a later count instead
-  const uint8_t events = status & (twist::kStatusMoved | twist::kStatusClicked);
-  if (events != 0) {
-    const uint8_t clear[] = {twist::kStatus, static_cast<uint8_t>(status & ~events)};
-    queue_write(clear, sizeof clear);
-  }
+  take_status(*at(twist::kStatus));
+}
+
+// Events latch in the status register until written back, and the Twist's firmware (1.x) lets a
+// write replace the moved (bit 0) and clicked (bit 2) bits together, keeping held (bit 1): one bit
+// cannot be cleared alone. A 0 in clicked also wipes a click that came after the poll; a 1 would
+// invent one. A click sets its bit at the release, so the status is written only after a poll
+// that saw the button up: no click can then land before the write unless a whole press and release
+// fit between the poll and the write. A click latched while the button is down again stays
+// latched (counted once) until a poll sees the button up; a release seen meanwhile (held, then up)
+// is a second click, merged into the latch.
+void QwiicTwist::take_status(uint8_t status) {
+  const bool held = (status & twist::kStatusPressed) != 0;
+  const bool released = pressed_ && !held;
+  pressed_ = held;
+  bool clicked = false;
   if ((status & twist::kStatusClicked) != 0) {
-    ++clicks_;
-    if (on_click_ != nullptr) on_click_();
+    clicked = !click_latch_counted_ || released;
+    click_latch_counted_ = true;
+  } else {
+    click_latch_counted_ = false;
   }
+  const uint8_t events = status & (twist::kStatusMoved | twist::kStatusClicked);
+  if (!held && events != 0 && !clear_queued_) {
+    const uint8_t clear[] = {twist::kStatus, 0};
+    clear_queued_ = queue_write(clear, sizeof clear) == Status::kOk;
+  }
+  if (!clicked) return;
+  ++clicks_;
+  if (on_click_ != nullptr) on_click_();
 }
 
 void QwiicTwist::fail(hal::I2cResult result, State state) {

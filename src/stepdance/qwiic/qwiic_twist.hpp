@@ -16,7 +16,9 @@ namespace stepdance {
 /// The knob is polled from the loop every poll interval (default 20 ms) with one transfer that
 /// reads its registers 0x01..0x0C (status, version, interrupt enables, count, difference, the
 /// two "milliseconds since" timers). Clicks and turns latched in the status register are cleared
-/// by writing it back. Register writes (colour, count, interrupts) queue up to kWriteQueue deep.
+/// by writing it, only after a poll that saw the button up (a click latches at its release, and a
+/// write clears clicks that arrived after the poll too). Register writes (colour, count,
+/// interrupts) queue up to kWriteQueue deep.
 ///
 /// count() is the detents turned since begin(), unwrapped from the 16-bit register; the
 /// `output` BlockPort carries it into the frame like an Encoder's count (set_ratio gives world
@@ -86,6 +88,7 @@ class QwiicTwist : public Block {
   void start_read();
   void finish_read(hal::I2cResult result);
   void take_registers();
+  void take_status(uint8_t status);
   void fail(hal::I2cResult result, State state);
   Status queue_write(const uint8_t* bytes, uint8_t length);
 
@@ -110,6 +113,9 @@ class QwiicTwist : public Block {
   int32_t count_ = 0;
   uint32_t clicks_ = 0;
   bool pressed_ = false;
+  bool click_latch_counted_ = false;  // the clicked bit the knob holds was counted already
+  bool clear_queued_ = false;         // a status clear waits in the queue or is on the wire
+  bool clear_on_wire_ = false;        // the write on the wire is that clear
   uint16_t since_movement_ms_ = 0;
   uint16_t since_button_ms_ = 0;
   uint16_t version_ = 0;

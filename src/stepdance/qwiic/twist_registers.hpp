@@ -12,7 +12,7 @@ constexpr uint8_t kDefaultAddress = 0x3F;
 constexpr uint8_t kIdValue = 0x5C;
 
 constexpr uint8_t kId = 0x00;               ///< 1 byte, read only
-constexpr uint8_t kStatus = 0x01;           ///< 1 byte: the bits below; write 0 to clear events
+constexpr uint8_t kStatus = 0x01;           ///< 1 byte: the bits below; a write replaces bits 0 and 2
 constexpr uint8_t kVersion = 0x02;          ///< 2 bytes: firmware major, minor
 constexpr uint8_t kEnableInterrupts = 0x04; ///< 1 byte: the bits below
 constexpr uint8_t kCount = 0x05;            ///< int16: detents turned (24 a turn), writable
@@ -30,7 +30,7 @@ constexpr uint8_t kChangeAddress = 0x18;    ///< 1 byte: new 7-bit address (stor
 
 // kStatus bits
 constexpr uint8_t kStatusMoved = 1u << 0;    ///< the knob turned since the bit was cleared
-constexpr uint8_t kStatusPressed = 1u << 1;  ///< the button is held (set at the press; cleared at release or by a write)
+constexpr uint8_t kStatusPressed = 1u << 1;  ///< the button is held (set at the press, cleared at the release; read only)
 constexpr uint8_t kStatusClicked = 1u << 2;  ///< a press and release happened since it was cleared
 // kEnableInterrupts bits: the INT pin goes low on these events until kStatus is cleared
 constexpr uint8_t kInterruptOnTurn = 1u << 0;

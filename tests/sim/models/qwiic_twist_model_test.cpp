@@ -49,6 +49,20 @@ TEST(QwiicTwistModel, ClickLatchesUntilStatusIsWritten) {
   EXPECT_EQ(read_registers(twist, from_seconds(1.4), 0x01, 1)[0], 0x00);
 }
 
+// SparkFun's firmware 1.x (receiveEvent with its protection map): a status write replaces the
+// moved (bit 0) and clicked (bit 2) bits; held (bit 1) follows the button alone.
+TEST(QwiicTwistModel, StatusWriteReplacesMovedAndClickedAndLeavesHeld) {
+  QwiicTwistModel twist;
+  twist.press(from_seconds(1));
+  const uint8_t zero[] = {0x01, 0x00};
+  ASSERT_TRUE(twist.write(from_seconds(1.1), zero, 2));
+  EXPECT_EQ(read_registers(twist, from_seconds(1.2), 0x01, 1)[0], 0x02);  // still held
+  twist.release(from_seconds(1.3));
+  const uint8_t held_and_moved[] = {0x01, 0x03};
+  ASSERT_TRUE(twist.write(from_seconds(1.4), held_and_moved, 2));
+  EXPECT_EQ(read_registers(twist, from_seconds(1.5), 0x01, 1)[0], 0x01);  // moved written, clicked cleared, not held
+}
+
 TEST(QwiicTwistModel, TimersCountMillisecondsSinceEvents) {
   QwiicTwistModel twist;
   twist.turn(from_seconds(1), 1, 0);
