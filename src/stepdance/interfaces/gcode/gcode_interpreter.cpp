@@ -345,10 +345,9 @@ void LineExecution::apply_program_flow(LinePlan& plan) {
 }
 
 // A word that no command used is an error, not ignored (Grbl: error:31 for axis words, error:36 for
-// others), so a typo such as "G1 X10 Q5" never runs half understood. Printer housekeeping lines
-// (block.ignored) succeed without effect.
+// others), so a typo such as "G1 X10 Q5" never runs half understood. A printer housekeeping code is
+// not in the block (the parser left it and its parameters out), so the rest of its line runs.
 GrblError LineExecution::run(LinePlan& plan) {
-  if (block_.ignored) return GrblError::kOk;
   apply_modes();
   GrblError error = apply_feed();
   if (error == GrblError::kOk) error = apply_spindle_and_dwell(plan);

@@ -147,7 +147,7 @@ GrblError check_jog_words(const GcodeBlock& block) {
   constexpr uint16_t kAllowedGroups = group_bit(GGroup::kUnits) | group_bit(GGroup::kDistance) | group_bit(GGroup::kNonModal);
   const bool only_g53 = !block.has_g(GGroup::kNonModal) || block.g_code(GGroup::kNonModal) == 530;
   if ((block.words_present & ~kAllowedWords) != 0 || (block.g_groups_present & ~kAllowedGroups) != 0 ||
-      block.m_groups_present != 0 || !only_g53 || block.ignored) {
+      block.m_groups_present != 0 || !only_g53 || block.printer_housekeeping) {
     return GrblError::kInvalidJogCommand;
   }
   if (!block.has_word('F')) return GrblError::kUndefinedFeedRate;
