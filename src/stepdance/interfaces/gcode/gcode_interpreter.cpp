@@ -403,7 +403,7 @@ double GcodeInterpreter::work_offset_mm(int axis) const {
   return system + state_.g92_mm[axis] + tool_length;
 }
 
-// Only when the machine is idle (GrblProtocol::sync_position_when_idle): something else may have moved
+// Only when the machine is idle (InterpreterStage::adopt_position_when_idle): something else may have moved
 // the axes between programs (a knob, homing), and the next line must start from where they are.
 void GcodeInterpreter::set_position_mm(const double (&machine_mm)[kAxisCount]) {
   for (int axis = 0; axis < kAxisCount; ++axis) state_.position_mm[axis] = machine_mm[axis];
