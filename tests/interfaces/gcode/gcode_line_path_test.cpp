@@ -59,7 +59,7 @@ struct LoggingMachine final : GrblMachine {
   double steps_per_mm(int) override { return 80.0; }
 };
 
-class LinePath : public ::testing::Test {
+class GcodeLinePath : public ::testing::Test {
  protected:
   void SetUp() override { interpreting.begin(machine, settings); }
   void send(const char* line) { parsing.take(line, strlen(line), answer); }
@@ -71,7 +71,7 @@ class LinePath : public ::testing::Test {
   RecordingAnswer answer;
 };
 
-TEST_F(LinePath, AnAcceptedLineReachesTheMachineThenItsEndAndIsTakenOnce) {
+TEST_F(GcodeLinePath, AnAcceptedLineReachesTheMachineThenItsEndAndIsTakenOnce) {
   send("G1 X10 Y-5 F600");
   ASSERT_EQ(machine.calls, (std::vector<std::string>{"motion", "line end"}));
   EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 10.0);
@@ -82,7 +82,7 @@ TEST_F(LinePath, AnAcceptedLineReachesTheMachineThenItsEndAndIsTakenOnce) {
 
 // Each stage that refuses answers the line itself and hands nothing on: a syntax error (the
 // parser's, error:25), a semantic one (the interpreter's: no feed, error:22).
-TEST_F(LinePath, ARefusedLineIsAnsweredWhereItStopsAndReachesNoMachine) {
+TEST_F(GcodeLinePath, ARefusedLineIsAnsweredWhereItStopsAndReachesNoMachine) {
   send("G1 X1 X2");
   send("G1 X10");
   EXPECT_EQ(answer.events, (std::vector<std::string>{"refuse 25", "refuse 22"}));
@@ -93,7 +93,7 @@ TEST_F(LinePath, ARefusedLineIsAnsweredWhereItStopsAndReachesNoMachine) {
 // With soft limits on ($22 then $20, travel $130 = 100 mm) a line leaving the travel is stopped
 // before the machine hears of any of it: a G28 whose first leg (to X150) is outside, though its
 // second (to the stored point, 0) is inside. A G28 inside (X+50, then 0) runs both legs.
-TEST_F(LinePath, ALineOutOfTravelStopsBeforeTheMachineWithNothingChanged) {
+TEST_F(GcodeLinePath, ALineOutOfTravelStopsBeforeTheMachineWithNothingChanged) {
   ASSERT_EQ(settings.write(22, 1.0), GrblError::kOk);
   ASSERT_EQ(settings.write(20, 1.0), GrblError::kOk);
   ASSERT_EQ(settings.write(130, 100.0), GrblError::kOk);
@@ -109,7 +109,7 @@ TEST_F(LinePath, ALineOutOfTravelStopsBeforeTheMachineWithNothingChanged) {
 }
 
 // The machine's planner answers when it has taken the line, not the stage that handed it on.
-TEST_F(LinePath, TheMachineAnswersWhenItsPlannerHasTakenTheLine) {
+TEST_F(GcodeLinePath, TheMachineAnswersWhenItsPlannerHasTakenTheLine) {
   machine.defer = true;
   send("G2 X10 Y0 I5 J0 F300");
   EXPECT_TRUE(answer.events.empty());
@@ -120,7 +120,7 @@ TEST_F(LinePath, TheMachineAnswersWhenItsPlannerHasTakenTheLine) {
 
 // `$C`: the state advances (X now 10) and nothing reaches the machine; a line without words (`%`)
 // goes no further than the parser.
-TEST_F(LinePath, CheckModeAndEmptyLinesAreAnsweredWithoutTheMachine) {
+TEST_F(GcodeLinePath, CheckModeAndEmptyLinesAreAnsweredWithoutTheMachine) {
   interpreting.set_check_mode(true);
   send("G1 X10 F600");
   send("%");
