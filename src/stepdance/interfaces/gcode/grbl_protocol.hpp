@@ -25,8 +25,9 @@ namespace stepdance::gcode {
 /// nothing is torn or dropped when the host reads slowly. A G-code line goes one way: the
 /// receiver hands it out, the link hands it to the ParserStage, which hands its block to the
 /// InterpreterStage (plan, travel check, commit), which hands its requests to the machine's
-/// planner; whichever stage finishes with it answers through the line's GrblLineReply, and the
-/// link only writes that reply out. Context: loop only.
+/// planner; whichever stage finishes with it answers through the line's GrblLineReply (never
+/// back into the link), and the link writes that reply out, or starts the soft-limit alarm for a
+/// line out of travel. Context: loop only.
 class GrblProtocol final : private RealtimeHandler {
  public:
   /// Starts the link: loads the settings the host stored earlier (if a store is given), sends
