@@ -69,15 +69,35 @@ TEST(GcodeParser, SyntaxErrorsUseGrblNumbers) {
 TEST(GcodeParser, PrinterHousekeepingIsAcceptedOnlyWhenEnabled) {
   GcodeBlock block;
   ASSERT_EQ(parse("M104 S215 ; hotend", block), GrblError::kOk);
-  EXPECT_TRUE(block.ignored);
+  EXPECT_TRUE(block.printer_housekeeping);
+  EXPECT_EQ(block.words_present, 0u);
   ASSERT_EQ(parse("M862.3 P \"MK3S\"", block), GrblError::kOk);
-  EXPECT_TRUE(block.ignored);
+  EXPECT_TRUE(block.printer_housekeeping);
   ASSERT_EQ(parse("M83", block), GrblError::kOk);
   EXPECT_EQ(block.m_code(MGroup::kExtruder), 830);
   ParserOptions strict;
   strict.accept_printer_codes = false;
   EXPECT_EQ(parse("M104 S215", block, strict), GrblError::kUnsupportedCommand);
   EXPECT_EQ(parse("M83", block, strict), GrblError::kUnsupportedCommand);
+}
+
+// A housekeeping M code takes the words after it as its own parameters (M106 S255, M117's text);
+// the words before it are the line's and run. A G or M command after it would be taken for a
+// parameter and lost, so the line is refused (error:20) instead.
+TEST(GcodeParser, WordsBeforeAHousekeepingCodeStayInTheBlock) {
+  GcodeBlock block;
+  ASSERT_EQ(parse("G1 X10 M106", block), GrblError::kOk);
+  EXPECT_TRUE(block.printer_housekeeping);
+  EXPECT_EQ(block.g_code(GGroup::kMotion), 10);
+  ASSERT_TRUE(block.has_word('X'));
+  EXPECT_DOUBLE_EQ(block.word('X'), 10.0);
+  ASSERT_EQ(parse("G1 X10 F600 M106 S255", block), GrblError::kOk);
+  EXPECT_FALSE(block.has_word('S'));  // the fan's speed, not the spindle's
+  EXPECT_DOUBLE_EQ(block.word('F'), 600.0);
+  ASSERT_EQ(parse("M117 G1 done", block), GrblError::kOk);  // a message: its text is free
+  EXPECT_EQ(block.g_groups_present, 0);
+  EXPECT_EQ(parse("M104 S200 G1 X10"), GrblError::kUnsupportedCommand);
+  EXPECT_EQ(parse("M106 S255 M3"), GrblError::kUnsupportedCommand);
 }
 
 TEST(GcodeParser, HugeNumbersAreRefusedNotOverflowed) {

@@ -103,6 +103,25 @@ TEST_F(GrblLink, OkOnlyAfterValidationAndErrorNumbersOtherwise) {
   EXPECT_EQ(machine.motions.size(), 1u);
 }
 
+// A slicer may put a fan or temperature code on a motion line. The motion runs (ends worked out by
+// hand: absolute X10 Y5, then 2 mm more in X under G91) and the housekeeping code with its
+// parameters is ignored; a command after such a code would be lost as its parameter, so that line
+// is refused whole and nothing moves.
+TEST_F(GrblLink, AMotionLineWithAHousekeepingCodeStillMoves) {
+  EXPECT_EQ(exchange("G90 G1 X10 Y5 F600 M106 S255\n"), "ok\r\n");
+  ASSERT_EQ(machine.motions.size(), 1u);
+  EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 10.0);
+  EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisY], 5.0);
+  EXPECT_EQ(exchange("G91 X2 M107\n"), "ok\r\n");
+  ASSERT_EQ(machine.motions.size(), 2u);
+  EXPECT_DOUBLE_EQ(machine.motions[1].end_mm[kAxisX], 12.0);
+  EXPECT_DOUBLE_EQ(machine.motions[1].end_mm[kAxisY], 5.0);
+  EXPECT_EQ(exchange("M104 S200 G1 X10\n"), "error:20\r\n");
+  EXPECT_EQ(machine.motions.size(), 2u);
+  // The fan's S255 is not the spindle's speed.
+  EXPECT_EQ(exchange("$G\n"), "[GC:G1 G54 G17 G21 G91 G94 M5 M9 T0 F600 S0]\r\nok\r\n");
+}
+
 // Grbl 1.1's protocol loop ends a line at every CR and every LF and answers empty lines, so CR LF
 // is two lines, the second empty: two `ok`.
 TEST_F(GrblLink, EveryCrAndEveryLfEndsALineAndEmptyLinesAreAnswered) {

@@ -44,7 +44,9 @@ struct GcodeBlock {
   uint8_t m_groups_present = 0;   ///< bit per MGroup
   uint32_t words_present = 0;     ///< bit per letter of value words (F, I, J, K, L, N, P, R, S, T, X, Y, Z, E)
   double values[26] = {};         ///< value of each present word, as written (units not applied)
-  bool ignored = false;           ///< a printer housekeeping line accepted without action
+  /// The line held a printer housekeeping M code (ParserOptions::accept_printer_codes): that code
+  /// and the words after it (its parameters) are not in the block; the words before it are.
+  bool printer_housekeeping = false;
 
   bool has_g(GGroup group) const { return (g_groups_present >> static_cast<int>(group)) & 1u; }
   bool has_m(MGroup group) const { return (m_groups_present >> static_cast<int>(group)) & 1u; }

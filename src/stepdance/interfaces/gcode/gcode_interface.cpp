@@ -133,10 +133,26 @@ void GCodeInterface::drain_pending() {
         break;
       }
     }
-    if (!done) return;  // the planner is full: try again next loop pass
+    if (!done) break;  // the planner is full: try again next loop pass
     pending_head_ = (pending_head_ + 1) % kPendingCapacity;
     --pending_count_;
   }
+  answer_when_taken();
+}
+
+// The planner end of a G-code line's path: the line is answered once nothing of it is left to feed
+// (no arc chords, no dwell); a spindle change or M0 waiting for the motion to stop does not hold its
+// `ok` back.
+void GCodeInterface::take_line_end(gcode::LineAnswer& answer) {
+  line_answer_ = &answer;
+  answer_when_taken();
+}
+
+void GCodeInterface::answer_when_taken() {
+  if (line_answer_ == nullptr || line_in_progress()) return;
+  gcode::LineAnswer* answer = line_answer_;
+  line_answer_ = nullptr;
+  answer->taken();
 }
 
 // Speed < 0 marks a rapid (G0): as fast as the axis limits ($110…) allow along the move, scaled by
@@ -263,7 +279,7 @@ bool GCodeInterface::ready_for_line() {
   return pending_count_ == 0 && !interpolator_.stop_in_progress() && interpolator_.slots_remaining >= 3;
 }
 
-bool GCodeInterface::line_in_progress() {
+bool GCodeInterface::line_in_progress() const {
   for (int i = 0; i < pending_count_; ++i) {
     const Pending& request = pending_[(pending_head_ + i) % kPendingCapacity];
     if (request.kind == Pending::Kind::kMotion && request.motion.kind == MotionKind::kArc) return true;
@@ -288,6 +304,7 @@ bool GCodeInterface::soft_reset() {
   const bool moving = interpolator_.current_speed() > 0.0;
   interpolator_.emergency_stop();
   pending_count_ = 0;
+  line_answer_ = nullptr;  // the link answers the line the reset interrupts
   arc_next_chord_ = 0;
   dwelling_ = false;
   holding_ = false;
@@ -302,6 +319,7 @@ void GCodeInterface::jog_cancel() {
   pending_count_ = 0;
   dwelling_ = false;
   interpolator_.reset_block_queue();
+  answer_when_taken();  // nothing of a line is left to feed
 }
 
 void GCodeInterface::set_overrides(uint8_t feed_percent, uint8_t rapid_percent) {

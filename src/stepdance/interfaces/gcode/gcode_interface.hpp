@@ -113,7 +113,7 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   uint16_t queue_slots_free() override;
   uint16_t queue_slots_total() override;
   bool ready_for_line() override;
-  bool line_in_progress() override;
+  void take_line_end(gcode::LineAnswer& answer) override;
   void feed_hold() override;
   void cycle_start() override;
   bool soft_reset() override;
@@ -128,6 +128,8 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
 
   void push_pending(const Pending& request);
   void drain_pending();
+  bool line_in_progress() const;
+  void answer_when_taken();
   bool queue_line_motion(const gcode::Motion& motion, double speed_mm_per_s, double time_s);
   bool feed_arc(const gcode::Motion& arc);
   bool act_when_idle(const Pending& request);
@@ -141,6 +143,7 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   Pending pending_[kPendingCapacity];
   int pending_head_ = 0;
   int pending_count_ = 0;
+  gcode::LineAnswer* line_answer_ = nullptr;  // the last line's, until its requests are all planned
   uint32_t arc_next_chord_ = 0;  // chords of the pending arc already queued
   uint32_t arc_chords_left_this_pass_ = kArcChordsPerLoopPass;
   uint32_t arc_chords_queued_ = 0;

@@ -345,10 +345,9 @@ void LineExecution::apply_program_flow(LinePlan& plan) {
 }
 
 // A word that no command used is an error, not ignored (Grbl: error:31 for axis words, error:36 for
-// others), so a typo such as "G1 X10 Q5" never runs half understood. Printer housekeeping lines
-// (block.ignored) succeed without effect.
+// others), so a typo such as "G1 X10 Q5" never runs half understood. A printer housekeeping code is
+// not in the block (the parser left it and its parameters out), so the rest of its line runs.
 GrblError LineExecution::run(LinePlan& plan) {
-  if (block_.ignored) return GrblError::kOk;
   apply_modes();
   GrblError error = apply_feed();
   if (error == GrblError::kOk) error = apply_spindle_and_dwell(plan);
@@ -404,7 +403,7 @@ double GcodeInterpreter::work_offset_mm(int axis) const {
   return system + state_.g92_mm[axis] + tool_length;
 }
 
-// Only when the machine is idle (GrblProtocol::sync_position_when_idle): something else may have moved
+// Only when the machine is idle (InterpreterStage::adopt_position_when_idle): something else may have moved
 // the axes between programs (a knob, homing), and the next line must start from where they are.
 void GcodeInterpreter::set_position_mm(const double (&machine_mm)[kAxisCount]) {
   for (int axis = 0; axis < kAxisCount; ++axis) state_.position_mm[axis] = machine_mm[axis];

@@ -119,10 +119,12 @@ constexpr CommandEntry kMCommands[] = {
 };
 
 /// Printer housekeeping M numbers accepted without action when printer codes are on.
-// When printer codes are on, a line with one of these M codes is accepted and skipped as a whole (the
-// motion planner has no heaters or fans); see docs/gcode.md.
+// When printer codes are on, one of these M codes and the words after it (its parameters) are left out
+// of the block (the motion planner has no heaters or fans); the words before it stay; see docs/gcode.md.
 constexpr uint16_t kPrinterHousekeeping[] = {73,  84,  104, 105, 106, 107, 109, 115, 117, 140,
                                              190, 201, 202, 203, 204, 205, 220, 221, 862, 900};
+/// Housekeeping codes whose parameters are free text: M117's message, M862's quoted model names.
+constexpr uint16_t kPrinterTextCodes[] = {117, 862};
 
 template <size_t N>
 const CommandEntry* find_command(const CommandEntry (&table)[N], CommandCode code) {
@@ -141,11 +143,24 @@ GrblError unknown_command(const CommandEntry (&table)[N], CommandCode code) {
   return GrblError::kUnsupportedCommand;
 }
 
-bool is_printer_housekeeping(double value) {
-  for (uint16_t number : kPrinterHousekeeping) {
+template <size_t N>
+bool is_listed(const uint16_t (&numbers)[N], double value) {
+  for (uint16_t number : numbers) {
     if (floor(value) == number) return true;
   }
   return false;
+}
+
+// What follows a housekeeping M code is its parameters (M106 S255, M204 P500 T1000), not the line's
+// words, so the fan's S never becomes the spindle speed. Such parameters are never G or M words: one
+// there is a command the line would silently lose, so the line is refused (error:20), nothing run.
+GrblError skip_housekeeping_parameters(Cursor& cursor, double code) {
+  if (is_listed(kPrinterTextCodes, code)) return GrblError::kOk;  // the rest is text
+  for (char letter = cursor.peek(); letter != 0; letter = cursor.peek()) {
+    if (letter == 'G' || letter == 'M') return GrblError::kUnsupportedCommand;
+    cursor.advance();
+  }
+  return GrblError::kOk;
 }
 
 // G59.1–G59.3 exist in LinuxCNC but not in Grbl: error:29, as Grbl answers.
@@ -242,10 +257,9 @@ GrblError parse_line(const char* text, size_t length, GcodeBlock& out, const Par
     if (!read_number(cursor, value)) return GrblError::kBadNumberFormat;
     if (exponent) return GrblError::kUnsupportedCommand;
     GrblError error = GrblError::kOk;
-    if (letter == 'M' && options.accept_printer_codes && is_printer_housekeeping(value)) {
-      out = GcodeBlock{};
-      out.ignored = true;
-      return GrblError::kOk;
+    if (letter == 'M' && options.accept_printer_codes && is_listed(kPrinterHousekeeping, value)) {
+      out.printer_housekeeping = true;
+      return skip_housekeeping_parameters(cursor, value);
     }
     if (letter == 'G' || letter == 'M') {
       CommandCode code = 0;

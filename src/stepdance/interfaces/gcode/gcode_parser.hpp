@@ -10,9 +10,12 @@ namespace stepdance::gcode {
 
 /// Choices about which dialect the parser accepts.
 struct ParserOptions {
-  /// Accept 3D-printer files: M82/M83 set the E mode, and housekeeping lines (temperatures, fans,
+  /// Accept 3D-printer files: M82/M83 set the E mode, and housekeeping codes (temperatures, fans,
   /// progress, messages: M73, M84, M104–M109, M140, M190, M106/M107, M115, M117, M201–M205,
-  /// M220/M221, M862.x, M900) are accepted without action. Off: such M codes are error 20.
+  /// M220/M221, M862.x, M900) are accepted without action: the code and the words after it (its
+  /// parameters; M117's and M862's are free text) are left out of the block, the words before it
+  /// stay (`G1 X10 M106 S255` moves to X10). A G or M word among such parameters would be lost,
+  /// so that line is error 20. Off: such M codes are error 20.
   bool accept_printer_codes = true;
 };
 

@@ -4,6 +4,7 @@
 #include <stdint.h>
 
 #include "stepdance/interfaces/gcode/grbl_error.hpp"
+#include "stepdance/interfaces/gcode/line_answer.hpp"
 #include "stepdance/interfaces/gcode/motion.hpp"
 
 namespace stepdance::gcode {
@@ -16,7 +17,8 @@ enum class MotionState : uint8_t {
   kJog,      ///< executing a jog
 };
 
-/// Motion side of a Grbl link. Motions and actions arrive through GcodeSink in program order;
+/// Motion side of a Grbl link, the last stage of a G-code line's path (its planner). Motions and
+/// actions arrive through GcodeSink in program order, then the line's end (take_line_end);
 /// ready_for_line() says whether the largest request one line can make (two motions, an arc
 /// among them, and an action) fits now. All calls come from the loop.
 class GrblMachine : public GcodeSink {
@@ -34,10 +36,11 @@ class GrblMachine : public GcodeSink {
   virtual uint16_t queue_slots_total() = 0;
   /// Room for one more line's requests.
   virtual bool ready_for_line() = 0;
-  /// True while the machine is still taking the requests of the line executed last (an arc's
-  /// chords, fed to the planner across loop passes). Its `ok` waits until then, as Grbl answers
-  /// an arc only once all of it is planned. Context: loop.
-  virtual bool line_in_progress() { return false; }
+  /// Ends a line whose requests were all handed over (on_motion, on_dwell…): the machine calls
+  /// answer.taken() once its planner has taken every one of them, at once or on a later loop pass
+  /// (an arc's chords fed across passes, a dwell's time), as Grbl answers an arc only once all of
+  /// it is planned. The default takes everything at once. Context: loop.
+  virtual void take_line_end(LineAnswer& answer) { answer.taken(); }
 
   /// `!`: decelerate to a stop within the acceleration limits, keep the queue.
   virtual void feed_hold() = 0;

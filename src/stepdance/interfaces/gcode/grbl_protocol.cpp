@@ -1,8 +1,6 @@
 // The Grbl link's main path: realtime bytes, lines, G-code execution, replies.
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
 
-#include "stepdance/interfaces/gcode/arc_geometry.hpp"
-
 namespace stepdance::gcode {
 namespace {
 
@@ -20,6 +18,7 @@ void GrblProtocol::begin(ByteStream& stream, GrblMachine& machine, NonvolatileSt
   stream_ = &stream;
   machine_ = &machine;
   store_ = store;
+  interpreting_.begin(machine, settings_);
   report_welcome();
   load_stored_settings();
   flush_replies();
@@ -46,17 +45,20 @@ void GrblProtocol::poll() {
   flush_replies();
 }
 
-// Lines are taken only while the machine can accept them (ready_for_line) and their largest reply
-// fits: the sender's character-counting or send-response flow control then sees Grbl's own pacing.
+// Lines are taken only while the machine can accept them (ready_for_line), their largest reply fits
+// and the last one has its reply: the sender's character-counting or send-response flow control then
+// sees Grbl's own pacing, one line at a time as Grbl's gc_execute_line runs them.
 void GrblProtocol::serve_lines() {
-  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done() && answer_line_when_taken(); ++i) {
+  for (int i = 0; i < kLinesPerPoll && answer_homing_when_done() && line_reply_.settle(); ++i) {
     if (soft_limit_ != SoftLimit::kNone) return;
     if (reply_space() < kLargestReplyBytes || !machine_->ready_for_line()) return;
     ReceivedLine line;
     if (!receiver_.next_line(line)) return;
-    execute_line(line);
+    route_line(line);
     receiver_.take_line();
+    if (line_reply_.out_of_travel()) begin_soft_limit_alarm();
   }
+  line_reply_.settle();
 }
 
 // Grbl 1.1's realtime commands: ? status, ! feed hold (cancels a jog instead), ~ cycle start, 0x18
@@ -119,52 +121,29 @@ void GrblProtocol::handle_override(uint8_t byte) {
   reports_until_overrides_ = 0;
 }
 
-// Grbl 1.1's order: an over-long line, an empty one, a `$` command, a lock, then G-code.
-void GrblProtocol::execute_line(const ReceivedLine& line) {
-  GrblError error = GrblError::kOk;
-  if (line.overflowed) {
-    error = GrblError::kLineOverflow;
-  } else if (line.length == 0) {
-    error = GrblError::kOk;  // empty or comment only: answered, for the sender's count
-  } else if (line.text[0] == '$') {
-    error = execute_system(line.text + 1, line.length - 1);
-  } else if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) {
-    error = GrblError::kLocked;
-  } else {
-    error = execute_gcode(line.text, line.length);
-  }
-  if (soft_limit_ != SoftLimit::kNone) return;  // answered by the reset that ends the alarm, as on Grbl
-  if (error == GrblError::kOk) {
-    // `$H` is answered when its routine ends, a line still being taken once it has been.
-    if (!homing_reply_pending_ && machine_->line_in_progress()) ok_owed_ = true;
-    if (!homing_reply_pending_ && !ok_owed_) send_text("ok");
-  } else {
+// Grbl 1.1's order: an over-long line, an empty one, a `$` command, a lock, then G-code. A G-code line
+// is handed down its path once (parser, interpreter, the machine's planner) and not seen here again:
+// the stage that finishes with it answers through line_reply_, which serve_lines() writes out.
+void GrblProtocol::route_line(const ReceivedLine& line) {
+  if (line.overflowed) return answer(GrblError::kLineOverflow);
+  if (line.length == 0) return answer(GrblError::kOk);  // empty or comment only: answered, for the count
+  if (line.text[0] == '$') return answer(execute_system(line.text + 1, line.length - 1));
+  if (alarm_ != 0 || machine_->motion_state() == MotionState::kJog) return answer(GrblError::kLocked);
+  line_reply_.open();
+  parsing_.take(line.text, line.length, line_reply_);
+}
+
+// The reply to a line the link answers itself (`$` commands, refusals before any G-code is read); `$H`
+// is answered when its routine ends.
+void GrblProtocol::answer(GrblError error) {
+  if (error != GrblError::kOk) {
     char storage[16];
     TextWriter reply(storage, sizeof(storage));
     reply.text("error:").unsigned_number(grbl_number(error));
     send_line(reply);
+  } else if (!homing_reply_pending_) {
+    send_text("ok");
   }
-}
-
-// Plan, check, commit: the whole line is checked against the soft limits before any of it runs (a G28
-// with two legs, an arc by its box), so a refused line leaves no partial motion.
-GrblError GrblProtocol::execute_gcode(const char* text, size_t length) {
-  GcodeBlock block;
-  const GrblError syntax = parse_line(text, length, block, parser_options_);
-  if (syntax != GrblError::kOk) return syntax;
-  const bool empty = block.words_present == 0 && block.g_groups_present == 0 && block.m_groups_present == 0;
-  if (empty) return GrblError::kOk;
-  sync_position_when_idle();
-  LinePlan plan;
-  const GrblError error = interpreter_.plan(block, plan);
-  if (error != GrblError::kOk) return error;
-  for (int i = 0; i < plan.motion_count; ++i) {
-    if (within_travel(plan.motions[i])) continue;
-    begin_soft_limit_alarm();  // nothing of the line runs, and nothing after it until a reset
-    return GrblError::kOk;
-  }
-  interpreter_.commit(plan, check_mode_ ? nullptr : machine_);
-  return GrblError::kOk;
 }
 
 // A target outside the travel with soft limits on: as Grbl's limits_soft_check, a moving
@@ -188,30 +167,6 @@ void GrblProtocol::finish_soft_limit_stop() {
   send_text("[MSG:Reset to continue]");
 }
 
-bool GrblProtocol::within_travel(const Motion& motion) const {
-  if (!settings_.soft_limits()) return true;
-  // Machine space is [0, $130..$132] from the power-on (or homed) origin. A straight move is
-  // checked at its end (it starts where the last one ended); an arc by the box it sweeps,
-  // worked out in closed form, however many chords it makes.
-  double low[kAxisCount];
-  double high[kAxisCount];
-  for (int axis = 0; axis < kAxisCount; ++axis) low[axis] = high[axis] = motion.end_mm[axis];
-  if (motion.kind == MotionKind::kArc) arc_bounds_mm(motion, low, high);
-  for (int axis = 0; axis < kOffsetAxisCount; ++axis) {
-    if (low[axis] < 0.0 || high[axis] > settings_.max_travel_mm(axis)) return false;
-  }
-  return true;
-}
-
-// The interpreter's position is only refreshed when idle: while moving, the interpreter is ahead of
-// the machine (it plans queued lines), and overwriting it would break relative moves.
-void GrblProtocol::sync_position_when_idle() {
-  if (machine_->motion_state() != MotionState::kIdle) return;
-  double position[kAxisCount];
-  machine_->position_mm(position);
-  interpreter_.set_position_mm(position);
-}
-
 // While `$H` runs no further line is read; when its routine ends the line gets its `ok`, after
 // `ALARM:9` (homing failed) if an axis did not home. Returns true once no `$H` answer is owed.
 bool GrblProtocol::answer_homing_when_done() {
@@ -219,15 +174,6 @@ bool GrblProtocol::answer_homing_when_done() {
   if (machine_->homing_in_progress()) return false;
   homing_reply_pending_ = false;
   if (!machine_->homing_succeeded()) raise_alarm(kAlarmHomingFailed);
-  send_text("ok");
-  return true;
-}
-
-// A line whose work outlasts its parsing (an arc still being fed, a dwell) gets its ok when it is done,
-// as Grbl answers after gc_execute_line returns; streaming senders count on that order.
-bool GrblProtocol::send_owed_ok() {
-  if (machine_->line_in_progress() || reply_space() < 4) return false;
-  ok_owed_ = false;
   send_text("ok");
   return true;
 }
@@ -246,16 +192,13 @@ void GrblProtocol::raise_alarm(uint8_t code) {
 // it gets its `ok` (after ALARM:3 if the machine was moving) before the welcome.
 void GrblProtocol::soft_reset() {
   reset_requested_ = false;
-  const bool line_owed = ok_owed_ || homing_reply_pending_ || soft_limit_ != SoftLimit::kNone;
+  const bool line_owed = line_reply_.owed() || homing_reply_pending_ || soft_limit_ != SoftLimit::kNone;
   soft_limit_ = SoftLimit::kNone;
   homing_reply_pending_ = false;
-  ok_owed_ = false;
+  line_reply_.clear();
   const bool was_moving = machine_->soft_reset();
   receiver_.clear();
-  const CoordinateData coordinates = interpreter_.coordinate_data();
-  interpreter_ = GcodeInterpreter{};
-  interpreter_.set_coordinate_data(coordinates);
-  check_mode_ = false;
+  interpreting_.restart();
   feed_override_percent_ = rapid_override_percent_ = spindle_override_percent_ = 100;
   status_requested_ = false;
   if (was_moving) raise_alarm(3);  // Grbl's "reset while in motion": position may be lost

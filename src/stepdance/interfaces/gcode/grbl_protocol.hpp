@@ -6,8 +6,9 @@
 
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/nonvolatile_store.hpp"
-#include "stepdance/interfaces/gcode/gcode_interpreter.hpp"
-#include "stepdance/interfaces/gcode/gcode_parser.hpp"
+#include "stepdance/interfaces/gcode/gcode_interpreter_stage.hpp"
+#include "stepdance/interfaces/gcode/gcode_parser_stage.hpp"
+#include "stepdance/interfaces/gcode/grbl_line_reply.hpp"
 #include "stepdance/interfaces/gcode/grbl_machine.hpp"
 #include "stepdance/interfaces/gcode/grbl_receiver.hpp"
 #include "stepdance/interfaces/gcode/grbl_settings.hpp"
@@ -21,9 +22,12 @@ namespace stepdance::gcode {
 /// (realtime bytes act at once, even while the motion queue is full), executes complete lines
 /// while the machine has room, and replies `ok` or `error:N` only after a line is validated.
 /// Replies wait in a 1 KiB link::ReplyRing; a line is taken only when its largest reply fits, so
-/// nothing is torn or dropped when the host reads slowly. A line goes one way: the receiver's
-/// line, the parser, the interpreter's plan (nothing changed yet), the travel check, the commit
-/// that hands its requests to the machine. Context: loop only.
+/// nothing is torn or dropped when the host reads slowly. A G-code line goes one way: the
+/// receiver hands it out, the link hands it to the ParserStage, which hands its block to the
+/// InterpreterStage (plan, travel check, commit), which hands its requests to the machine's
+/// planner; whichever stage finishes with it answers through the line's GrblLineReply (never
+/// back into the link), and the link writes that reply out, or starts the soft-limit alarm for a
+/// line out of travel. Context: loop only.
 class GrblProtocol final : private RealtimeHandler {
  public:
   /// Starts the link: loads the settings the host stored earlier (if a store is given), sends
@@ -35,15 +39,12 @@ class GrblProtocol final : private RealtimeHandler {
   void poll();
 
   GrblSettings& settings() { return settings_; }
-  const GcodeInterpreter& interpreter() const { return interpreter_; }
+  /// The G-code lines' interpreter (modes, offsets, position). Context: loop.
+  const GcodeInterpreter& interpreter() const { return interpreting_.interpreter(); }
   /// True while an alarm locks out G-code (cleared by `$X`, `$H` or a reset that was not moving).
   bool alarm_active() const { return alarm_ != 0; }
   /// Raises a Grbl alarm (ALARM:N is sent); e.g. a limit or fault from the machine.
   void raise_alarm(uint8_t code);
-  bool answer_homing_when_done();
-  /// Sends the `ok` of a line the machine was still taking (line_in_progress()) once it has.
-  /// Returns true once no such `ok` is owed.
-  bool answer_line_when_taken() { return !ok_owed_ || send_owed_ok(); }
 
   /// Replies that found no room (should stay 0: lines are taken only when their reply fits).
   uint32_t replies_dropped() const { return replies_.dropped(); }
@@ -60,8 +61,9 @@ class GrblProtocol final : private RealtimeHandler {
 
   LinkState link_state();
   void serve_lines();
-  void execute_line(const ReceivedLine& line);
-  GrblError execute_gcode(const char* text, size_t length);
+  bool answer_homing_when_done();
+  void route_line(const ReceivedLine& line);
+  void answer(GrblError error);
   void begin_soft_limit_alarm();
   void finish_soft_limit_stop();
   /// A `$` command: its handler gets what follows the command letter; `states` (a bit per
@@ -96,10 +98,7 @@ class GrblProtocol final : private RealtimeHandler {
   GrblError execute_restore(const char* text, size_t length);
   void load_stored_settings();
   void save_stored_settings();
-  bool within_travel(const Motion& motion) const;
   void soft_reset();
-  bool send_owed_ok();
-  void sync_position_when_idle();
 
   void send_line(const TextWriter& line);
   void send_text(const char* text);
@@ -122,13 +121,11 @@ class GrblProtocol final : private RealtimeHandler {
   NonvolatileStore* store_ = nullptr;
   GrblReceiver receiver_;
   GrblSettings settings_;
-  GcodeInterpreter interpreter_;
-  ParserOptions parser_options_;
+  InterpreterStage interpreting_;
+  ParserStage parsing_{interpreting_};
   uint8_t alarm_ = 0;
   SoftLimit soft_limit_ = SoftLimit::kNone;
   bool homing_reply_pending_ = false;  // `$H` is answered when its routine ends, as Grbl does
-  bool ok_owed_ = false;               // a line's `ok`, sent once the machine has taken all of it
-  bool check_mode_ = false;
   bool status_requested_ = false;
   bool reset_requested_ = false;
   uint8_t feed_override_percent_ = 100;
@@ -138,6 +135,7 @@ class GrblProtocol final : private RealtimeHandler {
   uint8_t reports_until_overrides_ = 0;
   double last_wco_mm_[kOffsetAxisCount] = {};
   link::ReplyRing<kReplyBufferBytes> replies_;
+  GrblLineReply line_reply_{replies_};  // the G-code line down its path, until it is answered
 };
 
 }  // namespace stepdance::gcode

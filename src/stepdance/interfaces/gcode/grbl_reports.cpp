@@ -48,13 +48,13 @@ void GrblProtocol::report_status() {
   line.character('<');
   if (alarm_ != 0) {
     line.text("Alarm");
-  } else if (check_mode_) {
+  } else if (interpreting_.check_mode()) {
     line.text("Check");
   } else {
     line.text(state_name(state, machine_->hold_complete()));
   }
   double offset[kOffsetAxisCount];
-  for (int axis = 0; axis < kOffsetAxisCount; ++axis) offset[axis] = interpreter_.work_offset_mm(axis);
+  for (int axis = 0; axis < kOffsetAxisCount; ++axis) offset[axis] = interpreter().work_offset_mm(axis);
   append_position(line, offset);
   append_buffer_and_feed(line);
   append_offsets_and_overrides(line, offset, state != MotionState::kIdle);
@@ -82,7 +82,7 @@ void GrblProtocol::append_buffer_and_feed(TextWriter& line) {
         static_cast<uint32_t>(receiver_.bytes_free()));
   }
   const double feed = machine_->feed_now_mm_per_min();
-  const double speed = interpreter_.modal().spindle == 50 ? 0.0 : interpreter_.modal().spindle_speed;
+  const double speed = interpreter().modal().spindle == 50 ? 0.0 : interpreter().modal().spindle_speed;
   line.text("|FS:").fixed(settings_.report_inches() ? feed / kMmPerInch : feed, 0).character(',').fixed(speed, 0);
 }
 
@@ -127,7 +127,7 @@ void GrblProtocol::report_settings() {
 // PRB is zero and unsuccessful.
 void GrblProtocol::report_parameters() {
   static const char* const kSystems[CoordinateData::kSystemCount] = {"G54", "G55", "G56", "G57", "G58", "G59"};
-  const CoordinateData& data = interpreter_.coordinate_data();
+  const CoordinateData& data = interpreter().coordinate_data();
   char storage[64];
   TextWriter line(storage, sizeof(storage));
   for (int system = 0; system < CoordinateData::kSystemCount; ++system) {
@@ -146,18 +146,18 @@ void GrblProtocol::report_parameters() {
   send_line(line.character(']'));
   line.clear();
   line.text("[G92:");
-  append_axes(line, interpreter_.g92_offset_mm(), kOffsetAxisCount);
+  append_axes(line, interpreter().g92_offset_mm(), kOffsetAxisCount);
   send_line(line.character(']'));
   line.clear();
   line.text("[TLO:");
-  append_axes(line, &interpreter_.modal().tool_length_offset_mm, 1);
+  append_axes(line, &interpreter().modal().tool_length_offset_mm, 1);
   send_line(line.character(']'));
   send_text("[PRB:0.000,0.000,0.000:0]");
 }
 
 // $G: the modal state as Grbl prints it; F keeps one decimal in inches.
 void GrblProtocol::report_parser_state() {
-  const ModalState& modal = interpreter_.modal();
+  const ModalState& modal = interpreter().modal();
   char storage[96];
   TextWriter line(storage, sizeof(storage));
   line.text("[GC:G").unsigned_number(modal.motion / 10u);

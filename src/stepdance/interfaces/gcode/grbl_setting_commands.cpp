@@ -64,7 +64,7 @@ GrblError GrblProtocol::execute_restore(const char* text, size_t length) {
     settings_.restore_defaults();
     save_stored_settings();
   }
-  if (text[0] != '$') interpreter_.set_coordinate_data(CoordinateData{});
+  if (text[0] != '$') interpreting_.interpreter().set_coordinate_data(CoordinateData{});
   send_text("[MSG:Restoring defaults]");
   reset_requested_ = true;  // as Grbl: a reset follows, so everything starts from the new values
   return GrblError::kOk;

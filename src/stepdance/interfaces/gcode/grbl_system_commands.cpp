@@ -2,12 +2,13 @@
 #include <string.h>
 
 #include "stepdance/interfaces/gcode/grbl_protocol.hpp"
+#include "stepdance/interfaces/gcode/travel_check.hpp"
 
 namespace stepdance::gcode {
 
 GrblProtocol::LinkState GrblProtocol::link_state() {
   if (alarm_ != 0) return LinkState::kAlarm;
-  if (check_mode_) return LinkState::kCheck;
+  if (interpreting_.check_mode()) return LinkState::kCheck;
   switch (machine_->motion_state()) {
     case MotionState::kRun: return LinkState::kRun;
     case MotionState::kHolding: return LinkState::kHold;
@@ -73,13 +74,13 @@ GrblError GrblProtocol::dollar_parser_state(const char*, size_t length) {
 
 GrblError GrblProtocol::dollar_check_mode(const char*, size_t length) {
   if (length != 0) return GrblError::kInvalidDollarStatement;
-  if (check_mode_) {
+  if (interpreting_.check_mode()) {
     send_text("[MSG:Disabled]");
     reset_requested_ = true;  // as Grbl: leaving check mode resets the parser
     return GrblError::kOk;
   }
   if (link_state() != LinkState::kIdle) return GrblError::kNotIdle;  // not in alarm either
-  check_mode_ = true;
+  interpreting_.set_check_mode(true);
   send_text("[MSG:Enabled]");
   return GrblError::kOk;
 }
@@ -147,7 +148,7 @@ GrblError check_jog_words(const GcodeBlock& block) {
   constexpr uint16_t kAllowedGroups = group_bit(GGroup::kUnits) | group_bit(GGroup::kDistance) | group_bit(GGroup::kNonModal);
   const bool only_g53 = !block.has_g(GGroup::kNonModal) || block.g_code(GGroup::kNonModal) == 530;
   if ((block.words_present & ~kAllowedWords) != 0 || (block.g_groups_present & ~kAllowedGroups) != 0 ||
-      block.m_groups_present != 0 || !only_g53 || block.ignored) {
+      block.m_groups_present != 0 || !only_g53 || block.printer_housekeeping) {
     return GrblError::kInvalidJogCommand;
   }
   if (!block.has_word('F')) return GrblError::kUndefinedFeedRate;
@@ -160,7 +161,7 @@ GrblError check_jog_words(const GcodeBlock& block) {
 // than raising an alarm, so a jogging dial can run into the limit safely.
 GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
   GcodeBlock block;
-  GrblError error = parse_line(text, length, block, parser_options_);
+  GrblError error = parse_line(text, length, block, parsing_.options());
   if (error == GrblError::kOk) error = check_jog_words(block);
   if (error != GrblError::kOk) return error;
   // A jog is a G1 at its own feed that leaves the parser's modes as they were: planned, never
@@ -168,12 +169,12 @@ GrblError GrblProtocol::execute_jog(const char* text, size_t length) {
   block.g[static_cast<int>(GGroup::kMotion)] = 10;
   block.g[static_cast<int>(GGroup::kFeedMode)] = 940;
   block.g_groups_present |= group_bit(GGroup::kMotion) | group_bit(GGroup::kFeedMode);
-  sync_position_when_idle();
+  interpreting_.adopt_position_when_idle();
   LinePlan plan;
-  error = interpreter_.plan(block, plan);
+  error = interpreting_.interpreter().plan(block, plan);
   if (error != GrblError::kOk) return error;
   if (plan.motion_count == 0) return GrblError::kInvalidJogCommand;
-  if (!within_travel(plan.motions[0])) return GrblError::kTravelExceeded;
+  if (!within_travel(settings_, plan.motions[0])) return GrblError::kTravelExceeded;
   machine_->jog(plan.motions[0]);
   return GrblError::kOk;
 }
