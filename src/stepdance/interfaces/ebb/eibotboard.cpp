@@ -26,7 +26,7 @@ Status Eibotboard::begin_stream(ByteStream&) {
 }
 
 // mm per EBB motor step, where an EBB step is a 1/16 microstep (the AxiDraw moves 80 per mm at 1/16,
-// ebb-protocol.md). Checked at start against the channels' own steps/mm (eibotboard_start.cpp).
+// ebb-protocol.md). Checked at start against the channels' own steps/mm (eibotboard_wiring.cpp).
 void Eibotboard::set_ratio_xy(float output_units_mm, float input_units_steps) {
   if (input_units_steps == 0.0f || !isfinite(output_units_mm)) return;
   mm_per_sixteenth_ = static_cast<double>(output_units_mm) / input_units_steps;

@@ -91,10 +91,11 @@ class Eibotboard : public Block, public MoveOutputPorts, public link::LinkedProt
   /// loop pass). Context: loop.
   bool is_idle() const;
 
-  /// At start (dance_start): takes steps/mm from the channels output_x and output_y reach, directly
-  /// or through the block they feed (a kinematics); false, with a kBadConfiguration fault saying
-  /// why, when those channels differ or set_ratio_xy() disagrees with them. Context: loop.
-  bool accept_frame_period(uint32_t period_us) override;
+  /// At start (dance_start), after the frame period: takes steps/mm from the channels output_x
+  /// and output_y reach, directly or through the block they feed (a kinematics); false, with a
+  /// kBadConfiguration fault saying why, when those channels differ or set_ratio_xy() disagrees
+  /// with them. Context: loop.
+  bool check_wiring() override;
   /// Serves the link: reads commands while the FIFO has room, replies. Context: loop.
   void loop() override;
   /// One tick of EBB motion; sets and pushes the outputs. Context: frame ISR.
