@@ -68,6 +68,21 @@ class Block {
     (void)period_us;
     return true;
   }
+  /// Called by the engine at start, once every block has accepted the frame period and before
+  /// the stages are ordered: a block whose setup depends on what its ports are mapped to (the
+  /// sketch's wiring) reads and checks it here; a block that cannot work with it reports why on
+  /// the fault path and returns false, and the engine does not start. Default: any wiring.
+  /// Context: loop.
+  virtual bool check_wiring() { return true; }
+  /// Whether `input`, one of this block's ports, drives a motor in steps, and if so the world
+  /// units (mm) one step is: how an interface that speaks in motor steps finds its steps/mm
+  /// through the port graph, without knowing the class. Default: false (no steps).
+  /// Context: loop.
+  virtual bool world_units_per_step(const BlockPort& input, double& world_units) const {
+    (void)input;
+    (void)world_units;
+    return false;
+  }
 
  protected:
   /// Unregisters the block. Blocks are never deleted through a Block pointer (they are globals

@@ -84,13 +84,14 @@ Status Engine::add_frame_function(FrameFunction function) {
   return Status::kOk;
 }
 
-// Every block checks the frame period first (a refusal leaves nothing running), then the stages are
-// ordered once, here, not per frame. A fatal fault in force refuses the start until clear_fault().
+// Every block checks the frame period first, then its wiring (a refusal leaves nothing running),
+// then the stages are ordered once, here, not per frame. A fatal fault in force refuses the start until clear_fault().
 // The frame budget is the CPU cycles in one frame period, the denominator of the load figures.
 Status Engine::start() {
   if (fault_reason() != FaultReason::kNone) return Status::kBadArgument;
   if (running_) return Status::kOk;
   if (!blocks_accept_frame_period()) return Status::kBadArgument;
+  if (!blocks_accept_wiring()) return Status::kBadArgument;
   order_stages();
   running_ = true;
   frame_budget_cycles_ = hal::cycles_per_second() / frame_rate_hz();
@@ -109,6 +110,16 @@ bool Engine::blocks_accept_frame_period() {
   for_each_block(
       [](Block* block, void* all) {
         if (!block->accept_frame_period(frame_period_us())) *static_cast<bool*>(all) = false;
+      },
+      &accepted);
+  return accepted;
+}
+
+bool Engine::blocks_accept_wiring() {
+  bool accepted = true;
+  for_each_block(
+      [](Block* block, void* all) {
+        if (!block->check_wiring()) *static_cast<bool*>(all) = false;
       },
       &accepted);
   return accepted;

@@ -91,6 +91,8 @@ class Engine {
   void order_stages();
   // Asks every block whether it can run at the chosen period (each refusal is on the fault path).
   bool blocks_accept_frame_period();
+  // Asks every block whether it can work with the ports its sketch mapped (check_wiring()).
+  bool blocks_accept_wiring();
 
   Registry registries_[kNumStages];
   FixedList<FrameFunction, EngineCapacity::kFrameFunctions> early_functions_;

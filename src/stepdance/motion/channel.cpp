@@ -45,6 +45,14 @@ bool Channel::accept_frame_period(uint32_t period_us) {
   return false;
 }
 
+// What an interface that speaks in motor steps (the EBB, Grbl's $100…) asks the ports it reaches:
+// a channel's target is in steps, so its input ratio is the world units of one step.
+bool Channel::world_units_per_step(const BlockPort& input, double& world_units) const {
+  if (&input != &input_target_position && &input != &input_target_position_2) return false;
+  world_units = input.ratio();
+  return true;
+}
+
 Status Channel::start(OutputPort* port, uint8_t signal) {
   port_ = port;
   signal_ = signal;

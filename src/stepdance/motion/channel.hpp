@@ -37,6 +37,9 @@ class Channel : public Block {
   /// Refuses (fault path) a period at which its output port cannot carry its signal, e.g. E on
   /// a port begun with OUTPUT_FRAME_8US. Context: loop (dance_start).
   bool accept_frame_period(uint32_t period_us) override;
+  /// Both target inputs drive the motor: one step is the inputs' ratio in world units (mm per
+  /// step, set_ratio()); false for any other port. Context: loop.
+  bool world_units_per_step(const BlockPort& input, double& world_units) const override;
   /// Default number of samples of the EMA filter (α = 1/n).
   static constexpr uint16_t kDefaultFilterSamples = 20;
 

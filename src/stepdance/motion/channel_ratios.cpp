@@ -1,16 +1,24 @@
-// ChannelRatios: the channels an output reaches, found through the port registry.
+// ChannelRatios: the motor steps an output reaches, found through the ports it is mapped to.
 #include "stepdance/motion/channel_ratios.hpp"
 
 #include <math.h>
-#include <string.h>
 
 #include "stepdance/core/block.hpp"
 
 namespace stepdance {
 namespace {
 
-bool is_channel(const BlockPort* port) {
-  return port != nullptr && port->parent() != nullptr && strcmp(port->parent()->type_name(), "Channel") == 0;
+// A port whose block says it turns that port into motor steps (Block::world_units_per_step).
+bool steps_of(const BlockPort* port, double& world_units) {
+  return port != nullptr && port->parent() != nullptr && port->parent()->world_units_per_step(*port, world_units);
+}
+
+// Adds `port`'s ratio when it is a stepping input; true when it was one.
+bool add_if_steps(const BlockPort* port, ChannelRatios& ratios) {
+  double world_units = 0.0;
+  if (!steps_of(port, world_units)) return false;
+  ratios.add(world_units);
+  return true;
 }
 
 }  // namespace
@@ -29,18 +37,20 @@ bool ChannelRatios::agrees_with(double mm_per_step_given) const {
   return fabs(fabs(mm_per_step_given) - mm_per_step) <= kSameRatio * mm_per_step;
 }
 
-// Finds the channels an interface output drives, directly or through one block in between (a
-// kinematics block): its peer, any channel mapped to this port, and the channels the peer's owner
-// feeds. Channels are recognised by their type name.
+// Follows the sketch's map() calls from `output`, one block deep: its peer when that steps a motor;
+// a stepping input mapped to it; else, through the block its peer belongs to (a kinematics), every
+// output of that block whose peer steps a motor. Each block answers for its own ports, so any
+// block that steps (a Channel today) is found without naming its class.
 void collect_channel_ratios(const BlockPort& output, ChannelRatios& ratios) {
   const BlockPort* peer = output.peer();
+  double unused = 0.0;
+  const Block* between = (peer != nullptr && !steps_of(peer, unused)) ? peer->parent() : nullptr;
   for (const BlockPort* port = BlockPort::first_attached(); port != nullptr; port = port->next_attached()) {
-    if (port->peer() == &output && is_channel(port)) ratios.add(port->ratio());
-    const bool feeds_on = peer != nullptr && !is_channel(peer) && port->parent() == peer->parent() &&
-                          port->direction() == BLOCKPORT_OUTPUT && is_channel(port->peer());
-    if (feeds_on) ratios.add(port->peer()->ratio());
+    if (port->peer() == &output) add_if_steps(port, ratios);
+    const bool feeds_on = between != nullptr && port->parent() == between && port->direction() == BLOCKPORT_OUTPUT;
+    if (feeds_on) add_if_steps(port->peer(), ratios);
   }
-  if (is_channel(peer)) ratios.add(peer->ratio());
+  add_if_steps(peer, ratios);
 }
 
 }  // namespace stepdance

@@ -21,7 +21,8 @@ struct ChannelRatios {
 };
 
 /// Adds the ratio of every channel `output` drives: one mapped to it directly, one its peer's
-/// block (a kinematics) feeds from an output, or one whose input it is mapped to.
+/// block (a kinematics) feeds from an output, or one whose input it is mapped to. A channel is
+/// any block whose Block::world_units_per_step() answers for that port (no type names, no RTTI).
 /// Context: loop (walks the port registry; meant for dance_start's checks).
 void collect_channel_ratios(const BlockPort& output, ChannelRatios& ratios);
 

@@ -6,8 +6,6 @@
 
 namespace stepdance {
 
-using ebb::EbbParameters;
-
 Eibotboard::Eibotboard() = default;
 
 // Two stages: commands are parsed and answered in the loop, moves are executed in the frame (as the
@@ -19,14 +17,14 @@ Status Eibotboard::begin_stream(ByteStream&) {
     state_[i] = 0;
     ports[i]->begin(&state_[i], BLOCKPORT_OUTPUT, this);
   }
-  executor_.reset(servo_up_);
+  queue_.begin(pen_.up_position());
   const Status frame = register_in(Stage::kPreChannel);
   if (frame != Status::kOk) return frame;
   return register_in(Stage::kLoop);
 }
 
 // mm per EBB motor step, where an EBB step is a 1/16 microstep (the AxiDraw moves 80 per mm at 1/16,
-// ebb-protocol.md). Checked at start against the channels' own steps/mm (eibotboard_start.cpp).
+// ebb-protocol.md). Checked at start against the channels' own steps/mm (eibotboard_wiring.cpp).
 void Eibotboard::set_ratio_xy(float output_units_mm, float input_units_steps) {
   if (input_units_steps == 0.0f || !isfinite(output_units_mm)) return;
   mm_per_sixteenth_ = static_cast<double>(output_units_mm) / input_units_steps;
@@ -56,7 +54,7 @@ void Eibotboard::read_lines(ByteStream& stream) {
   for (int lines = 0; lines < 16; ++lines) {
     // Reads up to the end of one line; a motion command that finds the FIFO full stays there.
     if (!lines_.pump(stream)) return;
-    if (!replies_.reserve(kLargestReplyBytes)) return;
+    if (!replies_.reserve_largest()) return;
     execute_line();
     if (lines_.ready()) return;  // waiting for room in the FIFO: read nothing more (flow control)
   }
@@ -66,14 +64,15 @@ void Eibotboard::read_lines(ByteStream& stream) {
 // at most 256 bytes per command), never a truncated command.
 void Eibotboard::execute_line() {
   if (lines_.overflowed()) {
-    command_name_[0] = '\0';
-    reply_error(ebb::EbbError::kOverrun, "");
+    replies_.set_command("");
+    replies_.error(ebb::EbbError::kOverrun);
     finish_line();
     return;
   }
   const size_t name_length = take_command_name();
-  EbbParameters parameters(lines_.text() + name_length, lines_.length() - name_length);
-  if (!dispatch(command_name_, parameters)) {  // waits for FIFO room; the line stays
+  replies_.set_command(command_name_);
+  ebb::EbbParameters parameters(lines_.text() + name_length, lines_.length() - name_length);
+  if (!commands_.execute(command_name_, parameters)) {  // waits for FIFO room; the line stays
     if (!waiting_for_room_) ++fifo_full_waits_;
     waiting_for_room_ = true;
     return;
@@ -104,17 +103,13 @@ void Eibotboard::finish_line() {
 void Eibotboard::report_counters(CounterSink& sink) const {
   sink.counter("commands", commands_done_);
   sink.counter("fifo_full_waits", fifo_full_waits_);
-  sink.counter("moves_started", moves_started_);
-  sink.counter("errors_replied", errors_replied_);
+  sink.counter("moves_started", queue_.moves_started());
+  sink.counter("errors_replied", replies_.errors());
   sink.counter("replies_dropped", replies_.dropped());
-  sink.counter("alarm_stops", alarm_stops_);
-  sink.counter("moves_stretched", moves_stretched_);
+  sink.counter("alarm_stops", queue_.alarm_stops());
+  sink.counter("moves_stretched", queue_.moves_stretched());
 }
 
-// Idle means nothing queued, nothing pending from the loop, the frame not moving and the pen servo
-// at its target: what a sketch waits for before taking over the outputs.
-bool Eibotboard::is_idle() const {
-  return moves_queued_ == moves_started_ && controls_.empty() && !frame_busy_ && frame_servo_settled_;
-}
+bool Eibotboard::is_idle() const { return queue_.idle(); }
 
 }  // namespace stepdance

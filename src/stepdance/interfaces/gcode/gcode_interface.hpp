@@ -48,7 +48,7 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   BlockPort& output_duration = interpolator_.output_duration;
 
   /// The Grbl settings. `$100`–`$102` (steps/mm, reported to senders) come from the channels at
-  /// start (see accept_frame_period); the sketch needs to set them with set_from_sketch() only
+  /// start (see check_wiring); the sketch needs to set them with set_from_sketch() only
   /// for an axis that drives no channel. Context: loop.
   gcode::GrblSettings& settings() { return protocol_.settings(); }
   /// The planner behind the link (limits, underruns, refused moves). Context: loop.
@@ -77,7 +77,7 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   /// with set_from_sketch() must agree, and channels of one axis must agree with each other: else
   /// a kBadConfiguration fault naming the setting and both values, and the engine does not
   /// start. An axis that reaches no channel keeps the sketch's value. Context: loop.
-  bool accept_frame_period(uint32_t period_us) override;
+  bool check_wiring() override;
 
   /// Most arc chords one loop pass hands to the planner. A longer arc is fed over several
   /// passes (its `ok` waits until all of it is planned, as Grbl's does) while realtime commands

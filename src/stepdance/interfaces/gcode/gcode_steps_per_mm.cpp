@@ -14,7 +14,7 @@ constexpr double kChannelsDisagree = -1.0;  // no setting holds a negative value
 
 // One steps/mm a G-code axis: the channels it reaches give it; a sketch value beside them must
 // agree. An axis that reaches no channel keeps the sketch's value (or 0).
-bool GCodeInterface::accept_frame_period(uint32_t) {
+bool GCodeInterface::check_wiring() {
   BlockPort* outputs[kStepAxes] = {&output_x, &output_y, &output_z};
   for (int axis = 0; axis < kStepAxes; ++axis) {
     ChannelRatios ratios;

@@ -1,4 +1,4 @@
-// Eibotboard at start: one steps/mm for the EBB path, taken from the channels its x and y reach.
+// Eibotboard at start: one steps/mm for the EBB path, taken from the channels its x and y are wired to.
 #include "stepdance/core/fault.hpp"
 #include "stepdance/interfaces/ebb/eibotboard.hpp"
 #include "stepdance/motion/channel_ratios.hpp"
@@ -8,7 +8,7 @@ namespace stepdance {
 // At dance_start(): one EBB 1/16 step must be one channel step on both axes, or the AxiDraw software's
 // step counts would draw at the wrong scale; a disagreement is refused (a configuration fault)
 // rather than guessed.
-bool Eibotboard::accept_frame_period(uint32_t) {
+bool Eibotboard::check_wiring() {
   ChannelRatios ratios;
   collect_channel_ratios(output_x, ratios);
   collect_channel_ratios(output_y, ratios);
