@@ -94,7 +94,7 @@ bool BoardSet::add_board(const scenario::Scenario& scenario, const scenario::Boa
     error = {SimulationError::kBadInput, scenario_place(scenario, config.line) + mismatch};
     return false;
   }
-  slot.board->on_console_line([this, &config](const std::string& line) {
+  slot.board->console().on_line([this, &config](const std::string& line) {
     if (options_.console) options_.console(config.name, line);
   });
   slot.board->on_sketch_stop([this](const SketchStop& stop) { on_stop_(stop); });
@@ -189,14 +189,14 @@ void BoardSet::fill_sockets(BoardSlot& slot) {
       socket.feeder = std::make_unique<StepFeeder<StepperDriver>>(*socket.stepper, motion_);
       StepperDriver* stepper = socket.stepper.get();
       if (enable_pin != kNoPin) {
-        slot.board->on_pin_change(enable_pin,
+        slot.board->wire(terminal::OutputPin{enable_pin},
                                   [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
       }
     } else {
       socket.servo = std::make_unique<ServoBoard>(servo_build(config.build), 0);
       socket.feeder = std::make_unique<StepFeeder<ServoBoard>>(*socket.servo, motion_);
     }
-    slot.board->add_wire_listener(port, socket.feeder.get());
+    slot.board->wire(terminal::OutputPort{port}, socket.feeder.get());
   }
 }
 
@@ -240,7 +240,7 @@ void BoardSet::power_on(SimTime end_ns) {
 }
 
 void BoardSet::flush_console_lines() {
-  for (BoardSlot& slot : slots_) slot.board->flush_console_line();
+  for (BoardSlot& slot : slots_) slot.board->console().flush_line();
 }
 
 void BoardSet::add_storage_violations(std::vector<ExpectationResult>& results) const {

@@ -31,11 +31,11 @@ void add_board_extras(const BoardSet& boards, nlohmann::json& extra) {
       warnings[slot.config->name][warning.name] = warning.count;
     }
     // Console output that was dropped (nobody read a live terminal), when there was any.
-    if (const uint64_t dropped = slot.board->console_dropped_bytes(); dropped > 0) {
+    if (const uint64_t dropped = slot.board->console().dropped_bytes(); dropped > 0) {
       console[slot.config->name] = {{"dropped_unread_bytes", dropped}};
     }
     const StepdanceBoardStatsV1 stats = slot.board->stats();
-    if (const SimBoard::I2cTiming& timing = slot.board->i2c_timing(); timing.transfers > 0) {
+    if (const I2cTiming& timing = slot.board->i2c().timing(); timing.transfers > 0) {
       i2c[slot.config->name] = {{"transfers", timing.transfers},
                                 {"longest_loop_pass_us", static_cast<double>(timing.max_loop_pass_ns) / 1000.0},
                                 {"loop_passes_with_i2c", timing.loop_passes_with_i2c},
@@ -85,15 +85,15 @@ void add_port_summaries(const BoardSet& boards, RunSummary& summary) {
     summary.boards[slot.config->name].frame_overruns = stats.frame_overruns;
     for (uint8_t port = 0; port < 4; ++port) {
       const std::string letter(1, static_cast<char>('A' + port));
-      if (slot.board->output_claimed(port)) {
+      if (slot.board->ports().output_claimed(port)) {
         PortSummary& out = summary.ports[slot.config->name + ":OUT_" + letter];
-        out.pulses = slot.board->sent(port);
+        out.pulses = slot.board->ports().sent(port);
         out.carried = slot.board->port_counter("OutputPort", port, "carried");
       }
       if (slot.board->input_begun(port)) {
         PortSummary& in = summary.ports[slot.config->name + ":IN_" + letter];
         in.is_input = true;
-        in.pulses = slot.board->received(port);
+        in.pulses = slot.board->ports().received(port);
       }
     }
   }

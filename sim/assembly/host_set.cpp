@@ -20,7 +20,7 @@ const HostClient* HostSet::client(const std::string& board) const {
 void HostSet::send_serial(void* context, SimTime, const size_t& action_index) {
   auto& hosts = *static_cast<HostSet*>(context);
   const scenario::Action& action = hosts.scenario_.timeline[action_index];
-  hosts.boards_.slot(action.target).board->send_console(action.serial_bytes);
+  hosts.boards_.slot(action.target).board->console().send(action.serial_bytes);
 }
 
 // The [[host]] entry of the client's board (the last one that names it).

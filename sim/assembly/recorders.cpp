@@ -33,7 +33,7 @@ void Recorders::build_vcd(const std::string& path, const std::vector<scenario::P
   for (const scenario::PortLineRef& port : ports) {
     const uint8_t index = static_cast<uint8_t>(port.port - 'A');
     if (port.output) {
-      boards.slot(port.board).board->add_wire_listener(index, vcd_->record_output(port.board, port.port));
+      boards.slot(port.board).board->wire(terminal::OutputPort{index}, vcd_->record_output(port.board, port.port));
     } else {
       vcd_inputs_[vcd_input_key(port.board, port.port)] = vcd_->declare_input(port.board, port.port);
     }
