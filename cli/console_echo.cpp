@@ -8,10 +8,10 @@
 namespace stepdance::cli {
 
 void ConsoleEcho::line(const std::string& board, const std::string& text) {
-  // A piece of a longer line (SimBoard hands one on every kConsoleLineBytes) is shown, never
+  // A piece of a longer line (BoardConsole hands one on every kLineBytes) is shown, never
   // folded: 20 × 5,000 `x` without a newline once showed as one piece and "the same line 23 more
   // times", read as 5,794 of 100,000 bytes.
-  const bool piece = text.size() >= sim::SimBoard::kConsoleLineBytes;
+  const bool piece = text.size() >= sim::BoardConsole::kLineBytes;
   if (!piece && board == last_board_ && text == last_text_) {
     ++repeats_;
     return;

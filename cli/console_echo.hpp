@@ -10,7 +10,7 @@ namespace stepdance::cli {
 /// Echoes `[board] line` to stdout. A line that repeats the previous one of the same board is
 /// held back and counted; the count is printed (`[board] … 41 more times`) when a different
 /// line comes or at flush(), so a sketch that reports every second does not flood the terminal.
-/// The pieces of a line longer than SimBoard::kConsoleLineBytes are all shown, in order.
+/// The pieces of a line longer than BoardConsole::kLineBytes are all shown, in order.
 class ConsoleEcho {
  public:
   /// `before_print` runs before anything is printed (e.g. to erase a progress bar).

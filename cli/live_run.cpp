@@ -82,7 +82,7 @@ std::vector<BoardLink> open_terminals(sim::Simulation& simulation, const std::ve
     PtyPort* port = link.port.get();
     LiveView* view = options.view;
     const auto* also = &options.on_console;
-    link.board->on_console_bytes([port, view, also, name](const uint8_t* data, size_t length) {
+    link.board->console().on_bytes([port, view, also, name](const uint8_t* data, size_t length) {
       port->write_to_client(data, length);
       if (view != nullptr) view->console(name, data, length);
       if (*also) (*also)(name, data, length);
@@ -99,9 +99,9 @@ void exchange(std::vector<BoardLink>& links) {
   std::string received;
   for (BoardLink& link : links) {
     received.clear();
-    link.port->read_from_client(received, link.board->console_input_room());
+    link.port->read_from_client(received, link.board->console().input_room());
     if (!received.empty()) {
-      link.board->send_console(received);
+      link.board->console().send(received);
       link.client_wrote = std::chrono::steady_clock::now();
     }
     link.port->flush();
@@ -131,9 +131,9 @@ double wait_for_readers(std::vector<BoardLink>& links, LiveView* view) {
 // Detaches the boards from their terminals, counting and announcing what nobody read.
 void close_terminals(std::vector<BoardLink>& links, const std::vector<std::string>& boards) {
   for (size_t i = 0; i < links.size(); ++i) {
-    links[i].board->on_console_bytes(nullptr);
+    links[i].board->console().on_bytes(nullptr);
     const uint64_t dropped = links[i].port->dropped_bytes();
-    links[i].board->count_console_dropped(dropped);
+    links[i].board->console().count_dropped(dropped);
     if (dropped > 0) {
       std::printf("serial %s: %llu bytes the board printed were dropped, oldest first (nobody read them)\n",
                   boards[i].c_str(), static_cast<unsigned long long>(dropped));

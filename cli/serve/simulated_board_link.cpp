@@ -23,7 +23,7 @@ SimulatedBoardLink::SimulatedBoardLink(boost::asio::io_context& io, sim::Simulat
                                        const std::string& board, double speed)
     : timer_(io), simulation_(simulation), board_(simulation.board(board)), board_name_(board), speed_(speed) {
   if (board_ == nullptr) throw std::runtime_error("--board: no board named '" + board + "'");
-  board_->on_console_bytes([this](const uint8_t* data, size_t length) {
+  board_->console().on_bytes([this](const uint8_t* data, size_t length) {
     lines_.feed(std::string_view(reinterpret_cast<const char*>(data), length), [this](std::string_view line) {
       if (on_line_) on_line_(line);
     });
@@ -39,9 +39,9 @@ void SimulatedBoardLink::send(const std::string& bytes) { to_board_ += bytes; }
 void SimulatedBoardLink::stop() {
   stopped_ = true;
   timer_.cancel();
-  if (!to_board_.empty()) board_->send_console(to_board_);
+  if (!to_board_.empty()) board_->console().send(to_board_);
   to_board_.clear();
-  board_->on_console_bytes(nullptr);
+  board_->console().on_bytes(nullptr);
 }
 
 void SimulatedBoardLink::schedule() {
@@ -56,11 +56,11 @@ void SimulatedBoardLink::tick() {
   const double elapsed_s = std::chrono::duration<double>(now - wall_start_).count();
   const sim::SimTime target = std::min(sim_start_ + sim::from_seconds(elapsed_s * speed_), simulation_.duration());
   while (simulation_.now() < target && SteadyClock::now() - now < kMaxTickWork) {
-    if (!to_board_.empty()) board_->send_console(to_board_);
+    if (!to_board_.empty()) board_->console().send(to_board_);
     to_board_.clear();
     simulation_.run_until(simulation_.now() + kExchangeNs);
   }
-  if (!to_board_.empty()) board_->send_console(to_board_);  // the next step reads it
+  if (!to_board_.empty()) board_->console().send(to_board_);  // the next step reads it
   to_board_.clear();
   if (target - simulation_.now() > kMaxLagNs) {  // too slow for real time: go on from here
     wall_start_ = SteadyClock::now();

@@ -100,7 +100,7 @@ int run(sim::Simulation& simulation, RunChannel& channel, const SketchRunnerOpti
   sim::view::ViewSession session(simulation, control);
   for (const auto& board : simulation.scenario().boards) {
     const std::string name = board.name;
-    simulation.board(name)->on_console_bytes(
+    simulation.board(name)->console().on_bytes(
         [&session, name](const uint8_t* data, size_t length) { session.console_output(name, data, length); });
   }
   channel.send(json{{"type", "started"}}.dump());

@@ -21,19 +21,19 @@ uint8_t connector_pin(const BoardDefinition& board, Connector connector) {
 }  // namespace
 
 void BoardPlug::connect_encoder(Connector connector, Source<int64_t> counts) {
-  board_.connect_encoder(scenario::connector_index(connector), std::move(counts));
+  board_.wire(terminal::Encoder{scenario::connector_index(connector)}, std::move(counts));
 }
 
 void BoardPlug::connect_analog(Connector connector, Source<uint16_t> value) {
-  board_.connect_adc(connector_pin(board_.definition(), connector), std::move(value));
+  board_.wire(terminal::Analog{connector_pin(board_.definition(), connector)}, std::move(value));
 }
 
 void BoardPlug::connect_digital(Connector connector, Source<bool> level) {
-  board_.connect_input_pin(connector_pin(board_.definition(), connector), std::move(level));
+  board_.wire(terminal::InputPin{connector_pin(board_.definition(), connector)}, std::move(level));
 }
 
 void BoardPlug::attach_i2c(Connector connector, uint8_t address, I2cDevice* device) {
-  board_.attach_i2c_device(scenario::connector_index(connector), address, device);
+  board_.wire(terminal::I2c{scenario::connector_index(connector), address}, device);
 }
 
 void PictureFileSink::write_picture(const std::string& file_name, const std::vector<bool>& lit, int width, int height,

@@ -29,13 +29,13 @@ class SimulationRun : public FinishedRun {
     const SimBoard* board = simulation_.board(port.board);
     if (board == nullptr) return nullptr;
     const uint8_t index = static_cast<uint8_t>(port.port - 'A');
-    return port.output ? &board->sent(index) : &board->received(index);
+    return port.output ? &board->ports().sent(index) : &board->ports().received(index);
   }
 
   std::optional<I2cLoopTiming> i2c_timing(const std::string& name) const override {
     const SimBoard* board = simulation_.board(name);
     if (board == nullptr) return std::nullopt;
-    return I2cLoopTiming{board->i2c_timing().max_loop_pass_ns, board->i2c_timing().transfers};
+    return I2cLoopTiming{board->i2c().timing().max_loop_pass_ns, board->i2c().timing().transfers};
   }
 
   std::optional<HostOutcome> host(const std::string& board) const override {

@@ -58,7 +58,7 @@ std::string seconds_text(SimTime time) {
 
 HostClient::HostClient(const scenario::HostClientConfig& config, SimBoard& board, Scheduler& scheduler)
     : config_(config), board_(board), scheduler_(scheduler), timer_(scheduler, &on_tick, this) {
-  board_.on_console_bytes([this](const uint8_t* data, size_t length) { receive(data, length); });
+  board_.console().on_bytes([this](const uint8_t* data, size_t length) { receive(data, length); });
 }
 
 void HostClient::start() { timer_.start(config_.start, kTickNs); }
@@ -198,7 +198,7 @@ bool HostClient::run_stream(const scenario::HostStep& step, SimTime now) {
 }
 
 void HostClient::send(const std::string& bytes, SimTime now) {
-  board_.send_console(bytes);
+  board_.console().send(bytes);
   // One transcript entry per line sent (a long one in pieces), as for received lines.
   size_t begin = 0;
   do {

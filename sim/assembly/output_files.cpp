@@ -1,5 +1,7 @@
-// Output files of a run: which ones, checked against each other and against the run's inputs,
+// OutputFiles: which files a run writes, checked against each other and against the run's inputs,
 // their folders made and checked writable before the run, and the lines a VCD records.
+#include "assembly/output_files.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -12,7 +14,6 @@
 #include "scenario/names.hpp"
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
-#include "assembly/simulation.hpp"
 #include "assembly/vcd_size.hpp"
 
 namespace stepdance::sim {
@@ -79,7 +80,20 @@ std::string plotter_png_problem(const scenario::Scenario& scenario, const std::s
 
 }  // namespace
 
-std::vector<PlannedOutput> Simulation::output_files() const {
+OutputFiles::OutputFiles(const scenario::Scenario& scenario, const SimulationOptions& options)
+    : scenario_(scenario), options_(options), directory_(options.output_directory.value_or(scenario.output.directory)) {
+  vcd_path_ = options.vcd_file.value_or(path_of(scenario.output.vcd));
+  if (!options.write_vcd) vcd_path_.clear();
+  csv_path_ = options.csv_file.value_or(path_of(scenario.output.csv));
+  html_path_ = options.html_file.value_or(path_of(scenario.output.html));
+}
+
+std::string OutputFiles::path_of(const std::string& configured) const {
+  if (configured.empty() || !options_.output_directory) return configured;
+  return (std::filesystem::path(*options_.output_directory) / std::filesystem::path(configured).filename()).string();
+}
+
+std::vector<PlannedOutput> OutputFiles::planned() const {
   std::vector<PlannedOutput> files;
   const auto add = [&files](const std::string& path, OutputOrigin origin, bool folder = false) {
     if (!path.empty()) files.push_back({path, std::move(origin), folder});
@@ -93,24 +107,24 @@ std::vector<PlannedOutput> Simulation::output_files() const {
   };
   // The boards' SD card folders first: a file asked for inside one is then the one reported.
   for (const scenario::BoardConfig& board : scenario_.boards) {
-    add((std::filesystem::path(output_directory_) / (board.name + ".sd")).string(),
+    add((std::filesystem::path(directory_) / (board.name + ".sd")).string(),
         {at_line(scenario_, board.line), "the SD card folder of board '" + board.name + "'"}, true);
   }
   add(vcd_path_, options_.vcd_file ? OutputOrigin{"--vcd", "--vcd"} : key("vcd"));
   add(csv_path_, options_.csv_file ? OutputOrigin{"--csv", "--csv"} : key("csv"));
   add(html_path_, options_.html_file ? OutputOrigin{"--html", "--html"} : key("html"));
   if (scenario_.machine) {
-    add(output_path(scenario_.output.svg), key("svg"));
-    if (options_.pictures) add(output_path(scenario_.output.png), key("png"));
+    add(path_of(scenario_.output.svg), key("svg"));
+    if (options_.pictures) add(path_of(scenario_.output.png), key("png"));
   }
-  add(output_path(scenario_.output.summary), key("summary"));
+  add(path_of(scenario_.output.summary), key("summary"));
   for (const scenario::HostClientConfig& host : scenario_.hosts) {
-    add(output_path(host.transcript), {at_line(scenario_, host.transcript_line), "'transcript'"});
+    add(path_of(host.transcript), {at_line(scenario_, host.transcript_line), "'transcript'"});
   }
   for (const scenario::DeviceConfig& device : scenario_.devices) {
     if (device.kind->output_names == nullptr || !options_.pictures) continue;
     for (const std::string& name : device.kind->output_names(device)) {
-      add(output_path((std::filesystem::path(scenario_.output.directory) / name).string()),
+      add(path_of((std::filesystem::path(scenario_.output.directory) / name).string()),
           {at_line(scenario_, device.line), "device '" + device.name + "''s picture " + name});
     }
   }
@@ -118,20 +132,20 @@ std::vector<PlannedOutput> Simulation::output_files() const {
   return files;
 }
 
-bool Simulation::prepare_outputs(SimulationError& error) const {
+bool OutputFiles::prepare(SimTime duration_ns, SimulationError& error) const {
   if (!vcd_path_.empty()) {
-    std::string problem = vcd_size_problem(vcd_path_, vcd_ports().size(), duration_, options_.vcd_max_bytes);
+    std::string problem = vcd_size_problem(vcd_path_, vcd_ports().size(), duration_ns, options_.vcd_max_bytes);
     if (!problem.empty()) {
       error = {SimulationError::kBadInput, std::move(problem)};
       return false;
     }
   }
-  const std::string png = options_.pictures ? output_path(scenario_.output.png) : std::string();
+  const std::string png = options_.pictures ? path_of(scenario_.output.png) : std::string();
   if (const std::string problem = plotter_png_problem(scenario_, png); !problem.empty()) {
     error = {SimulationError::kBadInput, problem};
     return false;
   }
-  const std::vector<PlannedOutput> files = output_files();
+  const std::vector<PlannedOutput> files = planned();
   if (std::string conflicts = output_conflicts_text(files, scenario_inputs(scenario_)); !conflicts.empty()) {
     error = {SimulationError::kBadInput, std::move(conflicts)};
     return false;
@@ -155,6 +169,18 @@ bool Simulation::prepare_outputs(SimulationError& error) const {
     }
   }
   return true;
+}
+
+std::vector<scenario::PortLineRef> OutputFiles::vcd_ports() const {
+  if (!scenario_.output.vcd_ports.empty() || !options_.vcd_file) return scenario_.output.vcd_ports;
+  std::vector<scenario::PortLineRef> ports;
+  for (const scenario::BoardConfig& board : scenario_.boards) {
+    for (char port = 'A'; port <= 'D'; ++port) {
+      if (scenario::module_has_output_port(*board.module, port)) ports.push_back({board.name, true, port});
+    }
+  }
+  for (const scenario::CableConfig& cable : scenario_.cables) ports.push_back({cable.to.board, false, cable.to.port});
+  return ports;
 }
 
 }  // namespace stepdance::sim

@@ -1,5 +1,5 @@
-// Simulation: creation order, the run loop, stopping early, the end of a run and lookups. What
-// each part of a run is built from has its own file (simulation.hpp lists them).
+// Simulation: the order its parts are built in, the run loop, stopping early, the end of a run and
+// its summary. Each part owns its state in its own file (simulation.hpp lists them).
 #include "assembly/simulation.hpp"
 
 #include <algorithm>
@@ -7,12 +7,21 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "assembly/board_plug.hpp"
+#include "assembly/board_summary.hpp"
+
 namespace stepdance::sim {
 namespace {
 
 /// The run advances in slices of this much simulated time, flushing the VCD and reporting
 /// progress between them.
 constexpr SimTime kSliceNs = 10 * kMillisecond;
+
+std::string seconds_text(SimTime time_ns) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6f s", to_seconds(time_ns));
+  return text;
+}
 
 }  // namespace
 
@@ -24,18 +33,16 @@ Simulation::Simulation(const scenario::Scenario& scenario, const SimulationOptio
     : scenario_(scenario),
       options_(options),
       duration_(options.duration.value_or(scenario.duration)),
-      output_directory_(options.output_directory.value_or(scenario.output.directory)),
-      delivery_(scheduler_),
-      serial_actions_(scheduler_, &on_serial_action, this) {
-  vcd_path_ = options.vcd_file.value_or(output_path(scenario.output.vcd));
-  if (!options.write_vcd) vcd_path_.clear();
-  csv_path_ = options.csv_file.value_or(output_path(scenario.output.csv));
-  html_path_ = options.html_file.value_or(output_path(scenario.output.html));
+      outputs_(scenario_, options_),
+      boards_(scheduler_, options_, machine_.motion_flag()),
+      cables_(scheduler_),
+      recorders_(scheduler_),
+      hosts_(scheduler_, scenario_, boards_) {
   if (options.csv_interval_ms) scenario_.output.csv_interval_ms = *options.csv_interval_ms;
 }
 
 Simulation::~Simulation() {
-  csv_.reset();
+  recorders_.stop_csv();
   hosts_.clear();
   cables_.clear();
   boards_.clear();  // unloads the sketches while the scheduler and models still exist
@@ -44,24 +51,41 @@ Simulation::~Simulation() {
 std::unique_ptr<Simulation> Simulation::create(const scenario::Scenario& scenario, const SimulationOptions& options,
                                                SimulationError& error) {
   std::unique_ptr<Simulation> simulation(new Simulation(scenario, options));
-  if (!simulation->prepare_outputs(error)) return nullptr;
-  if (!simulation->build_boards(error) || !simulation->build_machine(error)) return nullptr;
-  simulation->build_devices();
-  simulation->apply_timeline();
-  simulation->build_hosts();
+  if (!simulation->build(error)) return nullptr;
+  simulation->boards_.power_on(simulation->duration_);
+  return simulation;
+}
+
+bool Simulation::build(SimulationError& error) {
+  if (!outputs_.prepare(duration_, error)) return false;
+  if (!boards_.build(scenario_, outputs_.directory(), outputs_.planned(),
+                     [this](const SketchStop& stop) { on_sketch_stop(stop); }, error) ||
+      !machine_.build(scenario_, boards_, error)) {
+    return false;
+  }
+  devices_.build(scenario_, boards_, [this] { return machine_.machine(); });
+  apply_timeline();
+  hosts_.build();
   try {
-    simulation->build_vcd();
-    simulation->build_cables();
-    simulation->build_csv();
+    recorders_.build_vcd(outputs_.vcd_path(), outputs_.vcd_ports(), duration_, boards_);
+    cables_.build(scenario_.cables, boards_, recorders_);
+    recorders_.build_csv(outputs_.csv_path(), scenario_.output.csv_interval_ms, machine_.machine(), boards_, devices_);
   } catch (const std::exception& failure) {
     error = {SimulationError::kFailure, failure.what()};
-    return nullptr;
+    return false;
   }
-  for (BoardSlot& slot : simulation->boards_) {
-    slot.board->set_end_time(simulation->duration_);
-    slot.board->power_on(0);
+  return true;
+}
+
+void Simulation::apply_timeline() {
+  for (size_t index = 0; index < scenario_.timeline.size(); ++index) {
+    const scenario::Action& action = scenario_.timeline[index];
+    if (action.type == scenario::ActionType::kSerial) {
+      hosts_.post_serial(index);
+    } else {
+      devices_.schedule(action);
+    }
   }
-  return simulation;
 }
 
 // ---- running ------------------------------------------------------------------------------------
@@ -72,22 +96,27 @@ void Simulation::run_until(SimTime end_ns) {
   while (!stopped_early()) {
     const SimTime slice_end = std::min(end, scheduler_.now() + kSliceNs);
     scheduler_.run_until(slice_end);
-    if (vcd_) vcd_->flush(std::min(slice_end, scheduler_.now()));
+    recorders_.flush(std::min(slice_end, scheduler_.now()));
     if (options_.progress) options_.progress(std::min(slice_end, scheduler_.now()), duration_);
     if (slice_end >= end) break;
   }
   wall_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 }
 
-// ---- stopping early -------------------------------------------------------------------------------
-
-namespace {
-std::string seconds_text(SimTime time_ns) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.6f s", to_seconds(time_ns));
-  return text;
+void Simulation::pace_every(SimTime period_ns, std::function<void(SimTime)> tick) {
+  pacer_ = std::move(tick);
+  pacer_timer_ = std::make_unique<PeriodicTimer>(
+      scheduler_,
+      [](void* context, SimTime time) {
+        auto& simulation = *static_cast<Simulation*>(context);
+        simulation.pacer_(time);
+        simulation.stopped_early();
+      },
+      this);
+  pacer_timer_->start(scheduler_.now() + period_ns, period_ns);
 }
-}  // namespace
+
+// ---- stopping early -------------------------------------------------------------------------------
 
 void Simulation::on_sketch_stop(const SketchStop& stop) {
   if (!sketch_stop_) sketch_stop_ = stop;
@@ -111,106 +140,92 @@ std::string Simulation::unchecked_reason() const {
   return "";
 }
 
-void Simulation::pace_every(SimTime period_ns, std::function<void(SimTime)> tick) {
-  pacer_ = std::move(tick);
-  pacer_timer_ = std::make_unique<PeriodicTimer>(
-      scheduler_,
-      [](void* context, SimTime time) {
-        auto& simulation = *static_cast<Simulation*>(context);
-        simulation.pacer_(time);
-        simulation.stopped_early();
-      },
-      this);
-  pacer_timer_->start(scheduler_.now() + period_ns, period_ns);
-}
-
-void Simulation::flush_console_lines() {
-  for (BoardSlot& slot : boards_) slot.board->flush_console_line();
-}
-
 void Simulation::end_now() {
   duration_ = scheduler_.now();
-  for (BoardSlot& slot : boards_) slot.board->set_end_time(duration_);
-  if (vcd_) vcd_->set_end_time(duration_);
+  boards_.set_end_time(duration_);
+  recorders_.set_end_time(duration_);
 }
+
+// ---- the end of a run -----------------------------------------------------------------------------
 
 SimulationReport Simulation::finish() {
   run_until(duration_);
-  flush_console_lines();
-  if (machine_) update_machine(duration_);
+  boards_.flush_console_lines();
+  if (machine_.machine() != nullptr) machine_.update(duration_);
   SimulationReport report;
   report.simulated_ns = scheduler_.now();
   report.wall_s = wall_s_;
   report.sketch_stop = sketch_stop_;
   report.interrupted_by = options_.live ? 0 : interrupted_by_;
-  if (vcd_) {
-    vcd_->close(duration_);
-    report.files.push_back(vcd_path_);
-  }
-  if (csv_) {
-    csv_->close();
-    report.files.push_back(csv_path_);
-  }
-  write_drawings(report);
-  write_device_outputs(report);
-  write_transcripts(report);
-  if (!scenario_.output.summary.empty()) {
-    write_summary_file(report);
-    report.files.push_back(output_path(scenario_.output.summary));
-  }
+  write_outputs(report);
   const std::string unchecked = unchecked_reason();
   report.expectations =
       unchecked.empty() ? evaluate_expectations(scenario_, *this) : unchecked_expectations(scenario_, unchecked);
-  add_storage_violations(report);
+  boards_.add_storage_violations(report.expectations);
   report.warnings = warning_lines();
   return report;
 }
 
-// Storage touched from an interrupt fails the run, whatever the scenario expects: on the board
-// a card access can take far longer than a frame.
-void Simulation::add_storage_violations(SimulationReport& report) const {
-  for (const BoardSlot& slot : boards_) {
-    const uint64_t calls = slot.board->storage_calls_in_isr();
-    if (calls == 0) continue;
-    report.expectations.push_back({false, "board '" + slot.config->name + "': the sketch touched the SD card " +
-                                              std::to_string(calls) +
-                                              " times from the frame or kilohertz interrupt (storage is loop-only)"});
+void Simulation::write_outputs(SimulationReport& report) {
+  recorders_.close(duration_, report.files);
+  machine_.write_drawings(outputs_.path_of(scenario_.output.svg), outputs_.path_of(scenario_.output.png),
+                          options_.pictures.get(), scenario_.output.png_px_per_mm, report.files);
+  write_device_outputs(report);
+  hosts_.write_transcripts([this](const std::string& name) { return outputs_.path_of(name); }, report.files);
+  if (!scenario_.output.summary.empty()) {
+    write_summary_file(report);
+    report.files.push_back(outputs_.path_of(scenario_.output.summary));
   }
 }
 
-// ---- lookups ------------------------------------------------------------------------------------
-
-std::string Simulation::place(int line) const { return scenario_.file + ":" + std::to_string(line) + ": "; }
-
-std::string Simulation::output_path(const std::string& configured) const {
-  if (configured.empty() || !options_.output_directory) return configured;
-  return (std::filesystem::path(*options_.output_directory) / std::filesystem::path(configured).filename()).string();
+void Simulation::write_device_outputs(SimulationReport& report) {
+  const std::string directory = scenario_.output.directory;
+  if (directory.empty() && !options_.output_directory) return;  // no output folder: no pictures
+  if (!options_.pictures) return;                                // no picture writer
+  PictureFileSink sink(*options_.pictures, [this, &directory](const std::string& file) {
+    return outputs_.path_of((std::filesystem::path(directory) / file).string());
+  }, report.files);
+  devices_.write_outputs(sink);
 }
 
-Simulation::BoardSlot& Simulation::slot(const std::string& name) { return const_cast<BoardSlot&>(*find_slot(name)); }
+std::vector<std::string> Simulation::warning_lines() const { return board_warning_lines(boards_); }
 
-const Simulation::BoardSlot* Simulation::find_slot(const std::string& name) const {
-  for (const BoardSlot& slot : boards_) {
-    if (slot.config->name == name) return &slot;
+// ---- the summary --------------------------------------------------------------------------------
+
+RunSummary Simulation::run_summary() const {
+  RunSummary summary;
+  summary.simulated_time = scheduler_.now();
+  add_port_summaries(boards_, summary);
+  summary.extra = summary_extra();
+  return summary;
+}
+
+nlohmann::json Simulation::summary_extra() const {
+  nlohmann::json extra = nlohmann::json::object();
+  add_board_extras(boards_, extra);
+  extra["cables"] = cables_.summary(scenario_.cables);
+  if (machine_.machine() != nullptr) extra["machine"] = machine_.summary();
+  // A stopped run says so: its figures are those of the moment it stopped.
+  if (sketch_stop_) {
+    extra["stopped"] = {{"board", sketch_stop_->board},
+                        {"entry", describe(sketch_stop_->entry)},
+                        {"what", sketch_stop_->what},
+                        {"time_s", to_seconds(sketch_stop_->time_ns)},
+                        {"backtrace", sketch_stop_->backtrace}};
+  } else if (interrupted_by_ != 0 && !options_.live) {
+    extra["stopped"] = {{"what", interrupted_by_ == 15 ? "SIGTERM" : "SIGINT"}, {"time_s", to_seconds(scheduler_.now())}};
   }
-  return nullptr;
+  return extra;
 }
 
-SimBoard* Simulation::board(const std::string& name) const {
-  const BoardSlot* found = find_slot(name);
-  return found != nullptr ? found->board.get() : nullptr;
-}
+std::string Simulation::summary_text() const { return sim::summary_text(run_summary()); }
 
-const StepperDriver* Simulation::stepper(const std::string& board, char port) const {
-  const BoardSlot* found = find_slot(board);
-  if (found == nullptr || port < 'A' || port > 'D') return nullptr;
-  return found->sockets[port - 'A'].stepper.get();
-}
-
-const ServoBoard* Simulation::servo(const std::string& board, char port) const {
-  const BoardSlot* found = find_slot(board);
-  if (found == nullptr || port < 'A' || port > 'D') return nullptr;
-  return found->sockets[port - 'A'].servo.get();
+void Simulation::write_summary_file(const SimulationReport& report) const {
+  RunSummary summary = run_summary();
+  summary.wall_time_s = report.wall_s;
+  const std::string path = outputs_.path_of(scenario_.output.summary);
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  write_summary(path, summary);
 }
 
 }  // namespace stepdance::sim

@@ -46,11 +46,11 @@ ReplayRecorder::ReplayRecorder(Simulation& simulation, SimTime interval_ns, cons
   for (const scenario::BoardConfig& board : simulation_.scenario().boards) {
     for (char port = 'A'; port <= 'D'; ++port) {
       if (!scenario::module_has_output_port(*board.module, port)) continue;
-      simulation_.board(board.name)->add_wire_listener(static_cast<uint8_t>(port - 'A'),
+      simulation_.board(board.name)->wire(terminal::OutputPort{static_cast<uint8_t>(port - 'A')},
                                                          wire_.listener(board.name + ":OUT_" + port));
     }
     const std::string name = board.name;
-    simulation_.board(name)->on_console_bytes(
+    simulation_.board(name)->console().on_bytes(
         [this, name](const uint8_t* data, size_t length) { session_.console_output(name, data, length); });
   }
   for (const scenario::DeviceConfig& device : simulation_.scenario().devices) {

@@ -424,8 +424,8 @@ std::string ViewSession::apply_console(const json& message) {
   if (!board_name || !text) return "console: needs \"board\" and \"text\" strings";
   SimBoard* board = simulation_.board(*board_name);
   if (board == nullptr) return "console: no board named \"" + *board_name + "\"";
-  if (text->size() > board->console_input_room()) return "console: the board's input buffer is full; try again";
-  board->send_console(*text);
+  if (text->size() > board->console().input_room()) return "console: the board's input buffer is full; try again";
+  board->console().send(*text);
   return {};
 }
 

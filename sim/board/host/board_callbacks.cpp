@@ -49,23 +49,16 @@ void BoardCallbacks::add_timer_callbacks(StepdanceHostV1& host) {
 void BoardCallbacks::add_port_callbacks(StepdanceHostV1& host) {
   host.port_out_begin = [](void* c, uint8_t port) {
     if (port >= SimBoard::kPorts) return no_such_pin();
-    auto& state = of(c).ports_[port];
-    if (state.output_claimed) return static_cast<int>(Status::kBusy);
-    state.output_claimed = true;
-    return ok();
+    return of(c).ports_.claim_output(port) ? ok() : static_cast<int>(Status::kBusy);
   };
   host.port_out_frame = [](void* c, uint8_t port, uint32_t step_bits, uint32_t dir_bits) {
     if (port >= SimBoard::kPorts) return;
-    auto& state = of(c).ports_[port];
-    state.pending = protocol::FrameWords{step_bits, dir_bits};
-    state.frame_pending = (step_bits | dir_bits) != 0;  // idle frames need no playing
-    if (state.frame_pending) of(c).pending_ports_ = static_cast<uint8_t>(of(c).pending_ports_ | (1u << port));
+    of(c).ports_.queue_frame(port, protocol::FrameWords{step_bits, dir_bits});
   };
   host.port_in_begin = [](void* c, uint8_t port, int edge) {
     if (port >= SimBoard::kPorts) return no_such_pin();
-    auto& state = of(c).ports_[port];
-    state.input_begun = true;
-    state.edge = edge == STEPDANCE_DIR_AT_RISING ? protocol::DirSampleEdge::kRising : protocol::DirSampleEdge::kFalling;
+    of(c).ports_.begin_input(port, edge == STEPDANCE_DIR_AT_RISING ? protocol::DirSampleEdge::kRising
+                                                                  : protocol::DirSampleEdge::kFalling);
     return ok();
   };
 }
@@ -99,8 +92,8 @@ void BoardCallbacks::add_console_callbacks(StepdanceHostV1& host) {
     }
   };
   host.console_write = [](void* c, const uint8_t* data, size_t length) { return of(c).write_console(data, length); };
-  host.console_available = [](void* c) -> size_t { return of(c).console_available(); };
-  host.console_read = [](void* c) { return of(c).read_console(); };
+  host.console_available = [](void* c) -> size_t { return of(c).console_.available(); };
+  host.console_read = [](void* c) { return of(c).console_.read(); };
 
   host.file_open = [](void* c, const char* name, int mode, int* handle) {
     if (of(c).storage_refused_in_isr()) return static_cast<int>(Status::kIoError);
@@ -131,9 +124,7 @@ void BoardCallbacks::add_end_callback(StepdanceHostV1& host) {
 
 void BoardCallbacks::add_i2c_callbacks(StepdanceHostV1& host) {
   host.i2c_begin = [](void* c, uint8_t bus, uint32_t clock_hz) {
-    if (bus >= of(c).i2c_.size()) return no_such_pin();
-    of(c).i2c_[bus].clock_hz = clock_hz;
-    return ok();
+    return of(c).i2c_.begin(bus, clock_hz) ? ok() : no_such_pin();
   };
   host.i2c_transfer = [](void* c, uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length,
                          uint8_t* read, size_t read_length, int64_t* wire_ns) {

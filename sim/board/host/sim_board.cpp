@@ -12,16 +12,6 @@ namespace {
 constexpr SimTime kKhzOffsetNs = 20 * kMicrosecond;  // half a frame after the frame tick
 /// The simulated ADC converts every pin continuously at this period.
 constexpr SimTime kAdcConversionNs = 100 * kMicrosecond;
-/// Capture timer: 150 ticks per µs into a 16-bit counter.
-constexpr int64_t kCaptureTicksPerUs = 150;
-
-// The capture counter at a time, unwrapped: ticks rounded half up (as `stepdance decode` converts
-// edges). The board's 16-bit counter is this modulo 2^16; captured_from_ticks keeps the overflow
-// count, as the Teensy backend does by counting counter reloads.
-uint64_t capture_ticks(SimTime time_ns) {
-  return static_cast<uint64_t>((time_ns * kCaptureTicksPerUs + 500) / 1000);
-}
-
 
 }  // namespace
 
@@ -35,7 +25,7 @@ SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<B
       encoder_sampler_(scheduler, &encoder_sample, this),
       loop_event_(*this),
       setup_event_(*this),
-      console_quiet_event_(*this),
+      console_(scheduler),
       storage_(options_.storage_dir),
       sd_timing_(options_.sd_card) {}
 
@@ -49,7 +39,6 @@ SimBoard::SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<B
 SimBoard::~SimBoard() {
   scheduler_.cancel(loop_event_);
   scheduler_.cancel(setup_event_);
-  scheduler_.cancel(console_quiet_event_);
   frame_timer_.stop();
   khz_timer_.stop();
   encoder_sampler_.stop();
@@ -60,7 +49,7 @@ SimBoard::~SimBoard() {
 bool SimBoard::attach(std::string& error) {
   if (firmware_) {
     // A firmware's ports are all wired: it drives and captures through its own peripherals.
-    for (PortState& port : ports_) port.input_begun = true;
+    ports_.begin_all_inputs();
     firmware_->on_stop([this](const SketchStop& stop) { firmware_stopped(stop); });
     return firmware_->start(*this, error);
   }
@@ -130,15 +119,11 @@ void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
 void SimBoard::LoopEvent::fire(Event& event, Scheduler& scheduler) {
   SimBoard& board = static_cast<LoopEvent&>(event).owner;
   const SimTime started = event.time();
-  board.in_loop_pass_ = true;
-  board.i2c_ns_this_pass_ = 0;
+  board.i2c_.begin_loop_pass();
   board.enter(SketchEntry::kLoop, [&] { return board.board_->run_loop(scheduler.now()); });
-  board.in_loop_pass_ = false;
+  board.i2c_.end_loop_pass();
   if (board.frozen_) return;
-  if (board.i2c_ns_this_pass_ > 0) {
-    ++board.i2c_timing_.loop_passes_with_i2c;
-    board.i2c_timing_.max_loop_pass_ns = std::max(board.i2c_timing_.max_loop_pass_ns, board.i2c_ns_this_pass_);
-  }
+  board.i2c_.count_loop_pass();
   const SimTime next = started + board.options_.loop_period_ns;
   scheduler.schedule(event, next > scheduler.now() ? next : scheduler.now());
 }
@@ -179,7 +164,7 @@ void SimBoard::stop_timers() {
 
 void SimBoard::frame_tick(void* context, SimTime time) {
   auto& board = *static_cast<SimBoard*>(context);
-  board.play_pending_frames(time);
+  board.ports_.play_queued(time, board.frame_timer_.period_ns(), board.end_ns_);
   if (board.tick_listener_) board.tick_listener_(time);
   board.in_isr_ = true;
   board.enter(SketchEntry::kFrameTick, [&] { return board.board_->run_frame_tick(time); });
@@ -193,46 +178,14 @@ void SimBoard::khz_tick(void* context, SimTime time) {
   board.in_isr_ = false;
 }
 
-// The words handed over during the previous frame go on the wire now, at the fixed phase.
-void SimBoard::play_pending_frames(SimTime start_ns) {
-  if ((pending_ports_ | idle_listening_ports_) == 0) return;
-  for (PortState& port : ports_) {
-    if (!port.frame_pending) {
-      for (WireListener* listener : port.idle_listeners) listener->on_frame(start_ns, protocol::FrameWords{}, frame_timer_.period_ns());
-      continue;
-    }
-    port.frame_pending = false;
-    play_words(port, start_ns, port.pending, frame_timer_.period_ns());
-  }
-  pending_ports_ = 0;
-}
-
 void SimBoard::play_frame(uint8_t port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
-  PortState& state = ports_.at(port);
-  state.output_claimed = true;
   // A firmware's frame clock is its ports' launches: the first port of each launch is the tick
   // the frame listener (the machine's pen sampling) is told of, as a host board's frame timer is.
   if (tick_listener_ && start_ns != last_played_tick_ns_) {
     last_played_tick_ns_ = start_ns;
     tick_listener_(start_ns);
   }
-  if ((words.step_bits | words.dir_bits) == 0) {
-    for (WireListener* listener : state.idle_listeners) listener->on_frame(start_ns, words, frame_ns);
-    return;
-  }
-  play_words(state, start_ns, words, frame_ns);
-}
-
-// Counts the frame's pulses as sent (those ending after the run's end are cut off) and hands the
-// frame to every listener of the port.
-void SimBoard::play_words(PortState& port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns) {
-  const SimTime frame_end_ns = start_ns + SimTime{protocol::kFrameBitsUs} * kMicrosecond;
-  if (frame_end_ns <= end_ns_) {
-    count_frame_pulses(words, port.sent);
-  } else {
-    count_frame_pulses(words, port.sent, (end_ns_ - start_ns) / kMicrosecond);
-  }
-  for (WireListener* listener : port.listeners) listener->on_frame(start_ns, words, frame_ns);
+  ports_.play(port, start_ns, words, frame_ns, end_ns_);
 }
 
 // The rest of the world runs for the delay, but never past the run's end: a sketch waiting
@@ -274,26 +227,12 @@ int SimBoard::storage_read(int handle, uint8_t* data, size_t length, size_t* rea
 
 // ---- ports --------------------------------------------------------------------------------------
 
-void SimBoard::add_wire_listener(uint8_t port, WireListener* listener) {
-  PortState& state = ports_.at(port);
-  state.listeners.push_back(listener);
-  if (!listener->wants_idle_frames()) return;
-  state.idle_listeners.push_back(listener);
-  idle_listening_ports_ = static_cast<uint8_t>(idle_listening_ports_ | (1u << port));
-}
-
+// The ports count the pulse; the program hears it: a firmware through its capture peripheral, a
+// sketch through its capture ISR.
 void SimBoard::capture(uint8_t port, const ArrivingPulse& pulse) {
-  PortState& state = ports_.at(port);
-  if (!state.input_begun) {
-    ++state.unclaimed;
-    return;
-  }
-  const bool at_rising = state.edge == protocol::DirSampleEdge::kRising;
-  const protocol::CapturedPulse captured = protocol::captured_from_ticks(
-      capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns), at_rising ? pulse.dir_at_rise : pulse.dir_at_fall,
-      protocol::CaptureClock{});
-  const InputMode mode = at_rising ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
-  state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
+  const std::optional<protocol::CapturedPulse> seen = ports_.capture(port, pulse);
+  if (!seen) return;
+  const protocol::CapturedPulse& captured = *seen;
   if (firmware_) {
     firmware_->pulse_arrived(port, pulse);
     return;
@@ -341,40 +280,6 @@ uint32_t SimBoard::adc_samples(uint8_t pin) const {
   return static_cast<uint32_t>(1 + (scheduler_.now() - adc.begun_at) / kAdcConversionNs);
 }
 
-void SimBoard::connect_input_pin(uint8_t pin, Source<bool> level) { pins_.at(pin).source = std::move(level); }
-
-void SimBoard::on_pin_change(uint8_t pin, PinListener listener) { pins_.at(pin).listeners.push_back(std::move(listener)); }
-
-bool SimBoard::pin_level(uint8_t pin) const {
-  const PinState& state = pins_.at(pin);
-  if (state.mode == STEPDANCE_PIN_OUTPUT) return state.driven_level;
-  if (state.source) return state.source(now());
-  return state.mode == STEPDANCE_PIN_INPUT_PULLUP;
-}
-
-int SimBoard::set_pin_mode(uint8_t pin, int mode) {
-  if (pin >= kPins || mode < STEPDANCE_PIN_INPUT || mode > STEPDANCE_PIN_OUTPUT) {
-    return static_cast<int>(Status::kBadArgument);
-  }
-  const bool was_output = pins_[pin].mode == STEPDANCE_PIN_OUTPUT;
-  pins_[pin].mode = mode;
-  if (was_output != (mode == STEPDANCE_PIN_OUTPUT)) notify_pin(pin);
-  return static_cast<int>(Status::kOk);
-}
-
-void SimBoard::write_pin(uint8_t pin, bool high) {
-  if (pin >= kPins) return;
-  const bool changed = pins_[pin].driven_level != high;
-  pins_[pin].driven_level = high;
-  if (changed && pins_[pin].mode == STEPDANCE_PIN_OUTPUT) notify_pin(pin);
-}
-
-void SimBoard::notify_pin(uint8_t pin) {
-  const PinState& state = pins_[pin];
-  const bool driven = state.mode == STEPDANCE_PIN_OUTPUT;
-  for (const PinListener& listener : state.listeners) listener(now(), state.driven_level, driven);
-}
-
 // Safe state on the hardware: frames stop (the board already stopped its timers) and every
 // driver's ENABLE is driven high.
 void SimBoard::enter_safe_state() {
@@ -383,73 +288,11 @@ void SimBoard::enter_safe_state() {
   for (uint8_t port = 0; port < board.output_port_count; ++port) {
     const uint8_t enable = board.output_ports[port].enable;
     if (enable == kNoPin) continue;
-    pins_[enable].mode = STEPDANCE_PIN_OUTPUT;
-    pins_[enable].driven_level = true;
-    notify_pin(enable);
+    pins_.drive_high(enable, now());
   }
 }
 
-// ---- console ------------------------------------------------------------------------------------
-
-void SimBoard::send_console(const std::string& bytes) { console_input_.insert(console_input_.end(), bytes.begin(), bytes.end()); }
-
-size_t SimBoard::console_input_room() const {
-  const size_t unread = console_input_.size() - console_read_position_;
-  return unread < kConsoleInputBytes ? kConsoleInputBytes - unread : 0;
-}
-
-void SimBoard::on_console_line(std::function<void(const std::string&)> listener) { console_listener_ = std::move(listener); }
-
-void SimBoard::on_console_bytes(std::function<void(const uint8_t*, size_t)> listener) {
-  console_bytes_listener_ = std::move(listener);
-}
-
-// Keeps the newest kConsoleTextBytes, trimming in halves so the copying stays amortised.
-void SimBoard::keep_console_text(const uint8_t* data, size_t length) {
-  console_text_.append(reinterpret_cast<const char*>(data), length);
-  if (console_text_.size() <= 2 * kConsoleTextBytes) return;
-  const size_t excess = console_text_.size() - kConsoleTextBytes;
-  console_text_.erase(0, excess);
-  console_text_dropped_ += excess;
-}
-
-size_t SimBoard::write_console(const uint8_t* data, size_t length) {
-  if (console_bytes_listener_) console_bytes_listener_(data, length);
-  keep_console_text(data, length);
-  for (size_t i = 0; i < length; ++i) {
-    const char c = static_cast<char>(data[i]);
-    if (c == '\r') continue;
-    if (c != '\n') {
-      console_line_ += c;
-      if (console_line_.size() >= kConsoleLineBytes) flush_console_line();
-      continue;
-    }
-    if (console_listener_) console_listener_(console_line_);
-    console_line_.clear();
-  }
-  if (!console_line_.empty()) scheduler_.schedule(console_quiet_event_, now() + kConsoleQuietNs);
-  return length;
-}
-
-void SimBoard::ConsoleQuietEvent::fire(Event& event, Scheduler&) {
-  static_cast<ConsoleQuietEvent&>(event).owner.flush_console_line();
-}
-
-void SimBoard::flush_console_line() {
-  if (console_line_.empty()) return;
-  if (console_listener_) console_listener_(console_line_);
-  console_line_.clear();
-}
-
-int SimBoard::read_console() {
-  if (console_read_position_ >= console_input_.size()) return -1;
-  const int byte = console_input_[console_read_position_++];
-  if (console_read_position_ == console_input_.size()) {
-    console_input_.clear();
-    console_read_position_ = 0;
-  }
-  return byte;
-}
+// ---- readouts ------------------------------------------------------------------------------------
 
 std::vector<SimBoard::BlockCounter> SimBoard::counters() const {
   std::vector<BlockCounter> out;
@@ -499,24 +342,6 @@ uint64_t SimBoard::port_counter(const std::string& block_class, uint8_t port, co
     }
   }
   return 0;
-}
-
-int SimBoard::i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
-                           size_t read_length, int64_t* wire_ns) {
-  *wire_ns = 0;
-  if (bus >= i2c_.size() || i2c_[bus].clock_hz == 0) return static_cast<int>(I2cOutcome::kBusError);
-  SimTime duration = 0;
-  const I2cOutcome outcome = i2c_[bus].model.transfer(now(), i2c_[bus].clock_hz, address, write, write_length,
-                                                      read, read_length, &duration);
-  *wire_ns = duration;
-  ++i2c_timing_.transfers;
-  i2c_timing_.total_ns += duration;
-  if (in_loop_pass_) {
-    i2c_ns_this_pass_ += duration;
-  } else {
-    i2c_timing_.setup_ns += duration;
-  }
-  return static_cast<int>(outcome);
 }
 
 StepdanceBoardStatsV1 SimBoard::stats() const {

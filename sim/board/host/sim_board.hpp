@@ -1,4 +1,5 @@
-// The simulator's side of one board: its timers, pins, ports and console, and the sketch it runs.
+// The simulator's side of one board: its timers, its parts (pins, ports, console, buses), how the
+// world is wired to it, and the sketch it runs.
 #pragma once
 
 #include <array>
@@ -10,9 +11,13 @@
 #include <vector>
 
 #include "board/abi/board_abi.h"
+#include "board/host/board_console.hpp"
 #include "board/host/board_firmware.hpp"
+#include "board/host/board_i2c.hpp"
+#include "board/host/board_pins.hpp"
+#include "board/host/board_ports.hpp"
 #include "board/host/board_storage.hpp"
-#include "board/host/frame_pulses.hpp"
+#include "board/host/board_wiring.hpp"
 #include "board/host/wire.hpp"
 #include "common/sim_time.hpp"
 #include "board/loader/board_library.hpp"
@@ -67,15 +72,18 @@ struct BoardFault {
 ///   loop timer       ─► sketch's loop()
 ///   capture()        ─► sketch's capture ISR (input ports)
 ///
-/// Inputs (encoders, ADC pins, input pins) are pulled from sources when the sketch reads them;
-/// outputs (pins) are pushed to listeners when the sketch writes them.
+/// Everything outside plugs in through wire(terminal, …) (board_wiring.hpp): inputs (encoders,
+/// ADC pins, input pins) are pulled from sources when the sketch reads them; outputs (pins,
+/// ports) are pushed to listeners when the sketch writes them; I2C devices answer transfers.
+///
+/// Its parts own their state: BoardConsole (the USB serial), BoardPorts (frames played, pulses
+/// captured), BoardPins (digital pins), BoardI2c (the QWIIC buses), BoardStorage (the SD card's
+/// files). The board itself keeps the timers, the entry into the sketch, the encoders, the ADC
+/// and the readouts of the sketch's counters.
 class SimBoard {
  public:
-  /// A source of a value as a function of simulated time.
   template <typename T>
-  using Source = std::function<T(SimTime)>;
-  /// Told when an output pin changes: (time, level, whether the pin is driven as an output).
-  using PinListener = std::function<void(SimTime, bool level, bool driven)>;
+  using Source = sim::Source<T>;
 
   SimBoard(Scheduler& scheduler, BoardOptions options, std::unique_ptr<BoardLibrary> library);
   /// A board whose program is `firmware` (a firmware image on an emulated chip) on the module
@@ -107,21 +115,20 @@ class SimBoard {
   /// Whether the sketch runs no more: it was stopped, or the run ended inside one of its delays.
   bool frozen() const { return frozen_; }
 
-  // ---- wiring: the world feeding the board ----
-  /// The quadrature decoder `index` (0 = ENC1) counts what `counts` says at each read.
-  void connect_encoder(uint8_t index, Source<int64_t> counts);
-  /// The ADC of `pin` converts `value` (0..1023).
-  void connect_adc(uint8_t pin, Source<uint16_t> value);
-  /// An external device drives input pin `pin`.
-  void connect_input_pin(uint8_t pin, Source<bool> level);
-  /// Calls `listener` whenever the sketch changes pin `pin`'s output.
-  void on_pin_change(uint8_t pin, PinListener listener);
-  /// Adds a listener of output port `port`'s wire (the board does not own it).
-  void add_wire_listener(uint8_t port, WireListener* listener);
-  /// Plugs `device` into QWIIC bus `bus` (0 or 1) at 7-bit `address` (the board does not own it).
-  void attach_i2c_device(uint8_t bus, uint8_t address, I2cDevice* device) { i2c_[bus].model.attach(address, device); }
-  /// Breaks or mends bus `bus` (fault scenarios and tests).
-  void set_i2c_fault(uint8_t bus, I2cBusFault fault) { i2c_[bus].model.set_fault(fault); }
+  // ---- wiring: one call, by terminal (board_wiring.hpp); the board owns none of these ----
+  /// The quadrature decoder counts what `counts` says at each read.
+  void wire(terminal::Encoder at, Source<int64_t> counts) { connect_encoder(at.index, std::move(counts)); }
+  /// The ADC of the pin converts `value` (0..1023).
+  void wire(terminal::Analog at, Source<uint16_t> value) { connect_adc(at.pin, std::move(value)); }
+  /// An external device drives the input pin.
+  void wire(terminal::InputPin at, Source<bool> level) { pins_.connect_input(at.pin, std::move(level)); }
+  /// `listener` hears every change the sketch makes to the pin's output.
+  void wire(terminal::OutputPin at, PinListener listener) { pins_.on_change(at.pin, std::move(listener)); }
+  /// `listener` hears the frames the output port plays.
+  void wire(terminal::OutputPort at, WireListener* listener) { ports_.add_listener(at.port, listener); }
+  /// `device` answers transfers to its address on the bus.
+  void wire(terminal::I2c at, I2cDevice* device) { i2c_.attach(at.bus, at.address, device); }
+
   /// A STEP pulse reaches input port `port`; call at pulse.fall_ns (when the capture ISR runs).
   void capture(uint8_t port, const ArrivingPulse& pulse);
   /// Calls `listener` at every frame tick, after the previous frame's words were played and
@@ -130,51 +137,22 @@ class SimBoard {
   /// The run ends at `end_ns`: pulses falling after it are not counted as sent (they are cut
   /// off, like the VCD). Default: never.
   void set_end_time(SimTime end_ns) { end_ns_ = end_ns; }
-  /// The board's USB serial receive buffer: a Teensy 4 holds 8 packets of 512 bytes
-  /// (teensy4/usb_serial.c in PJRC's cores); a host cannot get further ahead of the sketch.
-  static constexpr size_t kConsoleInputBytes = 8 * 512;
-  /// What the sketch printed is kept for inspection up to this much (the newest; older is dropped
-  /// and counted; a one-hour soak's status replies made a megabyte of it), and a line longer than
-  /// kConsoleLineBytes is handed on in pieces.
-  static constexpr size_t kConsoleTextBytes = 64 * 1024;
-  static constexpr size_t kConsoleLineBytes = 4096;
-  /// A line left unfinished this long (simulated) is handed on as it is.
-  static constexpr SimTime kConsoleQuietNs = 100 * kMillisecond;
 
-  /// Queues bytes for the sketch's Serial input (scripted senders: the scenario bounds them).
-  void send_console(const std::string& bytes);
-  /// Room left in the receive buffer: a live terminal is read no further than this, so a host
-  /// writing faster than the sketch reads is held back, as by a real board's USB.
-  size_t console_input_room() const;
-  /// Counts console bytes a live terminal dropped because nobody read them (the summary's
-  /// console entry reports them).
-  void count_console_dropped(uint64_t bytes) { console_dropped_bytes_ += bytes; }
-  uint64_t console_dropped_bytes() const { return console_dropped_bytes_; }
-  /// Bytes of console_text() dropped to keep it within kConsoleTextBytes.
-  uint64_t console_text_dropped_bytes() const { return console_text_dropped_; }
-  /// Calls `listener` with every complete line the sketch prints (without the line ending).
-  void on_console_line(std::function<void(const std::string&)> listener);
-  /// Hands the line the sketch has begun but not ended to the line listener (at the run's end,
-  /// or after a quiet while), as if it had ended.
-  void flush_console_line();
-  /// Calls `listener` with the sketch's console bytes as they are written, unchanged (the live
-  /// simulator forwards them to a pseudo-terminal).
-  void on_console_bytes(std::function<void(const uint8_t*, size_t)> listener);
+  /// The USB serial console: what a host sends, what the sketch prints.
+  BoardConsole& console() { return console_; }
+  const BoardConsole& console() const { return console_; }
+  /// The QWIIC buses (a fault can be set on one; their timing is read after the run).
+  BoardI2c& i2c() { return i2c_; }
+  const BoardI2c& i2c() const { return i2c_; }
+  /// The ports: pulses sent and received, which were claimed.
+  const BoardPorts& ports() const { return ports_; }
 
   // ---- observation ----
   /// The level the sketch would read on `pin` now (or that it drives).
-  bool pin_level(uint8_t pin) const;
-  /// Pulses the board played on output port `port` (decoded from the wire).
-  const PulseCounts& sent(uint8_t port) const { return ports_[port].sent; }
-  /// Pulses that reached input port `port`, decoded as the port's mode does (STEP_DIR-mode
-  /// steps are tallied under SIGNAL_X: the host cannot see which signal the sketch chose).
-  const PulseCounts& received(uint8_t port) const { return ports_[port].received; }
-  /// Pulses that reached an input port no InputPort had begun (they went nowhere).
-  uint64_t unclaimed_pulses(uint8_t port) const { return ports_[port].unclaimed; }
-  bool output_claimed(uint8_t port) const { return ports_[port].output_claimed; }
+  bool pin_level(uint8_t pin) const { return pins_.level(pin, now()); }
   /// Whether the sketch began input port `port` (a firmware image: whether it set the port up).
   bool input_begun(uint8_t port) const {
-    return firmware_ ? firmware_->input_port_begun(port) : ports_[port].input_begun;
+    return firmware_ ? firmware_->input_port_begun(port) : ports_.input_begun(port);
   }
   /// The board's own counters (frames, overruns, faults, pulses sent, signals carried).
   StepdanceBoardStatsV1 stats() const;
@@ -203,18 +181,6 @@ class SimBoard {
   const std::vector<BoardFault>& faults() const { return faults_; }
   uint64_t faults_not_logged() const { return faults_not_logged_; }
   bool in_safe_state() const { return safe_state_; }
-  /// What the sketch printed so far: everything, or its newest kConsoleTextBytes.
-  const std::string& console_text() const { return console_text_; }
-  /// Time the sketch's loop spent in I2C transfers (their wire time at the bus clock): the most
-  /// in any one loop pass, and in all. Transfers in setup() are counted apart.
-  struct I2cTiming {
-    SimTime max_loop_pass_ns = 0;
-    SimTime total_ns = 0;
-    SimTime setup_ns = 0;
-    uint64_t transfers = 0;
-    uint64_t loop_passes_with_i2c = 0;
-  };
-  const I2cTiming& i2c_timing() const { return i2c_timing_; }
   /// delay() calls made from an interrupt handler (ignored: they cannot block there).
   uint64_t delays_in_isr() const { return delays_in_isr_; }
   /// Storage calls made from an interrupt handler (refused: storage is loop-only, and the run
@@ -226,22 +192,19 @@ class SimBoard {
   // ---- program side: what the sketch's HAL calls (through the board ABI) and a firmware's
   // peripherals reach. Times are now(). ----
   /// Configures `pin` (a StepdancePinMode); kBadArgument for a pin the board lacks.
-  int set_pin_mode(uint8_t pin, int mode);
-  void write_pin(uint8_t pin, bool high);
+  int set_pin_mode(uint8_t pin, int mode) { return pins_.set_mode(pin, mode, now()); }
+  void write_pin(uint8_t pin, bool high) { pins_.write(pin, high, now()); }
   /// The encoder's raw quadrature count (no offset) on ENC `index` (0 or 1).
   int64_t encoder_counts(uint8_t index) const;
   /// The analog level on `pin`, 0..1023 (0 with nothing connected).
   uint16_t analog_level(uint8_t pin) const;
-  /// Sets the clock of QWIIC bus `bus` (0 or 1) in Hz; 0 = not begun.
-  void set_i2c_clock(uint8_t bus, uint32_t clock_hz) { i2c_[bus].clock_hz = clock_hz; }
+  /// One transfer on QWIIC bus `bus` now (BoardI2c::transfer).
   int i2c_transfer(uint8_t bus, uint8_t address, const uint8_t* write, size_t write_length, uint8_t* read,
-                   size_t read_length, int64_t* wire_ns);
-  /// The sketch writes `length` bytes to its console (the USB serial); all are taken.
-  size_t write_console(const uint8_t* data, size_t length);
-  /// Bytes the host has sent that the sketch has not read.
-  size_t console_available() const { return console_input_.size() - console_read_position_; }
-  /// The next byte the host sent, or -1.
-  int read_console();
+                   size_t read_length, int64_t* wire_ns) {
+    return i2c_.transfer(bus, address, write, write_length, read, read_length, now(), wire_ns);
+  }
+  /// The sketch writes `length` bytes to its console now; all are taken.
+  size_t write_console(const uint8_t* data, size_t length) { return console_.write(data, length, now()); }
   /// Output port `port` plays `words` from `start_ns`; its next frame starts `frame_ns` later
   /// (a firmware's frame clock: a host-compiled sketch's frames are played by the board's own
   /// frame timer). Idle words reach only the listeners that want idle frames.
@@ -249,31 +212,9 @@ class SimBoard {
 
  private:
   friend struct BoardCallbacks;
-  static constexpr uint8_t kPorts = 4;
+  static constexpr uint8_t kPorts = BoardPorts::kPorts;
   static constexpr uint8_t kPins = kTeensy41.highest_pin + 1;  ///< the largest Teensy's pins
 
-  struct PortState {
-    bool output_claimed = false;
-    bool frame_pending = false;
-    protocol::FrameWords pending{};
-    std::vector<WireListener*> listeners;
-    std::vector<WireListener*> idle_listeners;  ///< the subset that also wants idle frames
-    PulseCounts sent;
-    bool input_begun = false;
-    protocol::DirSampleEdge edge = protocol::DirSampleEdge::kFalling;
-    PulseCounts received;
-    uint64_t unclaimed = 0;
-  };
-  struct PinState {
-    int mode = STEPDANCE_PIN_INPUT;
-    bool driven_level = false;
-    Source<bool> source;
-    std::vector<PinListener> listeners;
-  };
-  struct I2cState {
-    I2cBusModel model;
-    uint32_t clock_hz = 0;  ///< 0 until the sketch begins the bus
-  };
   struct AdcState {
     Source<uint16_t> value;
     bool begun = false;
@@ -291,13 +232,10 @@ class SimBoard {
     static void fire(Event& event, Scheduler& scheduler);
     SimBoard& owner;
   };
-  /// Hands on a console line left unfinished for kConsoleQuietNs.
-  struct ConsoleQuietEvent : Event {
-    explicit ConsoleQuietEvent(SimBoard& board) : Event(&fire), owner(board) {}
-    static void fire(Event& event, Scheduler& scheduler);
-    SimBoard& owner;
-  };
-  void keep_console_text(const uint8_t* data, size_t length);
+  /// The quadrature decoder `index` (0 = ENC1) counts what `counts` says at each read.
+  void connect_encoder(uint8_t index, Source<int64_t> counts);
+  /// The ADC of `pin` converts `value` (0..1023).
+  void connect_adc(uint8_t pin, Source<uint16_t> value);
   void add_storage_warnings(std::vector<BoardWarning>& out) const;
 
   /// Runs one entry point of the sketch (`call` returns its code) unless the board is frozen;
@@ -308,8 +246,6 @@ class SimBoard {
 
   static void frame_tick(void* context, SimTime time);
   static void khz_tick(void* context, SimTime time);
-  void play_pending_frames(SimTime start_ns);
-  void play_words(PortState& port, SimTime start_ns, const protocol::FrameWords& words, SimTime frame_ns);
   void firmware_stopped(const SketchStop& stop);
   SimTime next_aligned(SimTime offset_ns, SimTime period_ns) const;
   /// The counts an encoder read sees now: the last latched sample while sampling, else live.
@@ -326,7 +262,6 @@ class SimBoard {
   int32_t read_quadrature(uint8_t index);
   void write_quadrature(uint8_t index, int32_t count);
   uint32_t adc_samples(uint8_t pin) const;
-  void notify_pin(uint8_t pin);
   void enter_safe_state();
   int storage_write(int handle, const uint8_t* data, size_t length);
   int storage_read(int handle, uint8_t* data, size_t length, size_t* read);
@@ -346,28 +281,15 @@ class SimBoard {
   std::array<int64_t, 2> encoder_samples_{};
   LoopEvent loop_event_;
   SetupEvent setup_event_;
-  ConsoleQuietEvent console_quiet_event_;
   bool in_isr_ = false;
   bool safe_state_ = false;
-  std::array<PortState, kPorts> ports_{};
-  uint8_t pending_ports_ = 0;       ///< bit p: port p has a frame to play at the next tick
-  uint8_t idle_listening_ports_ = 0;  ///< bit p: port p has listeners that want idle frames
-  std::array<PinState, kPins> pins_{};
+  BoardConsole console_;
+  BoardPorts ports_;
+  BoardPins pins_;
   std::array<AdcState, kPins> adcs_{};
   std::array<Source<int64_t>, 2> encoders_{};
   std::array<int64_t, 2> encoder_offsets_{};
-  std::array<I2cState, 2> i2c_{};
-  I2cTiming i2c_timing_;
-  bool in_loop_pass_ = false;
-  SimTime i2c_ns_this_pass_ = 0;
-  std::vector<uint8_t> console_input_;
-  size_t console_read_position_ = 0;
-  std::string console_text_;
-  uint64_t console_text_dropped_ = 0;
-  uint64_t console_dropped_bytes_ = 0;
-  std::string console_line_;
-  std::function<void(const std::string&)> console_listener_;
-  std::function<void(const uint8_t*, size_t)> console_bytes_listener_;
+  BoardI2c i2c_;
   BoardStorage storage_;
   std::vector<BoardFault> faults_;
   uint64_t faults_not_logged_ = 0;

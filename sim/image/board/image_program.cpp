@@ -173,7 +173,7 @@ uint16_t ImageProgram::analog_level(SimTime, uint8_t pin) { return board_->analo
 
 int ImageProgram::i2c_transfer(SimTime, uint8_t bus, uint32_t clock_hz, uint8_t address, const uint8_t* write,
                                size_t write_length, uint8_t* read, size_t read_length, SimTime& wire_ns) {
-  board_->set_i2c_clock(bus, clock_hz);
+  board_->i2c().begin(bus, clock_hz);
   int64_t wire = 0;
   const int result = board_->i2c_transfer(bus, address, write, write_length, read, read_length, &wire);
   wire_ns = wire;
@@ -186,7 +186,7 @@ size_t ImageProgram::serial_from_device(SimTime, const uint8_t* data, size_t len
 
 size_t ImageProgram::serial_to_device(SimTime, uint8_t* data, size_t capacity) {
   size_t taken = 0;
-  while (taken < capacity && board_->console_available() > 0) data[taken++] = static_cast<uint8_t>(board_->read_console());
+  while (taken < capacity && board_->console().available() > 0) data[taken++] = static_cast<uint8_t>(board_->console().read());
   return taken;
 }
 

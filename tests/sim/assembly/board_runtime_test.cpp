@@ -41,7 +41,7 @@ class BoardRuntimeTest : public ::testing::Test {
     simulation_ = create(scenario, "board_runtime");
     ASSERT_NE(simulation_, nullptr);
     board_ = simulation_->board("board");
-    board_->on_console_line([this](const std::string& line) { lines_.push_back(line); });
+    board_->console().on_line([this](const std::string& line) { lines_.push_back(line); });
   }
   std::unique_ptr<Simulation> simulation_;
   SimBoard* board_ = nullptr;

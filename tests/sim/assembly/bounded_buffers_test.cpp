@@ -42,15 +42,15 @@ TEST(BoundedBuffers, TheConsoleKeptForInspectionIsItsNewest64KiB) {
   ASSERT_NE(simulation, nullptr);
   simulation->run_until(500 * kMillisecond);
   const SimBoard& board = *simulation->board("driver");
-  const std::string& text = board.console_text();
+  const std::string& text = board.console().text();
   // The text ends with the last line printed; everything up to it was printed once.
   const size_t last_start = text.rfind("chatter line ", text.size() - 3);
   ASSERT_NE(last_start, std::string::npos);
   const uint64_t last_line = std::stoull(text.substr(last_start + 13));
   EXPECT_GT(last_line, 200000u);  // 100 lines a pass, a pass every 200 µs, for 0.5 s
-  EXPECT_LE(text.size(), 2u * SimBoard::kConsoleTextBytes);
-  EXPECT_GE(text.size(), SimBoard::kConsoleTextBytes);
-  EXPECT_EQ(text.size() + board.console_text_dropped_bytes(), chatter_bytes_through(last_line));
+  EXPECT_LE(text.size(), 2u * BoardConsole::kTextBytes);
+  EXPECT_GE(text.size(), BoardConsole::kTextBytes);
+  EXPECT_EQ(text.size() + board.console().text_dropped_bytes(), chatter_bytes_through(last_line));
 }
 
 TEST(BoundedBuffers, AHostTranscriptKeepsItsFirstLinesAndCountsTheRest) {

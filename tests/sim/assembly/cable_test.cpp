@@ -69,7 +69,7 @@ struct Tallies {
 Tallies run(const std::string& cable_keys, const std::string& name) {
   auto simulation = create(chained_with_cable(cable_keys), name);
   simulation->finish();
-  return {simulation->board("knobs")->sent(0), simulation->board("plotter")->received(0),
+  return {simulation->board("knobs")->ports().sent(0), simulation->board("plotter")->ports().received(0),
           simulation->cables().front()->counters()};
 }
 

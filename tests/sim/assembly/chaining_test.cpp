@@ -19,8 +19,8 @@ TEST(ChainingTest, TheChainedExampleDeliversEveryPulseAndDrawsItsSquare) {
   const SimulationReport report = simulation->finish();
   for (const ExpectationResult& result : report.expectations) EXPECT_TRUE(result.met) << result.message;
 
-  const PulseCounts& sent = simulation->board("knobs")->sent(0);
-  const PulseCounts& received = simulation->board("plotter")->received(0);
+  const PulseCounts& sent = simulation->board("knobs")->ports().sent(0);
+  const PulseCounts& received = simulation->board("plotter")->ports().received(0);
   EXPECT_EQ(sent.accepted(), 10000u);
   expect_same_pulses(sent, received);
   EXPECT_EQ(received.rejected(), 0u);
@@ -40,7 +40,7 @@ TEST(ChainingTest, DecodingTheSimulatorsOwnVcdReproducesItsCounts) {
     const VcdWire& dir = read.capture.wires[pair.dir];
     const DecodeResult decoded = decode_step_dir(step.edges, dir.edges, DecodeOptions{}, {step.initial, dir.initial});
     const bool output = pair.label == "knobs.OUT_A";
-    const PulseCounts& counted = output ? simulation->board("knobs")->sent(0) : simulation->board("plotter")->received(0);
+    const PulseCounts& counted = output ? simulation->board("knobs")->ports().sent(0) : simulation->board("plotter")->ports().received(0);
     ASSERT_TRUE(output || pair.label == "plotter.IN_A") << pair.label;
     for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
       EXPECT_EQ(decoded.counts[signal].forward, counted[signal].forward) << pair.label;

@@ -29,7 +29,7 @@ TEST(DisplayAndKnobScenario, NoLoopPassSpendsMoreThanOneDataChunkOnTheWire) {
   auto simulation = create(example(), "display_and_knob_timing", false);
   ASSERT_NE(simulation, nullptr);
   simulation->finish();
-  const SimBoard::I2cTiming& timing = simulation->board("driver")->i2c_timing();
+  const I2cTiming& timing = simulation->board("driver")->i2c().timing();
   // The longest transfer is a 32-byte data chunk: control byte + 32 data bytes + the address =
   // 34 bytes of 9 bits, plus START and STOP, at 2.5 µs a bit (400 kHz): 308 × 2.5 = 770 µs.
   EXPECT_EQ(timing.max_loop_pass_ns, 770 * kMicrosecond);
@@ -49,7 +49,7 @@ TEST(DisplayAndKnobScenario, MissingDisplayIsReportedAndTheDrawingIsUnaffected) 
   ASSERT_NE(simulation, nullptr);
   const SimulationReport report = simulation->finish();  // returns: nothing waits for the display
   for (const ExpectationResult& result : report.expectations) EXPECT_TRUE(result.met) << result.message;
-  const std::string& console = simulation->board("driver")->console_text();
+  const std::string& console = simulation->board("driver")->console().text();
   EXPECT_NE(console.find("OledDisplay: QWIIC1 address 60: address nack, retrying every second"), std::string::npos)
       << console;
   EXPECT_EQ(console.find("OledDisplay: ready"), std::string::npos);
@@ -60,9 +60,9 @@ TEST(DisplayAndKnobScenario, BusHeldLowIsABusErrorAndNothingHangs) {
   broken.expectations.clear();
   auto simulation = create(broken, "display_and_knob_bus_error", false);
   ASSERT_NE(simulation, nullptr);
-  simulation->board("driver")->set_i2c_fault(1, I2cBusFault::kLineHeldLow);
+  simulation->board("driver")->i2c().set_fault(1, I2cBusFault::kLineHeldLow);
   simulation->finish();
-  const std::string& console = simulation->board("driver")->console_text();
+  const std::string& console = simulation->board("driver")->console().text();
   EXPECT_NE(console.find("OledDisplay: QWIIC1 address 60: bus error"), std::string::npos) << console;
   EXPECT_NE(console.find("QwiicTwist: QWIIC1 address 63: bus error"), std::string::npos) << console;
   // The pen still draws; the menu never saw the knob, so y moved 2000 counts at 0.01 mm = 20 mm.

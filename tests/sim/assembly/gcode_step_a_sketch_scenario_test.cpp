@@ -51,8 +51,8 @@ TEST_F(GCodeStepASketchScenarioTest, MotorsEndAtHomePlusTheKnobsNudge) {
   EXPECT_EQ(simulation_->stepper("driver", 'A')->position_steps(), -400);
   EXPECT_EQ(simulation_->stepper("driver", 'B')->position_steps(), -400);
   // Z4 (pen up) at 50 servo steps per mm.
-  EXPECT_EQ(simulation_->board("driver")->sent(2)[SIGNAL_E].forward -
-                static_cast<int64_t>(simulation_->board("driver")->sent(2)[SIGNAL_E].reverse),
+  EXPECT_EQ(simulation_->board("driver")->ports().sent(2)[SIGNAL_E].forward -
+                static_cast<int64_t>(simulation_->board("driver")->ports().sent(2)[SIGNAL_E].reverse),
             200);
 }
 

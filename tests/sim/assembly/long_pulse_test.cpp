@@ -62,7 +62,7 @@ Received run(const std::string& receiver, int64_t width_ns, const std::string& n
   auto simulation = create(knob_to(receiver, width_ns), name, false);
   simulation->finish();
   const SimBoard& board = *simulation->board("receiver");
-  Received received{simulation->board("knobs")->sent(0), board.received(0), 0, 0};
+  Received received{simulation->board("knobs")->ports().sent(0), board.ports().received(0), 0, 0};
   received.port_too_long = board.port_counter("InputPort", 0, "rejected_too_long");
   for (const char* counter : {"received_x_forward", "received_x_reverse", "received_y_forward", "received_y_reverse"}) {
     received.port_accepted += board.port_counter("InputPort", 0, counter);

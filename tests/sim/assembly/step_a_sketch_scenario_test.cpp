@@ -36,8 +36,8 @@ TEST_F(StepASketchScenarioTest, MotorsEndAtTheHouseWindowCorner) {
   EXPECT_EQ(simulation_->stepper("driver", 'A')->forward_steps(), 36400u);
   EXPECT_EQ(simulation_->stepper("driver", 'A')->reverse_steps(), 52000u);
   EXPECT_EQ(simulation_->stepper("driver", 'A')->ignored_steps(), 0u);
-  EXPECT_EQ(simulation_->board("driver")->sent(0)[SIGNAL_E].forward, 36400u);
-  EXPECT_EQ(simulation_->board("driver")->sent(0)[SIGNAL_E].reverse, 52000u);
+  EXPECT_EQ(simulation_->board("driver")->ports().sent(0)[SIGNAL_E].forward, 36400u);
+  EXPECT_EQ(simulation_->board("driver")->ports().sent(0)[SIGNAL_E].reverse, 52000u);
 }
 
 TEST_F(StepASketchScenarioTest, PenDrawsFourStrokesAndEndsUp) {
@@ -56,7 +56,7 @@ TEST_F(StepASketchScenarioTest, PenDrawsFourStrokesAndEndsUp) {
 
 TEST_F(StepASketchScenarioTest, PenServoMovedFourTimesEachWay) {
   // Four clicks down (−200 from +0 or +200) and four up: 200 + 7 × 400 = 3000 servo steps.
-  const PulseCounts& pen = simulation_->board("driver")->sent(2);
+  const PulseCounts& pen = simulation_->board("driver")->ports().sent(2);
   EXPECT_EQ(pen[SIGNAL_E].forward, 1600u);
   EXPECT_EQ(pen[SIGNAL_E].reverse, 1400u);
   EXPECT_EQ(simulation_->servo("driver", 'C')->position_steps(), 200);

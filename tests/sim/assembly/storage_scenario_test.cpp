@@ -80,7 +80,7 @@ A = { device = "stepper" }
   ASSERT_NE(replay, nullptr) << error.message;
   replay->finish();
   EXPECT_EQ(replay->stepper("driver", 'A')->position_steps(), 3000);
-  EXPECT_EQ(replay->board("driver")->console_text().find("cannot play"), std::string::npos);
+  EXPECT_EQ(replay->board("driver")->console().text().find("cannot play"), std::string::npos);
 }
 
 TEST(StorageScenario, ASlowCardMakesTheRecorderOverrunWithACountedWarning) {
@@ -90,7 +90,7 @@ TEST(StorageScenario, ASlowCardMakesTheRecorderOverrunWithACountedWarning) {
   simulation->finish();
   EXPECT_EQ(counter(*simulation, "FourTrackRecorder", "overruns"), 1u);
   const SimBoard& board = *simulation->board("driver");
-  EXPECT_NE(board.console_text().find("too slow"), std::string::npos) << board.console_text();
+  EXPECT_NE(board.console().text().find("too slow"), std::string::npos) << board.console().text();
   EXPECT_EQ(board.storage_calls_in_isr(), 0u);
   EXPECT_TRUE(simulation->board("driver")->stats().frames > 70000);  // frames never stopped
   const std::string folder = test_output_dir("storage_slow") + "/driver.sd/";

@@ -34,13 +34,13 @@ TEST(SimBoardTest, StepASketchTurnsKnobCountsIntoMotorPulses) {
   Scheduler scheduler;
   auto board = load_board(scheduler, kStepASketch, "driver");
   EXPECT_STREQ(board->definition().name, "Driver Module v1.0");
-  board->connect_encoder(0, [](SimTime time) { return time >= 10 * kMillisecond ? int64_t{100} : int64_t{0}; });
+  board->wire(terminal::Encoder{0}, [](SimTime time) { return time >= 10 * kMillisecond ? int64_t{100} : int64_t{0}; });
   board->power_on(0);
   scheduler.run_until(100 * kMillisecond);
   // +100 counts on the inverted 0.01 mm/count knob: x = −1 mm, a = b = −80 steps, inverted twice.
-  EXPECT_EQ(board->sent(0)[SIGNAL_E].forward, 80u);
-  EXPECT_EQ(board->sent(0)[SIGNAL_E].reverse, 0u);
-  EXPECT_EQ(board->sent(1)[SIGNAL_E].forward, 80u);
+  EXPECT_EQ(board->ports().sent(0)[SIGNAL_E].forward, 80u);
+  EXPECT_EQ(board->ports().sent(0)[SIGNAL_E].reverse, 0u);
+  EXPECT_EQ(board->ports().sent(1)[SIGNAL_E].forward, 80u);
   const StepdanceBoardStatsV1 stats = board->stats();
   EXPECT_EQ(board->port_counter("OutputPort", 0, "sent_e_forward"), 80u);  // the board's own count agrees with the wire
   EXPECT_EQ(stats.frames, 2500u);               // frames at 40 µs … 100 ms
@@ -56,7 +56,7 @@ TEST(SimBoardTest, WithASamplePhaseEncoderReadsSeeTheLastSampleInstant) {
   options.encoder_sample_phase_ns = 3 * kMicrosecond + 123;  // 2 µs minus a little before each tick
   auto board = load_board(scheduler, kStepASketch, "driver", options);
   std::vector<SimTime> asked;
-  board->connect_encoder(0, [&asked](SimTime time) {
+  board->wire(terminal::Encoder{0}, [&asked](SimTime time) {
     asked.push_back(time);
     return int64_t{0};
   });
@@ -79,13 +79,13 @@ TEST(SimBoardTest, TwoBoardsRunningOneSketchKeepSeparateGlobals) {
   Scheduler scheduler;
   auto first = load_board(scheduler, kStepASketch, "first");
   auto second = load_board(scheduler, kStepASketch, "second");
-  first->connect_encoder(0, [](SimTime time) { return time > kMillisecond ? int64_t{50} : int64_t{0}; });
-  second->connect_encoder(0, [](SimTime time) { return time > kMillisecond ? int64_t{-25} : int64_t{0}; });
+  first->wire(terminal::Encoder{0}, [](SimTime time) { return time > kMillisecond ? int64_t{50} : int64_t{0}; });
+  second->wire(terminal::Encoder{0}, [](SimTime time) { return time > kMillisecond ? int64_t{-25} : int64_t{0}; });
   first->power_on(0);
   second->power_on(0);
   scheduler.run_until(20 * kMillisecond);
-  EXPECT_EQ(first->sent(0)[SIGNAL_E].forward, 40u);
-  EXPECT_EQ(second->sent(0)[SIGNAL_E].reverse, 20u);
+  EXPECT_EQ(first->ports().sent(0)[SIGNAL_E].forward, 40u);
+  EXPECT_EQ(second->ports().sent(0)[SIGNAL_E].reverse, 20u);
   EXPECT_EQ(first->port_counter("OutputPort", 0, "sent_e_forward"), 40u);
   EXPECT_EQ(second->port_counter("OutputPort", 0, "sent_e_reverse"), 20u);
 }
@@ -94,7 +94,7 @@ TEST(SimBoardTest, ConsoleLinesReachTheListener) {
   Scheduler scheduler;
   auto board = load_board(scheduler, kStepASketch, "driver");
   std::vector<std::string> lines;
-  board->on_console_line([&lines](const std::string& line) { lines.push_back(line); });
+  board->console().on_line([&lines](const std::string& line) { lines.push_back(line); });
   board->power_on(0);
   scheduler.run_until(2500 * kMillisecond);
   ASSERT_EQ(lines.size(), 2u);

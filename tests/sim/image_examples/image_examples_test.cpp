@@ -74,7 +74,7 @@ ExampleRun run_example(const scenario::Scenario& scenario, const std::map<std::s
   for (const scenario::BoardConfig& board : scenario.boards) {
     for (uint8_t port = 0; port < board.module->output_port_count; ++port) {
       FrameLog& log = result.wires[board.name + ":" + static_cast<char>('A' + port)];
-      result.simulation->board(board.name)->add_wire_listener(port, &log);
+      result.simulation->board(board.name)->wire(terminal::OutputPort{port}, &log);
     }
   }
   result.report = result.simulation->finish();
@@ -177,7 +177,7 @@ std::vector<std::string> port_names(const scenario::Scenario& scenario, const Ex
     const SimBoard* board = run.simulation->board(config.name);
     for (uint8_t port = 0; port < 4; ++port) {
       const std::string letter(1, static_cast<char>('A' + port));
-      if (board->output_claimed(port)) names.push_back(config.name + ":OUT_" + letter);
+      if (board->ports().output_claimed(port)) names.push_back(config.name + ":OUT_" + letter);
       if (board->input_begun(port)) names.push_back(config.name + ":IN_" + letter);
     }
   }

@@ -107,7 +107,7 @@ TEST_F(TestOnlyBoard, RunsItsSketchOnItsOwnPins) {
   EXPECT_TRUE(report.expectations[0].met) << report.expectations[0].message;
   const SimBoard& board = *simulation->board("b");
   EXPECT_STREQ(board.definition().name, "Test Module v0");
-  EXPECT_NE(board.console_text().find("A1 256\r\n"), std::string::npos) << board.console_text();
+  EXPECT_NE(board.console().text().find("A1 256\r\n"), std::string::npos) << board.console().text();
   EXPECT_TRUE(board.pin_level(28));   // D1 of the table, driven high
   EXPECT_FALSE(board.pin_level(45));  // a Teensy 4.1 pin: the board's Teensy 4.0 has none
 }

@@ -95,14 +95,14 @@ TEST(SharedCodePages, BoardsSharingCodeStillKeepTheirOwnGlobalsAndRunAsAlone) {
     boards[i] = std::make_unique<SimBoard>(scheduler, options, load(build.library_path));
     ASSERT_TRUE(boards[i]->attach(error)) << error;
     const int64_t count = counts[i];
-    boards[i]->connect_encoder(0, [count](SimTime time) { return time > kMillisecond ? count : int64_t{0}; });
+    boards[i]->wire(terminal::Encoder{0}, [count](SimTime time) { return time > kMillisecond ? count : int64_t{0}; });
     boards[i]->power_on(0);
   }
   scheduler.run_until(50 * kMillisecond);
-  EXPECT_EQ(boards[0]->sent(0)[SIGNAL_E].forward, 40u);
-  EXPECT_EQ(boards[1]->sent(0)[SIGNAL_E].reverse, 20u);
-  EXPECT_EQ(boards[2]->sent(0)[SIGNAL_E].forward, 80u);
-  EXPECT_EQ(boards[1]->sent(0)[SIGNAL_E].forward, 0u);
+  EXPECT_EQ(boards[0]->ports().sent(0)[SIGNAL_E].forward, 40u);
+  EXPECT_EQ(boards[1]->ports().sent(0)[SIGNAL_E].reverse, 20u);
+  EXPECT_EQ(boards[2]->ports().sent(0)[SIGNAL_E].forward, 80u);
+  EXPECT_EQ(boards[1]->ports().sent(0)[SIGNAL_E].forward, 0u);
 }
 
 }  // namespace

@@ -137,7 +137,7 @@ TEST(SketchBuilderIde, AFolderWithSeveralInosACppAndANameCBuildsAndRuns) {
   SimBoard board(scheduler, options, std::move(library));
   ASSERT_TRUE(board.attach(error)) << error;
   std::vector<std::string> lines;
-  board.on_console_line([&lines](const std::string& line) { lines.push_back(line); });
+  board.console().on_line([&lines](const std::string& line) { lines.push_back(line); });
   board.power_on(0);
   scheduler.run_until(50 * kMillisecond);
   // label() = 40 + 9 letters of "StepDance", reported twice (default argument 2), then 2 × 21 once.

@@ -31,7 +31,7 @@ std::vector<std::string> run_fixture(const std::string& storage_dir, SimTime unt
   SimBoard board(scheduler, options, std::move(library));
   EXPECT_TRUE(board.attach(error)) << error;
   std::vector<std::string> lines;
-  board.on_console_line([&lines](const std::string& line) { lines.push_back(line); });
+  board.console().on_line([&lines](const std::string& line) { lines.push_back(line); });
   board.power_on(0);
   scheduler.run_until(until);
   return lines;
