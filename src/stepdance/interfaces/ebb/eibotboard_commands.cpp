@@ -57,6 +57,8 @@ void set_axis(EbbMove& move, int axis, int64_t rate, int64_t steps, int64_t acce
 const link::Command<Eibotboard::CommandHandler>* Eibotboard::find_command(const char* name) {
   constexpr uint8_t kMotors = kMovesMotors;
   constexpr uint8_t kBare = kNoParameters;
+  // Two commands a row in the reference's groups; clang-format would put one a row.
+  // clang-format off
   static constexpr auto kTable = link::make_command_table<CommandHandler>(
       {
           // Motion, queued in the FIFO
@@ -81,6 +83,7 @@ const link::Command<Eibotboard::CommandHandler>* Eibotboard::find_command(const 
           {"PI", {&Eibotboard::command_pi, 0}},       {"PC", {&Eibotboard::command_pc, 0}},
           {"PG", {&Eibotboard::command_pg, 0}},
       });
+  // clang-format on
   static_assert(kTable.names_unique(), "an EBB command is listed twice");
   return kTable.find(name);
 }
