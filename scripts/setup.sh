@@ -31,6 +31,7 @@ test_packages=(
   libclang-rt-14-dev  # clang's libFuzzer and sanitizer runtimes: only a Recommends of clang, so a bare Debian lacks them
   time  # /usr/bin/time: CPU seconds in bench/image_board_speed.sh
   universal-ctags  # function lengths for the structure check (scripts/check-function-length.sh)
+  clang-format  # clang-format 14: the C/C++ style check (scripts/check-format.sh, scripts/format.sh)
   linuxcnc-uspace  # rs274, the independent G-code interpreter the conformance test compares with
   prusa-slicer  # slices the conformance test's 3D-printer sample (tests/interfaces/gcode/conformance/prusaslicer)
   python3 python3-serial  # pyserial: the live simulator's pseudo-terminal tests

@@ -20,6 +20,7 @@ stage scripts/check-interfaces-structure.sh
 stage scripts/check-function-length.sh 60 src sim cli
 stage scripts/check-function-length.sh 40 sim/scenario
 stage scripts/comment-density.sh --min 0.10 src
+stage scripts/check-format.sh --self-test
 stage scripts/build-target.sh
 stage scripts/build-teensy.sh
 stage scripts/test-target-qemu.sh

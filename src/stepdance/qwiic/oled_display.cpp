@@ -12,7 +12,9 @@ namespace {
 using namespace ssd1306;
 
 // The power-on configuration of a 128×32 panel with its internal charge pump, in the order the
-// datasheet's software flow chart gives (display off first, on last).
+// datasheet's software flow chart gives (display off first, on last). One command a line with its
+// argument bytes, which clang-format would split apart.
+// clang-format off
 constexpr uint8_t kInitSequence[] = {
     kControlCommands,
     kDisplayOff,
@@ -33,6 +35,7 @@ constexpr uint8_t kInitSequence[] = {
     kNormalDisplay,
     kDisplayOn,
 };
+// clang-format on
 
 constexpr uint8_t kLineUnknown = 0x01;  // a row cache entry that matches no text
 

@@ -14,6 +14,9 @@ constexpr uint16_t kProductId = 0x0483;  // a Teensy in "Serial" USB type
 constexpr uint16_t kReleaseBcd = 0x0100;
 constexpr uint16_t kConfigLength = 75;
 
+// The descriptors below are laid out one field group a line, as USB 2.0's tables list them, which
+// clang-format would break into one byte a line.
+// clang-format off
 const uint8_t kDevice[18] = {
     18, 1, lo(0x0200), hi(0x0200),  // bcdUSB 2.00
     0xEF, 0x02, 0x01,               // miscellaneous class, IAD protocol
@@ -22,6 +25,7 @@ const uint8_t kDevice[18] = {
     1, 2, 3,  // manufacturer, product, serial number strings
     1,        // one configuration
 };
+// clang-format on
 
 // USB 2.0 §9.6.2: what the device would be at the other speed.
 const uint8_t kQualifier[10] = {10, 6, lo(0x0200), hi(0x0200), 0xEF, 0x02, 0x01, kControlPacket, 1, 0};
@@ -32,6 +36,7 @@ struct Configuration {
   uint8_t bytes[kConfigLength];
 };
 constexpr Configuration make_configuration(uint16_t bulk, uint8_t interval) {
+  // clang-format off
   return Configuration{{
       9, 2, lo(kConfigLength), hi(kConfigLength), 2, 1, 0, 0xC0, 50,  // 2 interfaces, self powered, 100 mA
       8, 11, 0, 2, 0x02, 0x02, 0x01, 0,                                // IAD: interfaces 0-1, CDC ACM
@@ -45,6 +50,7 @@ constexpr Configuration make_configuration(uint16_t bulk, uint8_t interval) {
       7, 5, kRxEndpoint, 2, lo(bulk), hi(bulk), 0,                     // bulk OUT
       7, 5, 0x80 | kTxEndpoint, 2, lo(bulk), hi(bulk), 0,              // bulk IN
   }};
+  // clang-format on
 }
 constexpr Configuration kHighSpeed = make_configuration(512, 8);  // 2^(8-1) microframes = 16 ms
 constexpr Configuration kFullSpeed = make_configuration(64, 16);  // 16 frames = 16 ms
