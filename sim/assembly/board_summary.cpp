@@ -16,6 +16,15 @@ void add_firmware_extras(const BoardSet& boards, nlohmann::json& extra) {
   if (!firmware.empty()) extra["firmware"] = firmware;
 }
 
+// The frame interrupt's cycles as a share of the frame's budget: the average over the measured
+// frames and the peak, in percent. Precondition: load_frames and load_budget_cycles non-zero.
+nlohmann::json cpu_load_of(const StepdanceBoardStatsV1& stats) {
+  const double budget = stats.load_budget_cycles;
+  return {{"average_percent",
+           100.0 * static_cast<double>(stats.load_total_cycles) / static_cast<double>(stats.load_frames) / budget},
+          {"peak_percent", 100.0 * stats.load_peak_cycles / budget}};
+}
+
 }  // namespace
 
 // Per board: frames run, faults and every block's named counters; per stepper socket: where
@@ -42,12 +51,7 @@ void add_board_extras(const BoardSet& boards, nlohmann::json& extra) {
                                 {"wire_time_s", to_seconds(timing.total_ns)}};
     }
     frames[slot.config->name] = stats.frames;
-    if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
-      const double budget = stats.load_budget_cycles;
-      load[slot.config->name] = {
-          {"average_percent", 100.0 * static_cast<double>(stats.load_total_cycles) / static_cast<double>(stats.load_frames) / budget},
-          {"peak_percent", 100.0 * stats.load_peak_cycles / budget}};
-    }
+    if (stats.load_frames > 0 && stats.load_budget_cycles > 0) load[slot.config->name] = cpu_load_of(stats);
     nlohmann::json& board_counters = counters[slot.config->name] = nlohmann::json::object();
     for (const SimBoard::BlockCounter& counter : slot.board->counters()) {
       board_counters[counter.block][counter.name] = counter.value;

@@ -8,6 +8,9 @@ namespace stepdance::ebb {
 const link::Command<EbbCommands::Handler>* EbbCommands::find(const char* name) {
   constexpr uint8_t kMotors = kMovesMotors;
   constexpr uint8_t kBare = kNoParameters;
+  // Two commands a row in the reference's groups; clang-format would put one a row (and this
+  // function past the 39-line limit of scripts/check-interfaces-structure.sh).
+  // clang-format off
   static constexpr auto kTable = link::make_command_table<Handler>(
       {
           // Motion, queued in the FIFO
@@ -32,6 +35,7 @@ const link::Command<EbbCommands::Handler>* EbbCommands::find(const char* name) {
           {"PI", {&EbbCommands::command_pi, 0}},       {"PC", {&EbbCommands::command_pc, 0}},
           {"PG", {&EbbCommands::command_pg, 0}},
       });
+  // clang-format on
   static_assert(kTable.names_unique(), "an EBB command is listed twice");
   return kTable.find(name);
 }
