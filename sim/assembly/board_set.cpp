@@ -235,7 +235,7 @@ void BoardSet::set_end_time(SimTime end_ns) {
 void BoardSet::power_on(SimTime end_ns) {
   for (BoardSlot& slot : slots_) {
     slot.board->set_end_time(end_ns);
-    slot.board->power_on(0);
+    slot.board->power_on(slot.config->power_on_ns.value_or(0));
   }
 }
 

@@ -73,6 +73,10 @@ struct BoardConfig {
   std::optional<SimTime> frame_phase_ns;
   std::optional<SimTime> khz_phase_ns;
   std::optional<SimTime> encoder_sample_phase_ns;  ///< BoardOptions::encoder_sample_phase_ns
+  /// Set from code, never from the file: when the board powers on, ns (unset: at 0). A host
+  /// board's sketch costs no simulated time, an image's does; the image example tests start the
+  /// host board this much later so its first step lands where the image's did.
+  std::optional<SimTime> power_on_ns;
   /// Populated sockets, sorted by port (boards with driver sockets only).
   std::vector<SocketConfig> sockets;
   /// Speed and failures of the board's card.
