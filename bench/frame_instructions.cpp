@@ -1,5 +1,6 @@
 // Runs N frames of a benchmark graph (step_a_sketch, step_a_sketch_tbi, harmonograph,
-// clay_texturizer, axidraw_wave or pantograph); measured with callgrind to count instructions per frame (see measure_frame_instructions.sh).
+// clay_texturizer, axidraw_wave or pantograph); measured with callgrind to count instructions per frame (see
+// measure_frame_instructions.sh).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -40,7 +41,10 @@ int main(int argc, char** argv) {
   } else if (std::strcmp(workload, "pantograph") == 0) {
     pulses = run<stepdance::workloads::PantographGraph>(frames);
   } else {
-    std::fprintf(stderr, "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph, clay_texturizer, axidraw_wave or pantograph)\n", workload);
+    std::fprintf(stderr,
+                 "unknown workload '%s' (step_a_sketch, step_a_sketch_tbi, harmonograph, clay_texturizer, axidraw_wave "
+                 "or pantograph)\n",
+                 workload);
     return 2;
   }
   std::printf("workload=%s frames=%u pulses_a=%u\n", workload, frames, pulses);

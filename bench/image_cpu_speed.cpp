@@ -6,9 +6,9 @@
 //   stepdance_image_cpu_speed [simulated_seconds]
 // The firmware is the build tree's tests/sim/image/fixtures/bench_loop.elf.
 #include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <string>
 
 #include "image/cpu/image_chip.hpp"
@@ -58,7 +58,8 @@ int run(double simulated_s, uint32_t loop_kind) {
   std::printf("%s thread loop: simulated %.3f s at 600 MHz in %.3f s of wall time\n",
               loop_kind == 0 ? "register" : "load/store", simulated_s, wall_s);
   std::printf("emulated instructions: %llu (%.1f million per wall second, %.1f million per CPU second)\n",
-              static_cast<unsigned long long>(chip.instructions()), static_cast<double>(chip.instructions()) / wall_s / 1e6,
+              static_cast<unsigned long long>(chip.instructions()),
+              static_cast<double>(chip.instructions()) / wall_s / 1e6,
               static_cast<double>(chip.instructions()) / cpu_s / 1e6);
   std::printf("simulated seconds per wall second: %.3f\n", simulated_s / wall_s);
   std::printf("25 kHz interrupt: %llu entries, %.1f instructions each; SysTick: %llu entries\n",

@@ -14,16 +14,16 @@
 #include <cstdlib>
 #include <string>
 
+#include "assembly/simulation.hpp"
 #include "board/loader/sketch_builder.hpp"
 #include "scenario/load_scenario.hpp"
 #include "step_a_sketch_graph.hpp"
-#include "assembly/simulation.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using stepdance::sim::Simulation;
 using stepdance::sim::SimTime;
+using stepdance::sim::Simulation;
 namespace scenario = stepdance::sim::scenario;
 
 constexpr SimTime kFrameNs = 40 * stepdance::sim::kMicrosecond;

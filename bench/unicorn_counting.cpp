@@ -45,7 +45,8 @@ uc_engine* open_loop() {
 
 void report(const char* way, std::clock_t start) {
   const double cpu_s = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
-  std::printf("%-36s %8.1f million instructions per CPU second\n", way, static_cast<double>(kInstructions) / cpu_s / 1e6);
+  std::printf("%-36s %8.1f million instructions per CPU second\n", way,
+              static_cast<double>(kInstructions) / cpu_s / 1e6);
 }
 
 }  // namespace
@@ -59,7 +60,9 @@ int main() {
     if (way == 1) uc_hook_add(uc, &hook, UC_HOOK_CODE, reinterpret_cast<void*>(&on_instruction), &counter, 1, 0);
     const std::clock_t start = std::clock();
     uc_emu_start(uc, 0x101, 0xFFFFFFFE, 0, way == 2 ? kInstructions : 0);
-    report(way == 0 ? "block hook, cached count" : way == 1 ? "code hook (every instruction)" : "uc_emu_start count",
+    report(way == 0   ? "block hook, cached count"
+           : way == 1 ? "code hook (every instruction)"
+                      : "uc_emu_start count",
            start);
     uc_close(uc);
   }

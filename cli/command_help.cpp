@@ -25,8 +25,9 @@ void add_output_folder_option(CLI::App& command, std::string& output_directory, 
 
 void add_cache_folder_option(CLI::App& command, std::string& cache_directory, const std::string& scope) {
   add_path_option(command, "--cache", cache_directory,
-                  scope + "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else "
-                          "~/.cache/stepdance/sketches)");
+                  scope +
+                      "folder for compiled sketches (default: $STEPDANCE_SKETCH_CACHE, else "
+                      "~/.cache/stepdance/sketches)");
 }
 
 }  // namespace stepdance::cli

@@ -128,8 +128,10 @@ Containment::Containment(double hang_budget_s, double grace_s) : hang_budget_s_(
 Containment::~Containment() {
   done_ = true;
   watchdog_.join();
-  for (size_t i = 0; i < sizeof kCrashSignals / sizeof kCrashSignals[0]; ++i) sigaction(kCrashSignals[i], &saved_crash[i], nullptr);
-  for (size_t i = 0; i < sizeof kStopSignals / sizeof kStopSignals[0]; ++i) sigaction(kStopSignals[i], &saved_stop[i], nullptr);
+  for (size_t i = 0; i < sizeof kCrashSignals / sizeof kCrashSignals[0]; ++i)
+    sigaction(kCrashSignals[i], &saved_crash[i], nullptr);
+  for (size_t i = 0; i < sizeof kStopSignals / sizeof kStopSignals[0]; ++i)
+    sigaction(kStopSignals[i], &saved_stop[i], nullptr);
   sigaction(kPokeSignal, &saved_poke, nullptr);
   sigaltstack(&saved_stack, nullptr);
 }

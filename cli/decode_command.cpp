@@ -1,22 +1,22 @@
 // `stepdance decode`: reads a VCD, pairs or picks STEP/DIR wires, decodes like an input port.
 #include "decode_command.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
-#include <algorithm>
 #include <memory>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "command_help.hpp"
-#include "exit_codes.hpp"
-#include "option_kinds.hpp"
 #include "decode/capture_decoder.hpp"
 #include "decode/decode_report.hpp"
 #include "decode/pair_decoders.hpp"
 #include "decode/step_dir_pairs.hpp"
 #include "decode/vcd_reader.hpp"
+#include "exit_codes.hpp"
+#include "option_kinds.hpp"
 #include "scenario/decimal_text.hpp"
 #include "stepdance/core/frame_period.hpp"
 
@@ -94,7 +94,8 @@ void print_json(const std::string& capture, sim::PairDecoders& decoders, const s
   const std::vector<StepDirPair>& pairs = decoders.pairs();
   std::vector<size_t> order(pairs.size());
   for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&pairs](size_t a, size_t b) { return pairs[a].label < pairs[b].label; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&pairs](size_t a, size_t b) { return pairs[a].label < pairs[b].label; });
   std::cout << "{\n  \"capture\": " << nlohmann::json(capture).dump() << ",\n  \"ports\": {";
   bool first = true;
   for (size_t at = 0; at < order.size(); ++at) {
@@ -122,7 +123,8 @@ int read_capture(const DecodeCommandOptions& options, const sim::DecodeOptions& 
   if (!reader.read_declarations()) return bad_input(reader.take_result().error);
   std::vector<StepDirPair> pairs;
   std::string error;
-  if (!choose_pairs(options, reader.declarations(), pairs, error)) return bad_input(options.capture_path + ": " + error);
+  if (!choose_pairs(options, reader.declarations(), pairs, error))
+    return bad_input(options.capture_path + ": " + error);
   decoders = std::make_unique<sim::PairDecoders>(reader.declarations().wires.size(), std::move(pairs), decode);
   if (!reader.read_values(*decoders)) return bad_input(reader.take_result().error);
   const sim::VcdReadResult read = reader.take_result();
@@ -145,11 +147,14 @@ CLI::App& add_decode_command(CLI::App& app, DecodeCommandOptions& options) {
   add_path_option(decode, "capture", options.capture_path, "the .vcd file")->required();
   decode.add_option("--step", options.step_wire, "STEP wire (full name like driver.OUT_A_STEP, or a bare name)");
   decode.add_option("--dir", options.dir_wire, "DIR wire that goes with --step");
-  decode.add_option("--mode", options.mode, "stepdance: axis by pulse width, DIR at the falling edge; "
-                                            "step_dir: every pulse is one step, DIR at the rising edge")
+  decode
+      .add_option("--mode", options.mode,
+                  "stepdance: axis by pulse width, DIR at the falling edge; "
+                  "step_dir: every pulse is one step, DIR at the rising edge")
       ->check(CLI::IsMember({"stepdance", "step_dir"}))
       ->capture_default_str();
-  decode.add_option("--axis", options.axis, "the axis step_dir pulses count as (X, Y, R, T, Z, E)")->capture_default_str();
+  decode.add_option("--axis", options.axis, "the axis step_dir pulses count as (X, Y, R, T, Z, E)")
+      ->capture_default_str();
   add_number_option(decode, "--frame-us", options.frame_period_us,
                     "the sending board's frame period in us (10, 20, 25 or 40): how pulses group into "
                     "frames for the frame statistics; the counts do not depend on it")

@@ -11,10 +11,10 @@ namespace stepdance::cli {
 /// Options of `stepdance decode`.
 struct DecodeCommandOptions {
   std::string capture_path;
-  std::string step_wire;       ///< empty: every *STEP/*DIR pair in the file
+  std::string step_wire;  ///< empty: every *STEP/*DIR pair in the file
   std::string dir_wire;
-  std::string mode = "stepdance";  ///< "stepdance" or "step_dir"
-  std::string axis = "X";          ///< the signal STEP_DIR pulses count as
+  std::string mode = "stepdance";      ///< "stepdance" or "step_dir"
+  std::string axis = "X";              ///< the signal STEP_DIR pulses count as
   std::string frame_period_us = "40";  ///< the sender's frame period: how pulses group into frames
   bool json = false;
 };

@@ -27,8 +27,8 @@ class LivePacer {
   /// What a paced instant found: when it is due, and how late the run was (ms of wall time).
   struct Due {
     Clock::time_point wall;
-    double lag_ms = 0;        ///< how far past its due time the instant was reached (≥ 0)
-    double given_up_ms = 0;   ///< the part of that lag the run gives up (not made up later)
+    double lag_ms = 0;       ///< how far past its due time the instant was reached (≥ 0)
+    double given_up_ms = 0;  ///< the part of that lag the run gives up (not made up later)
   };
   /// Simulated instant `now`, reached at wall time `wall`: when it is due (the run sleeps until
   /// then). Later than kCatchUpLimit: the anchor moves so `now` is due at wall − kCatchUpLimit.

@@ -58,7 +58,7 @@ bool wait_while_paused(LiveView* view) {
 struct BoardLink {
   sim::SimBoard* board;
   std::unique_ptr<PtyPort> port;
-  std::chrono::steady_clock::time_point client_wrote{};    // last time the client wrote (never: epoch)
+  std::chrono::steady_clock::time_point client_wrote{};      // last time the client wrote (never: epoch)
   std::chrono::steady_clock::time_point client_caught_up{};  // last time it had read everything
 
   // Whether simulated time should wait for this client to read its board's output now.
@@ -145,7 +145,8 @@ void close_terminals(std::vector<BoardLink>& links, const std::vector<std::strin
 
 LiveTiming run_live(sim::Simulation& simulation, const std::vector<std::string>& boards, const LiveOptions& options) {
   std::vector<BoardLink> links = open_terminals(simulation, boards, options);
-  for (size_t i = 0; i < links.size(); ++i) std::printf("serial %s: %s\n", boards[i].c_str(), links[i].port->path().c_str());
+  for (size_t i = 0; i < links.size(); ++i)
+    std::printf("serial %s: %s\n", boards[i].c_str(), links[i].port->path().c_str());
   LiveView* view = options.view;
   if (view != nullptr) {
     view->control().speed = options.speed;

@@ -3,8 +3,8 @@
 
 #include "decode_command.hpp"
 #include "exit_codes.hpp"
-#include "serve/serve_command.hpp"
 #include "serve/board_runner.hpp"
+#include "serve/serve_command.hpp"
 #include "serve/sketch_runner.hpp"
 #include "sim_command.hpp"
 #include "usage.hpp"

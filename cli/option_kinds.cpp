@@ -17,8 +17,7 @@ std::optional<Number> reported(std::optional<Number> number, const std::string& 
 
 }  // namespace
 
-CLI::Option* add_path_option(CLI::App& command, const std::string& name, std::string& path,
-                             const std::string& help) {
+CLI::Option* add_path_option(CLI::App& command, const std::string& name, std::string& path, const std::string& help) {
   return command.add_option(name, path, help)->check(non_empty_path());
 }
 

@@ -13,8 +13,7 @@
 namespace stepdance::cli {
 
 /// Adds an option naming a file or folder; an empty one is refused (non_empty_path()).
-CLI::Option* add_path_option(CLI::App& command, const std::string& name, std::string& path,
-                             const std::string& help);
+CLI::Option* add_path_option(CLI::App& command, const std::string& name, std::string& path, const std::string& help);
 
 /// Adds an option taking a number, kept as text; an empty one is refused (non_empty_number()).
 CLI::Option* add_number_option(CLI::App& command, const std::string& name, std::string& number,

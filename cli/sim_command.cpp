@@ -12,6 +12,8 @@
 #include <iostream>
 #include <map>
 
+#include "assembly/run_result.hpp"
+#include "assembly/simulation.hpp"
 #include "command_help.hpp"
 #include "console_echo.hpp"
 #include "containment.hpp"
@@ -24,8 +26,6 @@
 #include "scenario/load_scenario.hpp"
 #include "scenario/value_range.hpp"
 #include "simulator_hooks.hpp"
-#include "assembly/run_result.hpp"
-#include "assembly/simulation.hpp"
 #include "view/replay_recorder.hpp"
 
 namespace stepdance::cli {
@@ -105,7 +105,8 @@ bool parse_live_options(const SimCommandOptions& options, LiveOptions& live) {
     live.speed = 0.0;
   } else if (!options.speed.empty()) {
     std::string error;
-    const std::optional<double> speed = sim::scenario::parse_number_option("--speed", options.speed, ranges::kSpeed, error);
+    const std::optional<double> speed =
+        sim::scenario::parse_number_option("--speed", options.speed, ranges::kSpeed, error);
     if (!speed) {
       std::cerr << error << " (or 'max')\n";
       return false;
@@ -273,13 +274,10 @@ bool serial_links_name_boards(const LiveOptions& live, const sim::scenario::Scen
 int exit_status(const sim::SimulationReport& report) {
   if (report.sketch_stop) {
     switch (report.sketch_stop->cause) {
-      case sim::EscapeCause::kHung:
-        return kExitSketchHung;
+      case sim::EscapeCause::kHung: return kExitSketchHung;
       case sim::EscapeCause::kCrashed:
-      case sim::EscapeCause::kEnded:
-        return kExitSketchFailed;
-      default:
-        break;
+      case sim::EscapeCause::kEnded: return kExitSketchFailed;
+      default: break;
     }
   }
   if (report.interrupted_by != 0) return kExitSignalBase + report.interrupted_by;
@@ -359,14 +357,15 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
   sim.add_flag("--no-vcd", options.no_vcd, "do not write the VCD file");
   add_number_option(sim, "--vcd-max-gb", options.vcd_max_gb,
                     "refuse a run whose VCD could pass this many GB (default 1; the estimate: 1.425 MB per recorded "
-                    "port and simulated second), in " + describe(kVcdMaxGb));
+                    "port and simulated second), in " +
+                        describe(kVcdMaxGb));
   sim.add_flag("--quiet", options.quiet, "print only failures (no sketch output, progress or report)");
   sim.add_flag("--live", options.live,
                "run in real time until interrupted (Ctrl-C), each board's USB serial on a pseudo-terminal announced "
                "as `serial <board>: <path>`; outputs are written when the run ends");
-  add_number_option(sim, "--speed", options.speed,
-                    "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) +
-                        ", or 'max' (default 1)");
+  add_number_option(
+      sim, "--speed", options.speed,
+      "live only: simulated seconds per wall-clock second, in " + describe(ranges::kSpeed) + ", or 'max' (default 1)");
   sim.add_option("--image", options.images,
                  "run a board on its firmware image instead of its host-compiled sketch (board=path.elf: a Teensy 4.x "
                  "ELF as the Arduino IDE or scripts/build-teensy.sh links it, run on an emulated i.MX RT1062)");
@@ -380,7 +379,8 @@ CLI::App& add_sim_command(CLI::App& app, SimCommandOptions& options) {
                     "live view: the TCP port, in [0, 65,535] (default 0: any free port)");
   add_number_option(sim, "--watchdog-s", options.watchdog_s,
                     "stop a sketch that runs this many seconds of wall time without simulated time moving (default "
-                    "10, in " + describe(kWatchdogS) + ")");
+                    "10, in " +
+                        describe(kWatchdogS) + ")");
   sim.add_option("--result-json", options.result_json,
                  "also write the run's result as JSON to this file: the summary without wall time and every "
                  "expectation's outcome (the WebAssembly build prints the same document)");
@@ -402,7 +402,8 @@ int run_sim_command(const SimCommandOptions& options) {
     std::cerr << loaded.error_text();
     return kExitBadInput;
   }
-  if (!serial_links_name_boards(live, loaded.scenario) || !hosts_allowed(options, loaded.scenario)) return kExitBadInput;
+  if (!serial_links_name_boards(live, loaded.scenario) || !hosts_allowed(options, loaded.scenario))
+    return kExitBadInput;
   ProgressBar progress(!options.quiet && !options.live);
   ConsoleEcho echo([&progress] { progress.clear(); });
   sim::SimulationError error;

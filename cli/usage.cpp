@@ -42,7 +42,9 @@ const CLI::Validator& non_empty_path() {
 
 const CLI::Validator& non_empty_number() {
   static const CLI::Validator check(
-      [](std::string& value) { return value.empty() ? std::string("must not be empty (it takes a number)") : std::string(); },
+      [](std::string& value) {
+        return value.empty() ? std::string("must not be empty (it takes a number)") : std::string();
+      },
       "NUMBER");
   return check;
 }

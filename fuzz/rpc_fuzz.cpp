@@ -1,5 +1,6 @@
 // libFuzzer target: arbitrary lines into the RPC block (JSON parsing, argument checks, calls,
-// the chunked index and __describe__, subscriptions and their events), on the manual board with a few enrolled names of every kind.
+// the chunked index and __describe__, subscriptions and their events), on the manual board with a few enrolled names of
+// every kind.
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -66,7 +67,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         report_fault(FaultLevel::kWarning, FaultReason::kRefused, "fuzz", "now and then");
         hal_manual::advance_us(RPC::kMinEventIntervalUs);
       }
-      level += 1;  // a subscribed value changes
+      level += 1;               // a subscribed value changes
       stream.write_room = 300;  // the host reads
     }
   }

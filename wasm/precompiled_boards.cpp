@@ -22,8 +22,9 @@ sim::SketchBuild PrecompiledBoards::build(const std::string& sketch_path) const 
   if (found == libraries_.end()) {
     std::string known;
     for (const auto& [name, path] : libraries_) known += (known.empty() ? "" : ", ") + name;
-    result.error = sketch_path + ": no precompiled board for this sketch in the page (it has: " +
-                   (known.empty() ? "none" : known) + "); a changed sketch needs a local `stepdance serve`";
+    result.error = sketch_path +
+                   ": no precompiled board for this sketch in the page (it has: " + (known.empty() ? "none" : known) +
+                   "); a changed sketch needs a local `stepdance serve`";
     return result;
   }
   // A fresh copy for every board of every run: emscripten's dlopen keeps a module once loaded

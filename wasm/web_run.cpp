@@ -40,7 +40,9 @@ void WebRun::run_until(double end_s) {
 
 double WebRun::now_s() const { return sim::to_seconds(simulation_->now()); }
 double WebRun::duration_s() const { return sim::to_seconds(simulation_->duration()); }
-bool WebRun::done() const { return result_.has_value() || simulation_->stopped() || simulation_->now() >= simulation_->duration(); }
+bool WebRun::done() const {
+  return result_.has_value() || simulation_->stopped() || simulation_->now() >= simulation_->duration();
+}
 
 const std::string& WebRun::finish() {
   if (!result_) {

@@ -11,10 +11,10 @@ namespace stepdance::cli::confine {
 
 /// Resource limits of a confined process and of every process it starts (each its own CPU time).
 struct ConfinementLimits {
-  double cpu_s = 300;                          ///< CPU seconds (SIGXCPU, then SIGKILL 5 s later)
-  uint64_t memory_bytes = 2ull << 30;          ///< address space (not set under AddressSanitizer)
-  uint64_t file_bytes = 64ull << 20;           ///< largest file it may write (SIGXFSZ past it)
-  uint64_t open_files = 256;                   ///< file descriptors
+  double cpu_s = 300;                  ///< CPU seconds (SIGXCPU, then SIGKILL 5 s later)
+  uint64_t memory_bytes = 2ull << 30;  ///< address space (not set under AddressSanitizer)
+  uint64_t file_bytes = 64ull << 20;   ///< largest file it may write (SIGXFSZ past it)
+  uint64_t open_files = 256;           ///< file descriptors
 };
 
 /// The file system a confined process sees: everything else can be neither read nor written.

@@ -21,8 +21,8 @@ struct RulesetAttr {
   uint64_t handled_access_net;
   uint64_t scoped;
 };
-constexpr uint64_t kTruncate = 1ull << 14;        // ABI 3
-constexpr uint64_t kIoctlDev = 1ull << 15;        // ABI 5
+constexpr uint64_t kTruncate = 1ull << 14;          // ABI 3
+constexpr uint64_t kIoctlDev = 1ull << 15;          // ABI 5
 constexpr uint64_t kScopeAbstractUnix = 1ull << 0;  // ABI 6
 constexpr uint64_t kScopeSignal = 1ull << 1;        // ABI 6
 constexpr int kNeededAbi = 6;
@@ -61,7 +61,8 @@ int landlock_abi() {
 }
 
 std::string restrict_file_system(const ConfinementPaths& paths) {
-  if (landlock_abi() < kNeededAbi) return "landlock: this kernel offers ABI " + std::to_string(landlock_abi()) + ", 6 is needed";
+  if (landlock_abi() < kNeededAbi)
+    return "landlock: this kernel offers ABI " + std::to_string(landlock_abi()) + ", 6 is needed";
   const RulesetAttr attr{kAllRights, 0, kScopeAbstractUnix | kScopeSignal};
   const int ruleset = create_ruleset(&attr, sizeof attr, 0);
   if (ruleset < 0) return std::string("landlock: cannot create a ruleset: ") + std::strerror(errno);

@@ -12,8 +12,9 @@ namespace {
 // Refused with EPERM: sockets (no network, no local services), leaving the process group the
 // server ends (setsid, setpgid), raising a limit, and io_uring (which could open sockets past
 // this filter).
-constexpr int kRefused[] = {SCMP_SYS(socket), SCMP_SYS(setsid), SCMP_SYS(setpgid), SCMP_SYS(setrlimit),
-                            SCMP_SYS(io_uring_setup), SCMP_SYS(io_uring_enter), SCMP_SYS(io_uring_register)};
+constexpr int kRefused[] = {SCMP_SYS(socket),           SCMP_SYS(setsid),         SCMP_SYS(setpgid),
+                            SCMP_SYS(setrlimit),        SCMP_SYS(io_uring_setup), SCMP_SYS(io_uring_enter),
+                            SCMP_SYS(io_uring_register)};
 
 }  // namespace
 

@@ -36,17 +36,17 @@ struct InitialLevels {
 
 /// A pulse decode_pulse rejected.
 struct RejectedPulse {
-  SimTime rise = 0;  ///< ns
-  SimTime fall = 0;  ///< ns
+  SimTime rise = 0;      ///< ns
+  SimTime fall = 0;      ///< ns
   uint8_t width_us = 0;  ///< the width decode_pulse measured, rounded to µs (ties down)
   protocol::PulseVerdict reason = protocol::PulseVerdict::kTooShort;
 };
 
 /// Everything decoded from one STEP/DIR pair.
 struct DecodeResult {
-  DecodeOptions options;          ///< the options used
-  PulseCounts counts;             ///< accepted pulses per signal and direction, rejected ones by reason
-  uint64_t accepted = 0;          ///< sum of the accepted counts
+  DecodeOptions options;  ///< the options used
+  PulseCounts counts;     ///< accepted pulses per signal and direction, rejected ones by reason
+  uint64_t accepted = 0;  ///< sum of the accepted counts
   /// Pulses cut by the capture's edges: STEP already high at the start, or still high at the end.
   uint64_t incomplete = 0;
   std::vector<RejectedPulse> first_rejected;  ///< the first max_rejected_examples rejections
@@ -77,7 +77,7 @@ class StepDirDecoder {
   DecodeResult result_;
   protocol::DirSampleEdge sample_edge_;
   bool dir_level_;
-  bool level_;            ///< STEP's level after the edges decoded so far
+  bool level_;  ///< STEP's level after the edges decoded so far
   bool have_rise_ = false;
   SimTime rise_ = 0;
   bool dir_at_rise_ = false;
@@ -86,17 +86,16 @@ class StepDirDecoder {
   SimTime pending_time_ = 0;
   bool pending_first_ = false;
   uint64_t pending_count_ = 0;
-  bool pending_level_;    ///< STEP's level after the pending edges
+  bool pending_level_;  ///< STEP's level after the pending edges
   FrameGrouper frames_;
 };
 
 /// Decodes every complete STEP pulse exactly as an input port does: rise and fall times are
 /// converted to capture ticks (ns × ticks_per_us / 1000, rounded half up), made a wrapped
 /// capture with its whole counter periods (protocol::captured_from_ticks, as the Teensy backend
-/// and the simulator report long pulses) and passed with the DIR level to protocol::decode_pulse. DIR is the level of its last
-/// edge at or before the sampling STEP edge (an edge at the same ns counts as already happened).
-/// Edges that do not change a line's level are ignored. Preconditions: edges in time order,
-/// times ≥ 0. Pure.
+/// and the simulator report long pulses) and passed with the DIR level to protocol::decode_pulse. DIR is the level of
+/// its last edge at or before the sampling STEP edge (an edge at the same ns counts as already happened). Edges that do
+/// not change a line's level are ignored. Preconditions: edges in time order, times ≥ 0. Pure.
 DecodeResult decode_step_dir(const EdgeList& step, const EdgeList& dir, const DecodeOptions& options,
                              InitialLevels initial = {});
 

@@ -41,12 +41,13 @@ std::string format_decode_report(const DecodeResult& result, const std::string& 
   }
   out += ", clock " + std::to_string(options.clock.ticks_per_us) + " ticks/us\n";
   const uint64_t rejected = result.counts.rejected();
-  out += "  pulses   " + std::to_string(result.accepted) + " accepted, " + std::to_string(rejected) +
-         " rejected (" + std::to_string(result.counts.too_short) + " too short, " + std::to_string(result.counts.too_long) +
+  out += "  pulses   " + std::to_string(result.accepted) + " accepted, " + std::to_string(rejected) + " rejected (" +
+         std::to_string(result.counts.too_short) + " too short, " + std::to_string(result.counts.too_long) +
          " too long), " + std::to_string(result.incomplete) + " incomplete\n";
   out += "  signal   forward   reverse\n";
   for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
-    out += std::string("  ") + signal_name(signal) + "     " + padded(std::to_string(result.counts[signal].forward), 10) +
+    out += std::string("  ") + signal_name(signal) + "     " +
+           padded(std::to_string(result.counts[signal].forward), 10) +
            padded(std::to_string(result.counts[signal].reverse), 10) + "\n";
   }
   for (const RejectedPulse& pulse : result.first_rejected) {
@@ -58,8 +59,7 @@ std::string format_decode_report(const DecodeResult& result, const std::string& 
   }
   const FrameStats& frames = result.frames;
   out += "  frames   " + std::to_string(frames.count) + " of " + std::to_string(result.options.frame_period_us) +
-         " us, at most " +
-         counted(frames.max_pulses, "pulse", "pulses") + " per frame";
+         " us, at most " + counted(frames.max_pulses, "pulse", "pulses") + " per frame";
   if (frames.count >= 2) {
     out += ", start spacing " + us_text(frames.min_start_spacing) + " to " + us_text(frames.max_start_spacing) + " us";
   }
@@ -86,7 +86,8 @@ nlohmann::json decode_report_json(const DecodeResult& result) {
       {"incomplete", result.incomplete},
       {"mode", mode_name(result.options.mode)},
       {"pulses", signal_counts_json(result.counts)},
-      {"rejected", {{"examples", examples}, {"too_long", result.counts.too_long}, {"too_short", result.counts.too_short}}},
+      {"rejected",
+       {{"examples", examples}, {"too_long", result.counts.too_long}, {"too_short", result.counts.too_short}}},
   };
   if (result.options.mode == INPUT_MODE_STEP_DIR) out["step_dir_signal"] = signal_name(result.options.step_dir_signal);
   return out;

@@ -21,10 +21,10 @@ constexpr SimTime frame_window_ns(uint32_t frame_period_us) {
 
 /// Accepted pulses grouped into frames by kFrameGapNs and frame_window_ns().
 struct FrameStats {
-  uint64_t count = 0;            ///< frames holding at least one accepted pulse
-  uint32_t max_pulses = 0;       ///< most accepted pulses in one frame
-  SimTime min_start_spacing = 0; ///< ns between consecutive frames' first rises (0 with < 2 frames)
-  SimTime max_start_spacing = 0; ///< ns, as above
+  uint64_t count = 0;             ///< frames holding at least one accepted pulse
+  uint32_t max_pulses = 0;        ///< most accepted pulses in one frame
+  SimTime min_start_spacing = 0;  ///< ns between consecutive frames' first rises (0 with < 2 frames)
+  SimTime max_start_spacing = 0;  ///< ns, as above
 };
 
 /// Groups accepted pulses into frames by kFrameGapNs and frame_window_ns() as they arrive in

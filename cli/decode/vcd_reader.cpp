@@ -52,13 +52,20 @@ bool parse_timescale(const std::string& text, SimTime& femtoseconds) {
   const std::string number = text.substr(0, digits);
   const std::string unit = text.substr(digits);
   SimTime multiplier = 0;
-  if (number == "1") multiplier = 1;
-  else if (number == "10") multiplier = 10;
-  else if (number == "100") multiplier = 100;
-  else return false;
-  static const std::pair<const char*, SimTime> kUnits[] = {
-      {"s", 1'000'000'000'000'000}, {"ms", 1'000'000'000'000}, {"us", 1'000'000'000},
-      {"ns", 1'000'000},            {"ps", 1'000},             {"fs", 1}};
+  if (number == "1")
+    multiplier = 1;
+  else if (number == "10")
+    multiplier = 10;
+  else if (number == "100")
+    multiplier = 100;
+  else
+    return false;
+  static const std::pair<const char*, SimTime> kUnits[] = {{"s", 1'000'000'000'000'000},
+                                                           {"ms", 1'000'000'000'000},
+                                                           {"us", 1'000'000'000},
+                                                           {"ns", 1'000'000},
+                                                           {"ps", 1'000},
+                                                           {"fs", 1}};
   for (const auto& [name, fs] : kUnits) {
     if (unit == name) {
       femtoseconds = multiplier * fs;
@@ -127,8 +134,8 @@ class VcdStreamReader::Parser {
     while (tokens_.next(token)) {
       if (token.text == "$end") return true;
       if (token.text.size() > 1 && token.text[0] == '$') {
-        return fail(token.line, "missing $end of " + command + " (from line " + std::to_string(line) +
-                                    "), found " + quoted(token.text));
+        return fail(token.line, "missing $end of " + command + " (from line " + std::to_string(line) + "), found " +
+                                    quoted(token.text));
       }
       if (args.size() >= kMaxCommandWords) {
         return fail(token.line, command + " (from line " + std::to_string(line) + ") has more than " +
@@ -136,7 +143,8 @@ class VcdStreamReader::Parser {
       }
       args.push_back(token);
     }
-    return fail_at_end("unexpected end of file: missing $end of " + command + " (from line " + std::to_string(line) + ")");
+    return fail_at_end("unexpected end of file: missing $end of " + command + " (from line " + std::to_string(line) +
+                       ")");
   }
 
   /// Skips a free-text command (comment, date, version) up to `$end`, which may not be nested.
@@ -145,7 +153,8 @@ class VcdStreamReader::Parser {
     while (tokens_.next(token)) {
       if (token.text == "$end") return true;
     }
-    return fail_at_end("unexpected end of file: missing $end of " + command + " (from line " + std::to_string(line) + ")");
+    return fail_at_end("unexpected end of file: missing $end of " + command + " (from line " + std::to_string(line) +
+                       ")");
   }
 
   static bool is_text_command(const std::string& command) {
@@ -175,7 +184,8 @@ class VcdStreamReader::Parser {
         std::string joined;
         for (const VcdToken& arg : args) joined += arg.text;
         if (!parse_timescale(joined, capture_.timescale_fs)) {
-          return fail(line, "bad $timescale " + quoted(joined) + " (expected 1, 10 or 100 and s, ms, us, ns, ps or fs)");
+          return fail(line,
+                      "bad $timescale " + quoted(joined) + " (expected 1, 10 or 100 and s, ms, us, ns, ps or fs)");
         }
       } else if (command == "$scope") {
         if (args.size() != 2) return fail(line, "$scope needs a type and a name");
@@ -296,9 +306,7 @@ class VcdStreamReader::Parser {
     return true;
   }
 
-  static bool is_scalar_value(char c) {
-    return c == '0' || c == '1' || c == 'x' || c == 'X' || c == 'z' || c == 'Z';
-  }
+  static bool is_scalar_value(char c) { return c == '0' || c == '1' || c == 'x' || c == 'X' || c == 'z' || c == 'Z'; }
 
   bool read_values() {
     VcdToken token;
@@ -378,8 +386,6 @@ class VcdStreamReader::Parser {
   SimTime current_ns_ = 0;
   uint64_t last_units_ = 0;
 };
-
-
 
 VcdStreamReader::VcdStreamReader(std::istream& in, std::string name)
     : parser_(std::make_unique<Parser>(in, std::move(name))) {}

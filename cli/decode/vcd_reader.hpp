@@ -30,10 +30,10 @@ struct VcdWire {
 
 /// The contents of a VCD file.
 struct VcdCapture {
-  std::vector<VcdWire> wires;  ///< in declaration order
+  std::vector<VcdWire> wires;        ///< in declaration order
   SimTime timescale_fs = 1'000'000;  ///< the file's time unit in femtoseconds
-  SimTime start_time = 0;  ///< first timestamp in ns
-  SimTime end_time = 0;    ///< last timestamp in ns
+  SimTime start_time = 0;            ///< first timestamp in ns
+  SimTime end_time = 0;              ///< last timestamp in ns
 };
 
 /// The result of reading a VCD: the capture, or an error.

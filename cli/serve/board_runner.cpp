@@ -33,7 +33,8 @@ constexpr std::chrono::milliseconds kLookPeriod{5};
 std::string text_of(const json& message) { return message.dump(-1, ' ', false, json::error_handler_t::replace); }
 
 /// The simulation for the scenario, or null after printing why not (`exit_code` set).
-std::unique_ptr<sim::Simulation> make_simulation(const BoardRunnerOptions& options, std::string& board, int& exit_code) {
+std::unique_ptr<sim::Simulation> make_simulation(const BoardRunnerOptions& options, std::string& board,
+                                                 int& exit_code) {
   sim::scenario::LoadResult loaded = sim::scenario::load_scenario(options.scenario);
   if (!loaded.ok()) {
     std::cerr << loaded.error_text();
@@ -88,7 +89,8 @@ int finish(sim::Simulation& simulation, RunChannel& channel) {
       text << "  #" << i << " " << report.sketch_stop->backtrace[i] << "\n";
     }
     std::cerr << text.str();
-    channel.send(text_of(json{{"ended", {{"cause", ended_message(*report.sketch_stop, "")["cause"]}, {"text", text.str()}}}}));
+    channel.send(
+        text_of(json{{"ended", {{"cause", ended_message(*report.sketch_stop, "")["cause"]}, {"text", text.str()}}}}));
   }
   channel.send(text_of(json{{"wrote", report.files}}));
   return stop_exit_status(report);

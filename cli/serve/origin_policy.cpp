@@ -9,7 +9,8 @@ namespace {
 
 std::string lowercase(std::string_view text) {
   std::string out(text);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return out;
 }
 
@@ -21,11 +22,13 @@ OriginPolicy::OriginPolicy(std::string listen_address, uint16_t port, std::vecto
 bool OriginPolicy::host_allowed(std::string_view host) const {
   const std::string name = lowercase(host);
   const std::string suffix = ":" + std::to_string(port_);
-  if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+  if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return false;
   const std::string bare = name.substr(0, name.size() - suffix.size());
   const bool ipv6_listen = listen_address_.find(':') != std::string::npos;
   const std::string listen = ipv6_listen ? "[" + lowercase(listen_address_) + "]" : lowercase(listen_address_);
-  if (bare == "127.0.0.1" || bare == "localhost" || bare == "[::1]" || (bare == listen && listen != "0.0.0.0")) return true;
+  if (bare == "127.0.0.1" || bare == "localhost" || bare == "[::1]" || (bare == listen && listen != "0.0.0.0"))
+    return true;
   const std::string as_origin = "http://" + name;  // a name the user allowed with --allow-origin
   return std::any_of(allowed_origins_.begin(), allowed_origins_.end(),
                      [&](const std::string& allowed) { return lowercase(allowed) == as_origin; });

@@ -33,12 +33,12 @@ struct RouterLimits {
 
 /// What the router has done since it started (the page shows these).
 struct RouterCounters {
-  uint64_t forwarded = 0;        ///< requests sent to the board
-  uint64_t replied = 0;          ///< board replies handed to the tab that asked
-  uint64_t dropped = 0;          ///< requests refused: the tab's queue was full
-  uint64_t refused = 0;          ///< requests refused: not JSON, no name, too long
-  uint64_t timed_out = 0;        ///< requests the board did not answer in time
-  uint64_t board_lines = 0;      ///< other lines from the board (events, the sketch's prints)
+  uint64_t forwarded = 0;    ///< requests sent to the board
+  uint64_t replied = 0;      ///< board replies handed to the tab that asked
+  uint64_t dropped = 0;      ///< requests refused: the tab's queue was full
+  uint64_t refused = 0;      ///< requests refused: not JSON, no name, too long
+  uint64_t timed_out = 0;    ///< requests the board did not answer in time
+  uint64_t board_lines = 0;  ///< other lines from the board (events, the sketch's prints)
 };
 
 /// Error codes the bridge adds to the board's (RPC's 1–14).

@@ -30,8 +30,7 @@ bool process_alive(pid_t pid) { return kill(pid, 0) == 0 || errno == EPERM; }
 }  // namespace
 
 std::string make_run_folder() {
-  std::string pattern =
-      (fs::temp_directory_path() / (kPrefix + std::to_string(getpid()) + "-XXXXXX")).string();
+  std::string pattern = (fs::temp_directory_path() / (kPrefix + std::to_string(getpid()) + "-XXXXXX")).string();
   if (mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a folder for the run: " + pattern);
   return pattern;
 }

@@ -24,7 +24,8 @@ const char* cause_name(sim::EscapeCause cause) {
 
 std::string relative_to(std::string text, const std::string& folder) {
   const std::string prefix = folder + "/";
-  for (size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at)) text.erase(at, prefix.size());
+  for (size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at))
+    text.erase(at, prefix.size());
   return text;
 }
 
@@ -61,7 +62,8 @@ int stop_exit_status(const sim::SimulationReport& report) {
 std::string process_end_text(int status) {
   if (WIFEXITED(status)) {
     const int code = WEXITSTATUS(status);
-    if (code == kExitSketchHung) return "the run's process ended: a sketch hung and could not be stopped (exit status 6)";
+    if (code == kExitSketchHung)
+      return "the run's process ended: a sketch hung and could not be stopped (exit status 6)";
     return "the run's process ended with exit status " + std::to_string(code) + " before its result";
   }
   if (!WIFSIGNALED(status)) return "the run's process ended before its result";

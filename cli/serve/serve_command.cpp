@@ -15,9 +15,9 @@
 #include "exit_codes.hpp"
 #include "option_kinds.hpp"
 #include "scenario/value_range.hpp"
+#include "serve/child_board_link.hpp"
 #include "serve/request_router.hpp"
 #include "serve/serial_device_link.hpp"
-#include "serve/child_board_link.hpp"
 #include "serve/sketch_server.hpp"
 #include "serve/web_server.hpp"
 
@@ -73,10 +73,16 @@ std::vector<std::string> board_runner_arguments(const ServeCommandOptions& optio
 nlohmann::json status_message(const serve::RequestRouter& router, const serve::WebServer& server) {
   const serve::RouterCounters& c = router.counters();
   return {{"bridge",
-           {{"clients", router.clients()}, {"forwarded", c.forwarded}, {"replied", c.replied},
-            {"dropped", c.dropped}, {"refused", c.refused}, {"timed_out", c.timed_out},
-            {"board_lines", c.board_lines}, {"messages_dropped", server.dropped_messages()},
-            {"connections_refused", server.refused_connections()}, {"connections_open", server.open_connections()},
+           {{"clients", router.clients()},
+            {"forwarded", c.forwarded},
+            {"replied", c.replied},
+            {"dropped", c.dropped},
+            {"refused", c.refused},
+            {"timed_out", c.timed_out},
+            {"board_lines", c.board_lines},
+            {"messages_dropped", server.dropped_messages()},
+            {"connections_refused", server.refused_connections()},
+            {"connections_open", server.open_connections()},
             {"accept_failures", server.accept_failures()}}}};
 }
 
@@ -163,7 +169,8 @@ int serve_simulation(net::io_context& io, const ServeCommandOptions& options, co
 
 /// `stepdance serve` without a target: the Stepdance page's sketch server.
 int run_sketch_server_command(const ServeCommandOptions& options) {
-  if (!options.board.empty() || !options.speed.empty() || !options.output_directory.empty() || options.baud != "115200") {
+  if (!options.board.empty() || !options.speed.empty() || !options.output_directory.empty() ||
+      options.baud != "115200") {
     std::cerr << "serve: --board, --speed, --out and --baud need a target; the sketch server takes the page's runs\n";
     return kExitBadInput;
   }
@@ -195,12 +202,13 @@ CLI::App& add_serve_command(CLI::App& app, ServeCommandOptions& options) {
   add_number_option(serve, "--port", options.port, "TCP port, in [0, 65,535] (default 8001; 0 picks a free one)");
   serve.add_option("--allow-origin", options.allowed_origins,
                    "also accept WebSockets from this origin, e.g. http://192.168.1.5:8001 (repeatable)");
-  add_number_option(serve, "--baud", options.baud,
-                    "serial device: baud rate, in " + describe(ranges::kBaudRate) + " (default 115200; USB ignores it)");
+  add_number_option(
+      serve, "--baud", options.baud,
+      "serial device: baud rate, in " + describe(ranges::kBaudRate) + " (default 115200; USB ignores it)");
   serve.add_option("--board", options.board, "simulation: the board to bridge (default the first)");
-  add_number_option(serve, "--speed", options.speed,
-                    "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) +
-                        " (default 1)");
+  add_number_option(
+      serve, "--speed", options.speed,
+      "simulation: simulated seconds per wall-clock second, in " + describe(ranges::kServeSpeed) + " (default 1)");
   add_output_folder_option(serve, options.output_directory, "simulation: ");
   add_cache_folder_option(serve, options.cache_directory, "simulation: ");
   serve.add_flag("--unconfined", options.unconfined,

@@ -51,7 +51,8 @@ void ServedRun::read_next() {
                         [this, alive = alive_](const boost::system::error_code& error, size_t length) {
                           if (!*alive || over_) return;
                           if (error) {
-                            if (error == net::error::not_found) finish("the run sent a message over the server's limit");
+                            if (error == net::error::not_found)
+                              finish("the run sent a message over the server's limit");
                             return;  // the end of the child is seen by check()
                           }
                           std::string line(net::buffers_begin(incoming_.data()),

@@ -10,8 +10,8 @@
 #include <boost/asio/steady_timer.hpp>
 #include <nlohmann/json.hpp>
 
-#include "board_link.hpp"
 #include "assembly/simulation.hpp"
+#include "board_link.hpp"
 
 namespace stepdance::cli::serve {
 
@@ -27,8 +27,7 @@ class SimulatedBoardLink : public BoardLink {
   /// Points of the drawing sent at most per update; the rest follow in the next ones.
   static constexpr size_t kMaxPointsPerUpdate = 4000;
 
-  SimulatedBoardLink(boost::asio::io_context& io, sim::Simulation& simulation, const std::string& board,
-                     double speed);
+  SimulatedBoardLink(boost::asio::io_context& io, sim::Simulation& simulation, const std::string& board, double speed);
   void send(const std::string& bytes) override;
   std::string describe() const override { return "simulated board " + board_name_; }
   /// Receives each drawing update (a JSON object, see drawing_update()).
@@ -57,8 +56,8 @@ class SimulatedBoardLink : public BoardLink {
   std::chrono::steady_clock::time_point wall_start_;
   std::chrono::steady_clock::time_point next_drawing_;
   sim::SimTime sim_start_ = 0;
-  size_t strokes_sent_ = 0;      ///< strokes complete on the page (all points sent)
-  size_t points_sent_ = 0;       ///< points sent of stroke strokes_sent_
+  size_t strokes_sent_ = 0;  ///< strokes complete on the page (all points sent)
+  size_t points_sent_ = 0;   ///< points sent of stroke strokes_sent_
   std::function<void(const nlohmann::json&)> on_drawing_;
   bool stopped_ = false;
 };

@@ -40,8 +40,17 @@ constexpr sim::SimTime kMaxSpeedStepNs = 10 * sim::kMillisecond;
 /// loader's cache and the toolchain's own files.
 confine::ConfinementPaths run_paths(const std::string& folder) {
   confine::ConfinementPaths paths;
-  paths.read_only = {"/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin", "/etc/ld.so.cache",
-                     "/etc/alternatives", "/dev/urandom", "/dev/zero"};
+  paths.read_only = {"/usr",
+                     "/lib",
+                     "/lib32",
+                     "/lib64",
+                     "/libx32",
+                     "/bin",
+                     "/sbin",
+                     "/etc/ld.so.cache",
+                     "/etc/alternatives",
+                     "/dev/urandom",
+                     "/dev/zero"};
   for (const std::string& path : sim::SketchBuilder::toolchain_paths()) paths.read_only.push_back(path);
   paths.read_write = {folder, "/dev/null"};
   return paths;

@@ -8,13 +8,13 @@ namespace stepdance::cli::serve {
 
 /// A run the server prepared: its files are in <folder>/<example>/.
 struct SketchRunnerOptions {
-  std::string folder;    ///< the run folder (absolute); the only one it may write
-  std::string example;   ///< the example's folder name in it
-  std::string scenario;  ///< the scenario's file name in the example's folder
-  double watchdog_s = 5;  ///< wall seconds a sketch may run without simulated time moving
-  bool unconfined = false;  ///< skip the confinement (the server's --unconfined)
+  std::string folder;           ///< the run folder (absolute); the only one it may write
+  std::string example;          ///< the example's folder name in it
+  std::string scenario;         ///< the scenario's file name in the example's folder
+  double watchdog_s = 5;        ///< wall seconds a sketch may run without simulated time moving
+  bool unconfined = false;      ///< skip the confinement (the server's --unconfined)
   std::string cache_directory;  ///< unconfined only: the sketch cache ("" = its default)
-  int channel_fd = 3;     ///< the socket to the server: JSON messages, one a line, both ways
+  int channel_fd = 3;           ///< the socket to the server: JSON messages, one a line, both ways
 };
 
 /// Confines the process (confine/confinement.hpp) to the run folder and the toolchain, then

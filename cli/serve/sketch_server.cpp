@@ -9,9 +9,9 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <stdexcept>
 #include <optional>
 #include <regex>
+#include <stdexcept>
 
 #include <boost/asio/signal_set.hpp>
 #include <boost/asio/steady_timer.hpp>
@@ -63,7 +63,7 @@ struct RunRequest {
   };
   std::string example;
   std::vector<std::pair<std::string, std::string>> files;  ///< name, text
-  std::vector<OtherFile> others;  ///< files of other examples' folders the scenario names
+  std::vector<OtherFile> others;                           ///< files of other examples' folders the scenario names
   std::string scenario;
 };
 
@@ -147,11 +147,15 @@ void write_files(const RunRequest& request, const fs::path& folder) {
 
 class SketchServer {
  public:
-  explicit SketchServer(const SketchServerOptions& options) : options_(options), check_(io_), signals_(io_, SIGINT, SIGTERM) {
+  explicit SketchServer(const SketchServerOptions& options)
+      : options_(options), check_(io_), signals_(io_, SIGINT, SIGTERM) {
     WebServerHooks hooks;
     hooks.connected = [this](ClientId client) {
-      server_->send(client, json{{"type", "serve_hello"}, {"version", kEditProtocolVersion},
-                                 {"program", "stepdance serve"}, {"compiles", true}}.dump());
+      server_->send(client, json{{"type", "serve_hello"},
+                                 {"version", kEditProtocolVersion},
+                                 {"program", "stepdance serve"},
+                                 {"compiles", true}}
+                                .dump());
     };
     hooks.message = [this](ClientId client, std::string_view text) { receive(client, text); };
     hooks.disconnected = [this](ClientId client) {
@@ -211,17 +215,18 @@ class SketchServer {
         remove_run_folder(folder);
         throw;
       }
-      run_ = std::make_unique<ServedRun>(io_, folder, runner_arguments(*request, folder), ServedRunLimits{},
-                                         [this, client](const std::string& line, bool) { server_->send(client, line); });
+      run_ =
+          std::make_unique<ServedRun>(io_, folder, runner_arguments(*request, folder), ServedRunLimits{},
+                                      [this, client](const std::string& line, bool) { server_->send(client, line); });
     } catch (const std::exception& failure) {  // a file that cannot be written, say
       server_->send(client, json{{"type", "failed"}, {"text", failure.what()}}.dump());
     }
   }
 
   std::vector<std::string> runner_arguments(const RunRequest& request, const std::string& folder) const {
-    std::vector<std::string> arguments{"run-sketch", "--folder", folder, "--example", request.example,
-                                       "--scenario", request.scenario, "--watchdog-s",
-                                       std::to_string(options_.watchdog_s)};
+    std::vector<std::string> arguments{"run-sketch",     "--folder",      folder,
+                                       "--example",      request.example, "--scenario",
+                                       request.scenario, "--watchdog-s",  std::to_string(options_.watchdog_s)};
     if (options_.unconfined) arguments.insert(arguments.end(), {"--unconfined", "--cache", options_.cache_directory});
     return arguments;
   }

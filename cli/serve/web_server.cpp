@@ -25,7 +25,8 @@ WebServer::WebServer(net::io_context& io, const std::string& address, uint16_t p
   if (!error) acceptor_.set_option(net::socket_base::reuse_address(true), error);
   if (!error) acceptor_.bind(endpoint, error);
   if (!error) acceptor_.listen(net::socket_base::max_listen_connections, error);
-  if (error) throw std::runtime_error("cannot listen on " + address + ":" + std::to_string(port) + ": " + error.message());
+  if (error)
+    throw std::runtime_error("cannot listen on " + address + ":" + std::to_string(port) + ": " + error.message());
   port_ = acceptor_.local_endpoint().port();
   policy_.set_port(port_);
   accept();

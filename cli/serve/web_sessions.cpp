@@ -22,7 +22,8 @@ std::string_view text_of(beast::string_view text) { return {text.data(), text.si
 
 // ---- HTTP ---------------------------------------------------------------------------------------
 
-HttpSession::HttpSession(boost::asio::ip::tcp::socket socket, WebServer& server, std::unique_ptr<ConnectionTicket> ticket)
+HttpSession::HttpSession(boost::asio::ip::tcp::socket socket, WebServer& server,
+                         std::unique_ptr<ConnectionTicket> ticket)
     : stream_(std::move(socket)), server_(server), ticket_(std::move(ticket)) {}
 
 void HttpSession::read() {
@@ -81,8 +82,8 @@ void HttpSession::respond(const Request& request, http::status status, std::stri
   response->set(http::field::content_type, beast::string_view(content_type.data(), content_type.size()));
   response->set(http::field::cache_control, "no-store");
   response->set("X-Content-Type-Options", "nosniff");
-  response->set("Content-Security-Policy", "default-src 'self'; connect-src 'self' ws://" +
-                                               std::string(text_of(request[http::field::host])));
+  response->set("Content-Security-Policy",
+                "default-src 'self'; connect-src 'self' ws://" + std::string(text_of(request[http::field::host])));
   response->keep_alive(request.keep_alive() && status == http::status::ok);
   response->body() = request.method() == http::verb::head ? std::string() : std::move(body);
   response->prepare_payload();
@@ -96,7 +97,8 @@ void HttpSession::respond(const Request& request, http::status status, std::stri
 
 // ---- WebSocket ----------------------------------------------------------------------------------
 
-WebSocketSession::WebSocketSession(beast::tcp_stream stream, WebServer& server, std::unique_ptr<ConnectionTicket> ticket)
+WebSocketSession::WebSocketSession(beast::tcp_stream stream, WebServer& server,
+                                   std::unique_ptr<ConnectionTicket> ticket)
     : socket_(std::move(stream)), server_(server), ticket_(std::move(ticket)) {}
 
 void WebSocketSession::accept(http::request<http::string_body> request) {
@@ -135,12 +137,13 @@ void WebSocketSession::write() {
   if (writing_ || outgoing_.empty() || finished_) return;
   writing_ = true;
   socket_.text(true);
-  socket_.async_write(boost::asio::buffer(outgoing_.front()), [self = shared_from_this()](beast::error_code error, size_t) {
-    self->writing_ = false;
-    self->outgoing_.pop_front();
-    if (error) return self->finish();
-    self->write();
-  });
+  socket_.async_write(boost::asio::buffer(outgoing_.front()),
+                      [self = shared_from_this()](beast::error_code error, size_t) {
+                        self->writing_ = false;
+                        self->outgoing_.pop_front();
+                        if (error) return self->finish();
+                        self->write();
+                      });
 }
 
 void WebSocketSession::close() {

@@ -54,7 +54,7 @@ void setup() {
   channel_a.invert_output();        // +x runs from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(25.4, 2032);
-  channel_b.invert_output();        // +y runs away from the long axis
+  channel_b.invert_output();  // +y runs away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   scaling_filter.begin();  // incremental: each output change = its input's change × ratio

@@ -20,7 +20,7 @@ Homing homing;
 constexpr float kHomingSpeedMmPerS = 40;
 constexpr float kDrawSpeedMmPerS = 20;
 constexpr float kPenSpeedStepsPerS = 1000;
-constexpr double kPenUp = 0;      // servo steps from neutral (1 step = 1 µs of pulse)
+constexpr double kPenUp = 0;  // servo steps from neutral (1 step = 1 µs of pulse)
 constexpr double kPenDown = -300;
 
 void pen(double steps, double x, double y) { planner.add_move(GLOBAL, kPenSpeedStepsPerS, x, y, steps, 0, 0, 0); }

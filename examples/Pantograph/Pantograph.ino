@@ -52,7 +52,7 @@ void setup() {
   channel_a.invert_output();   // +x from motor A towards motor B
   channel_b.begin(&output_b, SIGNAL_E);
   channel_b.set_ratio(1, 80);
-  channel_b.invert_output();   // +y away from the long axis
+  channel_b.invert_output();  // +y away from the long axis
   channel_z.begin(&output_c, SIGNAL_E);
 
   encoder_r.begin(ENCODER_1);

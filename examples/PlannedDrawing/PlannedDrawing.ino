@@ -63,17 +63,27 @@ void spiral_point(int k, double& x, double& y) {
 // Queues step `index` of the figure; false once the figure is complete.
 bool queue_step(int index) {
   double x = 0, y = 0;
-  if (index == 0) { star_point(0, x, y); return planner.add_move(ABSOLUTE, kTravelMmPerS, x, y, kPenUpMm, 0, 0, 0) >= 0; }
+  if (index == 0) {
+    star_point(0, x, y);
+    return planner.add_move(ABSOLUTE, kTravelMmPerS, x, y, kPenUpMm, 0, 0, 0) >= 0;
+  }
   if (index == 1) return planner.add_move(INCREMENTAL, kPenMmPerS, 0, 0, kPenDownMm - kPenUpMm, 0, 0, 0) >= 0;
-  if (index <= 6) { star_point(index - 1, x, y); return planner.add_move(ABSOLUTE, kDrawMmPerS, x, y, kPenDownMm, 0, 0, 0) >= 0; }
+  if (index <= 6) {
+    star_point(index - 1, x, y);
+    return planner.add_move(ABSOLUTE, kDrawMmPerS, x, y, kPenDownMm, 0, 0, 0) >= 0;
+  }
   if (index == 7) return planner.add_move(INCREMENTAL, kPenMmPerS, 0, 0, kPenUpMm - kPenDownMm, 0, 0, 0) >= 0;
-  if (index == 8) { spiral_point(0, x, y); return planner.add_move(ABSOLUTE, kTravelMmPerS, x, y, kPenUpMm, 0, 0, 0) >= 0; }
+  if (index == 8) {
+    spiral_point(0, x, y);
+    return planner.add_move(ABSOLUTE, kTravelMmPerS, x, y, kPenUpMm, 0, 0, 0) >= 0;
+  }
   if (index == 9) return planner.add_move(INCREMENTAL, kPenMmPerS, 0, 0, kPenDownMm - kPenUpMm, 0, 0, 0) >= 0;
   if (index <= 9 + kSpiralSegments) {
     spiral_point(index - 9, x, y);
     return planner.add_move(ABSOLUTE, kDrawMmPerS, x, y, kPenDownMm, 0, 0, 0) >= 0;
   }
-  if (index == 10 + kSpiralSegments) return planner.add_move(INCREMENTAL, kPenMmPerS, 0, 0, kPenUpMm - kPenDownMm, 0, 0, 0) >= 0;
+  if (index == 10 + kSpiralSegments)
+    return planner.add_move(INCREMENTAL, kPenMmPerS, 0, 0, kPenUpMm - kPenDownMm, 0, 0, 0) >= 0;
   if (index == 11 + kSpiralSegments) return planner.add_move(ABSOLUTE, kTravelMmPerS, 0, 0, kPenUpMm, 0, 0, 0) >= 0;
   return false;
 }
@@ -105,8 +115,8 @@ void setup() {
   encoder_2.output.map(&axidraw_kinematics.input_y);
 
   planner.begin();
-  planner.set_acceleration(1500);                   // mm/s² along the path
-  planner.limits().use_core_xy(150, 2000);          // each motor: 150 mm/s, 2000 mm/s²
+  planner.set_acceleration(1500);           // mm/s² along the path
+  planner.limits().use_core_xy(150, 2000);  // each motor: 150 mm/s, 2000 mm/s²
   planner.output_x.map(&axidraw_kinematics.input_x);
   planner.output_y.map(&axidraw_kinematics.input_y);
   planner.output_z.map(&channel_z.input_target_position);

@@ -30,7 +30,7 @@ AnalogInput pedal;
 PositionGenerator pen_position;
 CircleGenerator circle;
 
-constexpr double kPenUpSteps = 200;     // servo steps (1 step = 1 µs of pulse) from neutral
+constexpr double kPenUpSteps = 200;  // servo steps (1 step = 1 µs of pulse) from neutral
 constexpr double kPenDownSteps = -200;
 constexpr double kPenSpeedStepsPerS = 2000;
 constexpr float kCircleRadiusMm = 5;

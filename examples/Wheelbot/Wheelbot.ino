@@ -66,7 +66,7 @@ void begin_channels() {
   channel_y.enable_filtering(200);  // the same lag as X, so a circle stays round
   channel_z.begin(&output_c, SIGNAL_E);
   channel_z.set_ratio(1, 1201);  // 1201 steps/mm lead screw
-  channel_z.invert_output();  // as the original: its printer's Z and E motors turn the other way
+  channel_z.invert_output();     // as the original: its printer's Z and E motors turn the other way
   channel_e.begin(&output_d, SIGNAL_E);
   channel_e.set_ratio(1, 70);  // 70 steps per mm of clay
   channel_e.invert_output();

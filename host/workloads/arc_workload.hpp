@@ -62,12 +62,12 @@ class ArcWorkload {
     clear_fault();
     gcode.begin(&program);
     for (uint32_t axis = 0; axis < 3; ++axis) {
-      gcode.settings().set_from_sketch(110 + axis, 60000);  // mm/min
+      gcode.settings().set_from_sketch(110 + axis, 60000);   // mm/min
       gcode.settings().set_from_sketch(120 + axis, 100000);  // mm/s²
-      gcode.settings().set_from_sketch(130 + axis, 200);    // mm of travel
+      gcode.settings().set_from_sketch(130 + axis, 200);     // mm of travel
     }
-    gcode.settings().set_from_sketch(20, 1);  // soft limits
-    gcode.settings().set_from_sketch(11, 0.1);  // junction deviation, mm
+    gcode.settings().set_from_sketch(20, 1);        // soft limits
+    gcode.settings().set_from_sketch(11, 0.1);      // junction deviation, mm
     gcode.interpolator().set_acceleration(100000);  // the path's own limit (2,000 mm/s² by default)
     dance_start();
   }

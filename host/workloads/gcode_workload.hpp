@@ -8,8 +8,8 @@
 #include <stdint.h>
 
 #include "stepdance/core/byte_stream.hpp"
-#include "stepdance/interfaces/gcode/grbl_protocol.hpp"
 #include "stepdance/core/text_writer.hpp"
+#include "stepdance/interfaces/gcode/grbl_protocol.hpp"
 #include "stepdance/motion/planner/lookahead_planner.hpp"
 #include "stepdance/motion/planner/motion_limits.hpp"
 

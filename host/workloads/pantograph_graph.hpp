@@ -63,7 +63,7 @@ class PantographGraph {
     pen.output.map(&channel_z.input_target_position);
     pen.begin();
     dance_start();
-    engine().run_frame();  // the five-bar finds the stylus's first pose
+    engine().run_frame();                                       // the five-bar finds the stylus's first pose
     core_xy.input_x.push_deep(core_xy.input_x.read(ABSOLUTE));  // the channels take it, at rest
   }
 
@@ -92,9 +92,7 @@ class PantographGraph {
   static constexpr double kRightCentreRad = 0.373780;
   static constexpr double kLeftCentreRad = -0.138095;
 
-  static int32_t counts(double joint_rad) {
-    return static_cast<int32_t>(lround(joint_rad * kCountsPerTurn / kTwoPi));
-  }
+  static int32_t counts(double joint_rad) { return static_cast<int32_t>(lround(joint_rad * kCountsPerTurn / kTwoPi)); }
 
   // The joints' angles at `frame`, also set as the encoders' counts.
   static void joints_at(uint32_t frame, double& right_rad, double& left_rad) {

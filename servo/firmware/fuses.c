@@ -1,5 +1,7 @@
 /* fuses.c: the ATtiny84 fuse bytes this firmware needs, stored in the ELF's .fuse section. */
-#include <avr/io.h>   /* device fuse bit names */
+/* avr/io.h first: avr/fuse.h sizes FUSES by the device's fuse count, which avr/io.h defines. */
+#include <avr/io.h> /* device fuse bit names */
+
 #include <avr/fuse.h> /* FUSES */
 
 /* low 0xE2: internal 8 MHz RC (CKSEL 0010, SUT 10), clock not divided by 8, no clock output.

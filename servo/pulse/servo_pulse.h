@@ -18,23 +18,23 @@ extern "C" {
 
 /* Build-time settings of one servo board. All values are in microseconds or steps. */
 typedef struct servo_pulse_settings {
-    uint16_t period_us;          /* nominal time between pulse starts (PULSE_PERIOD_US) */
-    int16_t period_offset_us;    /* trim added to the period for RC-clock error (PULSE_PERIOD_OFFSET) */
-    int16_t width_offset_us;     /* trim added to every width (PULSE_WIDTH_OFFSET) */
-    uint16_t midpoint_width_us;  /* width at zero steps before the trim (SERVO_MIDPOINT_PULSE_WIDTH_US) */
-    int32_t top_limit_steps;     /* highest step count that still moves the servo (SERVO_TOP_LIMIT_STEPS) */
-    int32_t bottom_limit_steps;  /* lowest step count that still moves the servo (SERVO_BOTTOM_LIMIT_STEPS) */
+  uint16_t period_us;         /* nominal time between pulse starts (PULSE_PERIOD_US) */
+  int16_t period_offset_us;   /* trim added to the period for RC-clock error (PULSE_PERIOD_OFFSET) */
+  int16_t width_offset_us;    /* trim added to every width (PULSE_WIDTH_OFFSET) */
+  uint16_t midpoint_width_us; /* width at zero steps before the trim (SERVO_MIDPOINT_PULSE_WIDTH_US) */
+  int32_t top_limit_steps;    /* highest step count that still moves the servo (SERVO_TOP_LIMIT_STEPS) */
+  int32_t bottom_limit_steps; /* lowest step count that still moves the servo (SERVO_BOTTOM_LIMIT_STEPS) */
 } servo_pulse_settings;
 
 /* Returns steps limited to [bottom_limit_steps, top_limit_steps]. */
-int32_t servo_pulse_clamp_steps(const servo_pulse_settings *settings, int32_t steps);
+int32_t servo_pulse_clamp_steps(const servo_pulse_settings* settings, int32_t steps);
 
 /* Returns the pulse width in us for a step count: midpoint + width offset + clamped steps
  * (1 step = 1 us). Precondition: servo_pulse_settings_valid(settings). */
-uint16_t servo_pulse_width_us(const servo_pulse_settings *settings, int32_t steps);
+uint16_t servo_pulse_width_us(const servo_pulse_settings* settings, int32_t steps);
 
 /* Returns the pulse period in us: period + period offset. */
-uint16_t servo_pulse_period_us(const servo_pulse_settings *settings);
+uint16_t servo_pulse_period_us(const servo_pulse_settings* settings);
 
 /* Returns the Timer1 TOP (ICR1) value giving a period of period_us 1-us ticks.
  * Precondition: period_us >= 2. */
@@ -45,7 +45,7 @@ uint16_t servo_pulse_compare_for_width_us(uint16_t width_us);
 
 /* True when every width in the step window is at least 1 us and ends before the period does,
  * the period lies in 2..65535 us (Timer1 and uint16_t), and bottom_limit_steps <= top_limit_steps. */
-bool servo_pulse_settings_valid(const servo_pulse_settings *settings);
+bool servo_pulse_settings_valid(const servo_pulse_settings* settings);
 
 #ifdef __cplusplus
 }

@@ -9,8 +9,8 @@
 namespace servo_sim {
 namespace {
 
-constexpr std::uint8_t kTccr1aExpected = 0x22;  // COM1B1 | WGM11: OC1B non-inverting, WGM11:10 = 10
-constexpr std::uint8_t kTccr1bExpected = 0x1A;  // WGM13 | WGM12 | CS11: mode 14, clk/8
+constexpr std::uint8_t kTccr1aExpected = 0x22;   // COM1B1 | WGM11: OC1B non-inverting, WGM11:10 = 10
+constexpr std::uint8_t kTccr1bExpected = 0x1A;   // WGM13 | WGM12 | CS11: mode 14, clk/8
 constexpr std::uint8_t kServoPinMask = 1u << 5;  // PA5 / OC1B
 constexpr std::uint8_t kStepPinMask = 1u << 7;   // PA7 / PCINT7
 constexpr std::uint8_t kDirPinMask = 1u << 6;    // PA6
@@ -33,14 +33,12 @@ void check_period_ends(const ServoBoard& board, const Expectations& expect, Repo
   for (std::size_t k = 0; k < ends.size(); ++k) {
     const std::uint64_t nominal = start + (k + 1) * period_cycles;
     const std::uint64_t seen = ends[k];
-    report.that("period end " + std::to_string(k + 1),
-                seen >= nominal && seen - nominal <= kBoundaryToleranceCycles,
+    report.that("period end " + std::to_string(k + 1), seen >= nominal && seen - nominal <= kBoundaryToleranceCycles,
                 "at cycle " + std::to_string(seen) + ", expected " + std::to_string(nominal));
   }
   const std::uint64_t whole_periods = (board.now_cycles() - start) / period_cycles;
   report.that("period count", ends.size() + 1 >= whole_periods && ends.size() <= whole_periods,
-              std::to_string(ends.size()) + " period ends seen in " + std::to_string(whole_periods) +
-                  " whole periods");
+              std::to_string(ends.size()) + " period ends seen in " + std::to_string(whole_periods) + " whole periods");
 }
 
 // The OCR1B values allowed for a write at write_cycle after period_end_cycle.
@@ -98,15 +96,15 @@ void check_pulse_updates(const ServoBoard& board, const Waveform& waveform, cons
     std::size_t in_window = 0;
     while (next_write < writes.size() && writes[next_write].cycle <= window_end) {
       const RegisterWrite16& write = writes[next_write];
-      if (!report.that("OCR1B write inside an update window", write.cycle >= ends[k],
-                       "write at cycle " + std::to_string(write.cycle) + " before period end " +
-                           std::to_string(ends[k]))) {
+      if (!report.that(
+              "OCR1B write inside an update window", write.cycle >= ends[k],
+              "write at cycle " + std::to_string(write.cycle) + " before period end " + std::to_string(ends[k]))) {
         return;
       }
       const auto allowed = allowed_compares(waveform, expect, ends[k], write.cycle);
       report.that("OCR1B after period end " + std::to_string(k + 1), allowed.count(write.value) == 1,
-                  "wrote " + std::to_string(write.value) + ", expected one of [" +
-                      std::to_string(*allowed.begin()) + ".." + std::to_string(*allowed.rbegin()) + "]");
+                  "wrote " + std::to_string(write.value) + ", expected one of [" + std::to_string(*allowed.begin()) +
+                      ".." + std::to_string(*allowed.rbegin()) + "]");
       ++in_window;
       ++next_write;
     }
@@ -145,8 +143,8 @@ void check_neutral_output_pulses(const ServoBoard& board, const Expectations& ex
   report.equal("compare-B pulses not " + std::to_string(expect.width_us(0)) + " us", 0, bad_widths);
 }
 
-void check_settled(const ServoBoard& board, const Waveform& waveform, const Expectations& expect,
-                   Report& report, const std::string& label) {
+void check_settled(const ServoBoard& board, const Waveform& waveform, const Expectations& expect, Report& report,
+                   const std::string& label) {
   const std::int32_t position = waveform.position_at_us(board.now_cycles() / ServoBoard::kCyclesPerUs);
   report.equal(label + ": SRAM step position", position, board.position_steps());
   report.equal<unsigned>(label + ": OCR1B", expect.compare(position), board.read16(reg::kOcr1bl));
@@ -167,8 +165,7 @@ void run_checking_position(ServoBoard& board, const Waveform& waveform, std::uin
     const std::int32_t expected = waveform.position_at_us(at_us);
     const std::int32_t actual = board.position_steps();
     if (expected != actual && mismatches++ < 5) {
-      std::cout << "  detail: SRAM position at " << at_us << " us: expected " << expected << ", got "
-                << actual << '\n';
+      std::cout << "  detail: SRAM position at " << at_us << " us: expected " << expected << ", got " << actual << '\n';
     }
   }
   board.run_until_us(until_us);

@@ -19,8 +19,7 @@ void check_configuration(const ServoBoard& board, const Expectations& expect, Re
 // Period ends are exactly period_us apart from the timer start; OCR1B starts at neutral, then is
 // written once per period right after each period end, with the value for a position the waveform
 // held between that period end and the write.
-void check_pulse_updates(const ServoBoard& board, const Waveform& waveform, const Expectations& expect,
-                         Report& report);
+void check_pulse_updates(const ServoBoard& board, const Waveform& waveform, const Expectations& expect, Report& report);
 
 // While the position stays 0: simavr's compare-B output (see ServoBoard::compare_b_output) rises
 // exactly once per period and every pulse is the neutral width, i.e. ICR1 + 1 and OCR1B + 1 us.
@@ -28,8 +27,8 @@ void check_neutral_output_pulses(const ServoBoard& board, const Expectations& ex
 
 // The SRAM position equals the waveform's position now, and so does the last OCR1B written.
 // Call at least one full period after the last pulse.
-void check_settled(const ServoBoard& board, const Waveform& waveform, const Expectations& expect,
-                   Report& report, const std::string& label);
+void check_settled(const ServoBoard& board, const Waveform& waveform, const Expectations& expect, Report& report,
+                   const std::string& label);
 
 // Runs board to until_us, comparing the SRAM position with the waveform's in every 40 us frame
 // (30 us into the frame, when the frame's STEP pulse has been handled). The frame grid starts at

@@ -20,8 +20,7 @@ std::uint64_t settle_frames(const Expectations& expect) {
 }
 
 // Plays the whole waveform, checking the position every frame, and checks OCR1B at its end.
-void play_and_check(const Expectations& expect, Report& report, const Waveform& waveform,
-                    const std::string& label) {
+void play_and_check(const Expectations& expect, Report& report, const Waveform& waveform, const std::string& label) {
   ServoBoard board(expect.elf_path, expect.position_symbol);
   board.play(waveform.events());
   run_checking_position(board, waveform, kStimulusStartUs, waveform.end_us(), report);

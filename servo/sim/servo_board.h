@@ -16,7 +16,7 @@ namespace servo_sim {
 
 // Data-space addresses (I/O address + 0x20, ATtiny84 datasheet register summary).
 namespace reg {
-constexpr std::uint16_t kTifr1 = 0x2B;   // bit 0: TOV1
+constexpr std::uint16_t kTifr1 = 0x2B;  // bit 0: TOV1
 constexpr std::uint16_t kPcmsk0 = 0x32;
 constexpr std::uint16_t kDdra = 0x3A;
 constexpr std::uint16_t kGimsk = 0x5B;   // bit 4: PCIE0

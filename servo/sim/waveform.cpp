@@ -31,8 +31,7 @@ void Waveform::stepdance_frames(const std::vector<std::int8_t>& directions, std:
 
 void Waveform::stepdance_steps(std::int32_t steps, std::uint32_t pulse_us) {
   const std::int8_t direction = steps >= 0 ? 1 : -1;
-  stepdance_frames(std::vector<std::int8_t>(static_cast<std::size_t>(std::abs(steps)), direction),
-                   pulse_us);
+  stepdance_frames(std::vector<std::int8_t>(static_cast<std::size_t>(std::abs(steps)), direction), pulse_us);
 }
 
 void Waveform::frame_with_dir_flip_mid_pulse(bool dir_high_at_rise, std::uint32_t pulse_us,

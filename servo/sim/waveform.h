@@ -33,8 +33,7 @@ class Waveform {
 
   // Appends one frame whose DIR flips flip_after_us into a pulse_us STEP pulse; the step counts
   // in the direction DIR had at the rising edge (dir_high_at_rise).
-  void frame_with_dir_flip_mid_pulse(bool dir_high_at_rise, std::uint32_t pulse_us,
-                                     std::uint32_t flip_after_us);
+  void frame_with_dir_flip_mid_pulse(bool dir_high_at_rise, std::uint32_t pulse_us, std::uint32_t flip_after_us);
 
   // Appends one STEP pulse rising at rise_us (no earlier than end_us() + kDirLeadUs), DIR set
   // kDirLeadUs before it; end_us() becomes the falling edge.

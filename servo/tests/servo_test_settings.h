@@ -8,8 +8,9 @@ namespace servo_test {
 
 // The default (90-degree) build: every setting as in servo_settings.h.
 inline servo_pulse_settings settings_90deg() {
-  return servo_pulse_settings{PULSE_PERIOD_US,   PULSE_PERIOD_OFFSET,   PULSE_WIDTH_OFFSET,
-                              SERVO_MIDPOINT_PULSE_WIDTH_US, SERVO_TOP_LIMIT_STEPS, SERVO_BOTTOM_LIMIT_STEPS};
+  return servo_pulse_settings{PULSE_PERIOD_US,       PULSE_PERIOD_OFFSET,
+                              PULSE_WIDTH_OFFSET,    SERVO_MIDPOINT_PULSE_WIDTH_US,
+                              SERVO_TOP_LIMIT_STEPS, SERVO_BOTTOM_LIMIT_STEPS};
 }
 
 // The 180-degree build: the same, with a window of +/-750 steps.

@@ -29,16 +29,14 @@ constexpr uint32_t kWriteGiveUpUs = 100000;
 // available() reports at most this many bytes (it returns an int).
 constexpr size_t kMaxReportedBytes = 0x7FFFFFFF;
 
-int clamp_to_int(size_t count) {
-  return static_cast<int>(count < kMaxReportedBytes ? count : kMaxReportedBytes);
-}
+int clamp_to_int(size_t count) { return static_cast<int>(count < kMaxReportedBytes ? count : kMaxReportedBytes); }
 
 }  // namespace
 
 namespace stepdance::arduino::internal {
 void reset_serial_state() {
-  for (HardwareSerial* port : {&Serial, &SerialUSB1, &SerialUSB2, &Serial1, &Serial2, &Serial3,
-                               &Serial4, &Serial5, &Serial6, &Serial7, &Serial8}) {
+  for (HardwareSerial* port : {&Serial, &SerialUSB1, &SerialUSB2, &Serial1, &Serial2, &Serial3, &Serial4, &Serial5,
+                               &Serial6, &Serial7, &Serial8}) {
     port->reset_port();
   }
 }

@@ -28,9 +28,7 @@ size_t Print::write(const char* text) {
 }
 
 size_t Print::print(const char* text) { return write(text); }
-size_t Print::print(const __FlashStringHelper* text) {
-  return write(reinterpret_cast<const char*>(text));
-}
+size_t Print::print(const __FlashStringHelper* text) { return write(reinterpret_cast<const char*>(text)); }
 size_t Print::print(const String& text) { return write(text.c_str(), text.length()); }
 size_t Print::print(char c) { return write(static_cast<uint8_t>(c)); }
 
@@ -40,12 +38,8 @@ size_t Print::print(unsigned long value, int base) { return print_unsigned(value
 size_t Print::print(unsigned long long value, int base) { return print_unsigned(value, base); }
 
 // Signed values carry their two's complement in their own width for non-decimal bases.
-size_t Print::print(int value, int base) {
-  return print_signed(value, static_cast<unsigned int>(value), base);
-}
-size_t Print::print(long value, int base) {
-  return print_signed(value, static_cast<unsigned long>(value), base);
-}
+size_t Print::print(int value, int base) { return print_signed(value, static_cast<unsigned int>(value), base); }
+size_t Print::print(long value, int base) { return print_signed(value, static_cast<unsigned long>(value), base); }
 size_t Print::print(long long value, int base) {
   return print_signed(value, static_cast<unsigned long long>(value), base);
 }
@@ -78,8 +72,8 @@ int Print::printf(const char* format, ...) {
 size_t Print::print_signed(long long value, unsigned long long two_complement, int base) {
   if (base == 0) return write(static_cast<uint8_t>(two_complement));
   char text[kIntegerTextSize];
-  const size_t length = effective_base(base) == 10 ? format_signed_decimal(value, text)
-                                                   : format_unsigned(two_complement, base, text);
+  const size_t length =
+      effective_base(base) == 10 ? format_signed_decimal(value, text) : format_unsigned(two_complement, base, text);
   return write(text, length);
 }
 

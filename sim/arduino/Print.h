@@ -37,9 +37,7 @@ class Print {
   /// Writes size bytes; returns how many were written (stops at the first refused byte).
   virtual size_t write(const uint8_t* buffer, size_t size);
   size_t write(const char* text);
-  size_t write(const char* buffer, size_t size) {
-    return write(reinterpret_cast<const uint8_t*>(buffer), size);
-  }
+  size_t write(const char* buffer, size_t size) { return write(reinterpret_cast<const uint8_t*>(buffer), size); }
   // Integer arguments write their low byte (write(0) would otherwise be ambiguous).
   size_t write(int byte) { return write(static_cast<uint8_t>(byte)); }
   size_t write(unsigned int byte) { return write(static_cast<uint8_t>(byte)); }

@@ -39,9 +39,7 @@ class Stream : public Print {
   float parseFloat();
   /// Reads up to length bytes, stopping at the timeout; returns how many were read.
   size_t readBytes(char* buffer, size_t length);
-  size_t readBytes(uint8_t* buffer, size_t length) {
-    return readBytes(reinterpret_cast<char*>(buffer), length);
-  }
+  size_t readBytes(uint8_t* buffer, size_t length) { return readBytes(reinterpret_cast<char*>(buffer), length); }
   /// As readBytes(), also stopping at (and consuming, not storing) `terminator`.
   size_t readBytesUntil(char terminator, char* buffer, size_t length);
   size_t readBytesUntil(char terminator, uint8_t* buffer, size_t length) {

@@ -54,8 +54,7 @@ String::String(unsigned long value, unsigned char base) : text_(unsigned_text(va
 String::String(long long value, unsigned char base) : text_(signed_text(value, base)) {}
 String::String(unsigned long long value, unsigned char base) : text_(unsigned_text(value, base)) {}
 String::String(float value, unsigned char decimal_places) : text_(float_text(value, decimal_places)) {}
-String::String(double value, unsigned char decimal_places)
-    : text_(float_text(value, decimal_places)) {}
+String::String(double value, unsigned char decimal_places) : text_(float_text(value, decimal_places)) {}
 
 bool String::reserve(unsigned int size) {
   text_.reserve(size);
@@ -99,8 +98,7 @@ int String::compareTo(const String& other) const {
 bool String::equalsIgnoreCase(const String& other) const {
   if (text_.size() != other.text_.size()) return false;
   for (size_t i = 0; i < text_.size(); ++i) {
-    if (tolower(static_cast<unsigned char>(text_[i])) !=
-        tolower(static_cast<unsigned char>(other.text_[i]))) {
+    if (tolower(static_cast<unsigned char>(text_[i])) != tolower(static_cast<unsigned char>(other.text_[i]))) {
       return false;
     }
   }
@@ -147,9 +145,7 @@ void String::getBytes(unsigned char* buffer, unsigned int size, unsigned int ind
 }
 
 namespace {
-int position_or_none(size_t position) {
-  return position == std::string::npos ? -1 : static_cast<int>(position);
-}
+int position_or_none(size_t position) { return position == std::string::npos ? -1 : static_cast<int>(position); }
 }  // namespace
 
 int String::indexOf(char c, unsigned int from) const { return position_or_none(text_.find(c, from)); }
@@ -161,9 +157,7 @@ int String::indexOf(const String& text, unsigned int from) const {
 
 int String::lastIndexOf(char c) const { return position_or_none(text_.rfind(c)); }
 
-int String::lastIndexOf(char c, unsigned int from) const {
-  return position_or_none(text_.rfind(c, from));
-}
+int String::lastIndexOf(char c, unsigned int from) const { return position_or_none(text_.rfind(c, from)); }
 
 int String::lastIndexOf(const String& text) const { return position_or_none(text_.rfind(text.text_)); }
 

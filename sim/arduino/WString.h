@@ -13,8 +13,8 @@ class __FlashStringHelper;
 class String {
  public:
   String() = default;
-  String(const char* text);  // NOLINT: implicit, as in Arduino
-  String(const __FlashStringHelper* text);  // NOLINT
+  String(const char* text);                         // NOLINT: implicit, as in Arduino
+  String(const __FlashStringHelper* text);          // NOLINT
   String(const std::string& text) : text_(text) {}  // NOLINT
   explicit String(char c);
   explicit String(unsigned char value, unsigned char base = 10);

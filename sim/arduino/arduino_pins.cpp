@@ -10,8 +10,7 @@
 
 static_assert(INPUT == stepdance::arduino_pin_mode::kInput, "INPUT must match the core");
 static_assert(INPUT_PULLUP == stepdance::arduino_pin_mode::kInputPullup, "INPUT_PULLUP must match");
-static_assert(INPUT_PULLDOWN == stepdance::arduino_pin_mode::kInputPulldown,
-              "INPUT_PULLDOWN must match");
+static_assert(INPUT_PULLDOWN == stepdance::arduino_pin_mode::kInputPulldown, "INPUT_PULLDOWN must match");
 
 namespace {
 
@@ -48,20 +47,11 @@ void reset_pin_state() {
 void pinMode(uint8_t pin, uint8_t mode) {
   using stepdance::hal::PinMode;
   switch (mode) {
-    case INPUT:
-      stepdance::hal::gpio_mode(pin, PinMode::kInput);
-      break;
-    case OUTPUT:
-      stepdance::hal::gpio_mode(pin, PinMode::kOutput);
-      break;
-    case INPUT_PULLUP:
-      stepdance::hal::gpio_mode(pin, PinMode::kInputPullup);
-      break;
-    case INPUT_PULLDOWN:
-      stepdance::hal::gpio_mode(pin, PinMode::kInputPulldown);
-      break;
-    default:
-      break;
+    case INPUT: stepdance::hal::gpio_mode(pin, PinMode::kInput); break;
+    case OUTPUT: stepdance::hal::gpio_mode(pin, PinMode::kOutput); break;
+    case INPUT_PULLUP: stepdance::hal::gpio_mode(pin, PinMode::kInputPullup); break;
+    case INPUT_PULLDOWN: stepdance::hal::gpio_mode(pin, PinMode::kInputPulldown); break;
+    default: break;
   }
 }
 

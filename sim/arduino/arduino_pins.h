@@ -15,9 +15,8 @@ constexpr uint8_t INPUT_PULLUP = 2;
 constexpr uint8_t INPUT_PULLDOWN = 3;
 
 /// Teensy 4.1 pin numbers of the analog inputs (A0..A13 are the same on a Teensy 4.0).
-constexpr uint8_t A0 = 14, A1 = 15, A2 = 16, A3 = 17, A4 = 18, A5 = 19, A6 = 20, A7 = 21,
-                  A8 = 22, A9 = 23, A10 = 24, A11 = 25, A12 = 26, A13 = 27, A14 = 38, A15 = 39,
-                  A16 = 40, A17 = 41;
+constexpr uint8_t A0 = 14, A1 = 15, A2 = 16, A3 = 17, A4 = 18, A5 = 19, A6 = 20, A7 = 21, A8 = 22, A9 = 23, A10 = 24,
+                  A11 = 25, A12 = 26, A13 = 27, A14 = 38, A15 = 39, A16 = 40, A17 = 41;
 /// The Teensy's on-board LED.
 constexpr uint8_t LED_BUILTIN = 13;
 

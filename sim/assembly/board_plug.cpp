@@ -37,7 +37,7 @@ void BoardPlug::attach_i2c(Connector connector, uint8_t address, I2cDevice* devi
 }
 
 void PictureFileSink::write_picture(const std::string& file_name, const std::vector<bool>& lit, int width, int height,
-                                   int scale) {
+                                    int scale) {
   const std::string path = path_for_(file_name);
   std::filesystem::create_directories(std::filesystem::path(path).parent_path());
   writer_.write_screen(path, lit, width, height, scale);

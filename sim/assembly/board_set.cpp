@@ -60,14 +60,16 @@ bool BoardSet::build(const scenario::Scenario& scenario, const std::string& stor
   on_stop_ = std::move(on_stop);
   for (const auto& [name, image] : options_.images) {
     if (scenario.board(name) == nullptr) {
-      error = {SimulationError::kBadInput, "--image " + name + "=" + image + ": the scenario has no board '" + name + "'"};
+      error = {SimulationError::kBadInput,
+               "--image " + name + "=" + image + ": the scenario has no board '" + name + "'"};
       return false;
     }
   }
   std::vector<SketchBuild> builds;
   std::vector<bool> runs_image;
   if (!build_sketches(scenario, builds, runs_image, error)) return false;
-  if (std::string conflicts = output_conflicts_text(outputs, compiled_inputs(scenario, builds, runs_image)); !conflicts.empty()) {
+  if (std::string conflicts = output_conflicts_text(outputs, compiled_inputs(scenario, builds, runs_image));
+      !conflicts.empty()) {
     error = {SimulationError::kBadInput, std::move(conflicts)};
     return false;
   }
@@ -120,10 +122,12 @@ bool BoardSet::build_sketches(const scenario::Scenario& scenario, std::vector<Sk
     builds.push_back(options_.boards->build(config.sketch));
     const SketchBuild& build = builds.back();
     if (!build.ok) {
-      error = {SimulationError::kBadInput, scenario_place(scenario, config.line) + "board '" + config.name + "': " + build.error};
+      error = {SimulationError::kBadInput,
+               scenario_place(scenario, config.line) + "board '" + config.name + "': " + build.error};
       return false;
     }
-    if (!build.diagnostics.empty() && options_.build_diagnostics) options_.build_diagnostics(config.sketch, build.diagnostics);
+    if (!build.diagnostics.empty() && options_.build_diagnostics)
+      options_.build_diagnostics(config.sketch, build.diagnostics);
   }
   return true;
 }
@@ -165,7 +169,8 @@ std::unique_ptr<SimBoard> BoardSet::load_image(const scenario::Scenario& scenari
   std::string load_error;
   auto firmware = options_.firmware->load(image_of(config), *config.module, scheduler_, load_error);
   if (!firmware) {
-    error = {SimulationError::kBadInput, scenario_place(scenario, config.line) + "board '" + config.name + "': " + load_error};
+    error = {SimulationError::kBadInput,
+             scenario_place(scenario, config.line) + "board '" + config.name + "': " + load_error};
     return nullptr;
   }
   return std::make_unique<SimBoard>(scheduler_, board_options, std::move(firmware), *config.module);
@@ -190,7 +195,7 @@ void BoardSet::fill_sockets(BoardSlot& slot) {
       StepperDriver* stepper = socket.stepper.get();
       if (enable_pin != kNoPin) {
         slot.board->wire(terminal::OutputPin{enable_pin},
-                                  [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
+                         [stepper](SimTime, bool level, bool driven) { stepper->set_enabled(driven && !level); });
       }
     } else {
       socket.servo = std::make_unique<ServoBoard>(servo_build(config.build), 0);

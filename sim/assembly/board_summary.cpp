@@ -62,13 +62,16 @@ void add_board_extras(const BoardSet& boards, nlohmann::json& extra) {
         log.push_back({{"time_s", to_seconds(fault.time_ns)}, {"fault", fault.text}});
       }
       faults[slot.config->name] = {{"first", std::string(stats.fault_name) + ": " + stats.fault_detail},
-                                   {"count", stats.fault_count}, {"log", log}};
+                                   {"count", stats.fault_count},
+                                   {"log", log}};
     }
     for (uint8_t port = 0; port < 4; ++port) {
       if (const StepperDriver* motor = slot.sockets[port].stepper.get()) {
         motors[slot.config->name + ":" + static_cast<char>('A' + port)] = {
-            {"steps", motor->position_steps()}, {"forward", motor->forward_steps()},
-            {"reverse", motor->reverse_steps()}, {"ignored_while_disabled", motor->ignored_steps()}};
+            {"steps", motor->position_steps()},
+            {"forward", motor->forward_steps()},
+            {"reverse", motor->reverse_steps()},
+            {"ignored_while_disabled", motor->ignored_steps()}};
       }
     }
   }

@@ -1,8 +1,8 @@
 // Frame windows through the cable model; pulses out of it to the receiving board.
 #include "assembly/cable_link.hpp"
 
-#include "stepdance/core/units.hpp"
 #include "assembly/frame_waveform.hpp"
+#include "stepdance/core/units.hpp"
 
 namespace stepdance::sim {
 

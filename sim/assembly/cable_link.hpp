@@ -4,11 +4,11 @@
 #include <cstdint>
 #include <functional>
 
+#include "assembly/pulse_delivery.hpp"
 #include "board/host/sim_board.hpp"
 #include "board/host/wire.hpp"
 #include "common/edges.hpp"
 #include "models/cable.hpp"
-#include "assembly/pulse_delivery.hpp"
 
 namespace stepdance::sim {
 

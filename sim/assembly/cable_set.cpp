@@ -6,9 +6,12 @@ namespace stepdance::sim {
 void CableSet::build(const std::vector<scenario::CableConfig>& configs, BoardSet& boards, const Recorders& recorders) {
   for (const scenario::CableConfig& config : configs) {
     const uint8_t to_port = static_cast<uint8_t>(config.to.port - 'A');
-    links_.push_back(std::make_unique<CableLink>(config.settings, *boards.slot(config.to.board).board, to_port, delivery_));
-    if (CableLink::Tap tap = recorders.input_tap(config.to.board, config.to.port)) links_.back()->set_tap(std::move(tap));
-    boards.slot(config.from.board).board->wire(terminal::OutputPort{static_cast<uint8_t>(config.from.port - 'A')}, links_.back().get());
+    links_.push_back(
+        std::make_unique<CableLink>(config.settings, *boards.slot(config.to.board).board, to_port, delivery_));
+    if (CableLink::Tap tap = recorders.input_tap(config.to.board, config.to.port))
+      links_.back()->set_tap(std::move(tap));
+    boards.slot(config.from.board)
+        .board->wire(terminal::OutputPort{static_cast<uint8_t>(config.from.port - 'A')}, links_.back().get());
   }
 }
 

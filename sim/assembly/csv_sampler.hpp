@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "common/sim_time.hpp"
-#include "output/csv_writer.hpp"
 #include "kernel/scheduler/periodic_timer.hpp"
+#include "output/csv_writer.hpp"
 
 namespace stepdance::sim {
 

@@ -134,15 +134,10 @@ void HostClient::enter_step(SimTime now) {
 bool HostClient::run_step(SimTime now) {
   const scenario::HostStep& step = config_.steps[step_];
   switch (step.kind) {
-    case scenario::HostStep::Kind::kSend:
-      send(step.bytes, now);
-      return true;
-    case scenario::HostStep::Kind::kPause:
-      return now - step_started_ >= step.pause;
-    case scenario::HostStep::Kind::kWait:
-      return run_wait(step, now);
-    case scenario::HostStep::Kind::kStream:
-      return run_stream(step, now);
+    case scenario::HostStep::Kind::kSend: send(step.bytes, now); return true;
+    case scenario::HostStep::Kind::kPause: return now - step_started_ >= step.pause;
+    case scenario::HostStep::Kind::kWait: return run_wait(step, now);
+    case scenario::HostStep::Kind::kStream: return run_stream(step, now);
   }
   return true;
 }
@@ -221,7 +216,8 @@ void HostClient::write_transcript(const std::string& path) const {
   out << "# simulated ms, > sent by the host / < received from the board, the line\n";
   for (const Entry& entry : transcript_) {
     out << format_ms(entry.time) << (entry.from_host ? " > " : " < ") << entry.text << '\n';
-    if (entry.cut) out << "# the line above goes on in the next one (lines over " << kLongestLineBytes << " bytes are split)\n";
+    if (entry.cut)
+      out << "# the line above goes on in the next one (lines over " << kLongestLineBytes << " bytes are split)\n";
   }
   if (transcript_not_kept_ > 0) {
     out << "# " << transcript_not_kept_ << " more lines not kept (a transcript keeps the first " << kTranscriptEntries

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "board/host/sim_board.hpp"
+#include "kernel/scheduler/periodic_timer.hpp"
 #include "kinds/finished_run.hpp"
 #include "scenario/line_pattern.hpp"
 #include "scenario/scenario.hpp"
-#include "kernel/scheduler/periodic_timer.hpp"
 
 namespace stepdance::sim {
 
@@ -105,6 +105,5 @@ class HostClient {
   size_t acknowledged_ = 0;
   std::string failure_;
 };
-
 
 }  // namespace stepdance::sim

@@ -37,7 +37,8 @@ std::vector<Stroke> strokes_of(const Machine& machine) {
   for (const Polyline& line : machine.pen_up_moves()) strokes.push_back(stroke_of(line, 0, line.size(), false));
   const std::vector<Polyline>& lines = machine.strokes();
   const std::vector<std::vector<ShadeMark>>& marks = machine.shade_marks();
-  for (size_t i = 0; i < lines.size(); ++i) add_shaded(strokes, lines[i], i < marks.size() ? marks[i] : std::vector<ShadeMark>{});
+  for (size_t i = 0; i < lines.size(); ++i)
+    add_shaded(strokes, lines[i], i < marks.size() ? marks[i] : std::vector<ShadeMark>{});
   return strokes;
 }
 

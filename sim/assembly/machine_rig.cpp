@@ -34,7 +34,8 @@ bool MachineRig::build(const scenario::Scenario& scenario, BoardSet& boards, Sim
   trace.record_pen_up = scenario.output.pen_up_travel;
   machine_ = config.kind->build(config, sockets, trace);
   if (!machine_) {
-    error = {SimulationError::kBadInput, scenario_place(scenario, config.line) + "the machine's motor sockets must hold steppers"};
+    error = {SimulationError::kBadInput,
+             scenario_place(scenario, config.line) + "the machine's motor sockets must hold steppers"};
     return false;
   }
   owner.board->on_frames_played([this](SimTime time) { after_frames(time); });
@@ -65,9 +66,8 @@ std::string MachineRig::drawing_svg() const {
   return svg_document(strokes, style);
 }
 
-void MachineRig::write_drawings(const std::string& svg_path, const std::string& png_path,
-                                const PictureWriter* pictures, double png_px_per_mm,
-                                std::vector<std::string>& files) const {
+void MachineRig::write_drawings(const std::string& svg_path, const std::string& png_path, const PictureWriter* pictures,
+                                double png_px_per_mm, std::vector<std::string>& files) const {
   const std::string png = pictures != nullptr ? png_path : std::string();
   if (!machine_ || (svg_path.empty() && png.empty())) return;
   std::vector<Stroke> strokes;

@@ -9,12 +9,12 @@
 #include <filesystem>
 #include <set>
 
+#include "assembly/vcd_size.hpp"
 #include "board/loader/sketch_sources.hpp"
-#include "output/png_page.hpp"
-#include "scenario/names.hpp"
 #include "kinds/device_kind.hpp"
 #include "kinds/machine_kind.hpp"
-#include "assembly/vcd_size.hpp"
+#include "output/png_page.hpp"
+#include "scenario/names.hpp"
 
 namespace stepdance::sim {
 namespace {
@@ -50,7 +50,8 @@ std::vector<RunInput> scenario_inputs(const scenario::Scenario& scenario) {
     }
   }
   for (const scenario::Action& action : scenario.timeline) {
-    if (!action.serial_file.empty()) inputs.push_back({action.serial_file, "the serial file of line " + std::to_string(action.line)});
+    if (!action.serial_file.empty())
+      inputs.push_back({action.serial_file, "the serial file of line " + std::to_string(action.line)});
   }
   for (const scenario::HostClientConfig& host : scenario.hosts) {
     for (const scenario::HostStep& step : host.steps) {
@@ -64,7 +65,8 @@ std::vector<RunInput> scenario_inputs(const scenario::Scenario& scenario) {
 /// (or the page is the drawing's bounding box, known only at the end), else the error.
 std::string plotter_png_problem(const scenario::Scenario& scenario, const std::string& png) {
   if (png.empty() || !scenario.machine) return {};
-  const std::optional<TravelArea> area = scenario.machine->kind->page ? scenario.machine->kind->page(*scenario.machine) : std::nullopt;
+  const std::optional<TravelArea> area =
+      scenario.machine->kind->page ? scenario.machine->kind->page(*scenario.machine) : std::nullopt;
   if (!area) return {};
   DrawingStyle page;
   page.travel_width_mm = area->x_max_mm - area->x_min_mm;

@@ -122,7 +122,8 @@ class PathIndex {
     }
     if (folder) {
       const std::string prefix = path.path == "/" ? "/" : path.path + "/";
-      for (auto found = by_text_.lower_bound(prefix); found != by_text_.end() && found->first.rfind(prefix, 0) == 0; ++found)
+      for (auto found = by_text_.lower_bound(prefix); found != by_text_.end() && found->first.rfind(prefix, 0) == 0;
+           ++found)
         out.push_back(found->second);
     }
     std::sort(out.begin(), out.end());

@@ -13,10 +13,12 @@ void add_socket_probes(const BoardSet& boards, std::vector<CsvProbe>& probes) {
     for (uint8_t port = 0; port < 4; ++port) {
       const std::string prefix = slot.config->name + "." + static_cast<char>('A' + port);
       if (const StepperDriver* stepper = slot.sockets[port].stepper.get()) {
-        probes.push_back({{prefix + "_steps", 0}, [stepper](SimTime) { return static_cast<double>(stepper->position_steps()); }});
+        probes.push_back(
+            {{prefix + "_steps", 0}, [stepper](SimTime) { return static_cast<double>(stepper->position_steps()); }});
       }
       if (const ServoBoard* servo = slot.sockets[port].servo.get()) {
-        probes.push_back({{prefix + "_servo_steps", 0}, [servo](SimTime) { return static_cast<double>(servo->position_steps()); }});
+        probes.push_back(
+            {{prefix + "_servo_steps", 0}, [servo](SimTime) { return static_cast<double>(servo->position_steps()); }});
       }
     }
   }

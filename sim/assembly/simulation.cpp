@@ -58,8 +58,9 @@ std::unique_ptr<Simulation> Simulation::create(const scenario::Scenario& scenari
 
 bool Simulation::build(SimulationError& error) {
   if (!outputs_.prepare(duration_, error)) return false;
-  if (!boards_.build(scenario_, outputs_.directory(), outputs_.planned(),
-                     [this](const SketchStop& stop) { on_sketch_stop(stop); }, error) ||
+  if (!boards_.build(
+          scenario_, outputs_.directory(), outputs_.planned(), [this](const SketchStop& stop) { on_sketch_stop(stop); },
+          error) ||
       !machine_.build(scenario_, boards_, error)) {
     return false;
   }
@@ -181,10 +182,13 @@ void Simulation::write_outputs(SimulationReport& report) {
 void Simulation::write_device_outputs(SimulationReport& report) {
   const std::string directory = scenario_.output.directory;
   if (directory.empty() && !options_.output_directory) return;  // no output folder: no pictures
-  if (!options_.pictures) return;                                // no picture writer
-  PictureFileSink sink(*options_.pictures, [this, &directory](const std::string& file) {
-    return outputs_.path_of((std::filesystem::path(directory) / file).string());
-  }, report.files);
+  if (!options_.pictures) return;                               // no picture writer
+  PictureFileSink sink(
+      *options_.pictures,
+      [this, &directory](const std::string& file) {
+        return outputs_.path_of((std::filesystem::path(directory) / file).string());
+      },
+      report.files);
   devices_.write_outputs(sink);
 }
 
@@ -213,7 +217,8 @@ nlohmann::json Simulation::summary_extra() const {
                         {"time_s", to_seconds(sketch_stop_->time_ns)},
                         {"backtrace", sketch_stop_->backtrace}};
   } else if (interrupted_by_ != 0 && !options_.live) {
-    extra["stopped"] = {{"what", interrupted_by_ == 15 ? "SIGTERM" : "SIGINT"}, {"time_s", to_seconds(scheduler_.now())}};
+    extra["stopped"] = {{"what", interrupted_by_ == 15 ? "SIGTERM" : "SIGINT"},
+                        {"time_s", to_seconds(scheduler_.now())}};
   }
   return extra;
 }

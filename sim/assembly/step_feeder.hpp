@@ -1,8 +1,8 @@
 // Feeds the STEP rising edges an output port plays into a device model (stepper driver, servo board).
 #pragma once
 
-#include "board/host/wire.hpp"
 #include "assembly/frame_waveform.hpp"
+#include "board/host/wire.hpp"
 
 namespace stepdance::sim {
 

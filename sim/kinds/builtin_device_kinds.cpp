@@ -13,14 +13,8 @@ namespace stepdance::sim {
 
 std::vector<const DeviceKind*> builtin_device_kinds() {
   return {
-      &encoder_kind(),
-      &potentiometer_kind(),
-      &button_kind(),
-      &limit_switch_kind(),
-      &pendulum_kind(),
-      &five_bar_arm_kind(),
-      &oled_kind(),
-      &twist_kind(),
+      &encoder_kind(),  &potentiometer_kind(), &button_kind(), &limit_switch_kind(),
+      &pendulum_kind(), &five_bar_arm_kind(),  &oled_kind(),   &twist_kind(),
   };
 }
 

@@ -20,20 +20,10 @@ namespace stepdance::sim {
 
 std::vector<const ExpectationKind*> builtin_expectation_kinds() {
   return {
-      &motor_steps_expectation(),
-      &pen_position_expectation(),
-      &strokes_expectation(),
-      &bounds_expectation(),
-      &drawn_length_expectation(),
-      &z_position_expectation(),
-      &extrusion_ratio_expectation(),
-      &traces_expectation(),
-      &port_pulses_expectation(),
-      &cable_counts_expectation(),
-      &rejected_expectation(),
-      &host_expectation(),
-      &screen_text_expectation(),
-      &i2c_loop_time_expectation(),
+      &motor_steps_expectation(),  &pen_position_expectation(),  &strokes_expectation(),         &bounds_expectation(),
+      &drawn_length_expectation(), &z_position_expectation(),    &extrusion_ratio_expectation(), &traces_expectation(),
+      &port_pulses_expectation(),  &cable_counts_expectation(),  &rejected_expectation(),        &host_expectation(),
+      &screen_text_expectation(),  &i2c_loop_time_expectation(),
   };
 }
 

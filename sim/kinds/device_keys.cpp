@@ -40,7 +40,8 @@ void read_i2c_address(DeviceReading& reading, int fallback) {
   if (*address >= 0x08 && *address <= 0x77) {
     reading.device.i2c_address = static_cast<int>(*address);
   } else {
-    reading.reader.error("address", "'address' must be a 7-bit I2C address in 0x08..0x77, got " + std::to_string(*address));
+    reading.reader.error("address",
+                         "'address' must be a 7-bit I2C address in 0x08..0x77, got " + std::to_string(*address));
   }
 }
 

@@ -22,12 +22,12 @@ namespace stepdance::sim {
 /// (DeviceKind::actions) at the device's name.
 struct PageControl {
   enum class Type {
-    kNone,    ///< nothing to act on (the device follows the machine or its own script)
-    kKnob,    ///< an endless knob turned by `step` counts a detent (`turn`)
-    kSlider,  ///< a position in [low, high] (`set`)
-    kButton,  ///< a momentary button (`press`, `release`, `click`)
+    kNone,            ///< nothing to act on (the device follows the machine or its own script)
+    kKnob,            ///< an endless knob turned by `step` counts a detent (`turn`)
+    kSlider,          ///< a position in [low, high] (`set`)
+    kButton,          ///< a momentary button (`press`, `release`, `click`)
     kKnobWithButton,  ///< a knob whose shaft is also a button (`turn`, `press`, `release`, `click`)
-    kScreen,  ///< a picture of a display to show, nothing to act on
+    kScreen,          ///< a picture of a display to show, nothing to act on
   };
   Type type = Type::kNone;
   double low = 0;

@@ -44,8 +44,8 @@ const EdgeList& BouncingButton::edges() const {
 
 bool BouncingButton::level_at(SimTime time) const {
   const EdgeList& all = edges();
-  const auto after = std::upper_bound(all.begin(), all.end(), time,
-                                      [](SimTime t, const Edge& edge) { return t < edge.time; });
+  const auto after =
+      std::upper_bound(all.begin(), all.end(), time, [](SimTime t, const Edge& edge) { return t < edge.time; });
   return after == all.begin() ? idle_level() : std::prev(after)->level;
 }
 

@@ -76,9 +76,9 @@ std::vector<SimTime> glitch_starts(const CableSettings& settings, const std::vec
   SimTime slot = std::max<SimTime>(1, (window_start + settings.glitch_every - 1) / settings.glitch_every);
   for (SimTime start = slot * settings.glitch_every; start < window_end; start = (++slot) * settings.glitch_every) {
     const SimTime end = start + settings.glitch_width;
-    const bool clear = end < window_end && start > last_fall && std::none_of(shaped.begin(), shaped.end(), [&](const Pulse& pulse) {
-                         return !(end < pulse.rise || start > pulse.fall);
-                       });
+    const bool clear = end < window_end && start > last_fall &&
+                       std::none_of(shaped.begin(), shaped.end(),
+                                    [&](const Pulse& pulse) { return !(end < pulse.rise || start > pulse.fall); });
     if (clear) {
       glitches.push_back(start);
       ++counters.glitches_injected;

@@ -5,7 +5,8 @@ namespace stepdance::sim {
 
 CorexyPlotter::CorexyPlotter(const StepperDriver& motor_a, const StepperDriver& motor_b, ServoBoard* pen_servo,
                              const CorexySettings& settings)
-    : Machine(settings.trace, TravelArea{0, settings.travel_x_mm, 0, settings.travel_y_mm, 1.0 / settings.steps_per_mm}),
+    : Machine(settings.trace,
+              TravelArea{0, settings.travel_x_mm, 0, settings.travel_y_mm, 1.0 / settings.steps_per_mm}),
       motor_a_(motor_a),
       motor_b_(motor_b),
       pen_servo_(pen_servo),

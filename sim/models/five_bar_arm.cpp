@@ -12,14 +12,14 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2 * kPi;
 constexpr double kDegreeRad = kPi / 180;
-constexpr double kHopMm = 0.5;                    // the hand's path is followed in hops this long
-constexpr double kMaxTurnRad = 2 * kDegreeRad;    // a continuous hop turns no joint further
-constexpr double kDeadPointRad = 0.1 * kDegreeRad;   // two poses this close: the arm is at a dead point
-constexpr double kClearlyNearer = 2;                 // the nearest pose, this many times nearer than the next
-constexpr int kMaxHalvings = 30;                  // a hop halved down to 0.5 mm / 2³⁰ ≈ 5·10⁻¹⁰ mm
-constexpr double kFollowedMm = 0.001;             // the stylus this close to the hand follows it
-constexpr double kPoseCheckMm = 1e-6;             // a pose must put the stylus this close to its point
-constexpr double kStopSlackRad = 1e-9;            // rounding at a stop
+constexpr double kHopMm = 0.5;                      // the hand's path is followed in hops this long
+constexpr double kMaxTurnRad = 2 * kDegreeRad;      // a continuous hop turns no joint further
+constexpr double kDeadPointRad = 0.1 * kDegreeRad;  // two poses this close: the arm is at a dead point
+constexpr double kClearlyNearer = 2;                // the nearest pose, this many times nearer than the next
+constexpr int kMaxHalvings = 30;                    // a hop halved down to 0.5 mm / 2³⁰ ≈ 5·10⁻¹⁰ mm
+constexpr double kFollowedMm = 0.001;               // the stylus this close to the hand follows it
+constexpr double kPoseCheckMm = 1e-6;               // a pose must put the stylus this close to its point
+constexpr double kStopSlackRad = 1e-9;              // rounding at a stop
 
 struct Vec {
   double x, y;

@@ -11,7 +11,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 double distance(const PenPoint& a, const PenPoint& b) { return std::hypot(b.x_mm - a.x_mm, b.y_mm - a.y_mm); }
 
-double direction(const PenPoint& from, const PenPoint& to) { return std::atan2(to.y_mm - from.y_mm, to.x_mm - from.x_mm); }
+double direction(const PenPoint& from, const PenPoint& to) {
+  return std::atan2(to.y_mm - from.y_mm, to.x_mm - from.x_mm);
+}
 
 /// An angle brought into (−π, π].
 double wrap(double angle) {
@@ -125,8 +127,8 @@ void PenTrace::extend(Polyline& line, const PenPoint& position) {
   bool merge = true;
   if (candidate.constrained) {
     const double relative = wrap(direction(anchor, position) - candidate.reference);
-    merge = candidate.low <= relative && relative <= candidate.high &&
-            distance(anchor, position) >= candidate.farthest_mm;
+    merge =
+        candidate.low <= relative && relative <= candidate.high && distance(anchor, position) >= candidate.farthest_mm;
   }
   if (merge) {
     line.back() = position;

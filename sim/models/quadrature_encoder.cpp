@@ -13,8 +13,8 @@ QuadratureEncoder::QuadratureEncoder(int32_t pulses_per_revolution, int64_t star
 
 void QuadratureEncoder::turn(SimTime start, int64_t counts, SimTime span) {
   const Turn added{start, start + std::max<SimTime>(span, 0), counts};
-  const auto position = std::upper_bound(turns_.begin(), turns_.end(), start,
-                                         [](SimTime t, const Turn& turn) { return t < turn.start; });
+  const auto position =
+      std::upper_bound(turns_.begin(), turns_.end(), start, [](SimTime t, const Turn& turn) { return t < turn.start; });
   turns_.insert(position, added);
   reset_cursor();
 }

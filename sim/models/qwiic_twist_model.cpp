@@ -81,10 +81,12 @@ bool QwiicTwistModel::write(SimTime time, const uint8_t* data, size_t length) {
   if (length == 0) return true;
   uint8_t address = data[0];
   for (size_t i = 1; i < length; ++i, ++address) {
-    if (address >= registers_.size()) return false;  // past the map: refused
+    if (address >= registers_.size()) return false;                       // past the map: refused
     if (address == 0x00 || address == 0x02 || address == 0x03) continue;  // ID and version are read only
     // Status: a write replaces moved and clicked; held is read only (SparkFun firmware 1.x).
-    registers_[address] = address != kStatus ? data[i] : static_cast<uint8_t>((registers_[kStatus] & kHeld) | (data[i] & (kMoved | kClicked)));
+    registers_[address] = address != kStatus
+                              ? data[i]
+                              : static_cast<uint8_t>((registers_[kStatus] & kHeld) | (data[i] & (kMoved | kClicked)));
     // Clearing a timer restarts it from now.
     if (address == kSinceMovement || address == kSinceMovement + 1) last_movement_ = time;
     if (address == kSinceButton || address == kSinceButton + 1) last_button_ = time;

@@ -15,16 +15,23 @@ constexpr int kTextColumns = 21;
 // Bytes a command takes after its first byte (datasheet section 9, command table).
 int parameter_count(uint8_t command) {
   switch (command) {
-    case 0x81: case 0x20: case 0xA8: case 0xD3: case 0xD5: case 0xD9: case 0xDA: case 0xDB: case 0x8D:
-      return 1;
-    case 0x21: case 0x22: case 0xA3:
-      return 2;
-    case 0x29: case 0x2A:
-      return 5;
-    case 0x26: case 0x27:
-      return 6;
-    default:
-      return 0;
+    case 0x81:
+    case 0x20:
+    case 0xA8:
+    case 0xD3:
+    case 0xD5:
+    case 0xD9:
+    case 0xDA:
+    case 0xDB:
+    case 0x8D: return 1;
+    case 0x21:
+    case 0x22:
+    case 0xA3: return 2;
+    case 0x29:
+    case 0x2A: return 5;
+    case 0x26:
+    case 0x27: return 6;
+    default: return 0;
   }
 }
 
@@ -138,7 +145,8 @@ std::vector<std::string> Ssd1306Display::text_rows(const OledImage& image) {
       uint8_t columns[kCellWidth] = {};
       for (int i = 0; i < kCellWidth; ++i) {
         for (int bit = 0; bit < 8; ++bit) {
-          if (image.at(cell * kCellWidth + i, row * 8 + bit)) columns[i] = static_cast<uint8_t>(columns[i] | (1u << bit));
+          if (image.at(cell * kCellWidth + i, row * 8 + bit))
+            columns[i] = static_cast<uint8_t>(columns[i] | (1u << bit));
         }
       }
       char found = '?';

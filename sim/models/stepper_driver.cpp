@@ -38,8 +38,7 @@ bool StepperDriver::set_microsteps(int microsteps) {
 }
 
 double StepperDriver::revolutions() const {
-  return static_cast<double>(rotation_64ths_) /
-         (static_cast<double>(kFinestMicrosteps) * full_steps_per_rev_);
+  return static_cast<double>(rotation_64ths_) / (static_cast<double>(kFinestMicrosteps) * full_steps_per_rev_);
 }
 
 }  // namespace stepdance::sim

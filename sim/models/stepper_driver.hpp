@@ -21,8 +21,8 @@ struct StepperDriverSettings {
 };
 
 /// The driver and its motor. Position is counted in microsteps: +1 per STEP rising edge with DIR
-/// high, −1 with DIR low (the other way round for a reversed motor). While disabled, steps do not move the motor and are counted as ignored.
-/// ENABLE's active-low polarity is the board's concern; this model takes "enabled" directly.
+/// high, −1 with DIR low (the other way round for a reversed motor). While disabled, steps do not move the motor and
+/// are counted as ignored. ENABLE's active-low polarity is the board's concern; this model takes "enabled" directly.
 class StepperDriver {
  public:
   explicit StepperDriver(const StepperDriverSettings& settings = {});

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace stepdance::sim {
@@ -54,11 +54,11 @@ inline std::pair<double, double> shade_scale_for(double low, double high) {
 /// AxiDraw's convention). Points outside the travel area are drawn where they fall, cut off at
 /// the page edge.
 struct DrawingStyle {
-  double travel_width_mm = 300;   ///< machine x travel
-  double travel_height_mm = 218;  ///< machine y travel
-  double margin_mm = 10;          ///< white border around the travel area
-  double pen_width_mm = 0.5;      ///< black pen-down lines
-  bool pen_up_travel = false;     ///< also draw pen-up strokes (thin, grey, dashed)
+  double travel_width_mm = 300;       ///< machine x travel
+  double travel_height_mm = 218;      ///< machine y travel
+  double margin_mm = 10;              ///< white border around the travel area
+  double pen_width_mm = 0.5;          ///< black pen-down lines
+  bool pen_up_travel = false;         ///< also draw pen-up strokes (thin, grey, dashed)
   double travel_line_width_mm = 0.2;  ///< line width of pen-up strokes
   double travel_dash_mm = 2;          ///< dash and gap length of pen-up strokes
   /// Shades from shade_low to shade_high run blue → green → red (values outside are clamped);

@@ -34,8 +34,8 @@ std::string format_time(SimTime time_ns, SimTime unit_ns, int decimals) {
   }
   const unsigned long long step = static_cast<unsigned long long>(unit_ns) / pow10_shown;
   const bool negative = time_ns < 0;
-  const unsigned long long magnitude = negative ? 0ull - static_cast<unsigned long long>(time_ns)
-                                                : static_cast<unsigned long long>(time_ns);
+  const unsigned long long magnitude =
+      negative ? 0ull - static_cast<unsigned long long>(time_ns) : static_cast<unsigned long long>(time_ns);
   const unsigned long long rounded = magnitude / step + (magnitude % step * 2 >= step ? 1 : 0);
   std::string text = (negative && rounded != 0 ? "-" : "") + std::to_string(rounded / pow10_shown);
   if (decimals <= 0) return text;

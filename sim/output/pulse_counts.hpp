@@ -17,9 +17,7 @@ struct DirectionCounts {
   uint64_t forward = 0;  ///< DIR high
   uint64_t reverse = 0;  ///< DIR low
 
-  bool operator==(const DirectionCounts& other) const {
-    return forward == other.forward && reverse == other.reverse;
-  }
+  bool operator==(const DirectionCounts& other) const { return forward == other.forward && reverse == other.reverse; }
   bool operator!=(const DirectionCounts& other) const { return !(*this == other); }
 };
 

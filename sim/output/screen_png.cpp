@@ -26,7 +26,8 @@ void write_screen_png(const std::string& path, const std::vector<bool>& lit, int
   const int border = scale;
   std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
       cairo_image_surface_create(CAIRO_FORMAT_RGB24, width * scale + 2 * border, height * scale + 2 * border));
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) throw std::runtime_error(path + ": cannot create the image");
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error(path + ": cannot create the image");
   std::unique_ptr<cairo_t, ContextDeleter> context(cairo_create(surface.get()));
   cairo_t* cr = context.get();
   cairo_set_source_rgb(cr, 0.02, 0.02, 0.05);

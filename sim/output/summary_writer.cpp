@@ -45,8 +45,6 @@ std::string summary_text(const RunSummary& summary) {
   return ordered.dump(2) + "\n";
 }
 
-void write_summary(const std::string& path, const RunSummary& summary) {
-  write_text_file(path, summary_text(summary));
-}
+void write_summary(const std::string& path, const RunSummary& summary) { write_text_file(path, summary_text(summary)); }
 
 }  // namespace stepdance::sim

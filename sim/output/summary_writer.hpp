@@ -14,9 +14,9 @@ namespace stepdance::sim {
 
 /// Counts of one output or input port over the run.
 struct PortSummary {
-  bool is_input = false;   ///< an input port (has rejections) or an output port (has carries)
-  PulseCounts pulses;      ///< pulses sent (output) or accepted and rejected (input)
-  uint64_t carried = 0;    ///< output: signals that did not fit their frame and went in a later one
+  bool is_input = false;  ///< an input port (has rejections) or an output port (has carries)
+  PulseCounts pulses;     ///< pulses sent (output) or accepted and rejected (input)
+  uint64_t carried = 0;   ///< output: signals that did not fit their frame and went in a later one
 };
 
 /// Counts of one board over the run.
@@ -26,8 +26,8 @@ struct BoardSummary {
 
 /// Everything the summary file holds.
 struct RunSummary {
-  SimTime simulated_time = 0;              ///< ns simulated
-  std::optional<double> wall_time_s;       ///< real seconds the run took; left out when empty
+  SimTime simulated_time = 0;                  ///< ns simulated
+  std::optional<double> wall_time_s;           ///< real seconds the run took; left out when empty
   std::map<std::string, BoardSummary> boards;  ///< by board name
   std::map<std::string, PortSummary> ports;    ///< by "board:OUT_A" / "board:IN_A"
   /// More top-level fields (an object); a key equal to a fixed one is an error.

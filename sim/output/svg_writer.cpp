@@ -58,16 +58,15 @@ std::string svg_document(const std::vector<Stroke>& strokes, const DrawingStyle&
   if (!style.shade_name.empty()) {
     out += "<desc>Pen-down strokes coloured by " + style.shade_name + ": blue " + format_trimmed(style.shade_low, 4) +
            ", green " + format_trimmed((style.shade_low + style.shade_high) / 2, 4) + ", red " +
-           format_trimmed(style.shade_high, 4) +
-           " (outside: the nearest end).</desc>\n";
+           format_trimmed(style.shade_high, 4) + " (outside: the nearest end).</desc>\n";
   }
   out += "<rect width=\"" + width + "\" height=\"" + height + "\" fill=\"white\"/>\n";
   out += "<g transform=\"translate(" + number(style.margin_mm) + " " + number(style.margin_mm) +
          ")\" fill=\"none\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   if (style.pen_up_travel) {
     append_group(out, strokes, style, false,
-                 "stroke=\"#999999\" stroke-width=\"" + number(style.travel_line_width_mm) +
-                     "\" stroke-dasharray=\"" + number(style.travel_dash_mm) + " " + number(style.travel_dash_mm) + "\"");
+                 "stroke=\"#999999\" stroke-width=\"" + number(style.travel_line_width_mm) + "\" stroke-dasharray=\"" +
+                     number(style.travel_dash_mm) + " " + number(style.travel_dash_mm) + "\"");
   }
   append_group(out, strokes, style, true, "stroke=\"black\" stroke-width=\"" + number(style.pen_width_mm) + "\"");
   out += "</g>\n</svg>\n";

@@ -88,8 +88,8 @@ void VcdWriter::record(WireId wire, SimTime time, bool level) {
   if (wire >= wires_.size()) throw std::logic_error(name_ + ": VCD record on an undeclared wire");
   if (closed_) throw std::logic_error(name_ + ": VCD record after close");
   if (time < watermark_ns_ || time < 0) {
-    throw std::logic_error(name_ + ": VCD edge at " + std::to_string(time) +
-                           " ns is older than the watermark " + std::to_string(watermark_ns_) + " ns");
+    throw std::logic_error(name_ + ": VCD edge at " + std::to_string(time) + " ns is older than the watermark " +
+                           std::to_string(watermark_ns_) + " ns");
   }
   buffer_.push_back(Pending{to_units(time), wire, level});
 }
@@ -133,7 +133,8 @@ void VcdWriter::write_pending(SimTime before_units) {
   const auto earlier = [](const Pending& a, const Pending& b) {
     return a.time != b.time ? a.time < b.time : a.wire < b.wire;
   };
-  if (!std::is_sorted(buffer_.begin(), buffer_.end(), earlier)) std::stable_sort(buffer_.begin(), buffer_.end(), earlier);
+  if (!std::is_sorted(buffer_.begin(), buffer_.end(), earlier))
+    std::stable_sort(buffer_.begin(), buffer_.end(), earlier);
   size_t done = 0;
   for (; done < buffer_.size() && buffer_[done].time < before_units; ++done) {
     const Pending& change = buffer_[done];

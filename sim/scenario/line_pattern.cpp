@@ -43,8 +43,7 @@ std::string pattern_problem(std::string_view pattern) {
 
 LinePattern::LinePattern() = default;
 
-LinePattern::LinePattern(std::string_view pattern)
-    : regex_(std::make_shared<const Compiled>(pattern)) {}
+LinePattern::LinePattern(std::string_view pattern) : regex_(std::make_shared<const Compiled>(pattern)) {}
 
 bool LinePattern::found_in(std::string_view line) const {
   if (!regex_ || !regex_->regex.ok()) return false;

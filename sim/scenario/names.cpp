@@ -63,10 +63,20 @@ bool is_qwiic_connector(Connector c) { return c == Connector::kQwiic0 || c == Co
 
 uint8_t connector_index(Connector connector) {
   switch (connector) {
-    case Connector::kEnc1: case Connector::kA1: case Connector::kD1: case Connector::kLimitA: case Connector::kQwiic0: return 0;
-    case Connector::kEnc2: case Connector::kA2: case Connector::kD2: case Connector::kLimitB: case Connector::kQwiic1: return 1;
-    case Connector::kA3: case Connector::kLimitC: return 2;
-    case Connector::kA4: case Connector::kLimitD: return 3;
+    case Connector::kEnc1:
+    case Connector::kA1:
+    case Connector::kD1:
+    case Connector::kLimitA:
+    case Connector::kQwiic0: return 0;
+    case Connector::kEnc2:
+    case Connector::kA2:
+    case Connector::kD2:
+    case Connector::kLimitB:
+    case Connector::kQwiic1: return 1;
+    case Connector::kA3:
+    case Connector::kLimitC: return 2;
+    case Connector::kA4:
+    case Connector::kLimitD: return 3;
   }
   return 0;
 }

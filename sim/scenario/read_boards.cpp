@@ -98,15 +98,16 @@ void read_sockets(TableReader& board_reader, BoardConfig& board, ParseContext& c
   const toml::table* sockets = board_reader.table("sockets");
   if (sockets == nullptr) return;
   if (!board.module->has_drivers) {
-    context.reporter.error(line_of(*sockets), "a " + std::string(module_name(*board.module)) +
-                                                  " module has no driver sockets");
+    context.reporter.error(line_of(*sockets),
+                           "a " + std::string(module_name(*board.module)) + " module has no driver sockets");
     return;
   }
   for (const auto& [key, value] : *sockets) {
     const std::string_view name = key.str();
     if (name.size() != 1 || !module_has_output_port(*board.module, name[0])) {
-      context.reporter.error(static_cast<int>(key.source().begin.line),
-                             "unknown socket '" + std::string(name) + "' (sockets are " + socket_letters(*board.module) + ")");
+      context.reporter.error(
+          static_cast<int>(key.source().begin.line),
+          "unknown socket '" + std::string(name) + "' (sockets are " + socket_letters(*board.module) + ")");
       continue;
     }
     if (const auto socket = read_socket(name[0], value, context.reporter)) board.sockets.push_back(*socket);
@@ -119,7 +120,8 @@ void read_program(TableReader& reader, BoardConfig& board, ParseContext& context
   if (const auto image = reader.string("image")) {
     board.image = context.resolve(*image);
     std::error_code error;
-    if (!std::filesystem::is_regular_file(board.image, error)) reader.error("image", "firmware image not found: " + board.image);
+    if (!std::filesystem::is_regular_file(board.image, error))
+      reader.error("image", "firmware image not found: " + board.image);
   }
   const Need need = board.image.empty() ? Need::kRequired : Need::kOptional;
   if (const auto sketch = reader.string("sketch", need)) {
@@ -141,11 +143,11 @@ void read_board(const toml::table& table, ParseContext& context, std::map<std::s
     if (name->empty() || name->find(':') != std::string::npos) {
       reader.error("name", "board name \"" + *name + "\" must be non-empty and contain no ':'");
     } else if (const std::string problem = file_name_problem(*name); !problem.empty()) {
-      reader.error("name", "board name \"" + *name + "\" names its SD card folder (<name>.sd in the output folder), so it " +
-                               problem);
+      reader.error("name", "board name \"" + *name +
+                               "\" names its SD card folder (<name>.sd in the output folder), so it " + problem);
     } else if (const auto first = first_lines.find(*name); first != first_lines.end()) {
-      reader.error("name", "duplicate board name '" + *name + "' (first defined on line " +
-                               std::to_string(first->second) + ")");
+      reader.error(
+          "name", "duplicate board name '" + *name + "' (first defined on line " + std::to_string(first->second) + ")");
     } else {
       first_lines[*name] = reader.line_of("name");
       board.name = *name;

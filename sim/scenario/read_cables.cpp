@@ -38,7 +38,8 @@ void read_cable(const toml::table& table, ParseContext& context, PortUsers& outp
   CableSettings& settings = cable.settings;
   if (const auto delay = reader.integer("delay_ns", ranges::kCableDelayNs)) settings.delay = *delay;
   if (const auto stretch = reader.integer("stretch_ns", ranges::kCableStretchNs)) settings.stretch = *stretch;
-  if (const auto every = reader.integer("glitch_every_us", ranges::kGlitchEveryUs)) settings.glitch_every = *every * kMicrosecond;
+  if (const auto every = reader.integer("glitch_every_us", ranges::kGlitchEveryUs))
+    settings.glitch_every = *every * kMicrosecond;
   if (const auto width = reader.integer("glitch_width_ns", ranges::kGlitchWidthNs)) settings.glitch_width = *width;
   reader.finish();
   if (from && to) context.scenario.cables.push_back(std::move(cable));

@@ -40,8 +40,8 @@ bool claim(TableReader& reader, std::string_view key, const std::string& text, c
            Connector connector, const std::string& device, DeviceNames& names) {
   const auto slot = std::make_pair(board.name, connector);
   if (const auto user = names.connectors.find(slot); user != names.connectors.end()) {
-    reader.error(key, "connector " + text + " of board '" + board.name + "' is already used by device '" +
-                          user->second + "'");
+    reader.error(
+        key, "connector " + text + " of board '" + board.name + "' is already used by device '" + user->second + "'");
     return false;
   }
   names.connectors.emplace(slot, device);
@@ -55,9 +55,11 @@ bool read_name(TableReader& reader, DeviceConfig& device, ParseContext& context,
   if (name->empty()) {
     reader.error("name", "device name must not be empty");
   } else if (const std::string problem = file_name_problem(*name); !problem.empty()) {
-    reader.error("name", "device name \"" + *name + "\" names the device's files in the output folder, so it " + problem);
+    reader.error("name",
+                 "device name \"" + *name + "\" names the device's files in the output folder, so it " + problem);
   } else if (const auto first = names.first_lines.find(*name); first != names.first_lines.end()) {
-    reader.error("name", "duplicate device name '" + *name + "' (first defined on line " + std::to_string(first->second) + ")");
+    reader.error("name",
+                 "duplicate device name '" + *name + "' (first defined on line " + std::to_string(first->second) + ")");
   } else {
     names.first_lines[*name] = reader.line_of("name");
     context.declared_devices.insert(*name);
@@ -104,8 +106,9 @@ void check_i2c_address(TableReader& reader, const DeviceConfig& device, const Bo
   const auto key = std::make_tuple(board->name, device.connector, device.i2c_address);
   if (const auto user = names.i2c_addresses.find(key); user != names.i2c_addresses.end()) {
     reader.error(reader.has("address") ? "address" : "connector",
-                 "address " + std::to_string(device.i2c_address) + " on " + std::string(connector_name(device.connector)) +
-                     " of board '" + board->name + "' is already used by device '" + user->second + "'");
+                 "address " + std::to_string(device.i2c_address) + " on " +
+                     std::string(connector_name(device.connector)) + " of board '" + board->name +
+                     "' is already used by device '" + user->second + "'");
   } else {
     names.i2c_addresses.emplace(key, device.name);
   }

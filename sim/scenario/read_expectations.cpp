@@ -33,8 +33,8 @@ const ExpectationKind* choose_kind(TableReader& reader) {
       chosen = kind;
     } else if (!chosen->has_key(kind->name)) {
       reader.accept(kind->name);
-      reader.error(kind->name, "an [[expect]] checks one thing, but has both '" + std::string(chosen->name) + "' and '" +
-                                   std::string(kind->name) + "'");
+      reader.error(kind->name, "an [[expect]] checks one thing, but has both '" + std::string(chosen->name) +
+                                   "' and '" + std::string(kind->name) + "'");
       return nullptr;
     }
   }

@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "scenario/file_names.hpp"
-#include "scenario/parse_context.hpp"
 #include "scenario/line_pattern.hpp"
+#include "scenario/parse_context.hpp"
 
 namespace stepdance::sim::scenario {
 
@@ -20,8 +20,8 @@ constexpr const char* kDefaultAck = "^(ok|error:[0-9]+)$";
 /// The step kinds and the keys that belong to each.
 constexpr const char* kKinds[] = {"send", "stream", "stream_file", "wait", "pause_s"};
 constexpr std::pair<const char*, const char*> kStepKeys[] = {
-    {"flow", "stream"}, {"buffer_bytes", "stream"}, {"ack", "stream"}, {"timeout_s", "stream or wait"},
-    {"poll", "stream or wait"},   {"poll_every_s", "stream or wait"},
+    {"flow", "stream"},         {"buffer_bytes", "stream"},         {"ack", "stream"}, {"timeout_s", "stream or wait"},
+    {"poll", "stream or wait"}, {"poll_every_s", "stream or wait"},
 };
 
 /// Polling: at most once per simulated millisecond (a USB frame), so a tiny interval cannot stall the run.
@@ -92,7 +92,8 @@ const char* choose_step_kind(TableReader& reader) {
     if (kind != nullptr) {
       reader.accept(kind);
       reader.accept(candidate);
-      reader.error(candidate, std::string("a step does one thing, but has both '") + kind + "' and '" + candidate + "'");
+      reader.error(candidate,
+                   std::string("a step does one thing, but has both '") + kind + "' and '" + candidate + "'");
       return nullptr;
     }
     kind = candidate;
@@ -235,7 +236,8 @@ bool read_transcript(TableReader& reader, const ParseContext& context, HostClien
     reader.error("transcript", "'transcript' (\"" + *transcript + "\") " + problem);
     return false;
   }
-  host.transcript = (std::filesystem::path(context.scenario.output.directory) / *transcript).lexically_normal().string();
+  host.transcript =
+      (std::filesystem::path(context.scenario.output.directory) / *transcript).lexically_normal().string();
   host.transcript_line = reader.line_of("transcript");
   return true;
 }

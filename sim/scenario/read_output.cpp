@@ -24,15 +24,16 @@ void read_vcd_ports(TableReader& reader, const std::string& vcd, OutputConfig& o
           output.vcd_ports.push_back(*line_ref);
         }
       } else {
-        context.reporter.error(line_of(item), "'vcd_ports' must hold strings like \"board:OUT_A\", not " +
-                                                  std::string(type_phrase(item)));
+        context.reporter.error(
+            line_of(item), "'vcd_ports' must hold strings like \"board:OUT_A\", not " + std::string(type_phrase(item)));
       }
     }
   }
   // A VCD of no ports would be written, and empty: say what it needs instead.
   if (!vcd.empty() && output.vcd_ports.empty()) {
-    reader.error("vcd", "'vcd' (\"" + vcd + "\") records the ports 'vcd_ports' lists, and it lists none: add "
-                        "e.g. vcd_ports = [\"board:OUT_A\"] (or use --vcd FILE, which records every port)");
+    reader.error("vcd", "'vcd' (\"" + vcd +
+                            "\") records the ports 'vcd_ports' lists, and it lists none: add "
+                            "e.g. vcd_ports = [\"board:OUT_A\"] (or use --vcd FILE, which records every port)");
   }
 }
 
@@ -57,11 +58,11 @@ void read_file_names(TableReader& reader, OutputNames& names, OutputConfig& outp
     }
   }
   for (const auto& [key, target] : {std::pair<const char*, std::string*>{"svg", &names.svg},
-                              {"png", &names.png},
-                              {"vcd", &names.vcd},
-                              {"csv", &names.csv},
-                              {"html", &names.html},
-                              {"summary", &names.summary}}) {
+                                    {"png", &names.png},
+                                    {"vcd", &names.vcd},
+                                    {"csv", &names.csv},
+                                    {"html", &names.html},
+                                    {"summary", &names.summary}}) {
     const auto value = reader.string(key);
     if (!value) continue;
     if (const std::string problem = inside_path_problem(*value); !value->empty() && !problem.empty()) {

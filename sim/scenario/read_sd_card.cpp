@@ -12,10 +12,8 @@ struct CardKey {
 };
 
 constexpr CardKey kCardKeys[] = {
-    {"write_kb_per_s", 1e6, &SdCardConfig::write_kb_per_s},
-    {"read_kb_per_s", 1e6, &SdCardConfig::read_kb_per_s},
-    {"stall_every_kb", 1e9, &SdCardConfig::stall_every_kb},
-    {"stall_ms", 10000, &SdCardConfig::stall_ms},
+    {"write_kb_per_s", 1e6, &SdCardConfig::write_kb_per_s}, {"read_kb_per_s", 1e6, &SdCardConfig::read_kb_per_s},
+    {"stall_every_kb", 1e9, &SdCardConfig::stall_every_kb}, {"stall_ms", 10000, &SdCardConfig::stall_ms},
     {"fail_after_kb", 1e9, &SdCardConfig::fail_after_kb},
 };
 
@@ -29,8 +27,8 @@ void read_sd_card(TableReader& board_reader, BoardConfig& board, ParseContext& c
     const std::optional<double> value = reader.number(key.key);
     if (!value) continue;
     if (*value < 0 || *value > key.max) {
-      reader.error(key.key, "'" + std::string(key.key) + "' must be in 0.." + std::to_string(static_cast<int64_t>(key.max)) +
-                                ", got " + std::to_string(*value));
+      reader.error(key.key, "'" + std::string(key.key) + "' must be in 0.." +
+                                std::to_string(static_cast<int64_t>(key.max)) + ", got " + std::to_string(*value));
       continue;
     }
     board.sd_card.*(key.out) = *value;

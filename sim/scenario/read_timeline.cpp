@@ -22,7 +22,7 @@ constexpr std::pair<const char*, ActionType> kActions[] = {
 
 /// Keys that go with one action each.
 constexpr std::pair<const char*, ActionType> kActionKeys[] = {
-    {"counts", ActionType::kTurn}, {"over_s", ActionType::kTurn}, {"hold_ms", ActionType::kClick},
+    {"counts", ActionType::kTurn},  {"over_s", ActionType::kTurn}, {"hold_ms", ActionType::kClick},
     {"position", ActionType::kSet}, {"text", ActionType::kSerial}, {"file", ActionType::kSerial},
 };
 
@@ -66,8 +66,8 @@ bool read_target(TableReader& reader, Action& action, const ParseContext& contex
     // Named after the first kind that takes it: `turn` needs "an encoder".
     const DeviceKind* wanted = first_kind_taking(action.type);
     const std::string needs = wanted != nullptr ? std::string(wanted->with_article) : "another device";
-    reader.error(key, "'" + std::string(key) + "' needs " + needs + ", but '" + *target +
-                          "' is " + std::string(device->kind->with_article));
+    reader.error(key, "'" + std::string(key) + "' needs " + needs + ", but '" + *target + "' is " +
+                          std::string(device->kind->with_article));
     return false;
   }
   return true;
@@ -142,7 +142,8 @@ bool read_serial(TableReader& reader, Action& action, const ParseContext& contex
     return true;
   }
   if (file) return read_serial_file(reader, action, context, *file);
-  if (!reader.has("text") && !reader.has("file")) reader.reporter().error(reader.line(), "'serial' needs 'text' or 'file'");
+  if (!reader.has("text") && !reader.has("file"))
+    reader.reporter().error(reader.line(), "'serial' needs 'text' or 'file'");
   return false;
 }
 
@@ -158,8 +159,7 @@ bool read_details(TableReader& reader, Action& action, ParseContext& context) {
     }
     case ActionType::kSerial: return read_serial(reader, action, context) && ok;
     case ActionType::kPress:
-    case ActionType::kRelease:
-      break;
+    case ActionType::kRelease: break;
   }
   return ok;
 }
@@ -186,14 +186,16 @@ void read_action(const toml::table& table, ParseContext& context) {
     if (!reader.has(name)) continue;
     if (chosen != nullptr) {
       reader.accept(name);
-      reader.error(name, std::string("an [[at]] entry takes one action, but has both '") + chosen + "' and '" + name + "'");
+      reader.error(name,
+                   std::string("an [[at]] entry takes one action, but has both '") + chosen + "' and '" + name + "'");
       return;
     }
     chosen = name;
     action.type = type;
   }
   if (chosen == nullptr) {
-    context.reporter.error(reader.line(), "an [[at]] entry needs one action: turn, press, release, click, set or serial");
+    context.reporter.error(reader.line(),
+                           "an [[at]] entry needs one action: turn, press, release, click, set or serial");
     return;
   }
   ok = read_target(reader, action, context) && ok;
@@ -211,7 +213,8 @@ void check_encoder_totals(ParseContext& context) {
     const DeviceConfig* device = context.scenario.device(action.target);
     auto [entry, fresh] = travel.emplace(action.target, 0);
     const EncoderConfig* encoder = device != nullptr ? device->settings_as<EncoderConfig>() : nullptr;
-    if (fresh && encoder != nullptr) entry->second = encoder->start_count < 0 ? -encoder->start_count : encoder->start_count;
+    if (fresh && encoder != nullptr)
+      entry->second = encoder->start_count < 0 ? -encoder->start_count : encoder->start_count;
     const int64_t counts = action.counts < 0 ? -action.counts : action.counts;  // within ±10^12
     if (entry->second <= kLimit - counts) {
       entry->second += counts;

@@ -104,7 +104,22 @@ struct MachineConfig {
 };
 
 /// Connectors on a module's edge.
-enum class Connector { kEnc1, kEnc2, kA1, kA2, kA3, kA4, kD1, kD2, kLimitA, kLimitB, kLimitC, kLimitD, kQwiic0, kQwiic1 };
+enum class Connector {
+  kEnc1,
+  kEnc2,
+  kA1,
+  kA2,
+  kA3,
+  kA4,
+  kD1,
+  kD2,
+  kLimitA,
+  kLimitB,
+  kLimitC,
+  kLimitD,
+  kQwiic0,
+  kQwiic1
+};
 
 /// The connector's silkscreen name, e.g. "ENC1", "LIMIT_A".
 std::string_view connector_name(Connector connector);

@@ -21,20 +21,13 @@ int line_of(const toml::node& node) { return static_cast<int>(node.source().begi
 
 std::string_view type_phrase(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string:
-      return "a string";
-    case toml::node_type::integer:
-      return "an integer";
-    case toml::node_type::floating_point:
-      return "a float";
-    case toml::node_type::boolean:
-      return "a boolean";
-    case toml::node_type::table:
-      return "a table";
-    case toml::node_type::array:
-      return "an array";
-    default:
-      return "a date or time";
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a float";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    default: return "a date or time";
   }
 }
 
@@ -63,8 +56,8 @@ const toml::node* TableReader::node(std::string_view key, Need need) {
 }
 
 void TableReader::wrong_type(std::string_view key, const toml::node& value, std::string_view expected) {
-  reporter_.error(scenario::line_of(value), "'" + std::string(key) + "' must be " + std::string(expected) +
-                                                ", not " + std::string(type_phrase(value)));
+  reporter_.error(scenario::line_of(value), "'" + std::string(key) + "' must be " + std::string(expected) + ", not " +
+                                                std::string(type_phrase(value)));
 }
 
 std::optional<std::string> TableReader::string(std::string_view key, Need need) {
@@ -134,12 +127,15 @@ const toml::array* TableReader::array(std::string_view key, Need need) {
   return nullptr;
 }
 
-void TableReader::error(std::string_view key, std::string message) { reporter_.error(line_of(key), std::move(message)); }
+void TableReader::error(std::string_view key, std::string message) {
+  reporter_.error(line_of(key), std::move(message));
+}
 
 void TableReader::finish() {
   for (const auto& [key, value] : table_) {
     if (known_.count(key.str()) == 0) {
-      reporter_.error(static_cast<int>(key.source().begin.line), "unknown key '" + std::string(key.str()) + "' in " + what_);
+      reporter_.error(static_cast<int>(key.source().begin.line),
+                      "unknown key '" + std::string(key.str()) + "' in " + what_);
     }
   }
 }

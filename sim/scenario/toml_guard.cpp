@@ -35,8 +35,10 @@ bool is_binary(char c) { return c == '0' || c == '1'; }
 bool digits(std::string_view text, std::size_t& at, bool (*is_digit)(char)) {
   if (at >= text.size() || !is_digit(text[at])) return false;
   for (++at; at < text.size(); ++at) {
-    if (text[at] == '_' && at + 1 < text.size() && is_digit(text[at + 1])) ++at;
-    else if (!is_digit(text[at])) break;
+    if (text[at] == '_' && at + 1 < text.size() && is_digit(text[at + 1]))
+      ++at;
+    else if (!is_digit(text[at]))
+      break;
   }
   return true;
 }
@@ -162,9 +164,7 @@ class Scanner {
   }
 
   /// Where a value may start: after '=', or after '[' or ',' in an array.
-  bool value_may_start() const {
-    return in_value_ && (previous_ == '=' || previous_ == '[' || previous_ == ',');
-  }
+  bool value_may_start() const { return in_value_ && (previous_ == '=' || previous_ == '[' || previous_ == ','); }
 
   /// An unquoted value at at_: true, false or a number. toml++ 3.3 scans such a value ahead to
   /// tell its type and asserts on some text it cannot type (`9904------ 0`, found by the fuzz
@@ -193,9 +193,7 @@ class Scanner {
   void follow_structure(char c) {
     if (c == '=' || c == '{' || c == ',') start_key();
     switch (c) {
-      case '=':
-        in_value_ = true;
-        break;
+      case '=': in_value_ = true; break;
       case '[':
         if (in_value_) open_.push_back('[');  // an array
         break;
@@ -211,8 +209,7 @@ class Scanner {
         if (!open_.empty()) open_.pop_back();
         in_value_ = true;  // after a value; ',' or the line's end says what comes next
         break;
-      default:
-        break;
+      default: break;
     }
   }
 
@@ -263,9 +260,9 @@ class Scanner {
   std::size_t at_ = 0;
   int line_ = 1;
   bool line_start_ = true;
-  bool in_value_ = false;  // a value comes next or is being read, not a key
-  char previous_ = '\n';   // the last character outside blanks, line breaks, comments and strings
-  std::string open_;       // the values' open '[' and '{', innermost last
+  bool in_value_ = false;      // a value comes next or is being read, not a key
+  char previous_ = '\n';       // the last character outside blanks, line breaks, comments and strings
+  std::string open_;           // the values' open '[' and '{', innermost last
   std::size_t key_parts_ = 1;  // dotted parts of the key being read
   std::size_t key_chars_ = 0;  // its characters so far
 };

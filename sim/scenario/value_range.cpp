@@ -53,9 +53,9 @@ std::string readable_integer(int64_t value) {
 }
 
 std::string describe(const NumberRange& range) {
-  return with_unit(std::string(range.low_open ? "(" : "[") + readable_number(range.low) + ", " +
-                       readable_number(range.high) + "]",
-                   range.unit);
+  return with_unit(
+      std::string(range.low_open ? "(" : "[") + readable_number(range.low) + ", " + readable_number(range.high) + "]",
+      range.unit);
 }
 
 std::string describe(const IntegerRange& range) {
@@ -84,8 +84,8 @@ std::optional<double> parse_number_option(std::string_view option, const std::st
   return value;
 }
 
-std::optional<int64_t> parse_integer_option(std::string_view option, const std::string& text,
-                                            const IntegerRange& range, std::string& error) {
+std::optional<int64_t> parse_integer_option(std::string_view option, const std::string& text, const IntegerRange& range,
+                                            std::string& error) {
   const std::optional<int64_t> value = parse_decimal_integer(text);
   if (!value) {
     error = std::string(option) + ": '" + text + "' is not a whole decimal number (allowed: " + describe(range) + ")";

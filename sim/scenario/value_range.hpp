@@ -85,7 +85,7 @@ std::string out_of_range(std::string_view name, const IntegerRange& range, int64
 std::optional<double> parse_number_option(std::string_view option, const std::string& text, const NumberRange& range,
                                           std::string& error);
 /// The same for a whole number: digits with an optional sign, checked against `range`.
-std::optional<int64_t> parse_integer_option(std::string_view option, const std::string& text,
-                                            const IntegerRange& range, std::string& error);
+std::optional<int64_t> parse_integer_option(std::string_view option, const std::string& text, const IntegerRange& range,
+                                            std::string& error);
 
 }  // namespace stepdance::sim::scenario

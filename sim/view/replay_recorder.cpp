@@ -31,7 +31,8 @@ size_t points_in(const json& update) {
 
 SimTime replay_interval_ns(SimTime duration_ns, const ReplayLimits& limits) {
   const SimTime shortest = from_seconds(1.0 / limits.samples_per_s);
-  const SimTime spread = limits.max_samples > 1 ? duration_ns / static_cast<SimTime>(limits.max_samples - 1) : duration_ns;
+  const SimTime spread =
+      limits.max_samples > 1 ? duration_ns / static_cast<SimTime>(limits.max_samples - 1) : duration_ns;
   // Whole milliseconds past the shortest interval, so the instants read plainly.
   if (spread <= shortest) return shortest;
   return (spread + kMillisecond - 1) / kMillisecond * kMillisecond;
@@ -46,8 +47,8 @@ ReplayRecorder::ReplayRecorder(Simulation& simulation, SimTime interval_ns, cons
   for (const scenario::BoardConfig& board : simulation_.scenario().boards) {
     for (char port = 'A'; port <= 'D'; ++port) {
       if (!scenario::module_has_output_port(*board.module, port)) continue;
-      simulation_.board(board.name)->wire(terminal::OutputPort{static_cast<uint8_t>(port - 'A')},
-                                                         wire_.listener(board.name + ":OUT_" + port));
+      simulation_.board(board.name)
+          ->wire(terminal::OutputPort{static_cast<uint8_t>(port - 'A')}, wire_.listener(board.name + ":OUT_" + port));
     }
     const std::string name = board.name;
     simulation_.board(name)->console().on_bytes(
@@ -57,7 +58,8 @@ ReplayRecorder::ReplayRecorder(Simulation& simulation, SimTime interval_ns, cons
     std::vector<DeviceProbe> found;
     if (const SimDevice* model = simulation_.device(device.name)) model->add_probes(device.name, found);
     for (DeviceProbe& probe : found) {
-      std::string key = probe.column.rfind(device.name + "_", 0) == 0 ? probe.column.substr(device.name.size() + 1) : probe.column;
+      std::string key =
+          probe.column.rfind(device.name + "_", 0) == 0 ? probe.column.substr(device.name.size() + 1) : probe.column;
       probes_.push_back({device.name, std::move(key), std::move(probe.read)});
     }
   }
@@ -163,9 +165,12 @@ json ReplayRecorder::recording() {
           {"interval_s", to_seconds(interval_ns_)},
           {"complete", !full_},
           {"note", full_reason_},
-          {"limits", {{"max_samples", limits_.max_samples}, {"max_bytes", limits_.max_bytes},
-                      {"samples_per_s", limits_.samples_per_s}, {"wire_window_ns", limits_.wire_window_ns},
-                      {"max_frames_per_window", limits_.max_frames_per_window}}},
+          {"limits",
+           {{"max_samples", limits_.max_samples},
+            {"max_bytes", limits_.max_bytes},
+            {"samples_per_s", limits_.samples_per_s},
+            {"wire_window_ns", limits_.wire_window_ns},
+            {"max_frames_per_window", limits_.max_frames_per_window}}},
           {"hello", hello_},
           {"wire", std::move(wire_info)},
           {"samples", std::move(samples_)}};

@@ -83,10 +83,10 @@ class ReplayRecorder {
   std::vector<Probe> probes_;
   nlohmann::json hello_;  ///< as the run starts
   nlohmann::json samples_ = nlohmann::json::array();
-  int64_t next_index_ = 0;      ///< the next instant to record, in intervals
-  int64_t pending_wire_ = -1;   ///< the last recorded instant whose wire is still being played
+  int64_t next_index_ = 0;     ///< the next instant to record, in intervals
+  int64_t pending_wire_ = -1;  ///< the last recorded instant whose wire is still being played
   size_t bytes_ = 0;
-  bool full_ = false;           ///< a capacity was reached: nothing more recorded
+  bool full_ = false;  ///< a capacity was reached: nothing more recorded
   std::string full_reason_;
   SimTime full_at_ns_ = 0;
   size_t wire_frames_not_kept_ = 0;

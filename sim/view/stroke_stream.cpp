@@ -51,7 +51,8 @@ std::vector<StrokePart> StrokeStream::take(const std::vector<Polyline>& strokes,
     keep_final_points(stroke, done_ < marks.size() ? marks[done_] : kNoMarks, finished);
     StrokePart part{done_, sent_, {}, {}};
     const size_t end = std::min(kept_.size(), sent_ + budget);
-    part.points.assign(kept_.begin() + static_cast<std::ptrdiff_t>(sent_), kept_.begin() + static_cast<std::ptrdiff_t>(end));
+    part.points.assign(kept_.begin() + static_cast<std::ptrdiff_t>(sent_),
+                       kept_.begin() + static_cast<std::ptrdiff_t>(end));
     sent_ = end;
     for (; marks_sent_ < kept_marks_.size() && kept_marks_[marks_sent_].point < sent_; ++marks_sent_) {
       part.shades.push_back(kept_marks_[marks_sent_]);

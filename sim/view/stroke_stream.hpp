@@ -75,14 +75,14 @@ class StrokeStream {
   };
 
   std::optional<Head> head_sent_;
-  size_t done_ = 0;          ///< strokes complete on the page
-  std::vector<PenPoint> kept_;  ///< the current stroke's final kept points (decimated)
-  size_t source_ = 0;        ///< source points of the current stroke already looked at
-  size_t sent_ = 0;          ///< kept_ points the page has
-  bool behind_ = false;      ///< the last take() ran out of budget
-  size_t mark_ = 0;          ///< the current stroke's marks already kept
+  size_t done_ = 0;                     ///< strokes complete on the page
+  std::vector<PenPoint> kept_;          ///< the current stroke's final kept points (decimated)
+  size_t source_ = 0;                   ///< source points of the current stroke already looked at
+  size_t sent_ = 0;                     ///< kept_ points the page has
+  bool behind_ = false;                 ///< the last take() ran out of budget
+  size_t mark_ = 0;                     ///< the current stroke's marks already kept
   std::vector<ShadeStart> kept_marks_;  ///< the current stroke's marks, on kept_ points
-  size_t marks_sent_ = 0;    ///< kept_marks_ the page has
+  size_t marks_sent_ = 0;               ///< kept_marks_ the page has
 };
 
 }  // namespace stepdance::sim::view

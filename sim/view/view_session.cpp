@@ -101,8 +101,12 @@ std::string ViewSession::hello() const {
       json entry = {{"name", device.name},
                     {"kind", std::string(device.kind->name)},
                     {"connector", scenario::connector_name(device.connector)},
-                    {"control", {{"type", control_name(control.type)}, {"low", control.low}, {"high", control.high},
-                                 {"step", control.step}, {"unit", control.unit}}}};
+                    {"control",
+                     {{"type", control_name(control.type)},
+                      {"low", control.low},
+                      {"high", control.high},
+                      {"step", control.step},
+                      {"unit", control.unit}}}};
       if (const SimDevice* model = simulation_.device(device.name)) model->describe_page_control(entry["control"]);
       add_declared_parts(entry, device.kind->page_parts);
       devices.push_back(std::move(entry));
@@ -111,14 +115,17 @@ std::string ViewSession::hello() const {
     for (const MotorState& motor : motors_) {
       if (motor.board == board.name) motors.push_back(std::string(1, motor.port));
     }
-    boards.push_back({{"name", board.name}, {"module", board.module->scenario_name}, {"motors", motors},
-                      {"devices", devices}});
+    boards.push_back(
+        {{"name", board.name}, {"module", board.module->scenario_name}, {"motors", motors}, {"devices", devices}});
   }
   json machine = nullptr;
   if (scenario.machine && simulation_.machine() != nullptr) {
     const DrawingStyle style;
-    machine = {{"kind", std::string(scenario.machine->kind->name)}, {"margin_mm", style.margin_mm},
-               {"pen_width_mm", style.pen_width_mm}, {"page_mm", nullptr}, {"travel_mm", nullptr},
+    machine = {{"kind", std::string(scenario.machine->kind->name)},
+               {"margin_mm", style.margin_mm},
+               {"pen_width_mm", style.pen_width_mm},
+               {"page_mm", nullptr},
+               {"travel_mm", nullptr},
                {"shade_name", simulation_.machine()->shade_name()}};
     const MachineKind& kind = *scenario.machine->kind;
     add_declared_parts(machine, kind.page_parts);
@@ -137,8 +144,10 @@ std::string ViewSession::hello() const {
               {"machine", machine},
               {"boards", boards},
               {"run", {{"paused", control_.paused}, {"speed", control_.speed}}},
-              {"limits", {{"max_input_bytes", kMaxInputBytes}, {"updates_per_s", kMaxUpdatesPerSecond},
-                          {"resolution_mm", kDisplayResolutionMm}}}}
+              {"limits",
+               {{"max_input_bytes", kMaxInputBytes},
+                {"updates_per_s", kMaxUpdatesPerSecond},
+                {"resolution_mm", kDisplayResolutionMm}}}}
       .dump();
 }
 
@@ -177,8 +186,8 @@ bool ViewSession::add_if_changed(json& message, const char* field, const std::st
 
 bool ViewSession::add_run_parts(json& message) {
   const bool ended = run_ended_ || simulation_.stopped() || simulation_.now() >= simulation_.duration();
-  json run = {{"paused", control_.paused}, {"speed", control_.speed}, {"stopped", simulation_.stopped()},
-              {"ended", ended}};
+  json run = {
+      {"paused", control_.paused}, {"speed", control_.speed}, {"stopped", simulation_.stopped()}, {"ended", ended}};
   if (!sent_.changed("run", run)) return false;
   message["run"] = std::move(run);
   return true;
@@ -188,8 +197,8 @@ bool ViewSession::add_machine_parts(json& message) {
   const Machine* machine = simulation_.machine();
   if (machine == nullptr) return false;
   bool changed = false;
-  json pen = {{"x_mm", machine->pen_position().x_mm}, {"y_mm", machine->pen_position().y_mm},
-              {"down", machine->pen_down()}};
+  json pen = {
+      {"x_mm", machine->pen_position().x_mm}, {"y_mm", machine->pen_position().y_mm}, {"down", machine->pen_down()}};
   if (sent_.changed("pen", pen)) message["pen"] = std::move(pen), changed = true;
   json parts = json::array();
   for (const StrokePart& part : strokes_.take(machine->strokes(), machine->shade_marks(), kMaxPointsPerUpdate)) {
@@ -223,10 +232,11 @@ bool ViewSession::add_travel_part(json& message) {
   if (travel == nullptr) return false;
   json first_points = json::array();
   for (const TravelExcursion& excursion : travel->excursions()) {
-    first_points.push_back({{"t_s", to_seconds(excursion.start)}, {"x_mm", excursion.first.x_mm},
-                            {"y_mm", excursion.first.y_mm}});
+    first_points.push_back(
+        {{"t_s", to_seconds(excursion.start)}, {"x_mm", excursion.first.x_mm}, {"y_mm", excursion.first.y_mm}});
   }
-  json part = {{"outside", travel->outside()}, {"excursions", travel->excursion_count()},
+  json part = {{"outside", travel->outside()},
+               {"excursions", travel->excursion_count()},
                {"first_points", std::move(first_points)}};
   if (!sent_.changed("travel", part)) return false;
   message["travel"] = std::move(part);
@@ -245,8 +255,11 @@ void ViewSession::update_motor_rates(double dt_s) {
 json ViewSession::board_state_json(const std::string& name) const {
   const SimBoard* board = simulation_.board(name);
   const StepdanceBoardStatsV1 stats = board->stats();
-  json entry = {{"name", name}, {"frames", stats.frames}, {"load_average_percent", nullptr},
-                {"load_peak_percent", nullptr}, {"fault", nullptr}};
+  json entry = {{"name", name},
+                {"frames", stats.frames},
+                {"load_average_percent", nullptr},
+                {"load_peak_percent", nullptr},
+                {"fault", nullptr}};
   if (stats.load_frames > 0 && stats.load_budget_cycles > 0) {
     const double budget = stats.load_budget_cycles;
     entry["load_average_percent"] =
@@ -254,7 +267,8 @@ json ViewSession::board_state_json(const std::string& name) const {
     entry["load_peak_percent"] = 100.0 * stats.load_peak_cycles / budget;
   }
   if (stats.fault_reason != 0) {
-    entry["fault"] = {{"reason", stats.fault_name ? stats.fault_name : ""}, {"count", stats.fault_count},
+    entry["fault"] = {{"reason", stats.fault_name ? stats.fault_name : ""},
+                      {"count", stats.fault_count},
                       {"detail", stats.fault_detail ? stats.fault_detail : ""}};
   }
   json warnings = json::array();
@@ -273,7 +287,9 @@ bool ViewSession::add_board_parts(json& message) {
   for (const MotorState& motor : motors_) {
     const std::string port(1, motor.port);
     changed |= add_if_changed(message, "motors", "motor " + motor.board + " " + port,
-                              {{"board", motor.board}, {"port", port}, {"steps", motor.last_steps},
+                              {{"board", motor.board},
+                               {"port", port},
+                               {"steps", motor.last_steps},
                                {"rate_steps_per_s", motor.rate_steps_per_s}});
   }
   for (const scenario::BoardConfig& config : simulation_.scenario().boards) {
@@ -353,7 +369,8 @@ std::vector<std::string> ViewSession::receive(std::string_view text) {
   const std::optional<std::string> type = string_at(message, "type");
   if (!type) return {error_message("no \"type\"").dump()};
   if (*type == "save") {
-    return {json{{"type", "drawing"}, {"t_s", to_seconds(simulation_.now())}, {"svg", simulation_.drawing_svg()}}.dump()};
+    return {
+        json{{"type", "drawing"}, {"t_s", to_seconds(simulation_.now())}, {"svg", simulation_.drawing_svg()}}.dump()};
   }
   if (*type == "hello") {
     start_over();  // the page starts its drawing afresh from a hello
@@ -395,8 +412,9 @@ std::string ViewSession::apply_input(const json& message) {
     const auto counts = number_at(message, "counts");
     const double limit = static_cast<double>(scenario::ranges::kEncoderCounts.high);
     if (!counts || *counts != std::floor(*counts) || std::fabs(*counts) > limit) {
-      return "input: turn needs \"counts\", a whole number in [-" + std::to_string(scenario::ranges::kEncoderCounts.high) +
-             ", " + std::to_string(scenario::ranges::kEncoderCounts.high) + "]";
+      return "input: turn needs \"counts\", a whole number in [-" +
+             std::to_string(scenario::ranges::kEncoderCounts.high) + ", " +
+             std::to_string(scenario::ranges::kEncoderCounts.high) + "]";
     }
     action.counts = static_cast<int64_t>(*counts);
     const double over_ms = number_at(message, "over_ms").value_or(0);
@@ -410,7 +428,8 @@ std::string ViewSession::apply_input(const json& message) {
     const auto position = number_at(message, "position");
     const PageControl& control = config->kind->control;
     if (!position || !(*position >= control.low && *position <= control.high)) {
-      return "input: set needs \"position\" in [" + std::to_string(control.low) + ", " + std::to_string(control.high) + "]";
+      return "input: set needs \"position\" in [" + std::to_string(control.low) + ", " + std::to_string(control.high) +
+             "]";
     }
     action.position = *position;
   }

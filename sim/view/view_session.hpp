@@ -43,8 +43,8 @@ constexpr size_t kMaxConsoleBytesPerUpdate = 16384;
 /// pen, new strokes, each motor and board, and the parts each device's and the machine's kind
 /// gives: kinds/page_part.hpp) that differ from what the page was last sent, and console text
 /// since. The session names no kind: it asks each device (SimDevice::add_page_parts,
-/// describe_page_control) and the machine's row (MachineKind::add_page_parts). Nothing changed (a paused run): no update at all. The session
-/// assumes every update it makes reaches the page; a front end that loses one calls
+/// describe_page_control) and the machine's row (MachineKind::add_page_parts). Nothing changed (a paused run): no
+/// update at all. The session assumes every update it makes reaches the page; a front end that loses one calls
 /// start_over(), and the next update carries the whole state again.
 class ViewSession {
  public:

@@ -22,9 +22,13 @@ namespace {
 // Passes whose workload is not done() run until it is (ArcWorkload); workloads without done()
 // (EbbCommandWorkload) run STEPDANCE_BENCH_PASSES passes.
 template <class W>
-auto finished(W& workload, uint32_t, int) -> decltype(workload.done()) { return workload.done(); }
+auto finished(W& workload, uint32_t, int) -> decltype(workload.done()) {
+  return workload.done();
+}
 template <class W>
-bool finished(W&, uint32_t pass, long) { return pass >= STEPDANCE_BENCH_PASSES; }
+bool finished(W&, uint32_t pass, long) {
+  return pass >= STEPDANCE_BENCH_PASSES;
+}
 
 }  // namespace
 

@@ -53,9 +53,8 @@ extern "C" void reset_handler(void) {
 
 extern "C" void fault_handler(void) {
   // Reported over semihosting, so a crash fails the run at once instead of hanging until timeout.
-  printf("\nFAULT: exception %lu, CFSR=0x%08lx HFSR=0x%08lx\n",
-         static_cast<unsigned long>(reg(kIcsr) & 0x1FFu), static_cast<unsigned long>(reg(kCfsr)),
-         static_cast<unsigned long>(reg(kHfsr)));
+  printf("\nFAULT: exception %lu, CFSR=0x%08lx HFSR=0x%08lx\n", static_cast<unsigned long>(reg(kIcsr) & 0x1FFu),
+         static_cast<unsigned long>(reg(kCfsr)), static_cast<unsigned long>(reg(kHfsr)));
   fflush(stdout);
   _Exit(3);
 }
@@ -72,7 +71,10 @@ __attribute__((section(".vectors"), used)) const Vector vector_table[16] = {
     fault_handler,  // MemManage
     fault_handler,  // BusFault
     fault_handler,  // UsageFault
-    nullptr, nullptr, nullptr, nullptr,
+    nullptr,
+    nullptr,
+    nullptr,
+    nullptr,
     fault_handler,  // SVCall
     fault_handler,  // DebugMonitor
     nullptr,

@@ -28,7 +28,8 @@ TEST(CliTest, HelpWorksForEveryCommand) {
 
 TEST(CliTest, ABadScenarioGivesFileLineAndExitTwo) {
   const std::string scratch = test_output_dir("cli_bad_scenario");
-  const std::string path = write_scenario(scratch, "duration_s = 1\n\n[[board]]\nname = \"b\"\nsketch = \"StepASketch.ino\"\nloop_period_us = -5\n");
+  const std::string path = write_scenario(
+      scratch, "duration_s = 1\n\n[[board]]\nname = \"b\"\nsketch = \"StepASketch.ino\"\nloop_period_us = -5\n");
   const CommandResult result = stepdance("sim " + path, scratch);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find(path + ":6: "), std::string::npos) << result.err;
@@ -37,8 +38,10 @@ TEST(CliTest, ABadScenarioGivesFileLineAndExitTwo) {
 TEST(CliTest, ASketchThatDoesNotCompileNamesItsLineAndExitsTwo) {
   const std::string scratch = test_output_dir("cli_bad_sketch");
   std::filesystem::create_directories(scratch);
-  std::ofstream(scratch + "/Broken.ino") << "#define module_driver\n#include \"stepdance.hpp\"\n\nvoid setup() { no_such_function(); }\nvoid loop() {}\n";
-  const std::string path = write_scenario(scratch, "duration_s = 1\n[[board]]\nname = \"b\"\nsketch = \"Broken.ino\"\n");
+  std::ofstream(scratch + "/Broken.ino")
+      << "#define module_driver\n#include \"stepdance.hpp\"\n\nvoid setup() { no_such_function(); }\nvoid loop() {}\n";
+  const std::string path =
+      write_scenario(scratch, "duration_s = 1\n[[board]]\nname = \"b\"\nsketch = \"Broken.ino\"\n");
   const CommandResult result = stepdance("sim --quiet --cache " + kSketchCache + " " + path, scratch);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("Broken.ino:4:"), std::string::npos) << result.err;
@@ -86,7 +89,8 @@ TEST(CliTest, ConsoleTextWithoutANewlineIsShownWhole) {
                                             "void loop() { dance_loop(); }\n";
   const std::string scenario = write_scenario(
       scratch, "duration_s = 0.2\n[[board]]\nname = \"driver\"\nsketch = \"Pieces.ino\"\nmodule = \"driver\"\n");
-  const CommandResult result = stepdance("sim --cache " + kSketchCache + " --out " + scratch + "/out " + scenario, scratch);
+  const CommandResult result =
+      stepdance("sim --cache " + kSketchCache + " --out " + scratch + "/out " + scenario, scratch);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   std::istringstream lines(result.out);
   size_t shown = 0;
@@ -104,7 +108,8 @@ TEST(CliTest, DecodeOfAMissingWireIsBadInput) {
                                           source_path("examples/ChainedPlotterDriver"),
                                       scratch);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const CommandResult decoded = stepdance("decode --step nope --dir knobs.OUT_A_DIR " + scratch + "/out/cable.vcd", scratch);
+  const CommandResult decoded =
+      stepdance("decode --step nope --dir knobs.OUT_A_DIR " + scratch + "/out/cable.vcd", scratch);
   EXPECT_EQ(decoded.exit_code, 2);
   EXPECT_NE(decoded.err.find("nope"), std::string::npos) << decoded.err;
 }

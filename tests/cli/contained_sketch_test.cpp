@@ -146,15 +146,16 @@ TEST(ContainedSketch, ARunawayCardWriterIsHeldToTheCardsLimits) {
 TEST(ContainedSketch, SigtermEndsAStuckBatchRunWithItsOutputs) {
   const std::string scratch = test_output_dir("contained_sigterm");
   std::filesystem::create_directories(scratch);
-  const std::string warm_up = kStepdance + " sim " + fixture("BusyLoop") + " --out " + scratch +
-                              "/warm-up --watchdog-s 0.2 >/dev/null 2>&1; ";
+  const std::string warm_up =
+      kStepdance + " sim " + fixture("BusyLoop") + " --out " + scratch + "/warm-up --watchdog-s 0.2 >/dev/null 2>&1; ";
   const std::string command = warm_up + kStepdance + " sim " + fixture("BusyLoop") + " --out " + scratch +
                               "/out --watchdog-s 60 >" + scratch + "/stdout.txt 2>" + scratch +
                               "/stderr.txt & pid=$!; ticks=$(getconf CLK_TCK); for i in $(seq 600); do "
-                              "kill -0 $pid 2>/dev/null || break; [ $(cut -d\\) -f2 /proc/$pid/stat | cut -d\\  -f13) -ge $ticks ] && break; sleep 0.05; done; "
+                              "kill -0 $pid 2>/dev/null || break; [ $(cut -d\\) -f2 /proc/$pid/stat | cut -d\\  -f13) "
+                              "-ge $ticks ] && break; sleep 0.05; done; "
                               "kill -TERM $pid; start=$(date +%s%N); wait $pid; "
-                              "status=$?; echo $(( ($(date +%s%N) - start) / 1000000 )) >" + scratch +
-                              "/ms.txt; exit $status";
+                              "status=$?; echo $(( ($(date +%s%N) - start) / 1000000 )) >" +
+                              scratch + "/ms.txt; exit $status";
   const int status = std::system(("bash -c '" + command + "'").c_str());
   EXPECT_EQ(WEXITSTATUS(status), 128 + 15);
   EXPECT_LT(std::stol(read_file(scratch + "/ms.txt")), 1000);

@@ -104,7 +104,8 @@ std::string write_wide_capture(const std::string& scratch, int pairs) {
   std::ofstream vcd(path);
   vcd << "$timescale 1ns $end\n$scope module wide $end\n";
   for (int pair = 0; pair < pairs; ++pair) {
-    vcd << "$var wire 1 s" << pair << " P" << pair << "_STEP $end\n$var wire 1 d" << pair << " P" << pair << "_DIR $end\n";
+    vcd << "$var wire 1 s" << pair << " P" << pair << "_STEP $end\n$var wire 1 d" << pair << " P" << pair
+        << "_DIR $end\n";
   }
   vcd << "$upscope $end\n$enddefinitions $end\n#0\n#1000\n";
   for (int pair = 0; pair < pairs; ++pair) vcd << "1s" << pair << "\n";

@@ -54,8 +54,9 @@ TEST(MalformedScenarioTest, CableNumbersAtTheSixtyFourBitLimits) {
 
 TEST(MalformedScenarioTest, EncoderCountsAtTheSixtyFourBitLimits) {
   const std::string range = "[-1,000,000,000,000, 1,000,000,000,000] counts";
-  expect_refused("encoder-extremes.toml", {{13, "'start_count' must be in " + range + ", got -9,223,372,036,854,775,808"},
-                                           {18, "'counts' must be in " + range + ", got 9,223,372,036,854,775,807"}});
+  expect_refused("encoder-extremes.toml",
+                 {{13, "'start_count' must be in " + range + ", got -9,223,372,036,854,775,808"},
+                  {18, "'counts' must be in " + range + ", got 9,223,372,036,854,775,807"}});
 }
 
 TEST(MalformedScenarioTest, DurationsThatAreNotARun) {
@@ -76,14 +77,16 @@ TEST(MalformedScenarioTest, TimelineTimesBeyondAnyRun) {
 // the PNG, without a summary. Travel is bounded when the file is read, and a plotter's PNG,
 // whose page is its travel area, is sized before anything runs.
 TEST(MalformedScenarioTest, WholeRunLimitsAreCheckedBeforeTheRun) {
-  expect_refused("travel-huge.toml", {{16, "'travel_mm' must be two numbers in (0, 1,000,000] mm, e.g. [300, 218]"},
-                                      {17, "'start_mm' must be two numbers in [-1,000,000, 1,000,000] mm, e.g. [120.5, 80]"}});
+  expect_refused("travel-huge.toml",
+                 {{16, "'travel_mm' must be two numbers in (0, 1,000,000] mm, e.g. [300, 218]"},
+                  {17, "'start_mm' must be two numbers in [-1,000,000, 1,000,000] mm, e.g. [120.5, 80]"}});
   const std::string path = kFixtures + "/canvas-huge.toml";
   const CommandResult result = run("sim --quiet --cache " + kSketchCache + " " + path, "canvas");
   EXPECT_EQ(result.exit_code, 2) << result.err;
-  EXPECT_EQ(result.err, path + ":15: at png_px_per_mm = 4, the plotter's page (travel_mm and a 10 mm margin) is too "
-                               "large for a PNG: the PNG would be 4,000,080 x 8,080 px; at most 32,767 px a side and "
-                               "64,000,000 px (lower png_px_per_mm or travel_mm, or set png = \"\")\n");
+  EXPECT_EQ(result.err, path +
+                            ":15: at png_px_per_mm = 4, the plotter's page (travel_mm and a 10 mm margin) is too "
+                            "large for a PNG: the PNG would be 4,000,080 x 8,080 px; at most 32,767 px a side and "
+                            "64,000,000 px (lower png_px_per_mm or travel_mm, or set png = \"\")\n");
   EXPECT_FALSE(std::filesystem::exists(kFixtures + "/never-written"));
 }
 
@@ -121,7 +124,8 @@ TEST(MalformedCommandLineTest, NumbersAreDecimalWithNothingAroundThem) {
       {"sim --duration ' 2' ", "--duration: ' 2' is not a decimal number (allowed: [1e-09, 86,400] s)\n"},
       {"sim --duration '1 ' ", "--duration: '1 ' is not a decimal number (allowed: [1e-09, 86,400] s)\n"},
       {"sim --duration 1e-300 ", "--duration: must be in [1e-09, 86,400] s, got 1e-300\n"},
-      {"sim --csv-interval-ms 0x10 ", "--csv-interval-ms: '0x10' is not a decimal number (allowed: [0.04, 86,400,000] ms)\n"},
+      {"sim --csv-interval-ms 0x10 ",
+       "--csv-interval-ms: '0x10' is not a decimal number (allowed: [0.04, 86,400,000] ms)\n"},
       {"sim --live --speed 0x2 ",
        "--speed: '0x2' is not a decimal number (allowed: (0, 1,000,000] x real time) (or 'max')\n"},
       {"serve --speed nan ", "--speed: must be in [0.001, 1,000] x real time, got nan\n"},
@@ -166,25 +170,33 @@ TEST(MalformedScenarioTest, AVcdWithoutPortsIsRefusedAtLoad) {
 TEST(MalformedScenarioTest, AVcdThatCouldPassItsCapIsRefusedWithTheEstimate) {
   const std::string scratch = test_output_dir("malformed_vcd_cap");
   const std::string path = kFixtures + "/vcd-too-large.toml";
-  const CommandResult result = run("sim --quiet --cache " + kSketchCache + " --out " + scratch + "/out " + path, "vcd_cap");
+  const CommandResult result =
+      run("sim --quiet --cache " + kSketchCache + " --out " + scratch + "/out " + path, "vcd_cap");
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_NE(result.err.find(scratch + "/out/wire.vcd: the VCD could reach 2.85 GB (1 port(s) × at most 1.425 MB per "
-                            "simulated second × 2000 s), above the cap of 1.00 GB: raise it with --vcd-max-gb 3"),
-            std::string::npos)
+  EXPECT_NE(
+      result.err.find(scratch + "/out/wire.vcd: the VCD could reach 2.85 GB (1 port(s) × at most 1.425 MB per "
+                                "simulated second × 2000 s), above the cap of 1.00 GB: raise it with --vcd-max-gb 3"),
+      std::string::npos)
       << result.err;
   EXPECT_FALSE(std::filesystem::exists(scratch + "/out/wire.vcd"));
   EXPECT_EQ(result.out, "");
   // --duration shortens the run under the cap; --no-vcd leaves the VCD out: both run.
   EXPECT_EQ(run("sim --quiet --no-vcd --duration 0.1 --cache " + kSketchCache + " --out " + scratch + "/out2 " + path,
-                "vcd_cap").exit_code, 0);
-  EXPECT_EQ(run("sim --quiet --vcd-max-gb 3 --duration 0.1 --cache " + kSketchCache + " --out " + scratch + "/out3 " +
-                path, "vcd_cap").exit_code, 0);
+                "vcd_cap")
+                .exit_code,
+            0);
+  EXPECT_EQ(
+      run("sim --quiet --vcd-max-gb 3 --duration 0.1 --cache " + kSketchCache + " --out " + scratch + "/out3 " + path,
+          "vcd_cap")
+          .exit_code,
+      0);
 }
 
 // Found by hand (issue 38): `decode --step X --dir X` decoded one wire as both.
 TEST(MalformedCommandLineTest, DecodeRefusesTheSameWireTwice) {
   const std::string capture = kFixtures + "/long-pulses.vcd";
-  for (const char* names : {"--step upstream.OUT_A_STEP --dir upstream.OUT_A_STEP", "--step OUT_A_DIR --dir OUT_A_DIR"}) {
+  for (const char* names :
+       {"--step upstream.OUT_A_STEP --dir upstream.OUT_A_STEP", "--step OUT_A_DIR --dir OUT_A_DIR"}) {
     const CommandResult result = run("decode " + std::string(names) + " " + capture, "same_wire");
     EXPECT_EQ(result.exit_code, 2) << names;
     EXPECT_NE(result.err.find("--step and --dir name the same wire"), std::string::npos) << result.err;
@@ -195,9 +207,9 @@ TEST(MalformedCommandLineTest, DecodeRefusesTheSameWireTwice) {
 // Found by hand (issue 38): a --serial-link naming no board exited 1; docs/simulator.md says bad input is 2.
 TEST(MalformedCommandLineTest, ASerialLinkToNoBoardIsBadInput) {
   const std::string scratch = test_output_dir("malformed_serial_link_board");
-  const CommandResult link = run("sim --live --duration 1 --serial-link nosuch=" + scratch + "/link " +
-                                     source_path("examples/StepASketch"),
-                                 "serial_link_board");
+  const CommandResult link =
+      run("sim --live --duration 1 --serial-link nosuch=" + scratch + "/link " + source_path("examples/StepASketch"),
+          "serial_link_board");
   EXPECT_EQ(link.exit_code, 2);
   EXPECT_EQ(link.err, "--serial-link: no board named 'nosuch'\n");
   EXPECT_EQ(link.out, "");
@@ -219,7 +231,8 @@ TEST(MalformedCommandLineTest, EmptyPathsAndFilesInTheWayOfALinkAreRefused) {
   std::ofstream(notes) << "my notes\n";
   const CommandResult link = run("sim --live --serial-link driver=" + notes + " " + scenario, "serial_link");
   EXPECT_EQ(link.exit_code, 2);
-  EXPECT_EQ(link.err, "--serial-link: '" + notes + "' exists and is not a symlink; it would be deleted (name a new path)\n");
+  EXPECT_EQ(link.err,
+            "--serial-link: '" + notes + "' exists and is not a symlink; it would be deleted (name a new path)\n");
   EXPECT_EQ(read_file(notes), "my notes\n");
 }
 
@@ -234,8 +247,8 @@ TEST(MalformedCommandLineTest, AnUnwritableOutputIsRefusedBeforeTheRun) {
   const CommandResult out = run("sim --quiet --cache " + cache + " --out " + file + "/out " + scenario, "unwritable");
   EXPECT_EQ(out.exit_code, 2);
   EXPECT_EQ(out.err.rfind("cannot create the output folder " + file + "/out: ", 0), 0u) << out.err;
-  const CommandResult vcd = run("sim --quiet --cache " + cache + " --out " + scratch + "/out --vcd " + file + "/x.vcd " +
-                                    scenario, "unwritable");
+  const CommandResult vcd = run(
+      "sim --quiet --cache " + cache + " --out " + scratch + "/out --vcd " + file + "/x.vcd " + scenario, "unwritable");
   EXPECT_EQ(vcd.exit_code, 2);
   EXPECT_EQ(vcd.err.rfind("cannot create the output folder " + file + ": ", 0), 0u) << vcd.err;
   EXPECT_FALSE(std::filesystem::exists(cache));
@@ -253,8 +266,9 @@ TEST(MalformedCaptureTest, ATruncatedCaptureIsDecodedAndReported) {
   const std::string path = kFixtures + "/truncated.vcd";
   const CommandResult text = run("decode " + path, "truncated");
   EXPECT_EQ(text.exit_code, 4);
-  EXPECT_EQ(text.err, "warning: " + path + ":22: the capture is truncated (it ends in the middle of line 22); "
-                      "decoded up to there\n");
+  EXPECT_EQ(text.err, "warning: " + path +
+                          ":22: the capture is truncated (it ends in the middle of line 22); "
+                          "decoded up to there\n");
   const nlohmann::json report = decode_json(path, 4, "truncated_json");
   const nlohmann::json& port = report["ports"]["upstream.OUT_A"];
   EXPECT_EQ(port["accepted"], 3);  // the three 2 µs X pulses before the cut
@@ -357,8 +371,8 @@ TEST(MalformedUsageTest, AFolderWithoutAScenarioSaysWhichScenarioRunsIt) {
   const CommandResult result = run("sim " + folder, "no_scenario");
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err, folder + ": this folder has no scenario.toml; its sketch runs in " +
-                            source_path("examples/ChainedPlotterDriver/scenario.toml") +
-                            " (stepdance sim " + source_path("examples/ChainedPlotterDriver") + ")\n");
+                            source_path("examples/ChainedPlotterDriver/scenario.toml") + " (stepdance sim " +
+                            source_path("examples/ChainedPlotterDriver") + ")\n");
 }
 
 }  // namespace

@@ -51,25 +51,27 @@ TEST(OutputSafetyTest, ACommandLineOutputNeverReplacesTheScenarioOrTheSketch) {
 }
 
 TEST(OutputSafetyTest, AFileTheTimelineSendsIsAnInputToo) {
-  const std::string copy = copy_fixture("serial_file", "\n[[at]]\ntime_s = 0\nserial = \"driver\"\nfile = \"lines.txt\"\n");
+  const std::string copy =
+      copy_fixture("serial_file", "\n[[at]]\ntime_s = 0\nserial = \"driver\"\nfile = \"lines.txt\"\n");
   std::ofstream(copy + "/lines.txt") << "hello\n";
-  expect_refused(run_sim("--csv " + copy + "/lines.txt " + copy, copy), copy,
-                 "--csv: would overwrite the serial file of line 15 " + copy +
-                     "/lines.txt (an output never replaces an input)");
+  expect_refused(
+      run_sim("--csv " + copy + "/lines.txt " + copy, copy), copy,
+      "--csv: would overwrite the serial file of line 15 " + copy + "/lines.txt (an output never replaces an input)");
   EXPECT_EQ(read_file(copy + "/lines.txt"), "hello\n");
 }
 
 TEST(OutputSafetyTest, OutputNamesThatCollideAreRefusedWithTheirLines) {
-  const std::string copy =
-      copy_fixture("same_names", "svg = \"same.txt\"\npng = \"same.txt\"\nsummary = \"same.txt\"\n"
-                                 "[machine]\ntype = \"cartesian\"\nboard = \"driver\"\nx = \"A\"\n");
+  const std::string copy = copy_fixture("same_names",
+                                        "svg = \"same.txt\"\npng = \"same.txt\"\nsummary = \"same.txt\"\n"
+                                        "[machine]\ntype = \"cartesian\"\nboard = \"driver\"\nx = \"A\"\n");
   const std::string file = copy + "/scenario.toml";
   const std::string same = copy + "/out/same.txt";
   const CommandResult result = run_sim(copy, copy);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err, file + ":15: 'png' would write " + same + ", which 'svg' (" + file + ":14) also writes\n" +
-                            file + ":16: 'summary' would write " + same + ", which 'svg' (" + file + ":14) also writes\n" +
-                            file + ":16: 'summary' would write " + same + ", which 'png' (" + file + ":15) also writes\n");
+                            file + ":16: 'summary' would write " + same + ", which 'svg' (" + file +
+                            ":14) also writes\n" + file + ":16: 'summary' would write " + same + ", which 'png' (" +
+                            file + ":15) also writes\n");
   EXPECT_FALSE(fs::exists(copy + "/out"));
 }
 
@@ -89,29 +91,31 @@ TEST(OutputSafetyTest, NothingIsWrittenInsideABoardsSdCardFolder) {
   const std::string copy = copy_fixture("inside_sd", "summary = \"driver.sd/eeprom.bin\"\n");
   const CommandResult result = run_sim(copy, copy);
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_EQ(result.err, copy + "/scenario.toml:14: 'summary' would write " + copy + "/out/driver.sd/eeprom.bin inside " +
-                            copy + "/out/driver.sd, which the SD card folder of board 'driver' (" + copy +
-                            "/scenario.toml:5) writes\n");
+  EXPECT_EQ(result.err,
+            copy + "/scenario.toml:14: 'summary' would write " + copy + "/out/driver.sd/eeprom.bin inside " + copy +
+                "/out/driver.sd, which the SD card folder of board 'driver' (" + copy + "/scenario.toml:5) writes\n");
 }
 
 TEST(OutputSafetyTest, NamesThatWouldLeaveTheOutputFolderAreRefusedWhenTheScenarioIsRead) {
-  const std::string copy = copy_fixture(
-      "escape",
-      "summary = \"../summary.json\"\n"
-      "[[board]]\nname = \"../../x\"\nsketch = \"Sketch/Sketch.ino\"\n"
-      "[[device]]\nname = \"../knob\"\ntype = \"encoder\"\nboard = \"driver\"\nconnector = \"ENC1\"\n"
-      "[[host]]\nboard = \"driver\"\ntranscript = \"/tmp/host.txt\"\n[[host.step]]\nsend = \"?\"\n");
+  const std::string copy =
+      copy_fixture("escape",
+                   "summary = \"../summary.json\"\n"
+                   "[[board]]\nname = \"../../x\"\nsketch = \"Sketch/Sketch.ino\"\n"
+                   "[[device]]\nname = \"../knob\"\ntype = \"encoder\"\nboard = \"driver\"\nconnector = \"ENC1\"\n"
+                   "[[host]]\nboard = \"driver\"\ntranscript = \"/tmp/host.txt\"\n[[host.step]]\nsend = \"?\"\n");
   const std::string file = copy + "/scenario.toml";
   const CommandResult result = run_sim(copy, copy);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_EQ(result.err,
-            file + ":14: 'summary' (\"../summary.json\") must stay inside the output folder (no '..')\n" +
-                file + ":16: board name \"../../x\" names its SD card folder (<name>.sd in the output folder), so it "
-                       "must not contain '/'\n" +
-                file + ":19: device name \"../knob\" names the device's files in the output folder, so it must not "
-                       "contain '/'\n" +
-                file + ":25: 'transcript' (\"/tmp/host.txt\") must be a name inside the output folder, not an "
-                       "absolute path\n");
+            file + ":14: 'summary' (\"../summary.json\") must stay inside the output folder (no '..')\n" + file +
+                ":16: board name \"../../x\" names its SD card folder (<name>.sd in the output folder), so it "
+                "must not contain '/'\n" +
+                file +
+                ":19: device name \"../knob\" names the device's files in the output folder, so it must not "
+                "contain '/'\n" +
+                file +
+                ":25: 'transcript' (\"/tmp/host.txt\") must be a name inside the output folder, not an "
+                "absolute path\n");
   EXPECT_FALSE(fs::exists(fs::path(copy).parent_path() / "x.sd"));
 }
 
@@ -131,7 +135,8 @@ TEST(OutputSafetyTest, TheReplayPageIsAnOutputLikeTheOthers) {
                  "cannot write " + copy + "/folder.html: it is a folder");
   const CommandResult under_a_file = run_sim("--html " + copy + "/scenario.toml/x.html " + copy, copy);
   EXPECT_EQ(under_a_file.exit_code, 2);
-  EXPECT_EQ(under_a_file.err.rfind("cannot create the output folder " + copy + "/scenario.toml: ", 0), 0u) << under_a_file.err;
+  EXPECT_EQ(under_a_file.err.rfind("cannot create the output folder " + copy + "/scenario.toml: ", 0), 0u)
+      << under_a_file.err;
   EXPECT_EQ(read_file(copy + "/scenario.toml"), scenario_text);
 }
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "cli_runner.hpp"
 #include "board/loader/sketch_builder.hpp"
+#include "cli_runner.hpp"
 
 namespace stepdance::sim::test {
 namespace {
@@ -29,9 +29,8 @@ Copy copy_fixture(const std::string& name) {
 
 /// The run's console: "shared value N" and "table value M" lines.
 std::string run_console(const Copy& copy) {
-  const CommandResult result =
-      stepdance("sim --cache " + copy.cache + " --out " + copy.folder + "/out " + copy.folder,
-                fs::path(copy.folder).parent_path().string());
+  const CommandResult result = stepdance("sim --cache " + copy.cache + " --out " + copy.folder + "/out " + copy.folder,
+                                         fs::path(copy.folder).parent_path().string());
   EXPECT_EQ(result.exit_code, 0) << result.err;
   return result.out;
 }

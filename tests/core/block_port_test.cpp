@@ -318,7 +318,7 @@ TEST_F(BlockPortWorkedExampleTest, EncoderThroughCoreXYToChannel) {
   KinematicsCoreXY kinematics;
   Channel channel_a;
   ASSERT_EQ(channel_a.begin(&port_a, SIGNAL_X), Status::kOk);
-  channel_a.set_ratio(25.4, 2032);  // 0.0125 mm per step
+  channel_a.set_ratio(25.4, 2032);     // 0.0125 mm per step
   encoder.output.set_ratio(24, 2400);  // 0.01 mm per count
   encoder.begin(100);
   ASSERT_EQ(kinematics.begin(), Status::kOk);

@@ -30,8 +30,9 @@ TEST_F(CountersTest, EveryBlockIsVisitedOnceEvenInSeveralStages) {
   OutputPort port;
   ASSERT_EQ(port.begin(OUTPUT_A), Status::kOk);
   std::map<std::string, int> visits;
-  engine().for_each_block([](Block* block, void* context) { ++(*static_cast<std::map<std::string, int>*>(context))[block->type_name()]; },
-                          &visits);
+  engine().for_each_block(
+      [](Block* block, void* context) { ++(*static_cast<std::map<std::string, int>*>(context))[block->type_name()]; },
+      &visits);
   EXPECT_EQ(visits, (std::map<std::string, int>{{"AnalogInput", 1}, {"OutputPort", 1}}));
 }
 

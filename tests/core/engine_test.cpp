@@ -64,8 +64,7 @@ class EngineTest : public test_support::EngineFixture {
 // ---- Stage order and registration ----------------------------------------------------------
 
 TEST_F(EngineTest, StagesRunInFixedOrderWhateverTheRegistrationOrder) {
-  Recorder post(log, "post"), output(log, "output"), channel(log, "channel"), pre(log, "pre"),
-      input(log, "input");
+  Recorder post(log, "post"), output(log, "output"), channel(log, "channel"), pre(log, "pre"), input(log, "input");
   ASSERT_EQ(post.begin(Stage::kPostChannel), Status::kOk);
   ASSERT_EQ(output.begin(Stage::kOutputPorts), Status::kOk);
   ASSERT_EQ(channel.begin(Stage::kChannels), Status::kOk);
@@ -190,7 +189,7 @@ TEST_F(EngineTest, KilohertzStageCallsRunKilohertzNotTheFrameEntry) {
   both.begin(Stage::kKilohertz);
   ASSERT_EQ(dance_start(), Status::kOk);
   frames(50);
-  EXPECT_EQ(occurrences("both"), 50u);  // the frame entry once per frame, never at the tick
+  EXPECT_EQ(occurrences("both"), 50u);   // the frame entry once per frame, never at the tick
   EXPECT_EQ(both.kilohertz_calls(), 2);  // 50 frames of 40 µs = 2 ms
 }
 

@@ -92,7 +92,7 @@ TEST_F(FaultLevelsTest, FatalStopsEverythingAtOnceUntilRestart) {
   planned.add_move(ABSOLUTE, 50.0f, 100.0, 0, 0, 0, 0, 0);
   run(20000);
   report_fault(FaultLevel::kFatal, FaultReason::kInvariant, "engine", "broken invariant");
-  EXPECT_TRUE(hal_manual::in_safe_state());      // outputs safe, drivers disabled
+  EXPECT_TRUE(hal_manual::in_safe_state());         // outputs safe, drivers disabled
   EXPECT_FALSE(hal_manual::frame_timer_running());  // frames stopped at once
   const double frozen = planned.output_x.read_absolute();
   run(1000);

@@ -31,7 +31,7 @@ TEST(TextWriterFixed, RoundsToItsDecimalsAndKeepsTheirZeros) {
   EXPECT_EQ(fixed(1.5, 3), "1.500");
   EXPECT_EQ(fixed(-0.0625, 3), "-0.063");  // half away from zero
   EXPECT_EQ(fixed(2.0004, 3), "2.000");
-  EXPECT_EQ(fixed(-0.0004, 3), "0.000");   // no "-0.000"
+  EXPECT_EQ(fixed(-0.0004, 3), "0.000");  // no "-0.000"
   EXPECT_EQ(fixed(0.05, 6), "0.050000");
   EXPECT_EQ(fixed(7, 0), "7");
   EXPECT_EQ(fixed(1e9, 1), "ovf");
@@ -53,7 +53,7 @@ TEST(TextWriterSignificant, WholeNumbersBelowTenToTheFifteenInFull) {
 TEST(TextWriterSignificant, OtherNumbersRoundedWithoutTrailingZeros) {
   EXPECT_EQ(significant(123.456789012, 9), "123.456789");
   EXPECT_EQ(significant(-1234.5678, 9), "-1234.5678");
-  EXPECT_EQ(significant(0.001, 9), "0.001");  // plain down to 0.001 …
+  EXPECT_EQ(significant(0.001, 9), "0.001");       // plain down to 0.001 …
   EXPECT_EQ(significant(0.000999, 9), "9.99e-4");  // … an exponent below
   EXPECT_EQ(significant(9.9999999995, 9), "10");
   EXPECT_EQ(significant(1000000000.5, 9), "1000000001");  // whole digits kept from 10^9 up
@@ -77,7 +77,7 @@ TEST(TextWriterSignificant, MantissaRoundedUpToTenCarriesIntoTheExponent) {
 }
 
 TEST(TextWriterSignificant, RoundingAcrossAFormBoundaryTakesTheNewForm) {
-  EXPECT_EQ(significant(0.00099999999, 6), "0.001");       // 9.9999999e-4 → 1.00000e-3: plain
+  EXPECT_EQ(significant(0.00099999999, 6), "0.001");  // 9.9999999e-4 → 1.00000e-3: plain
   EXPECT_EQ(significant(-0.0009996, 3), "-0.001");
   EXPECT_EQ(significant(0.00099949, 3), "9.99e-4");        // rounds down: stays below 10^-3
   EXPECT_EQ(significant(999999999999999.875, 9), "1e15");  // 10^15 − 1/8 → 10^15: exponent

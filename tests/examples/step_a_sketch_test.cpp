@@ -87,8 +87,7 @@ TEST_F(StepASketchTest, ReportsLoadOncePerSecondOnSerial) {
   // two-digit float, "0.00", followed by the "\r\n" of println.
   stepdance::hal_manual::take_console_output();
   run_ms(2100);
-  EXPECT_EQ(stepdance::hal_manual::take_console_output(),
-            "CPU peak load: 0.00\r\nCPU peak load: 0.00\r\n");
+  EXPECT_EQ(stepdance::hal_manual::take_console_output(), "CPU peak load: 0.00\r\nCPU peak load: 0.00\r\n");
 }
 
 }  // namespace

@@ -84,7 +84,8 @@ TEST_F(HomingTest, RandomStartsEndWithinOneStepOfTheSwitch) {
     axis_channel.set_ratio(1.0, kStepsPerMm);
     ASSERT_EQ(axis_channel.begin(nullptr, SIGNAL_X), Status::kOk);
     Homing routine;
-    ASSERT_EQ(routine.add_axis(kSwitchPin, 0.0, HOMING_DIR_BWD, 20.0f, &axis_channel.input_target_position), Status::kOk);
+    ASSERT_EQ(routine.add_axis(kSwitchPin, 0.0, HOMING_DIR_BWD, 20.0f, &axis_channel.input_target_position),
+              Status::kOk);
     ASSERT_EQ(routine.begin(), Status::kOk);
     ASSERT_EQ(dance_start(), Status::kOk);
     const double start = anywhere(random);
@@ -114,9 +115,9 @@ TEST_F(HomingTest, StepLogShowsFastSeekPullOffSlowApproachAndPullOff) {
   run_homing(25000 * 10);
   ASSERT_TRUE(homing.is_homed());
   // BEGIN lasts no whole frame: the first frame already decides to seek.
-  const std::vector<uint8_t> expected = {HOMING_AXIS_STATE_SEEKING,
-                                         HOMING_AXIS_STATE_PULLING_OFF, HOMING_AXIS_STATE_APPROACHING,
-                                         HOMING_AXIS_STATE_FINAL_PULL_OFF, HOMING_AXIS_STATE_FINISHED};
+  const std::vector<uint8_t> expected = {HOMING_AXIS_STATE_SEEKING, HOMING_AXIS_STATE_PULLING_OFF,
+                                         HOMING_AXIS_STATE_APPROACHING, HOMING_AXIS_STATE_FINAL_PULL_OFF,
+                                         HOMING_AXIS_STATE_FINISHED};
   EXPECT_EQ(state_sequence(), expected);
   // Speeds from the step log over 50 ms of each phase (from 4 ms in), mm/s.
   auto speed_in = [&](uint8_t state) {

@@ -122,8 +122,8 @@ TEST_F(EbbPinsTest, ThePenPinsFollowThePenAsExecuted) {
 }
 
 TEST_F(EbbPinsTest, BadPinCommandsGetTheDocumentedErrorsAndChangeNothing) {
-  EXPECT_EQ(exchange("PI,F,0\r"), "!6 Err: Invalid parameter value\r\n");   // ports A … E
-  EXPECT_EQ(exchange("PI,B,8\r"), "!6 Err: Invalid parameter value\r\n");   // pins 0 … 7
+  EXPECT_EQ(exchange("PI,F,0\r"), "!6 Err: Invalid parameter value\r\n");    // ports A … E
+  EXPECT_EQ(exchange("PI,B,8\r"), "!6 Err: Invalid parameter value\r\n");    // pins 0 … 7
   EXPECT_EQ(exchange("PO,B,3,2\r"), "!6 Err: Invalid parameter value\r\n");  // value 0 or 1
   EXPECT_EQ(exchange("PD,B,3,2\r"), "!6 Err: Invalid parameter value\r\n");  // direction 0 or 1
   EXPECT_EQ(exchange("PI,B\r"), "!4 Err: Missing parameter(s)\r\n");

@@ -122,8 +122,9 @@ TEST_F(EbbRateTest, RepeatedStretchesAreNamedOnceAndCountedEach) {
   for (int i = 0; i < 6; ++i) {  // six fast moves back and forth, 5600 frames (0.224 s) each
     const bool back = i % 2 == 1;
     std::string line = kFastLine;
-    if (back) line = "LM," + std::to_string(llround(kTwoTo31 * 22400 / 25000)) + ",-2800,0," +
-                     std::to_string(llround(kTwoTo31 * 3200 / 25000)) + ",400,0,3\r";
+    if (back)
+      line = "LM," + std::to_string(llround(kTwoTo31 * 22400 / 25000)) + ",-2800,0," +
+             std::to_string(llround(kTwoTo31 * 3200 / 25000)) + ",400,0,3\r";
     ASSERT_EQ(host.exchange(line), "OK\r\n");
   }
   for (int i = 0; i < 40000; ++i) host.step();

@@ -135,7 +135,7 @@ TEST_F(EbbWalkHomeTest, WalkHomeAfterAnAbortedPlotReturnsToTheStart) {
   api.start_session();
   api.command("CU,4,8");  // a deeper FIFO than the EBB's default, as a fast client streams
   const double square[][2] = {{30, 20}, {40, 0}, {0, 40}};  // the rest is never sent
-  for (int i = 0; i < 3; ++i) {  // the travel, then the pen down and two sides of the square
+  for (int i = 0; i < 3; ++i) {                             // the travel, then the pen down and two sides of the square
     if (i == 1) api.command("SP,0,150,1");
     api.move_mm(square[i][0], square[i][1]);
   }

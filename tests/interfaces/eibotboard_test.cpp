@@ -27,7 +27,8 @@ struct ReferenceAxis {
   int64_t rate, accel, accumulator = 0;
   int64_t steps_left;  // −1: time-limited
   int64_t taken = 0;
-  ReferenceAxis(int64_t rate_in, int64_t accel_in, int64_t steps) : rate(rate_in - accel_in / 2), accel(accel_in), steps_left(steps) {}
+  ReferenceAxis(int64_t rate_in, int64_t accel_in, int64_t steps)
+      : rate(rate_in - accel_in / 2), accel(accel_in), steps_left(steps) {}
   void tick() {
     if (steps_left == 0) return;
     rate += accel;
@@ -217,7 +218,8 @@ TEST_F(EibotboardTest, LowLevelMoveMatchesTheAccumulatorAlgorithmTickForTick) {
   // Documentation examples 6 (accelerating, 50 steps in about 77 ms) and 7 (two axes).
   const struct {
     int64_t rate1, steps1, accel1, rate2, steps2, accel2;
-  } moves[] = {{42950000, 50, 13400, 0, 0, 0}, {17179000, 75, -687, 8592000, 75, 687}, {85899346, 10, 0, 17180814, 2, 0}};
+  } moves[] = {
+      {42950000, 50, 13400, 0, 0, 0}, {17179000, 75, -687, 8592000, 75, 687}, {85899346, 10, 0, 17180814, 2, 0}};
   int64_t accumulators[2] = {0, 0};  // carried from move to move, as the EBB does without Clear
   for (const auto& m : moves) {
     const int64_t start1 = motor(0), start2 = motor(1);
@@ -362,7 +364,7 @@ TEST_F(EibotboardTest, QueryMotorsFollowsExecutionAndEmergencyStopFlushes) {
 
 TEST_F(EibotboardTest, AnAlarmStopsTheMotorsRefusesMotorMovesAndStillLiftsThePen) {
   ASSERT_EQ(exchange("CU,4,8\r"), "OK\r\n");  // FIFO depth 8: one move running, one waiting
-  ASSERT_EQ(exchange("SP,0\r"), "OK\r\n");  // pen down
+  ASSERT_EQ(exchange("SP,0\r"), "OK\r\n");    // pen down
   ASSERT_EQ(exchange("SM,1000,1000,0\r"), "OK\r\n");
   ASSERT_EQ(exchange("SM,1000,1000,0\r"), "OK\r\n");
   for (int i = 0; i < 200; ++i) step();
@@ -371,7 +373,7 @@ TEST_F(EibotboardTest, AnAlarmStopsTheMotorsRefusesMotorMovesAndStillLiftsThePen
   report_fault(FaultLevel::kAlarm, FaultReason::kLimitHit, "test", "limit switch");
   step();
   const int64_t stopped = motor(0);
-  EXPECT_LE(stopped - before, 1);  // at most the step of the frame that saw the alarm
+  EXPECT_LE(stopped - before, 1);                 // at most the step of the frame that saw the alarm
   EXPECT_EQ(exchange("QM\r"), "QM,0,0,0,0\n\r");  // the running and the waiting move are gone
   for (int i = 0; i < 1000; ++i) step();
   EXPECT_EQ(motor(0), stopped);
@@ -397,18 +399,18 @@ TEST_F(EibotboardTest, PenMovesTheServoOutputWithRateAndDelay) {
   ebb.set_ratio_z(1, 1);  // z in servo-board steps (µs from 1.5 ms)
   step();
   EXPECT_NEAR(ebb.output_z.read_absolute(), 20000 / 12.0 - 1500, 1e-9);  // pen up at power-on
-  ASSERT_EQ(exchange("SC,5,12000\r"), "OK\r\n");   // down at 1.0 ms
-  ASSERT_EQ(exchange("SC,12,400\r"), "OK\r\n");    // 400/12 µs per 24 ms
+  ASSERT_EQ(exchange("SC,5,12000\r"), "OK\r\n");                         // down at 1.0 ms
+  ASSERT_EQ(exchange("SC,12,400\r"), "OK\r\n");                          // 400/12 µs per 24 ms
   ASSERT_EQ(exchange("SP,0,300\r"), "OK\r\n");
   EXPECT_EQ(exchange("QP\r"), "1\n\rOK\r\n");  // still in the FIFO
   step();
-  EXPECT_EQ(exchange("QP\r"), "0\n\rOK\r\n");  // started
-  ASSERT_EQ(exchange("SM,10,5,0\r"), "OK\r\n");    // waits for the pen's 300 ms delay
+  EXPECT_EQ(exchange("QP\r"), "0\n\rOK\r\n");    // started
+  ASSERT_EQ(exchange("SM,10,5,0\r"), "OK\r\n");  // waits for the pen's 300 ms delay
   // 8000 units at 400 per 24 ms: 20 periods = 480 ms to reach the down position.
-  for (int i = 0; i < 6000; ++i) step();           // 240 ms
+  for (int i = 0; i < 6000; ++i) step();  // 240 ms
   EXPECT_NEAR(ebb.output_z.read_absolute(), (20000 - 4000) / 12.0 - 1500, 0.5);
-  EXPECT_EQ(motor(0), 0);                           // the delay holds the move back
-  for (int i = 0; i < 6500; ++i) step();           // 500 ms in all
+  EXPECT_EQ(motor(0), 0);                 // the delay holds the move back
+  for (int i = 0; i < 6500; ++i) step();  // 500 ms in all
   EXPECT_NEAR(ebb.output_z.read_absolute(), 12000 / 12.0 - 1500, 1e-9);
   EXPECT_EQ(motor(0), 5);
   ASSERT_EQ(exchange("S2,24000,4,0,0\r"), "OK\r\n");  // saxi's pen command on RB1

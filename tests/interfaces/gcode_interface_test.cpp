@@ -340,7 +340,7 @@ TEST_F(GCodeInterfaceTest, ThousandShortSegmentsStreamedByCharacterCountingNever
   }
   EXPECT_EQ(acknowledged, lines.size());
   EXPECT_EQ(gcode.interpolator().underruns(), 0u);  // no block ever ended with nothing after it
-  EXPECT_NEAR(slowest_cruise, v, 1e-3);              // and the path speed never sagged
+  EXPECT_NEAR(slowest_cruise, v, 1e-3);             // and the path speed never sagged
   EXPECT_NEAR(gcode.output_x.read_absolute(), radius * sin(count * segment / radius), 1e-4);
 }
 

@@ -174,10 +174,9 @@ TEST_F(RpcTest, FaultEventsGoOnlyToAHostThatAskedForThem) {
   report_fault(FaultLevel::kWarning, FaultReason::kRefused, "test", "a refusal");
   dance_loop();  // delivers the report to the RPC
   dance_loop();
-  EXPECT_EQ(host.take(),
-            "{\"event\":\"fault\",\"level\":\"" + std::string(to_string(FaultLevel::kWarning)) +
-                "\",\"reason\":\"" + to_string(FaultReason::kRefused) +
-                "\",\"source\":\"test\",\"detail\":\"a refusal\",\"sequence\":1}\r\n");
+  EXPECT_EQ(host.take(), "{\"event\":\"fault\",\"level\":\"" + std::string(to_string(FaultLevel::kWarning)) +
+                             "\",\"reason\":\"" + to_string(FaultReason::kRefused) +
+                             "\",\"source\":\"test\",\"detail\":\"a refusal\",\"sequence\":1}\r\n");
   EXPECT_EQ(call(R"({"name":"__unsubscribe__"})"), "{\"result\":\"ok\"}\r\n");
   report_fault(FaultLevel::kWarning, FaultReason::kRefused, "test", "another");
   dance_loop();
@@ -194,8 +193,14 @@ TEST_F(RpcTest, OnlyParametersAndReadersCanBeSubscribed) {
             "{\"result\":\"error\",\"error\":\"wrong argument type\",\"code\":12,\"id\":3}\r\n");
   EXPECT_EQ(hellos, 0);  // refusing it did not call it
   // A port's read is a reader; the table holds kMaxSubscriptions names.
-  const char* readers[] = {"gain", "count", "armed", "tbi.output_x.read", "tbi.output_y.read",
-                           "tbi.output_z.read", "tbi.speed_override", "tbi.slots_remaining"};
+  const char* readers[] = {"gain",
+                           "count",
+                           "armed",
+                           "tbi.output_x.read",
+                           "tbi.output_y.read",
+                           "tbi.output_z.read",
+                           "tbi.speed_override",
+                           "tbi.slots_remaining"};
   static_assert(sizeof(readers) / sizeof(readers[0]) == RPC::kMaxSubscriptions);
   for (const char* name : readers) {
     const std::string reply = call(std::string(R"({"name":"__subscribe__","args":[")") + name + R"("]})");
@@ -319,9 +324,9 @@ TEST_F(RpcChannelTest, TheOriginalsSpellingEnrollsTheSameNames) {
 
 TEST_F(RpcChannelTest, TheCallsActOnTheChannel) {
   const std::string ok = "{\"result\":\"ok\"}\r\n";
-  EXPECT_EQ(call(R"({"name":"channel_a.set_ratio","args":[1, 80]})"), ok);  // 80 steps/mm
+  EXPECT_EQ(call(R"({"name":"channel_a.set_ratio","args":[1, 80]})"), ok);    // 80 steps/mm
   EXPECT_EQ(call(R"({"name":"channel_a.set_upper_limit","args":[1]})"), ok);  // 1 mm = 80 steps
-  channel.input_target_position.write(2.0, ABSOLUTE);  // 160 steps away, one step per frame
+  channel.input_target_position.write(2.0, ABSOLUTE);                         // 160 steps away, one step per frame
   hal_manual::run_frames(300);
   EXPECT_EQ(call(R"({"name":"channel_a.current_position"})"), "{\"result\":\"ok\",\"return\":80}\r\n");
   EXPECT_EQ(call(R"({"name":"channel_a.disable_upper_limit"})"), ok);

@@ -41,7 +41,7 @@ TEST_F(AnalogInputTest, FloorAndCeilingMapLinearlyAndClamp) {
   AnalogInput input;
   ASSERT_EQ(input.begin(kPin), Status::kOk);
   input.set_floor(0, 23);
-  input.set_ceiling(10, 1023);  // 1000 counts for 10 units
+  input.set_ceiling(10, 1023);                // 1000 counts for 10 units
   EXPECT_FLOAT_EQ(read_at(input, 10), 0.0f);  // below the floor count: clamped
   EXPECT_FLOAT_EQ(read_at(input, 23), 0.0f);
   EXPECT_FLOAT_EQ(read_at(input, 123), 1.0f);
@@ -75,8 +75,8 @@ TEST_F(AnalogInputTest, CalibrationFieldsMirrorTheMapSettings) {
   knob.set_deadband(0, 500, 20);  // band 490..510 holds 0
   EXPECT_EQ(knob.adc_deadband_lower, 490);
   EXPECT_EQ(knob.adc_deadband_upper, 510);
-  EXPECT_FLOAT_EQ(knob.conversion_slope_1, 10.0f / 390.0f);           // (100, −10) to (490, 0)
-  EXPECT_FLOAT_EQ(knob.conversion_slope_2, 10.0f / 390.0f);           // (510, 0) to (900, 10)
+  EXPECT_FLOAT_EQ(knob.conversion_slope_1, 10.0f / 390.0f);  // (100, −10) to (490, 0)
+  EXPECT_FLOAT_EQ(knob.conversion_slope_2, 10.0f / 390.0f);  // (510, 0) to (900, 10)
   EXPECT_FLOAT_EQ(knob.conversion_intercept_2, -510.0f * 10.0f / 390.0f);
   knob.clear_deadband();
   EXPECT_EQ(knob.adc_deadband_upper, 0);

@@ -128,7 +128,7 @@ TEST_F(EncoderTest, MaxLatchClampsWithoutBackwardDrag) {
   EXPECT_EQ(encoder.max_latch_value, 10);
 
   EXPECT_DOUBLE_EQ(turn_to(8), 8.0);
-  EXPECT_DOUBLE_EQ(turn_to(12), 2.0);  // stops at the latch: +2, not +4 then −2
+  EXPECT_DOUBLE_EQ(turn_to(12), 2.0);              // stops at the latch: +2, not +4 then −2
   EXPECT_EQ(hal::quadrature_read(ENCODER_1), 10);  // over-travel written back
   hal_manual::run_frames(1);
   EXPECT_DOUBLE_EQ(sink.last_change(), 0.0);
@@ -149,7 +149,7 @@ TEST_F(EncoderTest, MinLatchWorksInWorldUnitsWithInversion) {
   encoder.set_latch(-5.0, MIN);  // −10 counts
   EXPECT_EQ(encoder.min_latch_value, -10);
 
-  EXPECT_DOUBLE_EQ(turn_to(30), -5.0);            // logical −30 clamped to −10
+  EXPECT_DOUBLE_EQ(turn_to(30), -5.0);             // logical −30 clamped to −10
   EXPECT_EQ(hal::quadrature_read(ENCODER_1), 10);  // inverted: the hardware holds +10
   EXPECT_DOUBLE_EQ(turn_to(14), 0.0);
   EXPECT_DOUBLE_EQ(turn_to(8), 1.0);  // logical −8: two counts (1.0) above the latch

@@ -39,7 +39,8 @@ TEST_F(FramePeriodRoundTripTest, All63SignalSetsComeBackExactlyAtEveryPeriodInBo
         for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
           if (!(mask & (1u << signal))) continue;
           const bool fwd = forward & (1u << signal);
-          for (uint32_t n = 0; n < kPulsesPerSignal; ++n) port.add_signal(signal, fwd ? DIRECTION_FORWARD : DIRECTION_REVERSE);
+          for (uint32_t n = 0; n < kPulsesPerSignal; ++n)
+            port.add_signal(signal, fwd ? DIRECTION_FORWARD : DIRECTION_REVERSE);
           expected[signal] = fwd ? int32_t{kPulsesPerSignal} : -int32_t{kPulsesPerSignal};
           expected_total += expected[signal];
         }
@@ -53,8 +54,8 @@ TEST_F(FramePeriodRoundTripTest, All63SignalSetsComeBackExactlyAtEveryPeriodInBo
         for (uint8_t signal = 0; signal < kNumSignals; ++signal) ASSERT_EQ(port.pending(signal), 0);
         const Decoded stepdance = decode(lines, INPUT_MODE_STEPDANCE);
         const Decoded step_dir = decode(lines, INPUT_MODE_STEP_DIR);
-        const std::string where = std::to_string(period_us) + " µs, set " + std::to_string(mask) + ", forward " +
-                                  std::to_string(forward);
+        const std::string where =
+            std::to_string(period_us) + " µs, set " + std::to_string(mask) + ", forward " + std::to_string(forward);
         for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
           EXPECT_EQ(stepdance.net[signal], expected[signal]) << where << ", signal " << int(signal);
         }

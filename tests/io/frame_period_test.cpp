@@ -67,9 +67,9 @@ TEST_F(FramePeriodTest, AFormatLongerThanTheFrameIsRefusedAtBegin) {
     bool accepted;
   };
   const Case cases[] = {
-      {40, OUTPUT_FRAME_32US, true}, {40, OUTPUT_FRAME_4US, true},  {25, OUTPUT_FRAME_32US, false},
-      {25, OUTPUT_FRAME_16US, true}, {20, OUTPUT_FRAME_16US, true}, {20, OUTPUT_FRAME_32US, false},
-      {10, OUTPUT_FRAME_16US, false}, {10, OUTPUT_FRAME_8US, true}, {10, OUTPUT_FRAME_4US, true},
+      {40, OUTPUT_FRAME_32US, true},  {40, OUTPUT_FRAME_4US, true},  {25, OUTPUT_FRAME_32US, false},
+      {25, OUTPUT_FRAME_16US, true},  {20, OUTPUT_FRAME_16US, true}, {20, OUTPUT_FRAME_32US, false},
+      {10, OUTPUT_FRAME_16US, false}, {10, OUTPUT_FRAME_8US, true},  {10, OUTPUT_FRAME_4US, true},
   };
   for (const Case& c : cases) {
     test_support::reset_global_state();
@@ -141,7 +141,7 @@ TEST_F(FramePeriodTest, AChannelSteps100000TimesASecondInTenMicrosecondFrames) {
   ASSERT_EQ(x.begin(&a, SIGNAL_X), Status::kOk);
   ASSERT_EQ(dance_start(), Status::kOk);
   x.input_target_position.write(1e9, ABSOLUTE);  // far away: one pulse every frame
-  hal_manual::run_frames(100000);                 // one second of 10 µs frames
+  hal_manual::run_frames(100000);                // one second of 10 µs frames
   EXPECT_EQ(a.pulses_sent(SIGNAL_X, DIRECTION_FORWARD), 100000u);
   EXPECT_DOUBLE_EQ(x.current_position, 100000.0);
 }

@@ -23,9 +23,7 @@ CapturedPulse pulse_ticks(uint32_t width_ticks, bool forward, uint32_t rise_tick
 }
 
 // A pulse of the width that encodes `signal` (2 µs for X ... 7 µs for E).
-CapturedPulse signal_pulse(uint8_t signal, bool forward) {
-  return pulse_ticks((2u + signal) * kTicksPerUs, forward);
-}
+CapturedPulse signal_pulse(uint8_t signal, bool forward) { return pulse_ticks((2u + signal) * kTicksPerUs, forward); }
 
 void inject(const CapturedPulse& pulse, int times = 1) {
   for (int i = 0; i < times; ++i) ASSERT_TRUE(hal_manual::inject_pulse(INPUT_A, pulse));

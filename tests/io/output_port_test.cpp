@@ -226,7 +226,7 @@ TEST_F(OutputPortTest, TheIdleTimeoutNeverWakesADriverTheSketchDisabled) {
   ASSERT_EQ(a.enable_driver(), Status::kOk);  // the sketch's enable ends any idle state too
   hal_manual::run_frames(25);
   EXPECT_TRUE(hal_manual::pin_level(kOutputAEnablePin));  // 1 ms of quiet: idle again
-  set_drivers_idle_timeout_ms(0);  // turning the timeout off brings the driver back
+  set_drivers_idle_timeout_ms(0);                         // turning the timeout off brings the driver back
   EXPECT_FALSE(hal_manual::pin_level(kOutputAEnablePin));
 }
 

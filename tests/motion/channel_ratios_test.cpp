@@ -24,9 +24,7 @@ class Source : public Block {
 /// A stepping block that is not a Channel: a step is `mm_per_step_` of its input.
 class StepperLike : public Block {
  public:
-  explicit StepperLike(double mm_per_step) : mm_per_step_(mm_per_step) {
-    input.begin(&state_, BLOCKPORT_INPUT, this);
-  }
+  explicit StepperLike(double mm_per_step) : mm_per_step_(mm_per_step) { input.begin(&state_, BLOCKPORT_INPUT, this); }
   const char* type_name() const override { return "StepperLike"; }
   bool world_units_per_step(const BlockPort& port, double& world_units) const override {
     if (&port != &input) return false;

@@ -189,9 +189,9 @@ TEST_F(ChannelTest, InvertFlipsOnlyTheWireDirection) {
 TEST_F(ChannelTest, SoftLimitsStopAtTheLimitAndNeverLoseAStep) {
   Channel channel;
   start(channel);
-  channel.set_ratio(1, 80);            // 80 steps per mm
-  channel.set_upper_limit(0.25);       // 20 steps
-  channel.set_lower_limit(-0.125);     // −10 steps
+  channel.set_ratio(1, 80);                            // 80 steps per mm
+  channel.set_upper_limit(0.25);                       // 20 steps
+  channel.set_lower_limit(-0.125);                     // −10 steps
   channel.input_target_position.write(5.0, ABSOLUTE);  // 400 steps, far past the limit
   for (int frame = 0; frame < 100; ++frame) {
     hal_manual::run_frames(1);
@@ -223,7 +223,7 @@ TEST_F(ChannelTest, LimitsFollowALaterRatioAndCanBeDisabled) {
   Channel channel;
   start(channel);
   channel.set_upper_limit(0.25);
-  channel.set_ratio(1, 80);  // the limit becomes 20 steps
+  channel.set_ratio(1, 80);                            // the limit becomes 20 steps
   channel.input_target_position.write(1.0, ABSOLUTE);  // 80 steps
   hal_manual::run_frames(100);
   EXPECT_EQ(channel.current_position, 20.0);
@@ -258,7 +258,7 @@ TEST_F(ChannelTest, DefaultFilterUsesTwentySamplesAndSumsBothInputs) {
   channel.input_target_position.write(15.0, ABSOLUTE);
   channel.input_target_position_2.write(5.0, ABSOLUTE);
   hal_manual::run_frames(1);
-  EXPECT_DOUBLE_EQ(channel.filtered_target_position, 1.0);   // 20 / 20
+  EXPECT_DOUBLE_EQ(channel.filtered_target_position, 1.0);  // 20 / 20
   hal_manual::run_frames(1);
   EXPECT_DOUBLE_EQ(channel.filtered_target_position, 1.95);  // (19 + 20) / 20
 

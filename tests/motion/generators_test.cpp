@@ -200,13 +200,13 @@ TEST_F(GeneratorsTest, PerpendicularWaveAcrossTheDirectionOfTravel) {
   ASSERT_EQ(wave.begin(), Status::kOk);
   wave.amplitude = 2.0f;
   ASSERT_EQ(dance_start(), Status::kOk);
-  wave.input_frequency.reset(3.0);       // three half-waves per move
-  wave.input_theta.reset(kPi / 2);       // travelling along +y
-  wave.input_t.reset(1.0 / 6.0);         // θ = π·3·(1/6) = π/2: the crest
+  wave.input_frequency.reset(3.0);  // three half-waves per move
+  wave.input_theta.reset(kPi / 2);  // travelling along +y
+  wave.input_t.reset(1.0 / 6.0);    // θ = π·3·(1/6) = π/2: the crest
   hal_manual::run_frames(1);
   EXPECT_NEAR(wave.output_x.read_absolute(), -2.0, 1e-9);  // offset along −x, across the travel
   EXPECT_NEAR(wave.output_y.read_absolute(), 0.0, 1e-9);
-  wave.input_t.reset(1.0);               // the move's end: back on the line
+  wave.input_t.reset(1.0);  // the move's end: back on the line
   hal_manual::run_frames(1);
   EXPECT_NEAR(wave.output_x.read_absolute(), 0.0, 1e-9);
 }

@@ -35,12 +35,10 @@ class CoreXYMachine : public test_support::EngineFixture {
     ASSERT_EQ(dance_start(), Status::kOk);
   }
 
-  uint32_t pulses(const OutputPort& port, uint8_t direction) const {
-    return port.pulses_sent(SIGNAL_X, direction);
-  }
+  uint32_t pulses(const OutputPort& port, uint8_t direction) const { return port.pulses_sent(SIGNAL_X, direction); }
   uint32_t all_pulses() const {
-    return pulses(port_a, DIRECTION_FORWARD) + pulses(port_a, DIRECTION_REVERSE) +
-           pulses(port_b, DIRECTION_FORWARD) + pulses(port_b, DIRECTION_REVERSE);
+    return pulses(port_a, DIRECTION_FORWARD) + pulses(port_a, DIRECTION_REVERSE) + pulses(port_b, DIRECTION_FORWARD) +
+           pulses(port_b, DIRECTION_REVERSE);
   }
 
   OutputPort port_a;

@@ -42,10 +42,10 @@ TEST(SineCosine, HugeAndNonFiniteAnglesFallBackToTheLibrary) {
 
 TEST(SineCosine, KnownValues) {
   const SineCosine sixth = sine_cosine(kPi / 6);
-  EXPECT_NEAR(sixth.sine, 0.5, 3e-16);  // the angle itself is rounded to a double
+  EXPECT_NEAR(sixth.sine, 0.5, 3e-16);              // the angle itself is rounded to a double
   EXPECT_NEAR(sixth.cosine, sqrt(3.0) / 2, 3e-16);  // the angle itself is rounded to a double
   const SineCosine back = sine_cosine(-3 * (kPi / 4));
-  EXPECT_NEAR(back.sine, -sqrt(0.5), 3e-16);  // the angle itself is rounded to a double
+  EXPECT_NEAR(back.sine, -sqrt(0.5), 3e-16);    // the angle itself is rounded to a double
   EXPECT_NEAR(back.cosine, -sqrt(0.5), 3e-16);  // the angle itself is rounded to a double
 }
 

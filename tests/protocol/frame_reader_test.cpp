@@ -54,7 +54,7 @@ TEST(FrameReader, CaptureUsesClockAndWrapsCounter) {
   const CapturedPulse captured = capture_wire_pulse(pulse, clock, 65000, DirSampleEdge::kFalling);
   EXPECT_EQ(captured.rise_ticks, (65000u + 24u * 150u) & 0xFFFFu);  // 68600 - 65536 = 3064
   EXPECT_EQ(captured.rise_ticks, 3064u);
-  EXPECT_EQ(captured.fall_ticks, 4114u);                           // 65000 + 4650 - 65536
+  EXPECT_EQ(captured.fall_ticks, 4114u);  // 65000 + 4650 - 65536
   EXPECT_FALSE(captured.dir_high);
   EXPECT_TRUE(capture_wire_pulse(pulse, clock, 0, DirSampleEdge::kRising).dir_high);
   EXPECT_EQ(rounded_width_us(captured, clock), 7);

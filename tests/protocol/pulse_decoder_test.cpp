@@ -50,9 +50,8 @@ void jitter(std::vector<Interval>& runs, std::mt19937& rng, int max_ns) {
 }
 
 bool level_at(const std::vector<Interval>& runs, int64_t time_ns) {
-  return std::any_of(runs.begin(), runs.end(), [&](const Interval& run) {
-    return run.rise_ns <= time_ns && time_ns < run.fall_ns;
-  });
+  return std::any_of(runs.begin(), runs.end(),
+                     [&](const Interval& run) { return run.rise_ns <= time_ns && time_ns < run.fall_ns; });
 }
 
 // A 16-bit counter at 150 ticks/µs that read start_ticks at time 0.
@@ -71,8 +70,7 @@ SignalList expected_signals(const EncodedFrame& frame, uint8_t forward_mask) {
 
 // Sends one frame over a jittered wire and decodes what a STEPDANCE-mode input port captures;
 // any rejected pulse is a test failure.
-SignalList wire_round_trip(const EncodedFrame& frame, int64_t frame_start_ns, uint32_t start_ticks,
-                           std::mt19937& rng) {
+SignalList wire_round_trip(const EncodedFrame& frame, int64_t frame_start_ns, uint32_t start_ticks, std::mt19937& rng) {
   std::vector<Interval> step = word_to_intervals(frame.words.step_bits, frame_start_ns);
   std::vector<Interval> dir = word_to_intervals(frame.words.dir_bits, frame_start_ns);
   jitter(step, rng, 200);
@@ -237,8 +235,7 @@ CapturedPulse long_pulse(int64_t width_ns, int64_t rise_ns = 3 * kNsPerUs) {
 
 // 8 µs, 437 µs (just over one counter period), 439 µs (its wrapped rest would be 2.09 µs, an X),
 // 1 ms and 1 s.
-constexpr int64_t kLongWidthsNs[] = {8 * kNsPerUs, 437 * kNsPerUs, 439 * kNsPerUs, 1000 * kNsPerUs,
-                                     1000000 * kNsPerUs};
+constexpr int64_t kLongWidthsNs[] = {8 * kNsPerUs, 437 * kNsPerUs, 439 * kNsPerUs, 1000 * kNsPerUs, 1000000 * kNsPerUs};
 
 TEST(PulseDecoderLongPulses, CaptureKeepsTheWholeCounterPeriods) {
   // 439 µs = 65,850 ticks = one period of 65,536 + 314.

@@ -125,9 +125,8 @@ TEST_F(OledDisplayTest, NoLoopPassStartsMoreThanOneBoundedTransfer) {
 }
 
 TEST_F(OledDisplayTest, MissingDisplayIsReportedOnceAndRetriedEverySecond) {
-  hal_manual::i2c_set_responder([](const hal_manual::I2cRecord&, uint8_t*, uint16_t) {
-    return hal::I2cResult::kAddressNack;
-  });
+  hal_manual::i2c_set_responder(
+      [](const hal_manual::I2cRecord&, uint8_t*, uint16_t) { return hal::I2cResult::kAddressNack; });
   OledDisplay display;
   ASSERT_EQ(display.begin(QWIIC_1), Status::kOk);
   loop_passes(100);  // 20 ms

@@ -26,7 +26,11 @@ struct FakeTwist {
   static constexpr uint8_t kMoved = 0x01, kHeld = 0x02, kClicked = 0x04;
   std::array<uint8_t, 0x20> registers{};
   std::function<void()> after_status_read;  // the hand, between a poll and the next transfer
-  FakeTwist() { registers[0x00] = 0x5C; registers[0x02] = 1; registers[0x03] = 2; }
+  FakeTwist() {
+    registers[0x00] = 0x5C;
+    registers[0x02] = 1;
+    registers[0x03] = 2;
+  }
   void set_count(int16_t count) {
     registers[0x05] = static_cast<uint8_t>(count & 0xFF);
     registers[0x06] = static_cast<uint8_t>((count >> 8) & 0xFF);
@@ -53,9 +57,8 @@ class QwiicTwistTest : public test_support::QwiicFixture {
  protected:
   void SetUp() override {
     QwiicFixture::SetUp();
-    hal_manual::i2c_set_responder([this](const hal_manual::I2cRecord& t, uint8_t* read, uint16_t n) {
-      return fake.answer(t, read, n);
-    });
+    hal_manual::i2c_set_responder(
+        [this](const hal_manual::I2cRecord& t, uint8_t* read, uint16_t n) { return fake.answer(t, read, n); });
   }
   // Begins the knob and runs until its first poll has been read.
   void start(QwiicTwist& knob) {
@@ -98,7 +101,8 @@ std::vector<Bytes> status_writes(size_t before) {
   std::vector<Bytes> writes;
   for (size_t i = before; i < hal_manual::i2c_log().size(); ++i) {
     const auto& transfer = hal_manual::i2c_log()[i];
-    if (transfer.read_length == 0 && !transfer.written.empty() && transfer.written[0] == 0x01) writes.push_back(transfer.written);
+    if (transfer.read_length == 0 && !transfer.written.empty() && transfer.written[0] == 0x01)
+      writes.push_back(transfer.written);
   }
   return writes;
 }

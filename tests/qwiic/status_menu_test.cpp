@@ -38,7 +38,8 @@ class StatusMenuTest : public test_support::QwiicFixture {
  protected:
   void SetUp() override {
     QwiicFixture::SetUp();
-    hal_manual::i2c_set_responder([this](const hal_manual::I2cRecord& t, uint8_t* r, uint16_t n) { return bus.answer(t, r, n); });
+    hal_manual::i2c_set_responder(
+        [this](const hal_manual::I2cRecord& t, uint8_t* r, uint16_t n) { return bus.answer(t, r, n); });
     speed = 1.0f;
     changed_to = 0;
     actions_run = 0;

@@ -36,7 +36,7 @@ TEST(RecordingFormat, HeaderRoundTripsAndIsTellableFromOriginalData) {
   uint8_t bytes[kHeaderBytes];
   write_header(header, bytes);
   EXPECT_EQ(memcmp(bytes, "SDRECORD", 8), 0);
-  EXPECT_EQ(bytes[8], 1);   // version, little-endian
+  EXPECT_EQ(bytes[8], 1);    // version, little-endian
   EXPECT_EQ(bytes[10], 64);  // header length
   // 40 000 ns = 0x00009C40, little-endian.
   EXPECT_EQ(bytes[12], 0x40);

@@ -66,8 +66,8 @@ inline Decoded decode(const Lines& lines, InputMode mode) {
     any = true;
     last_fall = fall;
     // DIR at an edge: the level of the microsecond that starts there.
-    const bool dir = protocol::dir_sample_edge(mode) == protocol::DirSampleEdge::kRising ? lines.dir[rise]
-                                                                                          : lines.dir[fall];
+    const bool dir =
+        protocol::dir_sample_edge(mode) == protocol::DirSampleEdge::kRising ? lines.dir[rise] : lines.dir[fall];
     const protocol::CapturedPulse pulse = protocol::captured_from_ticks(rise * 150, fall * 150, dir, kClock);
     const protocol::DecodedPulse decoded = protocol::decode_pulse(pulse, kClock, mode, SIGNAL_X);
     if (decoded.verdict != protocol::PulseVerdict::kAccepted) {

@@ -61,8 +61,7 @@ int main(int argc, char** argv) {
   Tally tallies[kPorts];
   uint32_t printed = 0;
 
-  std::printf("Stepdance frame trace: %u frames of 40 us (%.2f s), Step-A-Sketch graph\n", frames,
-              frames * 40e-6);
+  std::printf("Stepdance frame trace: %u frames of 40 us (%.2f s), Step-A-Sketch graph\n", frames, frames * 40e-6);
   for (uint32_t frame = 0; frame < frames; ++frame) {
     drive_knobs(frame, graph);
     stepdance::engine().run_frame();
@@ -80,9 +79,8 @@ int main(int argc, char** argv) {
     const uint32_t sent_f = ports[port]->pulses_sent(stepdance::SIGNAL_E, stepdance::DIRECTION_FORWARD);
     const uint32_t sent_r = ports[port]->pulses_sent(stepdance::SIGNAL_E, stepdance::DIRECTION_REVERSE);
     const Tally& t = tallies[port];
-    std::printf("  port %c: decoded %5u forward %5u reverse, %u rejected | sent %5u forward %5u reverse\n",
-                'A' + port, t.forward[stepdance::SIGNAL_E], t.reverse[stepdance::SIGNAL_E], t.rejected, sent_f,
-                sent_r);
+    std::printf("  port %c: decoded %5u forward %5u reverse, %u rejected | sent %5u forward %5u reverse\n", 'A' + port,
+                t.forward[stepdance::SIGNAL_E], t.reverse[stepdance::SIGNAL_E], t.rejected, sent_f, sent_r);
     mismatches += (t.forward[stepdance::SIGNAL_E] != sent_f) + (t.reverse[stepdance::SIGNAL_E] != sent_r);
   }
   std::printf("Pen channel target: %.1f steps (servo µs offset)\n", graph.channel_z.target_position);

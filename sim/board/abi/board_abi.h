@@ -46,17 +46,17 @@ typedef struct StepdanceCapturedPulseV1 {
 
 /* What a board reports about itself at the end of a run (or whenever asked). */
 typedef struct StepdanceBoardStatsV1 {
-  uint32_t frames;               /* frames run since dance_start() */
-  uint32_t frame_overruns;       /* frames over their CPU budget (see docs: not modelled) */
-  uint8_t fault_reason;          /* stepdance::FaultReason, 0 = none */
-  const char* fault_name;        /* its name ("registry full", …); static */
-  uint32_t fault_count;          /* fault() calls */
-  const char* fault_detail;      /* "" if none; valid until the next call into the board */
-  uint32_t load_peak_cycles;     /* the engine's frame load (the simulator's cost model) */
-  uint32_t load_budget_cycles;   /* cycles in one frame (24,000) */
+  uint32_t frames;             /* frames run since dance_start() */
+  uint32_t frame_overruns;     /* frames over their CPU budget (see docs: not modelled) */
+  uint8_t fault_reason;        /* stepdance::FaultReason, 0 = none */
+  const char* fault_name;      /* its name ("registry full", …); static */
+  uint32_t fault_count;        /* fault() calls */
+  const char* fault_detail;    /* "" if none; valid until the next call into the board */
+  uint32_t load_peak_cycles;   /* the engine's frame load (the simulator's cost model) */
+  uint32_t load_budget_cycles; /* cycles in one frame (24,000) */
   uint64_t load_total_cycles;
   uint64_t load_frames;
-} StepdanceBoardStatsV1;         /* per-block statistics come as named counters (read_counters) */
+} StepdanceBoardStatsV1; /* per-block statistics come as named counters (read_counters) */
 
 /* One named counter of one block (Block::report_counters): the block's class name, its instance
  * among blocks of that class (registration order), the counter's name and value. Strings are

@@ -57,8 +57,8 @@ void BoardCallbacks::add_port_callbacks(StepdanceHostV1& host) {
   };
   host.port_in_begin = [](void* c, uint8_t port, int edge) {
     if (port >= SimBoard::kPorts) return no_such_pin();
-    of(c).ports_.begin_input(port, edge == STEPDANCE_DIR_AT_RISING ? protocol::DirSampleEdge::kRising
-                                                                  : protocol::DirSampleEdge::kFalling);
+    of(c).ports_.begin_input(
+        port, edge == STEPDANCE_DIR_AT_RISING ? protocol::DirSampleEdge::kRising : protocol::DirSampleEdge::kFalling);
     return ok();
   };
 }
@@ -116,8 +116,7 @@ void BoardCallbacks::add_end_callback(StepdanceHostV1& host) {
     EntryMonitor::record_sketch_end(how, status);
     EntryMonitor::escape(EscapeCause::kEnded);
     // Outside every entry point (a global destructor, say) nothing can be left: end here.
-    std::fprintf(stderr, "board '%s': the sketch ended the program outside setup() and loop()\n",
-                 of(c).name().c_str());
+    std::fprintf(stderr, "board '%s': the sketch ended the program outside setup() and loop()\n", of(c).name().c_str());
     std::_Exit(kExitSketchOutsideEntry);
   };
 }

@@ -10,9 +10,7 @@ constexpr int64_t kCaptureTicksPerUs = 150;
 // The capture counter at a time, unwrapped: ticks rounded half up (as `stepdance decode` converts
 // edges). The board's 16-bit counter is this modulo 2^16; captured_from_ticks keeps the overflow
 // count, as the Teensy backend does by counting counter reloads.
-uint64_t capture_ticks(SimTime time_ns) {
-  return static_cast<uint64_t>((time_ns * kCaptureTicksPerUs + 500) / 1000);
-}
+uint64_t capture_ticks(SimTime time_ns) { return static_cast<uint64_t>((time_ns * kCaptureTicksPerUs + 500) / 1000); }
 
 }  // namespace
 
@@ -95,9 +93,9 @@ std::optional<protocol::CapturedPulse> BoardPorts::capture(uint8_t port, const A
     return std::nullopt;
   }
   const bool at_rising = state.edge == protocol::DirSampleEdge::kRising;
-  const protocol::CapturedPulse captured = protocol::captured_from_ticks(
-      capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns), at_rising ? pulse.dir_at_rise : pulse.dir_at_fall,
-      protocol::CaptureClock{});
+  const protocol::CapturedPulse captured =
+      protocol::captured_from_ticks(capture_ticks(pulse.rise_ns), capture_ticks(pulse.fall_ns),
+                                    at_rising ? pulse.dir_at_rise : pulse.dir_at_fall, protocol::CaptureClock{});
   const InputMode mode = at_rising ? INPUT_MODE_STEP_DIR : INPUT_MODE_STEPDANCE;
   state.received.add(protocol::decode_pulse(captured, protocol::CaptureClock{}, mode, SIGNAL_X));
   return captured;

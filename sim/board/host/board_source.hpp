@@ -32,7 +32,8 @@ class BoardSource {
   /// One name per offset into the code of the library at `library_path` ("function at
   /// file:line"), "" where it cannot say. Context: loop, after a sketch stopped. This default
   /// knows none.
-  virtual std::vector<std::string> symbols(const std::string& library_path, const std::vector<uintptr_t>& offsets) const {
+  virtual std::vector<std::string> symbols(const std::string& library_path,
+                                           const std::vector<uintptr_t>& offsets) const {
     (void)library_path;
     return std::vector<std::string>(offsets.size());
   }

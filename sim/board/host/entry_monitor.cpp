@@ -12,18 +12,12 @@ EscapeRecord EntryMonitor::record_;
 
 const char* describe(SketchEntry entry) {
   switch (entry) {
-    case SketchEntry::kSetup:
-      return "setup()";
-    case SketchEntry::kLoop:
-      return "loop()";
-    case SketchEntry::kFrameTick:
-      return "the frame timer interrupt (the engine and IntervalTimer callbacks)";
-    case SketchEntry::kKhzTick:
-      return "the kilohertz timer interrupt (the engine and IntervalTimer callbacks)";
-    case SketchEntry::kCapture:
-      return "an input port's capture interrupt";
-    case SketchEntry::kFirmware:
-      return "the firmware image";
+    case SketchEntry::kSetup: return "setup()";
+    case SketchEntry::kLoop: return "loop()";
+    case SketchEntry::kFrameTick: return "the frame timer interrupt (the engine and IntervalTimer callbacks)";
+    case SketchEntry::kKhzTick: return "the kilohertz timer interrupt (the engine and IntervalTimer callbacks)";
+    case SketchEntry::kCapture: return "an input port's capture interrupt";
+    case SketchEntry::kFirmware: return "the firmware image";
   }
   return "?";
 }

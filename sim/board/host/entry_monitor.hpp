@@ -104,7 +104,9 @@ class EntryMonitor {
   static void record_sketch_end(int how, int status);
 
   /// Counts progress: simulated time moved or an entry returned. The watchdog reads it.
-  static void note_progress() { progress_.store(progress_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed); }
+  static void note_progress() {
+    progress_.store(progress_.load(std::memory_order_relaxed) + 1, std::memory_order_relaxed);
+  }
   static uint64_t progress() { return progress_.load(std::memory_order_relaxed); }
 
  private:

@@ -107,7 +107,8 @@ void SimBoard::escaped(SketchEntry entry) {
   const EscapeRecord record = EntryMonitor::take_record();
   if (record.cause == EscapeCause::kRunOver) return;  // the run ended while the sketch waited
   scheduler_.stop();
-  if (stop_listener_) stop_listener_(describe_stop(record, name(), entry, scheduler_.now(), library_.get(), options_.board_source));
+  if (stop_listener_)
+    stop_listener_(describe_stop(record, name(), entry, scheduler_.now(), library_.get(), options_.board_source));
 }
 
 void SimBoard::SetupEvent::fire(Event& event, Scheduler& scheduler) {
@@ -148,7 +149,8 @@ int SimBoard::start_timer(int timer_id, uint32_t period_us) {
       encoder_sampler_.start(first_tick + 1 + ((phase - (first_tick + 1) % period) + period) % period, period);
     }
   } else if (timer_id == STEPDANCE_TIMER_KHZ) {
-    khz_timer_.start(next_aligned(options_.khz_phase_ns.value_or(options_.frame_phase_ns + kKhzOffsetNs), period), period);
+    khz_timer_.start(next_aligned(options_.khz_phase_ns.value_or(options_.frame_phase_ns + kKhzOffsetNs), period),
+                     period);
   } else {
     return static_cast<int>(Status::kBadArgument);
   }
@@ -265,7 +267,9 @@ int32_t SimBoard::read_quadrature(uint8_t index) {
   return static_cast<int32_t>(encoder_counts_seen(index) + encoder_offsets_[index]);
 }
 
-void SimBoard::write_quadrature(uint8_t index, int32_t count) { encoder_offsets_[index] = count - encoder_counts_seen(index); }
+void SimBoard::write_quadrature(uint8_t index, int32_t count) {
+  encoder_offsets_[index] = count - encoder_counts_seen(index);
+}
 
 uint16_t SimBoard::analog_level(uint8_t pin) const {
   if (pin >= kPins || !adcs_[pin].value) return 0;
@@ -298,7 +302,8 @@ std::vector<SimBoard::BlockCounter> SimBoard::counters() const {
   std::vector<BlockCounter> out;
   const StepdanceCounterFnV1 emit = [](void* context, const char* block, uint32_t instance, const char* name,
                                        uint64_t value) {
-    static_cast<std::vector<BlockCounter>*>(context)->push_back({std::string(block) + "#" + std::to_string(instance), name, value});
+    static_cast<std::vector<BlockCounter>*>(context)->push_back(
+        {std::string(block) + "#" + std::to_string(instance), name, value});
   };
   if (firmware_) firmware_->read_counters(emit, &out);
   if (board_ != nullptr) board_->read_counters(emit, &out);
@@ -309,7 +314,8 @@ std::vector<SimBoard::BoardWarning> SimBoard::warnings() const {
   std::vector<BoardWarning> out;
   const StepdanceWarningFnV1 emit = [](void* context, const char* source, const char* reason, const char* detail,
                                        uint32_t count) {
-    static_cast<std::vector<BoardWarning>*>(context)->push_back({std::string(source) + ": " + reason, std::string(detail), count});
+    static_cast<std::vector<BoardWarning>*>(context)->push_back(
+        {std::string(source) + ": " + reason, std::string(detail), count});
   };
   if (firmware_) firmware_->read_warnings(emit, &out);
   if (board_ != nullptr) board_->read_warnings(emit, &out);
@@ -321,8 +327,8 @@ std::vector<SimBoard::BoardWarning> SimBoard::warnings() const {
 void SimBoard::add_storage_warnings(std::vector<BoardWarning>& out) const {
   if (storage_.refused_writes() != 0) {
     out.push_back({"SD card: full",
-                   "the card takes " + std::to_string(BoardStorage::kWriteLimitBytes >> 20) +
-                       " MiB written per run; " + std::to_string(storage_.refused_write_bytes()) + " bytes refused",
+                   "the card takes " + std::to_string(BoardStorage::kWriteLimitBytes >> 20) + " MiB written per run; " +
+                       std::to_string(storage_.refused_write_bytes()) + " bytes refused",
                    storage_.refused_writes()});
   }
   if (storage_.refused_opens() != 0) {

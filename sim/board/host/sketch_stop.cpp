@@ -16,51 +16,34 @@ namespace {
 
 std::string signal_text(int signal) {
   switch (signal) {
-    case SIGSEGV:
-      return "SIGSEGV (invalid memory access, or the stack overflowed)";
-    case SIGBUS:
-      return "SIGBUS (misaligned or unmapped memory access)";
-    case SIGFPE:
-      return "SIGFPE (arithmetic fault: an integer division by zero?)";
-    case SIGILL:
-      return "SIGILL (illegal instruction: a function that returns no value?)";
-    case SIGABRT:
-      return "SIGABRT (abort from the C++ runtime: an uncaught exception or failed check?)";
-    case SIGTRAP:
-      return "SIGTRAP (a trap instruction)";
-    case SIGINT:
-      return "interrupted (SIGINT)";
-    case SIGTERM:
-      return "terminated (SIGTERM)";
-    default:
-      return "signal " + std::to_string(signal);
+    case SIGSEGV: return "SIGSEGV (invalid memory access, or the stack overflowed)";
+    case SIGBUS: return "SIGBUS (misaligned or unmapped memory access)";
+    case SIGFPE: return "SIGFPE (arithmetic fault: an integer division by zero?)";
+    case SIGILL: return "SIGILL (illegal instruction: a function that returns no value?)";
+    case SIGABRT: return "SIGABRT (abort from the C++ runtime: an uncaught exception or failed check?)";
+    case SIGTRAP: return "SIGTRAP (a trap instruction)";
+    case SIGINT: return "interrupted (SIGINT)";
+    case SIGTERM: return "terminated (SIGTERM)";
+    default: return "signal " + std::to_string(signal);
   }
 }
 
 std::string end_text(int how, int status) {
   switch (how) {
-    case STEPDANCE_END_EXIT:
-      return "exit(" + std::to_string(status) + ")";
-    case STEPDANCE_END_QUICK_EXIT:
-      return "_exit(" + std::to_string(status) + ")";
-    default:
-      return "abort()";
+    case STEPDANCE_END_EXIT: return "exit(" + std::to_string(status) + ")";
+    case STEPDANCE_END_QUICK_EXIT: return "_exit(" + std::to_string(status) + ")";
+    default: return "abort()";
   }
 }
 
 std::string what_happened(const EscapeRecord& record) {
   switch (record.cause) {
-    case EscapeCause::kCrashed:
-      return signal_text(record.detail);
-    case EscapeCause::kEnded:
-      return end_text(record.end_how, record.end_status) + " called";
-    case EscapeCause::kHung:
-      return "has not returned for " + std::to_string(record.detail) + " s of wall time";
-    case EscapeCause::kInterrupted:
-      return signal_text(record.detail);
+    case EscapeCause::kCrashed: return signal_text(record.detail);
+    case EscapeCause::kEnded: return end_text(record.end_how, record.end_status) + " called";
+    case EscapeCause::kHung: return "has not returned for " + std::to_string(record.detail) + " s of wall time";
+    case EscapeCause::kInterrupted: return signal_text(record.detail);
     case EscapeCause::kRunOver:
-    case EscapeCause::kNone:
-      break;
+    case EscapeCause::kNone: break;
   }
   return "stopped";
 }
@@ -82,7 +65,8 @@ std::string library_frame_text(void* address) {
     return where;
   }
   const std::string module = std::filesystem::path(info.dli_fname).filename().string();
-  std::snprintf(where, sizeof where, "+0x%lx", static_cast<unsigned long>(pc - reinterpret_cast<uintptr_t>(info.dli_fbase)));
+  std::snprintf(where, sizeof where, "+0x%lx",
+                static_cast<unsigned long>(pc - reinterpret_cast<uintptr_t>(info.dli_fbase)));
   return (info.dli_sname != nullptr ? demangled(info.dli_sname) + " " : std::string()) + "(" + module + where + ")";
 }
 
@@ -134,7 +118,8 @@ std::vector<std::string> sketch_frames(const EscapeRecord& record, const BoardLi
     const auto pc = reinterpret_cast<uintptr_t>(record.frames[i]);
     // A return address points after its call, so one byte back is inside the call; the
     // interrupted instruction is itself.
-    if (library != nullptr && library->code().contains(pc)) offsets.push_back(pc - library->load_base() - (i == first ? 0 : 1));
+    if (library != nullptr && library->code().contains(pc))
+      offsets.push_back(pc - library->load_base() - (i == first ? 0 : 1));
   }
   std::vector<std::string> symbols(offsets.size());
   if (library != nullptr && source != nullptr) symbols = source->symbols(library->path(), offsets);

@@ -288,7 +288,8 @@ bool SketchBuilder::compile(const SketchSources& sources, const std::string& ste
 
 // "function at file:line" for each offset in the board library, from one run of addr2line; ""
 // where it cannot say.
-std::vector<std::string> SketchBuilder::symbols(const std::string& library_path, const std::vector<uintptr_t>& offsets) const {
+std::vector<std::string> SketchBuilder::symbols(const std::string& library_path,
+                                                const std::vector<uintptr_t>& offsets) const {
   std::vector<std::string> symbols(offsets.size());
   if (offsets.empty()) return symbols;
   std::vector<std::string> command{"addr2line", "-f", "-C", "-e", library_path};

@@ -38,7 +38,8 @@ class SketchBuilder : public BoardSource {
   /// board). Context: loop (runs the compiler); any thread.
   SketchBuild build(const std::string& sketch_path) const override;
   /// Names the offsets with one run of addr2line (binutils, which the compiler needs anyway).
-  std::vector<std::string> symbols(const std::string& library_path, const std::vector<uintptr_t>& offsets) const override;
+  std::vector<std::string> symbols(const std::string& library_path,
+                                   const std::vector<uintptr_t>& offsets) const override;
 
   /// $STEPDANCE_SKETCH_CACHE, else $XDG_CACHE_HOME/stepdance/sketches, else
   /// $HOME/.cache/stepdance/sketches, else the build tree's sketch-cache/.

@@ -116,8 +116,8 @@ class Lexer {
     while (pos_ < text_.size()) {
       const char c = text_[pos_];
       const char previous = text_[pos_ - 1];
-      const bool exponent_sign = (c == '+' || c == '-') && (previous == 'e' || previous == 'E' ||
-                                                             previous == 'p' || previous == 'P');
+      const bool exponent_sign =
+          (c == '+' || c == '-') && (previous == 'e' || previous == 'E' || previous == 'p' || previous == 'P');
       const bool separator = c == '\'' && pos_ + 1 < text_.size() && is_identifier_char(text_[pos_ + 1]);
       if (!(is_identifier_char(c) || c == '.' || exponent_sign || separator)) break;
       ++pos_;
@@ -154,9 +154,9 @@ class Lexer {
 // Words that may be followed by '(' without being the function's name.
 bool is_non_name_word(std::string_view word) {
   static constexpr std::string_view kWords[] = {
-      "__attribute__", "__declspec", "alignas", "decltype", "sizeof", "alignof", "noexcept", "throw",
-      "operator",      "if",         "while",   "for",      "switch", "return",  "static_assert",
-      "typeof",        "__typeof__", "_Pragma", "asm",      "__asm__", "catch"};
+      "__attribute__", "__declspec", "alignas",    "decltype", "sizeof", "alignof", "noexcept",
+      "throw",         "operator",   "if",         "while",    "for",    "switch",  "return",
+      "static_assert", "typeof",     "__typeof__", "_Pragma",  "asm",    "__asm__", "catch"};
   return std::find(std::begin(kWords), std::end(kWords), word) != std::end(kWords);
 }
 
@@ -365,8 +365,8 @@ class FileScopePass {
   }
 
   void set_insertion_point() {
-    const std::size_t first = statement_conditions_.empty() ? tokens_[statement_[0]].begin
-                                                            : statement_conditions_.front().offset;
+    const std::size_t first =
+        statement_conditions_.empty() ? tokens_[statement_[0]].begin : statement_conditions_.front().offset;
     std::size_t line_start = first;
     while (line_start > 0 && text_[line_start - 1] != '\n') --line_start;
     const bool blanks_before =
@@ -390,8 +390,6 @@ class FileScopePass {
 
 }  // namespace
 
-SketchScan scan_sketch_functions(std::string_view text) {
-  return FileScopePass(text, Lexer(text).tokens()).run();
-}
+SketchScan scan_sketch_functions(std::string_view text) { return FileScopePass(text, Lexer(text).tokens()).run(); }
 
 }  // namespace stepdance::sim

@@ -104,7 +104,8 @@ bool find_sketch_sources(const std::string& path, SketchSources& sources, std::s
     if (ide_folder && has_extension(file, {".ino"}) && file != main) sources.inos.push_back(file.string());
   }
   add_sources(beside, sources, ide_folder);
-  if (fs::is_directory(main.parent_path() / "src", ec)) add_sources(files_in(main.parent_path() / "src", true), sources, ide_folder);
+  if (fs::is_directory(main.parent_path() / "src", ec))
+    add_sources(files_in(main.parent_path() / "src", true), sources, ide_folder);
   return true;
 }
 

@@ -9,11 +9,11 @@ namespace stepdance::sim {
 
 /// The files that make up one sketch.
 struct SketchSources {
-  std::string folder;                   ///< absolute path of the sketch's folder
-  std::vector<std::string> inos;        ///< the main .ino first, then the others alphabetically
-  std::vector<std::string> cpp_files;   ///< .cpp/.cc/.cxx beside it and under src/, sorted
-  std::vector<std::string> c_files;     ///< .c beside it and under src/, sorted
-  std::vector<std::string> headers;     ///< .h/.hpp/.hh beside it and under src/, sorted (for hashing)
+  std::string folder;                  ///< absolute path of the sketch's folder
+  std::vector<std::string> inos;       ///< the main .ino first, then the others alphabetically
+  std::vector<std::string> cpp_files;  ///< .cpp/.cc/.cxx beside it and under src/, sorted
+  std::vector<std::string> c_files;    ///< .c beside it and under src/, sorted
+  std::vector<std::string> headers;    ///< .h/.hpp/.hh beside it and under src/, sorted (for hashing)
 };
 
 /// Finds the sources of the sketch at `path` (an .ino file, or a folder holding <folder>.ino).

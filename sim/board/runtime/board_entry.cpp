@@ -2,14 +2,14 @@
 #include "IntervalTimer.h"
 #include "board/abi/board_abi.h"
 #include "board/runtime/entry_guard.hpp"
-#include "stepdance/platform/sim/host_link.hpp"
-#include "stepdance/platform/sim/sim_hal.hpp"
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/counter_report.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/units.hpp"
 #include "stepdance/hal/hal.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
+#include "stepdance/platform/sim/sim_hal.hpp"
 
 // The sketch's two Arduino entry points.
 void setup();
@@ -70,8 +70,17 @@ int deliver_pulse(int64_t now, uint8_t port, const StepdanceCapturedPulseV1* pul
 }
 
 StepdanceBoardV1 board_table = {
-    STEPDANCE_BOARD_ABI_VERSION, nullptr, &run_setup, &run_frame_tick, &run_khz_tick, &run_loop, &deliver_pulse, &read_stats,
-    &read_counters, &read_warnings, &EntryGuard::escape,
+    STEPDANCE_BOARD_ABI_VERSION,
+    nullptr,
+    &run_setup,
+    &run_frame_tick,
+    &run_khz_tick,
+    &run_loop,
+    &deliver_pulse,
+    &read_stats,
+    &read_counters,
+    &read_warnings,
+    &EntryGuard::escape,
 };
 
 }  // namespace

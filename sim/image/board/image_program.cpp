@@ -82,9 +82,13 @@ void ImageProgram::power_on(SimTime time_ns) {
   chip_.power_on(time_ns);
 }
 
-void ImageProgram::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) { motion_->capture().pulse_arrived(port, pulse); }
+void ImageProgram::pulse_arrived(uint8_t port, const ArrivingPulse& pulse) {
+  motion_->capture().pulse_arrived(port, pulse);
+}
 
-bool ImageProgram::input_port_begun(uint8_t port) const { return motion_ != nullptr && port < 4 && motion_->capture().routed(port); }
+bool ImageProgram::input_port_begun(uint8_t port) const {
+  return motion_ != nullptr && port < 4 && motion_->capture().routed(port);
+}
 
 // A stop ends the run as a host-compiled sketch's crash or hang does: exit status 5 or 6.
 void ImageProgram::stopped(const ImageStop& stop) {
@@ -150,7 +154,9 @@ std::vector<std::pair<std::string, double>> ImageProgram::figures() const {
 
 // ---- the peripherals' world: the SimBoard, at the board's time (the chip's) ----------------------
 
-void ImageProgram::pin_config(SimTime, uint8_t pin, PinConfig config) { board_->set_pin_mode(pin, static_cast<int>(config)); }
+void ImageProgram::pin_config(SimTime, uint8_t pin, PinConfig config) {
+  board_->set_pin_mode(pin, static_cast<int>(config));
+}
 
 void ImageProgram::pin_drive(SimTime, uint8_t pin, bool high) { board_->write_pin(pin, high); }
 
@@ -186,7 +192,8 @@ size_t ImageProgram::serial_from_device(SimTime, const uint8_t* data, size_t len
 
 size_t ImageProgram::serial_to_device(SimTime, uint8_t* data, size_t capacity) {
   size_t taken = 0;
-  while (taken < capacity && board_->console().available() > 0) data[taken++] = static_cast<uint8_t>(board_->console().read());
+  while (taken < capacity && board_->console().available() > 0)
+    data[taken++] = static_cast<uint8_t>(board_->console().read());
   return taken;
 }
 
@@ -197,15 +204,16 @@ void ImageProgram::call_reporter(const char* symbol, const std::function<void()>
   if (chip_.stopped() || !chip_.symbols().find(symbol, function)) return;
   std::string error;
   if (!chip_.call_function(function, {ImageChip::kCalloutAddress | 1u, 0, 0, 0}, callout, error)) {
-    std::fprintf(stderr, "stepdance: image board %s: %s: %s\n", board_ != nullptr ? board_->name().c_str() : "?", symbol,
-                 error.c_str());
+    std::fprintf(stderr, "stepdance: image board %s: %s: %s\n", board_ != nullptr ? board_->name().c_str() : "?",
+                 symbol, error.c_str());
   }
 }
 
 std::string ImageProgram::image_string(uint32_t address) {
   std::string text;
   char c = 0;
-  while (text.size() < 128 && chip_.read_memory(address + static_cast<uint32_t>(text.size()), &c, 1) && c != '\0') text += c;
+  while (text.size() < 128 && chip_.read_memory(address + static_cast<uint32_t>(text.size()), &c, 1) && c != '\0')
+    text += c;
   return text;
 }
 

@@ -85,7 +85,7 @@ class ImageProgram final : public BoardFirmware, private BoardIo {
   std::unique_ptr<usb::UsbBlocks> usb_;
   std::function<void(const SketchStop&)> stop_listener_;
   SimTime powered_on_ns_ = 0;
-  bool setup_reached_ = false;         ///< the image has entered setup() (-1 in figures until then)
+  bool setup_reached_ = false;  ///< the image has entered setup() (-1 in figures until then)
   uint64_t instructions_to_setup_ = 0;
   SimTime time_to_setup_ns_ = 0;
 };

@@ -26,17 +26,13 @@ std::string BusRefusal::describe() const {
   const std::string access =
       std::string(is_write ? "write" : "read") + " of " + std::to_string(bytes) + " byte" + (bytes == 1 ? "" : "s");
   switch (kind) {
-    case Kind::kNoBlock:
-      return access + " at " + where + ": no peripheral is modelled at this address";
-    case Kind::kUnmodelled:
-      return access + " at " + where + ": this register is not modelled";
+    case Kind::kNoBlock: return access + " at " + where + ": no peripheral is modelled at this address";
+    case Kind::kUnmodelled: return access + " at " + where + ": this register is not modelled";
     case Kind::kGateOff:
       return access + " at " + where + ": its clock gate CCM_CCGR" + std::to_string(gate.ccgr) + " CG" +
              std::to_string(gate.field) + " is off (a bus error on the chip)";
-    case Kind::kBusError:
-      return access + " at " + where + ": the block answers with a bus error";
-    case Kind::kNone:
-      break;
+    case Kind::kBusError: return access + " at " + where + ": the block answers with a bus error";
+    case Kind::kNone: break;
   }
   return access + " at " + where;
 }

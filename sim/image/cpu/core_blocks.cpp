@@ -7,8 +7,14 @@ namespace stepdance::sim::image {
 // ---- SCS: ICTR 0x004 (B3.4.4: INTLINESNUM 4 = 160 lines), ACTLR 0x008 (Cortex-M7 TRM 3.3.4).
 Access ScsBlock::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
   if (bytes != 4) return Access::kUnmodelled;
-  if (offset == 0x4) { value = (kIrqCount / 32) - 1; return Access::kOk; }
-  if (offset == 0x8) { value = core_.actlr; return Access::kOk; }
+  if (offset == 0x4) {
+    value = (kIrqCount / 32) - 1;
+    return Access::kOk;
+  }
+  if (offset == 0x8) {
+    value = core_.actlr;
+    return Access::kOk;
+  }
   return Access::kUnmodelled;
 }
 
@@ -27,8 +33,14 @@ Access MpuBlock::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
     case 0x0: value = 16u << 8; return Access::kOk;
     case 0x4: value = core_.mpu_ctrl; return Access::kOk;
     case 0x8: value = core_.mpu_rnr; return Access::kOk;
-    case 0xC: case 0x14: case 0x1C: case 0x24: value = core_.mpu_rbar[region] | region; return Access::kOk;
-    case 0x10: case 0x18: case 0x20: case 0x28: value = core_.mpu_rasr[region]; return Access::kOk;
+    case 0xC:
+    case 0x14:
+    case 0x1C:
+    case 0x24: value = core_.mpu_rbar[region] | region; return Access::kOk;
+    case 0x10:
+    case 0x18:
+    case 0x20:
+    case 0x28: value = core_.mpu_rasr[region]; return Access::kOk;
     default: return Access::kUnmodelled;
   }
 }
@@ -39,11 +51,17 @@ Access MpuBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
   switch (offset) {
     case 0x4: core_.mpu_ctrl = value & 0x7; return Access::kOk;
     case 0x8: core_.mpu_rnr = value & 0xFF; return Access::kOk;
-    case 0xC: case 0x14: case 0x1C: case 0x24:
+    case 0xC:
+    case 0x14:
+    case 0x1C:
+    case 0x24:
       if (value & 0x10) core_.mpu_rnr = value & 0xF;  // VALID: the region field selects
       core_.mpu_rbar[core_.mpu_rnr & 0xF] = value & 0xFFFFFFE0;
       return Access::kOk;
-    case 0x10: case 0x18: case 0x20: case 0x28: core_.mpu_rasr[core_.mpu_rnr & 0xF] = value; return Access::kOk;
+    case 0x10:
+    case 0x18:
+    case 0x20:
+    case 0x28: core_.mpu_rasr[core_.mpu_rnr & 0xF] = value; return Access::kOk;
     default: return Access::kUnmodelled;
   }
 }
@@ -112,8 +130,14 @@ void DwtBlock::restart_count(uint32_t value) {
 
 Access DwtBlock::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
   if (bytes != 4) return Access::kUnmodelled;
-  if (offset == 0x0) { value = core_.dwt_ctrl; return Access::kOk; }
-  if (offset == 0x4) { value = cyccnt(); return Access::kOk; }
+  if (offset == 0x0) {
+    value = core_.dwt_ctrl;
+    return Access::kOk;
+  }
+  if (offset == 0x4) {
+    value = cyccnt();
+    return Access::kOk;
+  }
   return Access::kUnmodelled;
 }
 
@@ -126,16 +150,26 @@ Access DwtBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
     restart_count(now);
     return Access::kOk;
   }
-  if (offset == 0x4) { restart_count(value); return Access::kOk; }
+  if (offset == 0x4) {
+    restart_count(value);
+    return Access::kOk;
+  }
   return Access::kUnmodelled;
 }
 
 SystemBlocks::SystemBlocks(ImageChip& chip, ExceptionState& state, CoreRegisters& core)
-    : scs_(core), systick_(chip), nvic_(chip, state), scb_(chip, state, core), mpu_(core), debug_(core, dwt_),
-      extra_(chip, core), dwt_(chip, core) {}
+    : scs_(core),
+      systick_(chip),
+      nvic_(chip, state),
+      scb_(chip, state, core),
+      mpu_(core),
+      debug_(core, dwt_),
+      extra_(chip, core),
+      dwt_(chip, core) {}
 
 void SystemBlocks::add_to(PeripheralBus& bus) {
-  for (Peripheral* block : std::initializer_list<Peripheral*>{&scs_, &systick_, &nvic_, &scb_, &mpu_, &debug_, &extra_, &dwt_}) {
+  for (Peripheral* block :
+       std::initializer_list<Peripheral*>{&scs_, &systick_, &nvic_, &scb_, &mpu_, &debug_, &extra_, &dwt_}) {
     bus.add(*block);
   }
 }

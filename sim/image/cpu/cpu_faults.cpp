@@ -59,11 +59,10 @@ void ImageChip::on_interrupt(uc_struct*, uint32_t intno, void* user) {
       chip.raise_fault(ImageStop::Kind::kHardFault, "HardFault: breakpoint (BKPT) with no debugger", pc);
       break;
     case kExcpPrefetchAbort:
-    case kExcpDataAbort:
-      chip.fault(kBusFault, "BusFault: the emulator reported an abort", pc);
-      break;
+    case kExcpDataAbort: chip.fault(kBusFault, "BusFault: the emulator reported an abort", pc); break;
     default:
-      chip.raise_fault(ImageStop::Kind::kHardFault, "HardFault: exception " + std::to_string(intno) + " from the emulator", pc);
+      chip.raise_fault(ImageStop::Kind::kHardFault,
+                       "HardFault: exception " + std::to_string(intno) + " from the emulator", pc);
   }
   if (chip.stop_ != nullptr) {
     chip.we_stopped_ = true;
@@ -123,7 +122,8 @@ bool ImageChip::on_unmapped(uc_struct*, int type, uint64_t address, int size, in
   }
   chip.core_.cfsr |= (1u << 9) | (1u << 15);  // BFSR.PRECISERR, BFARVALID
   chip.core_.bfar = where;
-  const std::string access = std::string(write ? "write" : "read") + " of " + std::to_string(size) + " bytes at " + hex(where);
+  const std::string access =
+      std::string(write ? "write" : "read") + " of " + std::to_string(size) + " bytes at " + hex(where);
   chip.fault(kBusFault, "BusFault: " + access + ", where no memory is", pc);
   return false;
 }
@@ -133,7 +133,8 @@ bool ImageChip::on_unmapped(uc_struct*, int type, uint64_t address, int size, in
 // handler's entry: nothing the simulation can observe follows a fault.
 void ImageChip::fault(unsigned exception, const std::string& what, uint32_t pc) {
   const Masks none{};
-  const bool takeable = exceptions_.enabled(exception) && exceptions_.priority(exception) < exceptions_.execution_priority(none);
+  const bool takeable =
+      exceptions_.enabled(exception) && exceptions_.priority(exception) < exceptions_.execution_priority(none);
   ImageStop::Kind kind = exception == kUsageFault ? ImageStop::Kind::kUsageFault
                          : exception == kBusFault ? ImageStop::Kind::kBusFault
                                                   : ImageStop::Kind::kMemManage;

@@ -20,11 +20,11 @@ struct Memory {
 
 constexpr uint32_t kFlashBase = 0x60000000;
 constexpr Memory kRam[] = {
-    {0x00000000, 512u << 10, "ITCM"},   // FlexRAM as ITCM, at most 512 KB (IMXRT1060RM 31.3)
-    {0x20000000, 512u << 10, "DTCM"},   // FlexRAM as DTCM, at most 512 KB
-    {0x20200000, 1024u << 10, "OCRAM"}, // OCRAM2 (512 KB) + FlexRAM as OCRAM (at most 512 KB)
+    {0x00000000, 512u << 10, "ITCM"},    // FlexRAM as ITCM, at most 512 KB (IMXRT1060RM 31.3)
+    {0x20000000, 512u << 10, "DTCM"},    // FlexRAM as DTCM, at most 512 KB
+    {0x20200000, 1024u << 10, "OCRAM"},  // OCRAM2 (512 KB) + FlexRAM as OCRAM (at most 512 KB)
 };
-constexpr uint32_t kPeripheralBase = 0x40000000;  // AIPS-1..5 and the rest up to the flash
+constexpr uint32_t kPeripheralBase = 0x40000000;                         // AIPS-1..5 and the rest up to the flash
 constexpr uint32_t kSystemBase = 0xE0000000, kSystemBytes = 0x00100000;  // the PPB
 
 std::string hex(uint32_t value) {
@@ -103,7 +103,7 @@ void ImageChip::mmio_write(uc_struct*, uint64_t offset, unsigned size, uint64_t 
 // One register access from the running image, at its instruction's time. A refusal ends the run.
 void ImageChip::access(bool system, uint32_t address, unsigned size, bool is_write, uint32_t& value) {
   if (stop_ != nullptr) return;  // the run is ending: the rest of its block touches nothing
-  if (calling_) {                 // a debugger's call reads memory only (cpu_call.cpp)
+  if (calling_) {                // a debugger's call reads memory only (cpu_call.cpp)
     call_went_wrong("accessed the register at " + hex(address));
     return;
   }

@@ -82,7 +82,10 @@ void ImageChip::protection_fault(int type, uint32_t address, int size) {
     core_.cfsr |= fetch ? 1u << 0 : (1u << 1) | (1u << 7);  // MMFSR.IACCVIOL, or DACCVIOL + MMARVALID
     if (!fetch) core_.mmfar = address;
     std::snprintf(what, sizeof what, "MemManage: %s of %d bytes at 0x%08X, which the MPU forbids",
-                  fetch ? "instruction fetch" : write ? "write" : "read", size, address);
+                  fetch   ? "instruction fetch"
+                  : write ? "write"
+                          : "read",
+                  size, address);
     fault(kMemManage, what, pc);
     return;
   }

@@ -126,7 +126,7 @@ void ImageChip::on_block(uc_struct* uc, uint64_t address, uint32_t size, void* u
   if (chip.block_must_stop(block, static_cast<uint32_t>(address))) {
     chip.we_stopped_ = true;
     chip.block_stop_pc_ = static_cast<uint32_t>(address) | 1u;  // restore_stopped_block_pc()
-    uc_emu_stop(uc);  // before the block runs: the PC stays at its start
+    uc_emu_stop(uc);                                            // before the block runs: the PC stays at its start
     return;
   }
   chip.block_ = &block;

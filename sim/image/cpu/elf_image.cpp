@@ -24,7 +24,8 @@ bool fail(std::string& error, const std::string& path, const std::string& why) {
 
 bool check_header(const Elf32_Ehdr& header, const std::string& path, std::string& error) {
   if (std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0) return fail(error, path, "not an ELF file");
-  if (header.e_ident[EI_CLASS] != ELFCLASS32) return fail(error, path, "not a 32-bit ELF (a Teensy 4.x image is ELF32)");
+  if (header.e_ident[EI_CLASS] != ELFCLASS32)
+    return fail(error, path, "not a 32-bit ELF (a Teensy 4.x image is ELF32)");
   if (header.e_ident[EI_DATA] != ELFDATA2LSB) return fail(error, path, "not little-endian");
   if (header.e_machine != EM_ARM) {
     return fail(error, path, "built for machine " + std::to_string(header.e_machine) + ", not ARM (40)");
@@ -36,8 +37,8 @@ bool check_header(const Elf32_Ehdr& header, const std::string& path, std::string
   return true;
 }
 
-bool read_segments(const std::vector<uint8_t>& file, const Elf32_Ehdr& header, ElfImage& image,
-                   const std::string& path, std::string& error) {
+bool read_segments(const std::vector<uint8_t>& file, const Elf32_Ehdr& header, ElfImage& image, const std::string& path,
+                   std::string& error) {
   for (unsigned i = 0; i < header.e_phnum; ++i) {
     Elf32_Phdr segment;
     if (!read_at(file, header.e_phoff + uint64_t{i} * sizeof segment, segment)) {

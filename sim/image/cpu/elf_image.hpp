@@ -14,13 +14,13 @@ namespace stepdance::sim::image {
 struct ElfSegment {
   uint32_t physical_address = 0;
   uint32_t virtual_address = 0;
-  uint32_t memory_bytes = 0;        ///< p_memsz (the rest past `bytes` is zero)
-  std::vector<uint8_t> bytes;       ///< p_filesz bytes from the file
+  uint32_t memory_bytes = 0;   ///< p_memsz (the rest past `bytes` is zero)
+  std::vector<uint8_t> bytes;  ///< p_filesz bytes from the file
 };
 
 /// A 32-bit little-endian ARM executable. Context: the simulator's thread, once per board.
 struct ElfImage {
-  uint32_t entry = 0;               ///< e_entry (Thumb bit as linked)
+  uint32_t entry = 0;  ///< e_entry (Thumb bit as linked)
   std::vector<ElfSegment> segments;
   ElfSymbols symbols;
 

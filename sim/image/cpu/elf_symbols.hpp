@@ -15,7 +15,7 @@ class ElfSymbols {
     uint32_t address = 0;  ///< Thumb bit cleared for functions
     uint32_t size_bytes = 0;
     bool is_function = false;
-    std::string name;      ///< as in the ELF (mangled C++ names stay mangled)
+    std::string name;  ///< as in the ELF (mangled C++ names stay mangled)
   };
 
   /// Adds one symbol (the loader's job). Call sort() after the last one.

@@ -24,8 +24,8 @@ constexpr size_t kBasicWords = 8, kExtendedWords = 26;
 constexpr uint32_t kReturnHandler = 0xFFFFFFF1, kReturnThreadMsp = 0xFFFFFFF9, kReturnThreadPsp = 0xFFFFFFFD;
 constexpr uint32_t kReturnNoFp = 1u << 4;
 
-constexpr int kFrameRegisters[] = {UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2,  UC_ARM_REG_R3,
-                                   UC_ARM_REG_R12, UC_ARM_REG_LR};
+constexpr int kFrameRegisters[] = {UC_ARM_REG_R0, UC_ARM_REG_R1,  UC_ARM_REG_R2,
+                                   UC_ARM_REG_R3, UC_ARM_REG_R12, UC_ARM_REG_LR};
 
 }  // namespace
 
@@ -64,7 +64,10 @@ void ImageChip::enter_exception(unsigned number, uint32_t return_pc) {
   uint32_t sp = read_register(on_psp ? UC_ARM_REG_PSP : UC_ARM_REG_MSP);
   const size_t words = fp_frame ? kExtendedWords : kBasicWords;
   uint32_t xpsr = read_register(UC_ARM_REG_XPSR);
-  if ((sp - 4 * words) & 4) xpsr |= kXpsrAlign; else xpsr &= ~kXpsrAlign;
+  if ((sp - 4 * words) & 4)
+    xpsr |= kXpsrAlign;
+  else
+    xpsr &= ~kXpsrAlign;
   const uint32_t frame = (sp - 4 * words) & ~7u;
   std::array<uint32_t, kExtendedWords> words_out{};
   for (size_t i = 0; i < 6; ++i) words_out[i] = read_register(kFrameRegisters[i]);
@@ -98,8 +101,8 @@ void ImageChip::activate(unsigned number) {
   if (!read_memory(core_.vtor + 4 * number, &handler, 4) || (handler & ~1u) == 0) {
     core_.hfsr |= 1u << 1;  // HFSR.VECTTBL
     char what[120];
-    std::snprintf(what, sizeof what, "HardFault: no handler for exception %u in the vector table at 0x%08X",
-                  number, core_.vtor);
+    std::snprintf(what, sizeof what, "HardFault: no handler for exception %u in the vector table at 0x%08X", number,
+                  core_.vtor);
     raise_fault(ImageStop::Kind::kHardFault, what, read_register(UC_ARM_REG_PC));
     return;
   }

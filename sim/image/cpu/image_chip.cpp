@@ -25,9 +25,7 @@ bool read_code(void* context, uint32_t address, uint8_t* bytes, size_t size) {
 }  // namespace
 
 ImageChip::ImageChip(Scheduler& scheduler, TeensyModel model)
-    : scheduler_(scheduler),
-      model_(model),
-      flash_bytes_(model == TeensyModel::kTeensy41 ? 8u << 20 : 2u << 20) {
+    : scheduler_(scheduler), model_(model), flash_bytes_(model == TeensyModel::kTeensy41 ? 8u << 20 : 2u << 20) {
   // Thumb only, not UC_MODE_MCLASS: unicorn 2.0.1 forces a Cortex-M33 (single-precision FPU,
   // so every double-precision instruction is undefined) on any engine opened with MCLASS,
   // whatever model uc_ctl_set_cpu_model asks for (qemu/target/arm/cpu.c, cpu_arm_init). The M7
@@ -60,7 +58,8 @@ bool ImageChip::load(const std::string& elf_path, std::string& error) {
       return false;
     }
   }
-  for (const ElfSegment& segment : image.segments) write_memory(segment.physical_address, segment.bytes.data(), segment.bytes.size());
+  for (const ElfSegment& segment : image.segments)
+    write_memory(segment.physical_address, segment.bytes.data(), segment.bytes.size());
   image_ = std::move(image);
   loaded_ = true;
   return true;

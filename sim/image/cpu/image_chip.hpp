@@ -99,7 +99,9 @@ class ImageChip : public ChipContext {
   /// `setup`), with the instructions retired before it and the time. Costs one comparison per
   /// block per watch. Before or after power_on.
   using ReachListener = std::function<void(uint64_t instructions, SimTime time_ns)>;
-  void on_reach(uint32_t address, ReachListener listener) { watches_.push_back({address & ~1u, std::move(listener), ~uint64_t{0}}); }
+  void on_reach(uint32_t address, ReachListener listener) {
+    watches_.push_back({address & ~1u, std::move(listener), ~uint64_t{0}});
+  }
   /// The CCM model calls this when ARM_PLL or the dividers change; time from now on runs at it.
   void set_core_clock_hz(uint32_t hz);
   /// Instructions retired since power_on (core cycles less those slept in WFI/WFE).
@@ -261,43 +263,43 @@ class ImageChip : public ChipContext {
 
   // time
   uint32_t core_hz_ = kBootCoreClockHz;
-  uint64_t base_cycle_ = 0;  ///< cycle count at which the current clock began
-  SimTime base_ns_ = 0;      ///< … and its time
-  uint64_t retired_ = 0;     ///< core cycles: instructions retired (counted at each block's start) and slept
-  uint64_t block_start_ = 0; ///< retired_ before the block running now
-  uint64_t run_limit_ = 0;   ///< the run ends at the first block boundary at or past this
+  uint64_t base_cycle_ = 0;            ///< cycle count at which the current clock began
+  SimTime base_ns_ = 0;                ///< … and its time
+  uint64_t retired_ = 0;               ///< core cycles: instructions retired (counted at each block's start) and slept
+  uint64_t block_start_ = 0;           ///< retired_ before the block running now
+  uint64_t run_limit_ = 0;             ///< the run ends at the first block boundary at or past this
   const ThumbBlock* block_ = nullptr;  ///< the block running now
-  size_t access_cursor_ = 0; ///< next candidate access of block_ (note_access_position)
+  size_t access_cursor_ = 0;           ///< next candidate access of block_ (note_access_position)
   uint32_t block_address_ = 0;
   bool in_run_ = false;
-  bool in_access_ = false;     ///< inside a register access: cycles() is access_cycles_
+  bool in_access_ = false;  ///< inside a register access: cycles() is access_cycles_
   uint64_t access_cycles_ = 0;
 
   // run control
-  bool end_run_ = false;       ///< stop_cpu_run() or a clock change: back to the scheduler at the next block
-  bool recheck_ = false;       ///< something was pended or unmasked: take it at the next block
-  bool we_stopped_ = false;    ///< the last emulator return was our own uc_emu_stop
-  bool yielded_ = false;       ///< … or a YIELD hint: run on
-  uint64_t slept_ = 0;         ///< cycles spent asleep (WFI, WFE)
-  bool asleep_ = false;        ///< in WFI/WFE: no event queued until something pends
-  bool check_masks_ = false;   ///< something pending is masked: re-check at every block
+  bool end_run_ = false;      ///< stop_cpu_run() or a clock change: back to the scheduler at the next block
+  bool recheck_ = false;      ///< something was pended or unmasked: take it at the next block
+  bool we_stopped_ = false;   ///< the last emulator return was our own uc_emu_stop
+  bool yielded_ = false;      ///< … or a YIELD hint: run on
+  uint64_t slept_ = 0;        ///< cycles spent asleep (WFI, WFE)
+  bool asleep_ = false;       ///< in WFI/WFE: no event queued until something pends
+  bool check_masks_ = false;  ///< something pending is masked: re-check at every block
   bool stopped_ = false;
   bool powered_ = false;
   std::unique_ptr<ImageStop> stop_;  ///< a stop found inside a run, reported when it ends
   unsigned current_exception_ = 0;
-  uint32_t mpu_applied_ = 0;            ///< core_.mpu_generation last applied to the pages
+  uint32_t mpu_applied_ = 0;  ///< core_.mpu_generation last applied to the pages
   mutable uint32_t stack_limit_generation_ = ~0u;
-  mutable uint32_t stack_limit_ = 0;    ///< cached stack_limit() for that MPU generation
-  bool check_sp_ = false;               ///< the previous block lowered SP: check it at this one
+  mutable uint32_t stack_limit_ = 0;        ///< cached stack_limit() for that MPU generation
+  bool check_sp_ = false;                   ///< the previous block lowered SP: check it at this one
   const ThumbBlock* step_block_ = nullptr;  ///< a block with a divide to run one instruction at a time
   uint32_t step_address_ = 0;
   bool stepping_ = false;
   std::array<HandlerCost, kExceptionCount> handler_costs_{};
   uint32_t block_stop_pc_ = 0;  ///< the block (| 1) the block hook stopped the run before, or 0
-  bool calling_ = false;          ///< inside call_function
+  bool calling_ = false;        ///< inside call_function
   uint64_t call_instructions_ = 0;
-  uint32_t call_reached_ = 0;     ///< kCallReturnAddress or kCalloutAddress when the call stopped there
-  std::string call_problem_;      ///< why the call went wrong ("" if it did not)
+  uint32_t call_reached_ = 0;  ///< kCallReturnAddress or kCalloutAddress when the call stopped there
+  std::string call_problem_;   ///< why the call went wrong ("" if it did not)
 };
 
 }  // namespace stepdance::sim::image

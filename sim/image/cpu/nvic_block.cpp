@@ -33,18 +33,11 @@ Access NvicBlock::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
   const unsigned word = (offset % 0x80) / 4;
   switch (offset / 0x80 * 0x80) {
     case kIser:
-    case kIcer:
-      value = bits_of(state_, word, &ExceptionState::enabled);
-      return Access::kOk;
+    case kIcer: value = bits_of(state_, word, &ExceptionState::enabled); return Access::kOk;
     case kIspr:
-    case kIcpr:
-      value = bits_of(state_, word, &ExceptionState::pending);
-      return Access::kOk;
-    case kIabr:
-      value = bits_of(state_, word, &ExceptionState::active);
-      return Access::kOk;
-    default:
-      return Access::kUnmodelled;
+    case kIcpr: value = bits_of(state_, word, &ExceptionState::pending); return Access::kOk;
+    case kIabr: value = bits_of(state_, word, &ExceptionState::active); return Access::kOk;
+    default: return Access::kUnmodelled;
   }
 }
 

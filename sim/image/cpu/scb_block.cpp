@@ -55,8 +55,8 @@ uint32_t ScbBlock::shcsr() const {
   // Active bits: MEMFAULTACT 0, BUSFAULTACT 1, USGFAULTACT 3, SVCALLACT 7, MONITORACT 8,
   // PENDSVACT 10, SYSTICKACT 11; pended: USGFAULTPENDED 12 … SVCALLPENDED 15; enables 16-18.
   uint32_t value = 0;
-  const unsigned active_bits[][2] = {{kMemManage, 0}, {kBusFault, 1}, {kUsageFault, 3}, {kSvCall, 7},
-                                     {kDebugMonitor, 8}, {kPendSv, 10}, {kSysTick, 11}};
+  const unsigned active_bits[][2] = {{kMemManage, 0},    {kBusFault, 1}, {kUsageFault, 3}, {kSvCall, 7},
+                                     {kDebugMonitor, 8}, {kPendSv, 10},  {kSysTick, 11}};
   for (const auto& bit : active_bits) {
     if (state_.active(bit[0])) value |= 1u << bit[1];
   }
@@ -134,10 +134,13 @@ Access ScbBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
     case kIcsr: return write_icsr(value);
     case kVtor: core_.vtor = value & 0xFFFFFF80; return Access::kOk;  // TBLOFF [31:7]
     case kAircr: return write_aircr(value);
-    case kScr: core_.scr = value & 0x16; return Access::kOk;          // SLEEPONEXIT, SLEEPDEEP, SEVONPEND
+    case kScr: core_.scr = value & 0x16; return Access::kOk;                  // SLEEPONEXIT, SLEEPDEEP, SEVONPEND
     case kCcr: core_.ccr = (value & 0x0007031B) | 0x200; return Access::kOk;  // STKALIGN reads one on M7
-    case kShcsr: write_shcsr(value); chip_.pend_exception(0); return Access::kOk;
-    case kCfsr: core_.cfsr &= ~value; return Access::kOk;              // write one to clear
+    case kShcsr:
+      write_shcsr(value);
+      chip_.pend_exception(0);
+      return Access::kOk;
+    case kCfsr: core_.cfsr &= ~value; return Access::kOk;  // write one to clear
     case kHfsr: core_.hfsr &= ~value; return Access::kOk;
     case kMmfar: core_.mmfar = value; return Access::kOk;
     case kBfar: core_.bfar = value; return Access::kOk;

@@ -71,7 +71,7 @@ class SysTickBlock : public Peripheral {
   uint32_t frozen_value_ = 0;  ///< CVR while disabled
   uint64_t anchor_tick_ = 0;   ///< tick at which the counter held anchor_value_
   uint32_t anchor_value_ = 0;
-  uint64_t flag_zeros_ = 0;    ///< zeros counted when COUNTFLAG was last read
+  uint64_t flag_zeros_ = 0;  ///< zeros counted when COUNTFLAG was last read
 };
 
 /// NVIC (0xE000E100..0xE000E4EF; B3.4): ISER, ICER, ISPR, ICPR, IABR for 160 IRQs, IPR.

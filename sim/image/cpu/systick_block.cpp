@@ -105,11 +105,17 @@ Access SysTickBlock::write(uint32_t offset, uint8_t bytes, uint32_t value) {
     case kCsr: {
       const uint32_t current = enabled() ? value_at(tick_now()) : frozen_value_;
       csr_ = value & 0x7;
-      if (enabled()) anchor(current); else frozen_value_ = current;
+      if (enabled())
+        anchor(current);
+      else
+        frozen_value_ = current;
       schedule_next_zero();
       return Access::kOk;
     }
-    case kRvr: rvr_ = value & kCountMask; if (enabled()) schedule_next_zero(); return Access::kOk;
+    case kRvr:
+      rvr_ = value & kCountMask;
+      if (enabled()) schedule_next_zero();
+      return Access::kOk;
     case kCvr:  // any write clears the counter and COUNTFLAG
       frozen_value_ = 0;
       if (enabled()) anchor(0);

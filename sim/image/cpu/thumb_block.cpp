@@ -63,12 +63,12 @@ void address32(uint16_t hw1, uint16_t hw2, BlockAccess& access) {
 // 16-bit encodings (A5.2): load/store single (0101, 011x, 1000), SP-relative (1001), literal
 // (01001), PUSH/POP (1011 x10x), LDM/STM (1100).
 Class classify16(uint16_t hw) {
-  if ((hw >> 11) == 0x09) return {kPc, false};                      // LDR (literal)
+  if ((hw >> 11) == 0x09) return {kPc, false};                        // LDR (literal)
   if ((hw >> 12) == 0x5 || (hw >> 13) == 0x3 || (hw >> 12) == 0x8) {  // register / immediate forms
     return {static_cast<uint8_t>((hw >> 3) & 7), false};
   }
-  if ((hw >> 12) == 0x9) return {kSp, false};                        // STR/LDR SP-relative
-  if ((hw & 0xF600) == 0xB400) return {kSp, true};                   // PUSH, POP
+  if ((hw >> 12) == 0x9) return {kSp, false};                                 // STR/LDR SP-relative
+  if ((hw & 0xF600) == 0xB400) return {kSp, true};                            // PUSH, POP
   if ((hw >> 12) == 0xC) return {static_cast<uint8_t>((hw >> 8) & 7), true};  // STM, LDM
   return {};
 }
@@ -77,10 +77,10 @@ Class classify16(uint16_t hw) {
 // (1110 100x x1), single data items (1111 100x), coprocessor/FP loads and stores (111x 110x).
 Class classify32(uint16_t hw1) {
   const auto rn = static_cast<uint8_t>(hw1 & 0xF);
-  if ((hw1 & 0xFE40) == 0xE800) return {rn, true};        // LDM/STM (PUSH.W/POP.W use SP)
+  if ((hw1 & 0xFE40) == 0xE800) return {rn, true};  // LDM/STM (PUSH.W/POP.W use SP)
   if ((hw1 & 0xFE40) == 0xE840) return {rn, (hw1 & 0x0120) != 0 || (hw1 & 0x0080) != 0};  // LDRD/STRD, LDREX, TBB
-  if ((hw1 & 0xFE00) == 0xF800) return {rn, false};       // LDR/STR (byte, half, word)
-  if ((hw1 & 0xEE00) == 0xEC00 && (hw1 & 0xFFE0) != 0xEC40) return {rn, true};  // VLDR/VSTR/VLDM/VSTM
+  if ((hw1 & 0xFE00) == 0xF800) return {rn, false};                                       // LDR/STR (byte, half, word)
+  if ((hw1 & 0xEE00) == 0xEC00 && (hw1 & 0xFFE0) != 0xEC40) return {rn, true};            // VLDR/VSTR/VLDM/VSTM
   return {};
 }
 
@@ -115,20 +115,26 @@ ThumbBlock decode_thumb_block(uint32_t address, const uint8_t* code, size_t byte
   while (offset + 2 <= bytes) {
     const auto hw = static_cast<uint16_t>(code[offset] | code[offset + 1] << 8);
     const unsigned length = thumb_instruction_bytes(hw);
-    const auto hw2 = static_cast<uint16_t>(offset + 4 <= bytes && length == 4 ? code[offset + 2] | code[offset + 3] << 8 : 0);
+    const auto hw2 =
+        static_cast<uint16_t>(offset + 4 <= bytes && length == 4 ? code[offset + 2] | code[offset + 3] << 8 : 0);
     const Class kind = length == 2 ? classify16(hw) : classify32(hw);
     if (lowers_sp(hw, hw2, length)) block.lowers_sp = true;
-    if (length == 4 && is_divide(hw, hw2)) block.divides.push_back({static_cast<uint16_t>(offset), static_cast<uint8_t>(hw2 & 0xF)});
+    if (length == 4 && is_divide(hw, hw2))
+      block.divides.push_back({static_cast<uint16_t>(offset), static_cast<uint8_t>(hw2 & 0xF)});
     if (kind.base != kNone && kind.base != kSp && kind.base != kPc) {
       BlockAccess access;
       access.index = static_cast<uint16_t>(block.instructions);
       access.offset = static_cast<uint16_t>(offset);
       access.base = kind.base;
       access.multiple = kind.multiple;
-      if (length == 2) address16(hw, access); else address32(hw, hw2, access);
+      if (length == 2)
+        address16(hw, access);
+      else
+        address32(hw, hw2, access);
       block.accesses.push_back(access);
     }
-    if (block.instructions == 0 && offset + length == bytes) block.branches_to_itself = branches_to_itself(code, length);
+    if (block.instructions == 0 && offset + length == bytes)
+      block.branches_to_itself = branches_to_itself(code, length);
     ++block.instructions;
     offset += length;
   }

@@ -29,8 +29,8 @@ struct BlockAccess {
   uint8_t base = 0;       ///< its base register Rn
   bool multiple = false;  ///< LDM/STM/LDRD/STRD/VLDM/VSTM: more than one access
   AddressMode mode = AddressMode::kAny;
-  uint8_t rm = 0;         ///< kRegister: the index register
-  uint8_t shift = 0;      ///< kRegister: its left shift
+  uint8_t rm = 0;            ///< kRegister: the index register
+  uint8_t shift = 0;         ///< kRegister: its left shift
   int32_t displacement = 0;  ///< kOffset, kRange: added to Rn
   uint32_t span = 0;         ///< kRange: bytes
 };

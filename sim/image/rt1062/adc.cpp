@@ -9,17 +9,17 @@ namespace {
 
 // Offsets (RM §66.8): HC0..7 0x00..0x1C, HS 0x20, R0..7 0x24..0x40, CFG 0x44, GC 0x48, GS 0x4C,
 // CV 0x50, OFS 0x54, CAL 0x58.
-constexpr uint32_t kHs = 0x20, kR0 = 0x24, kR7 = 0x40, kCfg = 0x44, kGc = 0x48, kGs = 0x4C, kCv = 0x50,
-                   kOfs = 0x54, kCal = 0x58;
+constexpr uint32_t kHs = 0x20, kR0 = 0x24, kR7 = 0x40, kCfg = 0x44, kGc = 0x48, kGs = 0x4C, kCv = 0x50, kOfs = 0x54,
+                   kCal = 0x58;
 constexpr uint32_t kHcAien = 1u << 7, kHcChannelMask = 0x1Fu, kChannelOff = 0x1Fu;
 constexpr uint32_t kCfgAdhsc = 1u << 10, kCfgAdlsmp = 1u << 4, kCfgAdtrg = 1u << 13, kCfgOvwren = 1u << 16;
 constexpr uint32_t kGcAdco = 1u << 6, kGcAvge = 1u << 5, kGcAcfe = 1u << 4, kGcCal = 1u << 7;
 constexpr uint32_t kGsAdact = 1u << 0, kGsCalf = 1u << 1;
 constexpr unsigned kIrqAdc1 = 67;  // RM table 4-2 (ADC2 = 68)
 
-constexpr uint32_t kBaseConversion[4] = {17, 21, 25, 25};     // BCT by MODE (3 reserved: as 12-bit)
+constexpr uint32_t kBaseConversion[4] = {17, 21, 25, 25};          // BCT by MODE (3 reserved: as 12-bit)
 constexpr uint32_t kLongSample[8] = {3, 5, 7, 9, 13, 17, 21, 25};  // LSTAdder by ADLSMP:ADSTS
-constexpr uint32_t kFirstConversionAdder = 6;                 // SFCAdder
+constexpr uint32_t kFirstConversionAdder = 6;                      // SFCAdder
 constexpr uint32_t kResolutionMax[4] = {255, 1023, 4095, 4095};
 
 }  // namespace

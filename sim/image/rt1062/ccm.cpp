@@ -109,9 +109,7 @@ uint32_t Ccm::periph_clock_hz() const {
       case 0:  // PLL3_SW_CLK: CCSR PLL3_SW_CLK_SEL 0 = PLL3 main clock, 1 = its bypass (24 MHz)
         source = field(register_value(kCcsr), 0, 1) ? kOscillatorHz : analog_.pll_hz(Pll::kUsb1);
         break;
-      case 1:
-        source = kOscillatorHz;
-        break;
+      case 1: source = kOscillatorHz; break;
       default:  // PLL2 bypass clock: the 24 MHz reference
         source = kOscillatorHz;
         break;
@@ -119,14 +117,10 @@ uint32_t Ccm::periph_clock_hz() const {
     return source / (field(cbcdr, 27, 7) + 1u);
   }
   switch (field(cbcmr, 18, 3)) {
-    case 0:
-      return analog_.pll_hz(Pll::kSys);
-    case 1:
-      return analog_.pfd_hz(Pll::kSys, 2);
-    case 2:
-      return analog_.pfd_hz(Pll::kSys, 0);
-    default:
-      return analog_.pll_hz(Pll::kArm) / (field(register_value(kCacrr), 0, 7) + 1u);
+    case 0: return analog_.pll_hz(Pll::kSys);
+    case 1: return analog_.pfd_hz(Pll::kSys, 2);
+    case 2: return analog_.pfd_hz(Pll::kSys, 0);
+    default: return analog_.pll_hz(Pll::kArm) / (field(register_value(kCacrr), 0, 7) + 1u);
   }
 }
 
@@ -147,12 +141,8 @@ uint32_t Ccm::flexio2_clock_hz() const {
   const uint32_t cs1cdr = register_value(kCs1cdr);
   uint32_t source = 0;
   switch (field(register_value(kCscmr2), 19, 3)) {
-    case 1:
-      source = analog_.pfd_hz(Pll::kUsb1, 2);
-      break;
-    case 3:
-      source = field(register_value(kCcsr), 0, 1) ? kOscillatorHz : analog_.pll_hz(Pll::kUsb1);
-      break;
+    case 1: source = analog_.pfd_hz(Pll::kUsb1, 2); break;
+    case 3: source = field(register_value(kCcsr), 0, 1) ? kOscillatorHz : analog_.pll_hz(Pll::kUsb1); break;
     default:
       source = analog_.pll_hz(Pll::kAudio);  // not modelled as a clock: 0
       break;
@@ -172,8 +162,8 @@ void Ccm::add_rates_listener(std::function<void(const ClockRates&)> listener) {
 
 void Ccm::recompute() {
   const ClockRates now = rates();
-  const bool same = now.core_hz == last_rates_.core_hz && now.ipg_hz == last_rates_.ipg_hz &&
-                    now.perclk_hz == last_rates_.perclk_hz;
+  const bool same =
+      now.core_hz == last_rates_.core_hz && now.ipg_hz == last_rates_.ipg_hz && now.perclk_hz == last_rates_.perclk_hz;
   last_rates_ = now;
   if (same) return;
   for (const auto& listener : listeners_) listener(now);

@@ -6,15 +6,15 @@ namespace {
 
 // PLL register bits (RM §14.8.1 CCM_ANALOG_PLL_ARM, §14.8.2 PLL_USB1, §14.8.3 PLL_USB2,
 // §14.8.4 PLL_SYS, §14.8.8 PLL_AUDIO, §14.8.11 PLL_VIDEO, §14.8.14 PLL_ENET).
-constexpr uint32_t kLock = 1u << 31;              // LOCK, read only
-constexpr uint32_t kBypass = 1u << 16;            // BYPASS: output = the bypass source (24 MHz)
-constexpr uint32_t kEnable = 1u << 13;            // ENABLE: the clock output is on
-constexpr uint32_t kPowerBit12 = 1u << 12;        // POWERDOWN (ARM, SYS, AUDIO, VIDEO, ENET) or POWER (USB)
-constexpr uint32_t kArmDivSelectMask = 0x7Fu;     // PLL_ARM DIV_SELECT: Fout = 24 MHz × DIV / 2
-constexpr uint32_t kUsbDivSelect = 1u << 1;       // PLL_USB DIV_SELECT: 0 = 480 MHz, 1 = 528 MHz
-constexpr uint32_t kSysDivSelect = 1u << 0;       // PLL_SYS DIV_SELECT: 0 = 480 MHz, 1 = 528 MHz
-constexpr uint32_t kPfdFracMask = 0x3Fu;          // PFDn_FRAC, per 8-bit PFD field: Fout = PLL × 18 / FRAC
-constexpr uint32_t kPfdClockGate = 0x80u;         // PFDn_CLKGATE
+constexpr uint32_t kLock = 1u << 31;           // LOCK, read only
+constexpr uint32_t kBypass = 1u << 16;         // BYPASS: output = the bypass source (24 MHz)
+constexpr uint32_t kEnable = 1u << 13;         // ENABLE: the clock output is on
+constexpr uint32_t kPowerBit12 = 1u << 12;     // POWERDOWN (ARM, SYS, AUDIO, VIDEO, ENET) or POWER (USB)
+constexpr uint32_t kArmDivSelectMask = 0x7Fu;  // PLL_ARM DIV_SELECT: Fout = 24 MHz × DIV / 2
+constexpr uint32_t kUsbDivSelect = 1u << 1;    // PLL_USB DIV_SELECT: 0 = 480 MHz, 1 = 528 MHz
+constexpr uint32_t kSysDivSelect = 1u << 0;    // PLL_SYS DIV_SELECT: 0 = 480 MHz, 1 = 528 MHz
+constexpr uint32_t kPfdFracMask = 0x3Fu;       // PFDn_FRAC, per 8-bit PFD field: Fout = PLL × 18 / FRAC
+constexpr uint32_t kPfdClockGate = 0x80u;      // PFDn_CLKGATE
 
 // Lock times in 24 MHz reference cycles (data sheet IMXRT1060CEC §4.1 PLL tables; see header).
 constexpr uint32_t kLockCycles[7] = {2250, 383, 383, 11250, 11250, 11250, 11250};
@@ -156,15 +156,11 @@ uint32_t CcmAnalog::pll_hz(Pll pll) const {
   if (value & kBypass) return kOscillatorHz;
   if (!powered(pll, value) || !locked(pll)) return 0;
   switch (pll) {
-    case Pll::kArm:
-      return static_cast<uint32_t>(uint64_t{kOscillatorHz} * (value & kArmDivSelectMask) / 2u);
+    case Pll::kArm: return static_cast<uint32_t>(uint64_t{kOscillatorHz} * (value & kArmDivSelectMask) / 2u);
     case Pll::kUsb1:
-    case Pll::kUsb2:
-      return kOscillatorHz * ((value & kUsbDivSelect) ? 22u : 20u);
-    case Pll::kSys:
-      return kOscillatorHz * ((value & kSysDivSelect) ? 22u : 20u);
-    default:
-      return 0;
+    case Pll::kUsb2: return kOscillatorHz * ((value & kUsbDivSelect) ? 22u : 20u);
+    case Pll::kSys: return kOscillatorHz * ((value & kSysDivSelect) ? 22u : 20u);
+    default: return 0;
   }
 }
 

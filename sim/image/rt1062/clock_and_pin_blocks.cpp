@@ -8,7 +8,8 @@ namespace stepdance::sim::image::rt1062 {
 ClockAndPinBlocks::ClockAndPinBlocks(ChipContext& context, BoardIo& world, TeensyModel model)
     : ccm_analog(context),
       tempmon(Ocotp::kAna1),
-      ccm(context, ccm_analog), gpio(context, world, model, iomuxc, gpr),
+      ccm(context, ccm_analog),
+      gpio(context, world, model, iomuxc, gpr),
       gpt1(1, context, ccm),
       gpt2(2, context, ccm),
       pit(context, ccm),
@@ -32,13 +33,13 @@ bool overlaps_any(const PeripheralBus& bus, const Peripheral& block) {
 
 }  // namespace
 
-std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, ChipContext& context,
-                                                            BoardIo& world, TeensyModel model) {
+std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, ChipContext& context, BoardIo& world,
+                                                            TeensyModel model) {
   auto blocks = std::make_unique<ClockAndPinBlocks>(context, world, model);
-  std::vector<Peripheral*> all = {&blocks->ccm, &blocks->analog_window, &blocks->dcdc, &blocks->iomuxc,
-                                  &blocks->gpr, &blocks->gpt1, &blocks->gpt2, &blocks->pit,
-                                  &blocks->adc1, &blocks->adc2, &blocks->ocotp,
-                                  &blocks->snvs, &blocks->flexspi1, &blocks->flexspi2};
+  std::vector<Peripheral*> all = {&blocks->ccm,      &blocks->analog_window, &blocks->dcdc,  &blocks->iomuxc,
+                                  &blocks->gpr,      &blocks->gpt1,          &blocks->gpt2,  &blocks->pit,
+                                  &blocks->adc1,     &blocks->adc2,          &blocks->ocotp, &blocks->snvs,
+                                  &blocks->flexspi1, &blocks->flexspi2};
   for (QuadTimer& timer : blocks->quad_timers) all.push_back(&timer);
   for (unsigned n = 1; n <= 9; ++n) all.push_back(&blocks->gpio.port(n));
   for (const Peripheral* block : all) {

@@ -69,7 +69,7 @@ struct ClockAndPinBlocks {
 /// the CCM the bus's gate query. Returns them (the caller keeps them alive), or null, with the
 /// bus untouched, if any of them would overlap a block already on the bus. Call once, before
 /// the image runs, on the simulator thread.
-std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, ChipContext& context,
-                                                            BoardIo& world, TeensyModel model);
+std::unique_ptr<ClockAndPinBlocks> add_clock_and_pin_blocks(PeripheralBus& bus, ChipContext& context, BoardIo& world,
+                                                            TeensyModel model);
 
 }  // namespace stepdance::sim::image::rt1062

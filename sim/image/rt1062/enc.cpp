@@ -11,7 +11,7 @@ constexpr uint32_t kLinit = 0x18, kCtrl2 = 0x1E, kUmod = 0x20, kLmod = 0x22, kUc
 // CTRL bits: HIRQ 15, HIE 14, HIP 13, HNE 12, SWIP 11, REV 10, PH1 9, XIRQ 8, XIE 7, XIP 6, XNE 5,
 // DIRQ 4, DIE 3, WDE 2, CMPIE 1, CMPIRQ 0.
 constexpr uint16_t kSwip = 1u << 11, kRevDir = 1u << 10;
-constexpr uint16_t kIrqFlags = (1u << 15) | (1u << 8) | (1u << 4) | 1u;   // w1c
+constexpr uint16_t kIrqFlags = (1u << 15) | (1u << 8) | (1u << 4) | 1u;  // w1c
 constexpr uint16_t kRefused = (1u << 14) | (1u << 9) | (1u << 7) | (1u << 3) | (1u << 2) | (1u << 1);
 constexpr uint16_t kUpdateHolds = 1u << 0;  // CTRL2 UPDHLD; the other CTRL2 bits are refused
 
@@ -97,10 +97,22 @@ Access Enc::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
     case kCtrl: value = ctrl_; break;
     case kFilt: value = filt_; break;
     case kWtr: value = wtr_; break;
-    case kPosd: latch_holds(); value = posdh_; break;
-    case kRev: latch_holds(); value = revh_; break;
-    case kUpos: latch_holds(); value = uposh_; break;
-    case kLpos: latch_holds(); value = lposh_; break;
+    case kPosd:
+      latch_holds();
+      value = posdh_;
+      break;
+    case kRev:
+      latch_holds();
+      value = revh_;
+      break;
+    case kUpos:
+      latch_holds();
+      value = uposh_;
+      break;
+    case kLpos:
+      latch_holds();
+      value = lposh_;
+      break;
     case kPosdh: value = posdh_; break;
     case kRevh: value = revh_; break;
     case kUposh: value = uposh_; break;

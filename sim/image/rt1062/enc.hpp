@@ -57,9 +57,9 @@ class Enc final : public Peripheral {
   BoardIo& io_;
   const Xbar1& xbar_;
   bool routed_ = false;
-  int64_t held_ = 0;        // position while not routed (and the base when routing starts)
-  int64_t offset_ = 0;      // position = direction × counts + offset while routed
-  int64_t posd_base_ = 0;   // position at the last POSD clear
+  int64_t held_ = 0;       // position while not routed (and the base when routing starts)
+  int64_t offset_ = 0;     // position = direction × counts + offset while routed
+  int64_t posd_base_ = 0;  // position at the last POSD clear
   SimTime first_trigger_ns_ = -1;
   uint16_t ctrl2_ = 0;
   uint16_t ctrl_ = 0, filt_ = 0, wtr_ = 0, uinit_ = 0, linit_ = 0, umod_ = 0, lmod_ = 0;

@@ -24,7 +24,7 @@ constexpr uint32_t kTimcfg = 0x480u;     // TIMCFG0..7
 constexpr uint32_t kTimcmp = 0x500u;     // TIMCMP0..7
 
 // Writable bits (the rest are reserved: read 0, writes ignored), RM §50.5.1.
-constexpr uint32_t kCtrlBits = 0xC0000007u;      // DOZEN, DBGE, FASTACC, SWRST, FLEXEN
+constexpr uint32_t kCtrlBits = 0xC0000007u;  // DOZEN, DBGE, FASTACC, SWRST, FLEXEN
 constexpr uint32_t kCtrlFlexen = 1u << 0;
 constexpr uint32_t kCtrlSwrst = 1u << 1;
 constexpr uint32_t kFlagBits = 0xFFu;            // one bit per shifter / timer
@@ -47,9 +47,7 @@ uint32_t reverse_bits(uint32_t v) {
   for (int i = 0; i < 32; ++i) r |= ((v >> i) & 1u) << (31 - i);
   return r;
 }
-uint32_t swap_bytes(uint32_t v) {
-  return (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24);
-}
+uint32_t swap_bytes(uint32_t v) { return (v >> 24) | ((v >> 8) & 0xFF00u) | ((v << 8) & 0xFF0000u) | (v << 24); }
 uint32_t swap_nibbles_in_bytes(uint32_t v) { return ((v >> 4) & 0x0F0F0F0Fu) | ((v << 4) & 0xF0F0F0F0u); }
 uint32_t reverse_nibbles(uint32_t v) { return swap_nibbles_in_bytes(swap_bytes(v)); }
 
@@ -92,49 +90,75 @@ Access Flexio3::write(uint32_t offset, uint8_t bytes, uint32_t value) {
   if (bytes != 4) return Access::kUnmodelled;
   advance();
   const Access result = (ctrl_ & kCtrlSwrst) && offset != kCtrl ? Access::kOk  // held in reset
-                                                                 : write_register(offset, value);
+                                                                : write_register(offset, value);
   settle();
   return result;
 }
 
 Access Flexio3::read_register(uint32_t offset, uint32_t& value) {
   int n = -1;
-  if (offset == kCtrl) value = ctrl_;
-  else if (offset == kShiftstat) value = shiftstat_;
-  else if (offset == kShifterr) value = shifterr_;
-  else if (offset == kTimstat) value = timstat_;
-  else if (offset == kShiftsien) value = shiftsien_;
-  else if (offset == kShifteien) value = shifteien_;
-  else if (offset == kTimien) value = timien_;
-  else if ((n = index_in(offset, kShiftctl)) >= 0) value = shifters_[n].ctl;
-  else if ((n = index_in(offset, kShiftcfg)) >= 0) value = shifters_[n].cfg;
-  else if ((n = index_in(offset, kShiftbuf)) >= 0) value = shifters_[n].buf;
-  else if ((n = index_in(offset, kTimctl)) >= 0) value = timers_[n].ctl;
-  else if ((n = index_in(offset, kTimcfg)) >= 0) value = timers_[n].cfg;
-  else if ((n = index_in(offset, kTimcmp)) >= 0) value = timers_[n].cmp;
-  else return access_buffer_alias(offset, false, value);
+  if (offset == kCtrl)
+    value = ctrl_;
+  else if (offset == kShiftstat)
+    value = shiftstat_;
+  else if (offset == kShifterr)
+    value = shifterr_;
+  else if (offset == kTimstat)
+    value = timstat_;
+  else if (offset == kShiftsien)
+    value = shiftsien_;
+  else if (offset == kShifteien)
+    value = shifteien_;
+  else if (offset == kTimien)
+    value = timien_;
+  else if ((n = index_in(offset, kShiftctl)) >= 0)
+    value = shifters_[n].ctl;
+  else if ((n = index_in(offset, kShiftcfg)) >= 0)
+    value = shifters_[n].cfg;
+  else if ((n = index_in(offset, kShiftbuf)) >= 0)
+    value = shifters_[n].buf;
+  else if ((n = index_in(offset, kTimctl)) >= 0)
+    value = timers_[n].ctl;
+  else if ((n = index_in(offset, kTimcfg)) >= 0)
+    value = timers_[n].cfg;
+  else if ((n = index_in(offset, kTimcmp)) >= 0)
+    value = timers_[n].cmp;
+  else
+    return access_buffer_alias(offset, false, value);
   return Access::kOk;
 }
 
 Access Flexio3::write_register(uint32_t offset, uint32_t value) {
   int n = -1;
   if (offset == kCtrl) return write_ctrl(value);
-  if (offset == kShiftstat) shiftstat_ &= ~(value & kFlagBits);
-  else if (offset == kShifterr) shifterr_ &= ~(value & kFlagBits);
-  else if (offset == kTimstat) timstat_ &= ~(value & kFlagBits);
-  else if (offset == kShiftsien) shiftsien_ = value & kFlagBits;
-  else if (offset == kShifteien) shifteien_ = value & kFlagBits;
-  else if (offset == kTimien) timien_ = value & kFlagBits;
-  else if ((n = index_in(offset, kShiftctl)) >= 0) return write_shiftctl(n, value & kShiftctlBits);
+  if (offset == kShiftstat)
+    shiftstat_ &= ~(value & kFlagBits);
+  else if (offset == kShifterr)
+    shifterr_ &= ~(value & kFlagBits);
+  else if (offset == kTimstat)
+    timstat_ &= ~(value & kFlagBits);
+  else if (offset == kShiftsien)
+    shiftsien_ = value & kFlagBits;
+  else if (offset == kShifteien)
+    shifteien_ = value & kFlagBits;
+  else if (offset == kTimien)
+    timien_ = value & kFlagBits;
+  else if ((n = index_in(offset, kShiftctl)) >= 0)
+    return write_shiftctl(n, value & kShiftctlBits);
   else if ((n = index_in(offset, kShiftcfg)) >= 0) {
     // Only 1-bit shifters without start/stop bits or pin input are modelled.
     if ((value & kShiftcfgBits) != 0) return Access::kUnmodelled;
     shifters_[n].cfg = 0;
-  } else if ((n = index_in(offset, kShiftbuf)) >= 0) return write_shiftbuf(n, value);
-  else if ((n = index_in(offset, kTimctl)) >= 0) return write_timctl(n, value & kTimctlBits);
-  else if ((n = index_in(offset, kTimcfg)) >= 0) return write_timcfg(n, value & kTimcfgBits);
-  else if ((n = index_in(offset, kTimcmp)) >= 0) timers_[n].cmp = value & kTimcmpBits;
-  else return access_buffer_alias(offset, true, value);
+  } else if ((n = index_in(offset, kShiftbuf)) >= 0)
+    return write_shiftbuf(n, value);
+  else if ((n = index_in(offset, kTimctl)) >= 0)
+    return write_timctl(n, value & kTimctlBits);
+  else if ((n = index_in(offset, kTimcfg)) >= 0)
+    return write_timcfg(n, value & kTimcfgBits);
+  else if ((n = index_in(offset, kTimcmp)) >= 0)
+    timers_[n].cmp = value & kTimcmpBits;
+  else
+    return access_buffer_alias(offset, true, value);
   return Access::kOk;
 }
 
@@ -199,7 +223,7 @@ Access Flexio3::write_shiftctl(unsigned n, uint32_t value) {
   const uint32_t smod = value & 7u;
   const uint32_t pincfg = (value >> 16) & 3u;
   if (smod != 0 && smod != kSmodTransmit) return Access::kUnmodelled;  // only transmitters
-  if (value & ((1u << 23) | (1u << 7))) return Access::kUnmodelled;   // TIMPOL, PINPOL: not modelled
+  if (value & ((1u << 23) | (1u << 7))) return Access::kUnmodelled;    // TIMPOL, PINPOL: not modelled
   if (pincfg != 0 && pincfg != kPinOutput) return Access::kUnmodelled;
   if (pincfg == kPinOutput) {
     const uint8_t pin = flexio3_teensy_pin(model_, static_cast<uint8_t>((value >> 8) & 0x1Fu));

@@ -67,9 +67,9 @@ class Flexio3 final : public Peripheral {
     uint32_t cfg = 0;  // TIMCFGn
     uint32_t cmp = 0;  // TIMCMPn
     bool running = false;
-    bool output = false;     // a free runner's output level
-    int64_t next_clk = 0;    // clock of its next expiry (when running)
-    int64_t armed_clk = 0;   // trigger edges at or after this clock enable it
+    bool output = false;    // a free runner's output level
+    int64_t next_clk = 0;   // clock of its next expiry (when running)
+    int64_t armed_clk = 0;  // trigger edges at or after this clock enable it
   };
   struct Shifter {
     uint32_t ctl = 0;  // SHIFTCTLn
@@ -120,13 +120,13 @@ class Flexio3 final : public Peripheral {
   TeensyModel model_;
   Wake wake_;
   ClockDomain clock_;
-  uint32_t ctrl_ = 0;        // CTRL
-  uint32_t shiftstat_ = 0;   // SHIFTSTAT
-  uint32_t shifterr_ = 0;    // SHIFTERR
-  uint32_t timstat_ = 0;     // TIMSTAT
-  uint32_t shiftsien_ = 0;   // SHIFTSIEN
-  uint32_t shifteien_ = 0;   // SHIFTEIEN
-  uint32_t timien_ = 0;      // TIMIEN
+  uint32_t ctrl_ = 0;       // CTRL
+  uint32_t shiftstat_ = 0;  // SHIFTSTAT
+  uint32_t shifterr_ = 0;   // SHIFTERR
+  uint32_t timstat_ = 0;    // TIMSTAT
+  uint32_t shiftsien_ = 0;  // SHIFTSIEN
+  uint32_t shifteien_ = 0;  // SHIFTEIEN
+  uint32_t timien_ = 0;     // TIMIEN
   Timer timers_[kTimers];
   Shifter shifters_[kShifters];
   bool irq_high_ = false;

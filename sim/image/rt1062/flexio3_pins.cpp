@@ -11,11 +11,11 @@ namespace {
 /// 22 = AD_B1_08, 23 = AD_B1_09, 20 = AD_B1_10, 21 = AD_B1_11, 26 = AD_B1_14, 27 = AD_B1_15,
 /// 8 = B1_00, 7 = B1_01.
 constexpr uint8_t kN = kNoFlexioRoute;
-constexpr uint8_t kCommon[32] = {19, 18, 14, 15, kN, kN, 17, 16, 22, 23, 20, 21, kN, kN, 26, 27,  // 0-15
+constexpr uint8_t kCommon[32] = {19, 18, 14, 15, kN, kN, 17, 16, 22, 23, 20, 21, kN, kN, 26, 27,   // 0-15
                                  8,  7,  kN, kN, kN, kN, kN, kN, kN, kN, kN, kN, kN, kN, kN, kN};  // 16-31
 /// Teensy 4.1 only: 40 = AD_B1_04, 41 = AD_B1_05, 38 = AD_B1_12, 39 = AD_B1_13, 36 = B1_02,
 /// 37 = B1_03, 35 = B1_12, 34 = B1_13 (the 4.0's pins 34..39 are SD pads without FlexIO3).
-constexpr uint8_t kTeensy41Only[32] = {kN, kN, kN, kN, 40, 41, kN, kN, kN, kN, kN, kN, 38, 39, kN, kN,  // 0-15
+constexpr uint8_t kTeensy41Only[32] = {kN, kN, kN, kN, 40, 41, kN, kN, kN, kN, kN, kN, 38, 39, kN, kN,   // 0-15
                                        kN, kN, 36, 37, kN, kN, kN, kN, kN, kN, kN, kN, 35, 34, kN, kN};  // 16-31
 
 }  // namespace

@@ -133,7 +133,7 @@ Access FlexPwm::write_captctrl(unsigned sm, unsigned index, uint16_t value) {
   if (value & 0x00C0u) return Access::kUnmodelled;
   const bool arming = (value & 1u) && !(channel.ctrl & 1u);
   channel.ctrl = static_cast<uint16_t>(value & 0x033Fu);  // ARM, ONESHOT, EDGx0, EDGx1, CFxWM
-  if (arming) channel.next = 0;  // circuit 0 is armed first
+  if (arming) channel.next = 0;                           // circuit 0 is armed first
   return Access::kOk;
 }
 

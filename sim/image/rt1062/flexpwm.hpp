@@ -59,11 +59,11 @@ class FlexPwm final : public Peripheral {
     uint64_t reloads_before = 0;  // reloads counted by earlier timebases
   };
   struct Channel {
-    uint16_t ctrl = 0;         // CAPTCTRLx without the FIFO counts
-    uint16_t value[2] = {};    // CVAL (circuit 0, 1)
-    uint16_t cycle[2] = {};    // CVALnCYC
-    bool full[2] = {};         // one-word FIFO
-    uint8_t next = 0;          // the circuit armed next in free-running mode
+    uint16_t ctrl = 0;       // CAPTCTRLx without the FIFO counts
+    uint16_t value[2] = {};  // CVAL (circuit 0, 1)
+    uint16_t cycle[2] = {};  // CVALnCYC
+    bool full[2] = {};       // one-word FIFO
+    uint8_t next = 0;        // the circuit armed next in free-running mode
   };
   struct Submodule {
     uint16_t regs[0x30] = {};  // storage by offset / 2
@@ -71,11 +71,11 @@ class FlexPwm final : public Peripheral {
     Timebase base;
     bool load_pending = false;  // LDOK set while running: load at this reload
     SimTime load_at_ns = 0;
-    uint16_t held_count = 0;    // CNT while stopped
-    uint16_t sts = 0;           // capture flags (RF and CMPF are evaluated from time)
-    uint64_t rf_cleared_at = 0;  // reload count when RF was last cleared
+    uint16_t held_count = 0;                                 // CNT while stopped
+    uint16_t sts = 0;                                        // capture flags (RF and CMPF are evaluated from time)
+    uint64_t rf_cleared_at = 0;                              // reload count when RF was last cleared
     int64_t cmp_cleared_tick[6] = {-1, -1, -1, -1, -1, -1};  // tick of the last CMPFn clear
-    Channel channel[3];          // A, B, X
+    Channel channel[3];                                      // A, B, X
   };
   struct Wake : Event {
     Wake() : Event(&fire) {}

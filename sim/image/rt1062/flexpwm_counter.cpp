@@ -11,7 +11,7 @@ namespace {
 
 constexpr uint32_t kInit = 0x02u, kCtrl2 = 0x04u, kCtrl = 0x06u, kVal1 = 0x0Eu, kInten = 0x26u;
 constexpr uint32_t kValOffsets[6] = {0x0Au, 0x0Eu, 0x12u, 0x16u, 0x1Au, 0x1Eu};  // VAL0..VAL5
-constexpr uint16_t kRf = 1u << 12;    // STS RF / INTEN RIE
+constexpr uint16_t kRf = 1u << 12;                                               // STS RF / INTEN RIE
 constexpr uint16_t kMctrlIndex = (0x188u - 0x180u) / 2;
 // STS capture flags of circuits 0/1 per channel A, B, X (RM §55.8 SMnSTS).
 constexpr uint16_t kCaptureFlag[3][2] = {{1u << 10, 1u << 11}, {1u << 8, 1u << 9}, {1u << 6, 1u << 7}};

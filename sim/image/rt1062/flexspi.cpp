@@ -26,7 +26,7 @@ Access FlexSpi::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
   const uint32_t word = offset & ~3u;
   if (word >= 0x300u) return Access::kUnmodelled;
   uint32_t result = regs_[word / 4u];
-  if (word == kSts0) result = 0x3u;                            // SEQIDLE | ARBIDLE
+  if (word == kSts0) result = 0x3u;                           // SEQIDLE | ARBIDLE
   if (word >= kRfdr0 && word < kTfdr0) result = 0xFFFFFFFFu;  // nothing answers: pull-ups
   value = lane_read(result, offset, bytes);
   return Access::kOk;
@@ -41,7 +41,7 @@ Access FlexSpi::write(uint32_t offset, uint8_t bytes, uint32_t value) {
     return Access::kOk;
   }
   if (word == kIpcmd && (lane_merge(0u, offset, bytes, value) & 1u)) {
-    if (number_ == 1) return Access::kUnmodelled;  // flash IP commands are not modelled
+    if (number_ == 1) return Access::kUnmodelled;            // flash IP commands are not modelled
     const bool reads = (regs_[kIpcr1 / 4u] & 0xFFFFu) != 0;  // IDATSZ: data to transfer
     regs_[kIntr / 4u] |= kIntrIpCmdDone | (reads ? kIntrIpRxWatermark : 0u);
     return Access::kOk;

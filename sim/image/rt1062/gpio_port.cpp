@@ -13,7 +13,7 @@ constexpr uint32_t kDr = 0x00, kGdir = 0x04, kPsr = 0x08, kIcr1 = 0x0C, kIcr2 = 
 // Bases (RM table 2-2) and gates (RM §14.7.21–24: GPIO1 CCGR1 CG13, GPIO2 CCGR0 CG15, GPIO3 CCGR2
 // CG13, GPIO4 CCGR3 CG6, GPIO5 CCGR1 CG15). The fast GPIO6..9 sit on the CM7's AHB and have no
 // CCGR gate of their own (none is listed for them in §14.7).
-constexpr uint32_t kBases[10] = {0,          0x401B8000u, 0x401BC000u, 0x401C0000u, 0x401C4000u,
+constexpr uint32_t kBases[10] = {0,           0x401B8000u, 0x401BC000u, 0x401C0000u, 0x401C4000u,
                                  0x400C0000u, 0x42000000u, 0x42004000u, 0x42008000u, 0x4200C000u};
 constexpr ClockGate kGates[10] = {{}, {1, 13}, {0, 15}, {2, 13}, {3, 6}, {1, 15}, {}, {}, {}, {}};
 
@@ -91,8 +91,10 @@ uint32_t GpioPort::detect(uint32_t before, uint32_t after) const {
     const uint32_t mask = 1u << bit;
     if (edge_sel_ & mask) continue;
     const uint32_t icr = ((bit < 16 ? icr1_ >> (2u * bit) : icr2_ >> (2u * (bit - 16u)))) & 3u;
-    const bool hit = icr == 0 ? !(after & mask) : icr == 1 ? (after & mask) != 0 : icr == 2 ? (rose & mask) != 0
-                                                                                            : (fell & mask) != 0;
+    const bool hit = icr == 0   ? !(after & mask)
+                     : icr == 1 ? (after & mask) != 0
+                     : icr == 2 ? (rose & mask) != 0
+                                : (fell & mask) != 0;
     if (hit) flagged |= mask;
   }
   return flagged;

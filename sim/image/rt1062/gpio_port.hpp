@@ -44,7 +44,7 @@ class GpioPort : public Peripheral {
   void sample(uint32_t levels);
 
  private:
-  static constexpr const char* kNames[10] = {"", "GPIO1", "GPIO2", "GPIO3", "GPIO4",
+  static constexpr const char* kNames[10] = {"",      "GPIO1", "GPIO2", "GPIO3", "GPIO4",
                                              "GPIO5", "GPIO6", "GPIO7", "GPIO8", "GPIO9"};
   uint32_t detect(uint32_t before, uint32_t after) const;
   bool write_word(uint32_t word, uint32_t value);

@@ -6,8 +6,8 @@
 namespace stepdance::sim::image::rt1062 {
 namespace {
 
-constexpr uint32_t kMuxMask = 0x1Fu;      // MUX_MODE 3:0, SION 4 (RM §11.7.1 ff.)
-constexpr uint32_t kPadMask = 0x1F8F9u;   // SRE 0, DSE 5:3, SPEED 7:6, ODE 11, PKE 12, PUE 13, PUS 15:14, HYS 16
+constexpr uint32_t kMuxMask = 0x1Fu;     // MUX_MODE 3:0, SION 4 (RM §11.7.1 ff.)
+constexpr uint32_t kPadMask = 0x1F8F9u;  // SRE 0, DSE 5:3, SPEED 7:6, ODE 11, PKE 12, PUE 13, PUS 15:14, HYS 16
 constexpr uint32_t kFirstCtl = kFirstMuxOffset + kPadCtlFromMux;  // 0x204
 constexpr uint32_t kFirstSelect = 0x3F4u, kLastSelect = 0x78Cu;
 

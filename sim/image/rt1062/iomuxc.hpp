@@ -14,8 +14,8 @@ namespace stepdance::sim::image::rt1062 {
 
 /// The IOMUXC at 0x401F8000. Pad registers hold their fields (reserved bits read 0); the daisy
 /// selects (offsets 0x3F4..0x78C) are stored for the models that route inputs. Offsets
-/// 0x000..0x010 (reserved in RM §11.7's map) and past 0x78C are unmodelled. Always clocked (IOMUXC has no gate the firmware turns off:
-/// CCGR4 CG1 "iomuxc" is on at reset and Teensyduino never clears it; not enforced).
+/// 0x000..0x010 (reserved in RM §11.7's map) and past 0x78C are unmodelled. Always clocked (IOMUXC has no gate the
+/// firmware turns off: CCGR4 CG1 "iomuxc" is on at reset and Teensyduino never clears it; not enforced).
 class Iomuxc : public Peripheral {
  public:
   static constexpr uint32_t kBase = 0x401F8000u;  // RM table 2-2

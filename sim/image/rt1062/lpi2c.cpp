@@ -53,8 +53,8 @@ uint32_t Lpi2c::msr() const {
   for (const auto& byte : rx_) rx_count += byte.first <= now ? 1u : 0u;
   if (rx_count > kFifoWords) rx_count = kFifoWords;
   uint32_t value = flags_;
-  if (tx_.size() <= (mfcr_ & 3u)) value |= 1u << 0;          // TDF: TXCOUNT ≤ TXWATER
-  if (rx_count > ((mfcr_ >> 16) & 3u)) value |= 1u << 1;     // RDF: RXCOUNT > RXWATER
+  if (tx_.size() <= (mfcr_ & 3u)) value |= 1u << 0;       // TDF: TXCOUNT ≤ TXWATER
+  if (rx_count > ((mfcr_ >> 16) & 3u)) value |= 1u << 1;  // RDF: RXCOUNT > RXWATER
   if (bus_busy_) value |= kMbf | kBbf;
   return value;
 }
@@ -66,8 +66,12 @@ Access Lpi2c::read(uint32_t offset, uint8_t bytes, uint32_t& value) {
   switch (offset) {
     case kMcr: value = mcr_; break;
     case kMsr: value = msr(); break;
-    case kMier: case kMder: value = 0; break;
-    case kMcfgr0: case kMcfgr1: case kMcfgr2: case kMcfgr3: value = mcfgr_[(offset - kMcfgr0) / 4]; break;
+    case kMier:
+    case kMder: value = 0; break;
+    case kMcfgr0:
+    case kMcfgr1:
+    case kMcfgr2:
+    case kMcfgr3: value = mcfgr_[(offset - kMcfgr0) / 4]; break;
     case kMdmr: value = mdmr_; break;
     case kMccr0: value = mccr0_; break;
     case kMccr1: value = mccr1_; break;
@@ -102,7 +106,9 @@ Access Lpi2c::write(uint32_t offset, uint8_t bytes, uint32_t value) {
       flags_ &= ~(value & kMsrW1c);
       if (value & kNdf) halted_ = false;  // the master goes on once NDF is cleared
       break;
-    case kMier: case kMder: case kMcfgr0:
+    case kMier:
+    case kMder:
+    case kMcfgr0:
       if (value != 0) return Access::kUnmodelled;  // interrupts, DMA, host request, …
       break;
     case kMcfgr1:

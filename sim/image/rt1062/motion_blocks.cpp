@@ -33,11 +33,10 @@ bool overlaps(const PeripheralBus& bus, const Peripheral& block) {
 
 }  // namespace
 
-std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io,
-                                                TeensyModel model) {
+std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io, TeensyModel model) {
   auto blocks = std::make_unique<MotionBlocks>(bus, chip, io, model);
-  std::vector<Peripheral*> all = {&blocks->flexio3(), &blocks->xbar1(), &blocks->enc(0), &blocks->enc(1),
-                                  &blocks->lpi2c(0), &blocks->lpi2c(1)};
+  std::vector<Peripheral*> all = {&blocks->flexio3(), &blocks->xbar1(),  &blocks->enc(0),
+                                  &blocks->enc(1),    &blocks->lpi2c(0), &blocks->lpi2c(1)};
   for (unsigned index = 0; index < 4; ++index) all.push_back(&blocks->flexpwm(index));
   for (const Peripheral* block : all) {
     if (overlaps(bus, *block)) return nullptr;

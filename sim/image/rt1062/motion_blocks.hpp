@@ -46,7 +46,6 @@ class MotionBlocks {
 /// Returns their owner, whose capture() takes the input ports' pulses; null, with nothing added,
 /// if a block's window overlaps one already on the bus.
 /// Context: board construction, before the image runs.
-std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io,
-                                                TeensyModel model);
+std::unique_ptr<MotionBlocks> add_motion_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& io, TeensyModel model);
 
 }  // namespace stepdance::sim::image

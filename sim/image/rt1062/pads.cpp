@@ -14,8 +14,8 @@ struct Bank {
   int count;
 };
 // In IOMUXC register order (RM §11.7).
-constexpr Bank kBanks[] = {{"EMC", 0, 42},   {"AD_B0", 42, 16}, {"AD_B1", 58, 16}, {"B0", 74, 16},
-                           {"B1", 90, 16},   {"SD_B0", 106, 6}, {"SD_B1", 112, 12}};
+constexpr Bank kBanks[] = {{"EMC", 0, 42}, {"AD_B0", 42, 16}, {"AD_B1", 58, 16}, {"B0", 74, 16},
+                           {"B1", 90, 16}, {"SD_B0", 106, 6}, {"SD_B1", 112, 12}};
 
 const Bank& bank_of(int pad) {
   for (const Bank& bank : kBanks) {
@@ -43,20 +43,13 @@ GpioBit pad_gpio(int pad) {
   const int n = pad - bank.first_pad;
   const auto bit = [](int value) { return static_cast<uint8_t>(value); };
   switch (bank.first_pad) {
-    case 0:
-      return n < 32 ? GpioBit{4, bit(n)} : GpioBit{3, bit(n - 32 + 18)};
-    case 42:
-      return {1, bit(n)};
-    case 58:
-      return {1, bit(16 + n)};
-    case 74:
-      return {2, bit(n)};
-    case 90:
-      return {2, bit(16 + n)};
-    case 106:
-      return {3, bit(12 + n)};
-    default:
-      return {3, bit(n)};
+    case 0: return n < 32 ? GpioBit{4, bit(n)} : GpioBit{3, bit(n - 32 + 18)};
+    case 42: return {1, bit(n)};
+    case 58: return {1, bit(16 + n)};
+    case 74: return {2, bit(n)};
+    case 90: return {2, bit(16 + n)};
+    case 106: return {3, bit(12 + n)};
+    default: return {3, bit(n)};
   }
 }
 

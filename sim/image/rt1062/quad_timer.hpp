@@ -28,7 +28,7 @@ class QuadTimer : public Peripheral {
 
  private:
   static constexpr const char* kNames[5] = {"", "TMR1", "TMR2", "TMR3", "TMR4"};
-  static constexpr uint32_t kSize = 0x80u;  // 4 channels × 0x20
+  static constexpr uint32_t kSize = 0x80u;                                                  // 4 channels × 0x20
   bool counting(unsigned channel) const { return (half_[channel * 16u + 6u] >> 13) != 0; }  // CTRL.CM
   bool readable(uint32_t half_index) const;
   bool writable(uint32_t half_index, uint16_t value) const;

@@ -33,14 +33,10 @@ enum class Alias : uint8_t { kWrite = 0, kSet = 1, kClear = 2, kToggle = 3 };
 /// The new value of a register after a 32-bit write of `value` through `alias`.
 constexpr uint32_t apply_alias(uint32_t old_value, Alias alias, uint32_t value) {
   switch (alias) {
-    case Alias::kSet:
-      return old_value | value;
-    case Alias::kClear:
-      return old_value & ~value;
-    case Alias::kToggle:
-      return old_value ^ value;
-    case Alias::kWrite:
-      break;
+    case Alias::kSet: return old_value | value;
+    case Alias::kClear: return old_value & ~value;
+    case Alias::kToggle: return old_value ^ value;
+    case Alias::kWrite: break;
   }
   return value;
 }

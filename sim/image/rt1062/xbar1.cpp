@@ -4,8 +4,8 @@
 namespace stepdance::sim::image {
 namespace {
 
-constexpr uint32_t kSelLast = 0x82u;   // SEL65
-constexpr uint32_t kCtrl0 = 0x84u;     // CTRL0, CTRL1 at 0x86
+constexpr uint32_t kSelLast = 0x82u;        // SEL65
+constexpr uint32_t kCtrl0 = 0x84u;          // CTRL0, CTRL1 at 0x86
 constexpr uint16_t kCtrlEnables = 0x0303u;  // DENn (DMA) and IENn (interrupt) of both outputs
 constexpr uint16_t kCtrlFlags = 0x1010u;    // STSn, write 1 to clear
 

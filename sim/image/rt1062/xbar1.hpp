@@ -1,6 +1,7 @@
 // XBARA1: the crossbar that routes pads (IOMUX_XBAR_INOUTnn) to peripheral inputs such as the
-// ENC phase inputs, and peripherals' trigger pulses (PIT_TRIGGERn) to others (ENC TRIGGER). RM chapter 61 (XBAR), registers §61.4; input and output numbers from RM
-// chapter 4 (XBAR1 input and output assignments), as regs_xbar.hpp cites them.
+// ENC phase inputs, and peripherals' trigger pulses (PIT_TRIGGERn) to others (ENC TRIGGER). RM chapter 61 (XBAR),
+// registers §61.4; input and output numbers from RM chapter 4 (XBAR1 input and output assignments), as regs_xbar.hpp
+// cites them.
 #pragma once
 
 #include <cstdint>

@@ -18,9 +18,9 @@ constexpr uint32_t queue_bit(unsigned queue) { return 1u << ((queue / 2) + ((que
 
 /// What a packet did to the active transfer descriptor.
 struct PacketResult {
-  size_t bytes = 0;       ///< bytes moved
-  bool retired = false;   ///< the dTD is done (written back to memory)
-  bool interrupt = false; ///< it was retired with IOC set
+  size_t bytes = 0;          ///< bytes moved
+  bool retired = false;      ///< the dTD is done (written back to memory)
+  bool interrupt = false;    ///< it was retired with IOC set
   bool next_primed = false;  ///< the dTD's successor was loaded: the endpoint stays primed
 };
 

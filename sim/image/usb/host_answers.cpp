@@ -22,8 +22,11 @@ bool UsbHost::handle_answer(const ControlTransfer& t) {
         return false;
       }
       max_packet0_ = bytes[7];
-      if (max_packet0_ != 64 && (record_.speed == BusSpeed::kHigh || (max_packet0_ != 8 && max_packet0_ != 16 && max_packet0_ != 32))) {
-        std::snprintf(text, sizeof text, "bMaxPacketSize0 is %u (USB 2.0 §5.5.3: 64 at high speed; 8, 16, 32 or 64 at full speed)", max_packet0_);
+      if (max_packet0_ != 64 &&
+          (record_.speed == BusSpeed::kHigh || (max_packet0_ != 8 && max_packet0_ != 16 && max_packet0_ != 32))) {
+        std::snprintf(text, sizeof text,
+                      "bMaxPacketSize0 is %u (USB 2.0 §5.5.3: 64 at high speed; 8, 16, 32 or 64 at full speed)",
+                      max_packet0_);
         fail(text);
         return false;
       }
@@ -47,8 +50,7 @@ bool UsbHost::handle_answer(const ControlTransfer& t) {
       }
       record_.cdc.total_length = static_cast<uint16_t>(bytes[2] | (bytes[3] << 8));
       return true;
-    default:
-      break;
+    default: break;
   }
   return handle_late_answer(t);
 }

@@ -13,12 +13,23 @@ namespace {
 constexpr uint8_t kDeviceToHost = 0x80, kClassInterface = 0x21;
 constexpr uint8_t kGetDescriptor = 6, kSetAddress = 5, kSetConfiguration = 9;
 constexpr uint8_t kSetLineCoding = 0x20, kSetControlLineState = 0x22;
-constexpr SimTime kDataStageNs = 500 * kMillisecond;   // §9.2.6.4: IN data within 500 ms
+constexpr SimTime kDataStageNs = 500 * kMillisecond;      // §9.2.6.4: IN data within 500 ms
 constexpr SimTime kOutDataStageNs = 5000 * kMillisecond;  // §9.2.6.4: whole OUT request within 5 s
-constexpr SimTime kStatusStageNs = 50 * kMillisecond;  // §9.2.6.4: status within 50 ms
+constexpr SimTime kStatusStageNs = 50 * kMillisecond;     // §9.2.6.4: status within 50 ms
 enum Step : int {
-  kDevice8, kAddress, kDevice, kConfigHead, kConfigAll, kLanguages, kManufacturer, kProduct, kSerial,
-  kConfigure, kLineCoding, kLineState, kSteps
+  kDevice8,
+  kAddress,
+  kDevice,
+  kConfigHead,
+  kConfigAll,
+  kLanguages,
+  kManufacturer,
+  kProduct,
+  kSerial,
+  kConfigure,
+  kLineCoding,
+  kLineState,
+  kSteps
 };
 
 uint16_t request_length(const uint8_t request[8]) { return static_cast<uint16_t>(request[6] | (request[7] << 8)); }
@@ -30,9 +41,14 @@ void UsbHost::queue_request(const char* name, uint8_t type, uint8_t request, uin
                             uint16_t length, const std::vector<uint8_t>& out) {
   control_ = ControlTransfer{};
   control_.name = name;
-  const uint8_t bytes[8] = {type, request, static_cast<uint8_t>(value), static_cast<uint8_t>(value >> 8),
-                            static_cast<uint8_t>(index), static_cast<uint8_t>(index >> 8),
-                            static_cast<uint8_t>(length), static_cast<uint8_t>(length >> 8)};
+  const uint8_t bytes[8] = {type,
+                            request,
+                            static_cast<uint8_t>(value),
+                            static_cast<uint8_t>(value >> 8),
+                            static_cast<uint8_t>(index),
+                            static_cast<uint8_t>(index >> 8),
+                            static_cast<uint8_t>(length),
+                            static_cast<uint8_t>(length >> 8)};
   for (int i = 0; i < 8; ++i) control_.request[i] = bytes[i];
   control_.data = out;
   control_.deadline_ns = chip_.now_ns() + kStatusStageNs;
@@ -44,18 +60,25 @@ void UsbHost::begin_next_request() {
   while (step_ < kSteps) {
     const uint16_t string_type = 3 << 8;
     switch (step_) {
-      case kDevice8: return queue_request("GET_DESCRIPTOR(device) at address 0", kDeviceToHost, kGetDescriptor, 0x0100, 0, 64);
+      case kDevice8:
+        return queue_request("GET_DESCRIPTOR(device) at address 0", kDeviceToHost, kGetDescriptor, 0x0100, 0, 64);
       case kAddress: return queue_request("SET_ADDRESS", 0, kSetAddress, options_.address, 0, 0);
       case kDevice: return queue_request("GET_DESCRIPTOR(device)", kDeviceToHost, kGetDescriptor, 0x0100, 0, 18);
-      case kConfigHead: return queue_request("GET_DESCRIPTOR(configuration, 9)", kDeviceToHost, kGetDescriptor, 0x0200, 0, 9);
+      case kConfigHead:
+        return queue_request("GET_DESCRIPTOR(configuration, 9)", kDeviceToHost, kGetDescriptor, 0x0200, 0, 9);
       case kConfigAll:
         return queue_request("GET_DESCRIPTOR(configuration)", kDeviceToHost, kGetDescriptor, 0x0200, 0,
                              record_.cdc.total_length);
-      case kLanguages: queue_request("GET_DESCRIPTOR(string 0)", kDeviceToHost, kGetDescriptor, string_type, 0, 255); control_.tolerate_stall = true; return;
+      case kLanguages:
+        queue_request("GET_DESCRIPTOR(string 0)", kDeviceToHost, kGetDescriptor, string_type, 0, 255);
+        control_.tolerate_stall = true;
+        return;
       case kManufacturer:
       case kProduct:
       case kSerial: {
-        const uint8_t index = step_ == kManufacturer ? d.manufacturer_index : step_ == kProduct ? d.product_index : d.serial_index;
+        const uint8_t index = step_ == kManufacturer ? d.manufacturer_index
+                              : step_ == kProduct    ? d.product_index
+                                                     : d.serial_index;
         if (index == 0) break;
         queue_request("GET_DESCRIPTOR(string)", kDeviceToHost, kGetDescriptor, string_type | index, language_, 255);
         control_.tolerate_stall = true;
@@ -65,9 +88,15 @@ void UsbHost::begin_next_request() {
         return queue_request("SET_CONFIGURATION", 0, kSetConfiguration, record_.cdc.configuration_value, 0, 0);
       case kLineCoding: {
         const uint32_t baud = options_.baud;  // dwDTERate, bCharFormat 0 (1 stop), bParityType 0, bDataBits 8
-        const std::vector<uint8_t> coding = {static_cast<uint8_t>(baud), static_cast<uint8_t>(baud >> 8),
-                                             static_cast<uint8_t>(baud >> 16), static_cast<uint8_t>(baud >> 24), 0, 0, 8};
-        return queue_request("CDC SET_LINE_CODING", kClassInterface, kSetLineCoding, 0, record_.cdc.comm_interface, 7, coding);
+        const std::vector<uint8_t> coding = {static_cast<uint8_t>(baud),
+                                             static_cast<uint8_t>(baud >> 8),
+                                             static_cast<uint8_t>(baud >> 16),
+                                             static_cast<uint8_t>(baud >> 24),
+                                             0,
+                                             0,
+                                             8};
+        return queue_request("CDC SET_LINE_CODING", kClassInterface, kSetLineCoding, 0, record_.cdc.comm_interface, 7,
+                             coding);
       }
       case kLineState:
         line_state_pending_ = false;

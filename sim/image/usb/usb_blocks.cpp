@@ -12,7 +12,8 @@ UsbBlocks::UsbBlocks(ChipContext& chip, BoardIo& world, HostOptions options)
 
 std::unique_ptr<UsbBlocks> add_usb_blocks(PeripheralBus& bus, ChipContext& chip, BoardIo& world, HostOptions options) {
   auto blocks = std::make_unique<UsbBlocks>(chip, world, options);
-  for (const Peripheral* block : {static_cast<Peripheral*>(&blocks->phy), static_cast<Peripheral*>(&blocks->controller)}) {
+  for (const Peripheral* block :
+       {static_cast<Peripheral*>(&blocks->phy), static_cast<Peripheral*>(&blocks->controller)}) {
     for (const Peripheral* other : bus.blocks()) {
       const uint64_t begin = block->base(), end = begin + block->size_bytes();
       if (begin < uint64_t{other->base()} + other->size_bytes() && other->base() < end) return nullptr;

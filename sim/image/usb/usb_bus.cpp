@@ -5,14 +5,10 @@ namespace stepdance::sim::image::usb {
 
 const char* handshake_name(Handshake handshake) {
   switch (handshake) {
-    case Handshake::kAck:
-      return "ACK";
-    case Handshake::kNak:
-      return "NAK";
-    case Handshake::kStall:
-      return "STALL";
-    case Handshake::kNoResponse:
-      return "no response";
+    case Handshake::kAck: return "ACK";
+    case Handshake::kNak: return "NAK";
+    case Handshake::kStall: return "STALL";
+    case Handshake::kNoResponse: return "no response";
   }
   return "?";
 }

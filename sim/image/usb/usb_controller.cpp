@@ -14,7 +14,11 @@ constexpr SimTime kFrameNs = kMillisecond;             // USB 2.0 §8.4.3.1: ful
 UsbController::SofTick::SofTick(UsbController& owner) : Event(&UsbController::on_sof), controller(owner) {}
 
 UsbController::UsbController(ChipContext& chip, const UsbPhy& phy)
-    : chip_(chip), phy_(phy), queues_(chip), timer0_(chip, &on_timer0, this), timer1_(chip, &on_timer1, this),
+    : chip_(chip),
+      phy_(phy),
+      queues_(chip),
+      timer0_(chip, &on_timer0, this),
+      timer1_(chip, &on_timer1, this),
       sof_(*this) {
   endpoint_control_[0] = kCtrl0ResetValue;
 }
@@ -94,7 +98,10 @@ bool UsbController::write_register(uint32_t offset, uint32_t value) {
     case kBurstSize: burst_size_ = value & 0xFFFFu; return true;
     case kTxFillTuning: tx_fill_tuning_ = value & 0x003F1FFFu; return true;
     case kPortSc1: port_writable_ = value & kPortWritable; return true;
-    case kUsbMode: mode_ = value & kModeWritable; notify_activity(); return true;
+    case kUsbMode:
+      mode_ = value & kModeWritable;
+      notify_activity();
+      return true;
     default: return false;
   }
 }
@@ -104,9 +111,8 @@ bool UsbController::write_endpoint_register(uint32_t offset, uint32_t value) {
   if (offset >= kEndptCtrl0) {
     const unsigned endpoint = (offset - kEndptCtrl0) / 4;
     // Endpoint 0 is always an enabled control endpoint: only its stall bits are writable.
-    endpoint_control_[endpoint] = endpoint == 0
-                                      ? kCtrl0ResetValue | (value & (kCtrlRxStall | kCtrlTxStall))
-                                      : value & kCtrlWritable;
+    endpoint_control_[endpoint] =
+        endpoint == 0 ? kCtrl0ResetValue | (value & (kCtrlRxStall | kCtrlTxStall)) : value & kCtrlWritable;
     return true;
   }
   switch (offset) {

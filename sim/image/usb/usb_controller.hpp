@@ -103,8 +103,8 @@ class UsbController : public Peripheral, public UsbDevicePort {
   bool in_reset_ = false;
   bool port_enabled_ = false;
   bool high_speed_ = false;
-  SimTime port_up_ns_ = 0;  ///< when the last bus reset ended: microframe 0
-  uint8_t address_ = 0;     ///< the address in effect
+  SimTime port_up_ns_ = 0;        ///< when the last bus reset ended: microframe 0
+  uint8_t address_ = 0;           ///< the address in effect
   bool address_pending_ = false;  ///< DEVICEADDR written with USBADRA, not yet in effect
   bool irq_level_ = false;
 };

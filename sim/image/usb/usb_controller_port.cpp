@@ -39,9 +39,7 @@ BusSpeed UsbController::bus_reset_end() {
   return high_speed_ ? BusSpeed::kHigh : BusSpeed::kFull;
 }
 
-bool UsbController::answers(uint8_t address) const {
-  return attached() && port_enabled_ && address == address_;
-}
+bool UsbController::answers(uint8_t address) const { return attached() && port_enabled_ && address == address_; }
 
 Handshake UsbController::endpoint_gate(unsigned endpoint, bool in) const {
   if (endpoint >= kEndpoints) return Handshake::kNoResponse;

@@ -91,7 +91,8 @@ bool parse_cdc_configuration(const std::vector<uint8_t>& bytes, CdcFunction& cdc
   }
   if (cdc.comm_interface == 0xFF) return fail(error, "configuration has no CDC-ACM communications interface");
   if (cdc.data_interface == 0xFF) return fail(error, "configuration has no CDC data interface");
-  if (cdc.bulk_in == 0 || cdc.bulk_out == 0) return fail(error, "CDC data interface lacks a bulk IN or bulk OUT endpoint");
+  if (cdc.bulk_in == 0 || cdc.bulk_out == 0)
+    return fail(error, "CDC data interface lacks a bulk IN or bulk OUT endpoint");
   return true;
 }
 

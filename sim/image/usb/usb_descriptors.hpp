@@ -13,7 +13,7 @@ namespace stepdance::sim::image::usb {
 struct DeviceDescriptor {
   uint16_t usb_version = 0;  ///< bcdUSB
   uint8_t device_class = 0;
-  uint8_t max_packet0 = 0;   ///< bMaxPacketSize0
+  uint8_t max_packet0 = 0;  ///< bMaxPacketSize0
   uint16_t vendor_id = 0;
   uint16_t product_id = 0;
   uint16_t device_version = 0;  ///< bcdDevice
@@ -30,13 +30,13 @@ struct CdcFunction {
   uint8_t interfaces = 0;           ///< bNumInterfaces
   uint8_t comm_interface = 0xFF;
   uint8_t data_interface = 0xFF;
-  uint8_t notify_endpoint = 0;      ///< endpoint address (0x80 | n), 0 if none
+  uint8_t notify_endpoint = 0;  ///< endpoint address (0x80 | n), 0 if none
   uint16_t notify_max_packet = 0;
-  uint8_t bulk_in = 0;              ///< endpoint address (0x80 | n)
+  uint8_t bulk_in = 0;  ///< endpoint address (0x80 | n)
   uint16_t bulk_in_max_packet = 0;
   uint8_t bulk_out = 0;
   uint16_t bulk_out_max_packet = 0;
-  bool has_association = false;     ///< an interface association descriptor covers the pair
+  bool has_association = false;  ///< an interface association descriptor covers the pair
 };
 
 /// Parses an 18-byte device descriptor; false (and `error` set) if it is not one.

@@ -12,8 +12,8 @@ namespace {
 constexpr SimTime kMicroframeNs = 125 * kMicrosecond;
 constexpr SimTime kFrameNs = kMillisecond;
 constexpr SimTime kDetachedPollNs = 10 * kMillisecond;  // between looks at a port with no device
-constexpr int kHighSpeedTransactions = 13;  // USB 2.0 table 5-10: 512-byte bulk, per microframe
-constexpr int kFullSpeedTransactions = 19;  // USB 2.0 table 5-9: 64-byte bulk, per frame
+constexpr int kHighSpeedTransactions = 13;              // USB 2.0 table 5-10: 512-byte bulk, per microframe
+constexpr int kFullSpeedTransactions = 19;              // USB 2.0 table 5-9: 64-byte bulk, per frame
 
 }  // namespace
 

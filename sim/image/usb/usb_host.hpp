@@ -33,24 +33,24 @@ struct HostRecord {
 /// One control transfer in flight (USB 2.0 §8.5.3: setup, optional data, status).
 struct ControlTransfer {
   enum class Stage : uint8_t { kSetup, kData, kStatus, kDone };
-  std::string name;          ///< for reports, e.g. "GET_DESCRIPTOR(configuration)"
+  std::string name;  ///< for reports, e.g. "GET_DESCRIPTOR(configuration)"
   uint8_t request[8] = {};
   std::vector<uint8_t> data;  ///< OUT: the bytes to send; IN: the bytes received
   size_t out_sent = 0;
   bool tolerate_stall = false;  ///< optional requests (strings): a STALL is an empty answer
   bool stalled = false;
   Stage stage = Stage::kSetup;
-  SimTime deadline_ns = 0;    ///< USB 2.0 §9.2.6.4 limits: 500 ms for data, 50 ms for status
+  SimTime deadline_ns = 0;  ///< USB 2.0 §9.2.6.4 limits: 500 ms for data, 50 ms for status
 };
 
 /// The host's timing and what it sends. Times are simulated ns.
 struct HostOptions {
-  SimTime attach_debounce_ns = 100 * kMillisecond;  ///< USB 2.0 §7.1.7.3 TATTDB
-  SimTime reset_ns = 10 * kMillisecond;             ///< §7.1.7.5 TDRST (root port minimum)
-  SimTime reset_recovery_ns = 10 * kMillisecond;    ///< §7.1.7.5 TRSTRCY
+  SimTime attach_debounce_ns = 100 * kMillisecond;     ///< USB 2.0 §7.1.7.3 TATTDB
+  SimTime reset_ns = 10 * kMillisecond;                ///< §7.1.7.5 TDRST (root port minimum)
+  SimTime reset_recovery_ns = 10 * kMillisecond;       ///< §7.1.7.5 TRSTRCY
   SimTime set_address_recovery_ns = 2 * kMillisecond;  ///< §9.2.6.3
   uint8_t address = 1;
-  uint32_t baud = 115200;   ///< SET_LINE_CODING dwDTERate; 8 data bits, 1 stop bit, no parity
+  uint32_t baud = 115200;          ///< SET_LINE_CODING dwDTERate; 8 data bits, 1 stop bit, no parity
   size_t out_buffer_bytes = 4096;  ///< bytes the host takes from the world before the device accepts them
 };
 
@@ -111,8 +111,8 @@ class UsbHost {
   bool run_bulk(int& budget);
   bool bulk_in(int& budget);
   bool bulk_out(int& budget);
-  void queue_request(const char* name, uint8_t type, uint8_t request, uint16_t value, uint16_t index,
-                     uint16_t length, const std::vector<uint8_t>& out = {});
+  void queue_request(const char* name, uint8_t type, uint8_t request, uint16_t value, uint16_t index, uint16_t length,
+                     const std::vector<uint8_t>& out = {});
   void fail(const std::string& why);
   SimTime period_ns() const;
   void schedule_at(SimTime time_ns);
@@ -125,17 +125,17 @@ class UsbHost {
   Tick tick_;
   Phase phase_ = Phase::kDetached;
   SimTime phase_until_ns_ = 0;
-  SimTime epoch_ns_ = 0;       ///< frame 0 starts here (the end of the last bus reset)
+  SimTime epoch_ns_ = 0;  ///< frame 0 starts here (the end of the last bus reset)
   uint8_t current_address_ = 0;
-  int step_ = 0;               ///< the enumeration request in progress
+  int step_ = 0;  ///< the enumeration request in progress
   uint8_t max_packet0_ = 64;
   uint16_t language_ = 0x0409;
   ControlTransfer control_;
   bool control_active_ = false;
   uint16_t line_state_ = 0x0003;  ///< PSTN 1.2 table 18: D0 DTR, D1 RTS
   bool line_state_pending_ = false;
-  std::deque<uint8_t> out_;      ///< bytes from the world waiting for the device
-  std::vector<uint8_t> in_held_; ///< bytes from the device the world has not taken yet
+  std::deque<uint8_t> out_;       ///< bytes from the world waiting for the device
+  std::vector<uint8_t> in_held_;  ///< bytes from the device the world has not taken yet
   HostRecord record_;
   std::string failure_;
   std::function<void(const std::string&)> on_failure_;

@@ -15,8 +15,8 @@ namespace stepdance::sim::image::usb {
 /// (TX, RX, STATUS, DEBUG, VERSION) are not modelled. Simulator thread only.
 class UsbPhy : public Peripheral {
  public:
-  static constexpr uint32_t kPwd = 0x00;         // USBPHYx_PWD, reset 0x001E1C00
-  static constexpr uint32_t kCtrl = 0x30;        // USBPHYx_CTRL, reset 0xC0200000
+  static constexpr uint32_t kPwd = 0x00;   // USBPHYx_PWD, reset 0x001E1C00
+  static constexpr uint32_t kCtrl = 0x30;  // USBPHYx_CTRL, reset 0xC0200000
   static constexpr uint32_t kPwdResetValue = 0x001E1C00u;
   static constexpr uint32_t kCtrlResetValue = 0xC0200000u;
   static constexpr uint32_t kCtrlSoftReset = 1u << 31;  // SFTRST

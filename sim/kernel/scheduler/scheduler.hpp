@@ -70,7 +70,7 @@ class Scheduler {
 
   std::vector<TimeSlot*> heap_;  ///< the slots with events, earliest time at the root
   TimeSlotIndex index_;
-  std::deque<TimeSlot> slots_;   ///< every slot ever made (stable addresses)
+  std::deque<TimeSlot> slots_;  ///< every slot ever made (stable addresses)
   std::vector<TimeSlot*> free_slots_;
   size_t pending_ = 0;
   SimTime now_ = 0;

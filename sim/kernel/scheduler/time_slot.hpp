@@ -16,7 +16,7 @@ struct TimeSlot {
   SimTime time = 0;
   Event* first = nullptr;  ///< scheduled first, handled first
   Event* last = nullptr;
-  size_t heap_index = 0;   ///< place in the scheduler's heap of slots
+  size_t heap_index = 0;  ///< place in the scheduler's heap of slots
 };
 
 }  // namespace stepdance::sim

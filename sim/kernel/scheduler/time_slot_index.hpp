@@ -24,7 +24,7 @@ class TimeSlotIndex {
   void erase(const TimeSlot* slot);
 
  private:
-  static constexpr size_t kInitialCapacity = 64;  // a power of two
+  static constexpr size_t kInitialCapacity = 64;     // a power of two
   static constexpr unsigned kInitialShift = 64 - 6;  // 64 − log2(kInitialCapacity)
   size_t home(SimTime time) const;
   size_t next(size_t cell) const { return (cell + 1) & (cells_.size() - 1); }

@@ -18,7 +18,8 @@ class EncoderDevice : public ModelDevice<QuadratureEncoder> {
   }
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     const QuadratureEncoder* encoder = &model();
-    probes.push_back({name + "_counts", 0, [encoder](SimTime time) { return static_cast<double>(encoder->count_at(time)); }});
+    probes.push_back(
+        {name + "_counts", 0, [encoder](SimTime time) { return static_cast<double>(encoder->count_at(time)); }});
   }
 };
 
@@ -48,7 +49,8 @@ const DeviceKind& encoder_kind() {
       "an encoder",
       "ENC1 or ENC2",
       scenario::is_encoder_connector,
-      {integer_key("pulses_per_revolution", kPulsesPerRevolution), integer_key("start_count", scenario::ranges::kEncoderCounts)},
+      {integer_key("pulses_per_revolution", kPulsesPerRevolution),
+       integer_key("start_count", scenario::ranges::kEncoderCounts)},
       read,
       build,
       actions({scenario::ActionType::kTurn}),

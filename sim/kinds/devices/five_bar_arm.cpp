@@ -27,14 +27,20 @@ class ArmDevice : public ModelDevice<FiveBarArm> {
     FiveBarArm::Linkage linkage;
     if (!model().last_linkage(linkage)) return;
     parts.push_back({"arms",
-                     {{"device", name}, {"right_pivot", point_json(linkage.right_pivot)},
-                      {"left_pivot", point_json(linkage.left_pivot)}, {"c", point_json(linkage.c)},
-                      {"d", point_json(linkage.d)}, {"e", point_json(linkage.e)}, {"t", point_json(linkage.t)}}});
+                     {{"device", name},
+                      {"right_pivot", point_json(linkage.right_pivot)},
+                      {"left_pivot", point_json(linkage.left_pivot)},
+                      {"c", point_json(linkage.c)},
+                      {"d", point_json(linkage.d)},
+                      {"e", point_json(linkage.e)},
+                      {"t", point_json(linkage.t)}}});
   }
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     const FiveBarArm* arm = &model();
-    probes.push_back({name + "_right_counts", 0, [arm](SimTime time) { return static_cast<double>(arm->right_count_at(time)); }});
-    probes.push_back({name + "_left_counts", 0, [arm](SimTime time) { return static_cast<double>(arm->left_count_at(time)); }});
+    probes.push_back(
+        {name + "_right_counts", 0, [arm](SimTime time) { return static_cast<double>(arm->right_count_at(time)); }});
+    probes.push_back(
+        {name + "_left_counts", 0, [arm](SimTime time) { return static_cast<double>(arm->left_count_at(time)); }});
   }
 };
 
@@ -72,7 +78,8 @@ void read_path(scenario::TableReader& reader, FiveBarArmConfig& config) {
   if (path == nullptr) return;
   for (const toml::node& item : *path) {
     if (!read_path_point(item, config)) {
-      reader.error("path_mm", "'path_mm' must be a list of [x, y] or [x, y, dwell_s] points (mm, s; dwell in 0..86400)");
+      reader.error("path_mm",
+                   "'path_mm' must be a list of [x, y] or [x, y, dwell_s] points (mm, s; dwell in 0..86400)");
       config.path_mm.clear();
       config.dwell_s.clear();
       return;

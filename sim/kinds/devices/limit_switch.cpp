@@ -22,7 +22,8 @@ void read_axis(DeviceReading& reading, LimitSwitchConfig& config) {
       reader.error("axis", "'axis' must be \"x\", \"y\" or \"z\", got \"" + *axis + "\"");
     }
   }
-  if (const auto at = reader.number("at_mm", scenario::ranges::kLengthMm, scenario::Need::kRequired)) config.at_mm = *at;
+  if (const auto at = reader.number("at_mm", scenario::ranges::kLengthMm, scenario::Need::kRequired))
+    config.at_mm = *at;
   if (const auto side = reader.string("side")) {
     if (*side == "below" || *side == "above") {
       config.active_above = *side == "above";
@@ -77,7 +78,8 @@ std::unique_ptr<SimDevice> build(const scenario::DeviceConfig& device, DevicePlu
   const auto& config = *device.settings_as<LimitSwitchConfig>();
   const LimitSide side = config.active_above ? LimitSide::kAbove : LimitSide::kBelow;
   auto hand = make_hand();
-  auto built = std::make_unique<LimitSwitchDevice>(std::make_unique<LimitSwitch>(config.axis, config.at_mm, side), hand);
+  auto built =
+      std::make_unique<LimitSwitchDevice>(std::make_unique<LimitSwitch>(config.axis, config.at_mm, side), hand);
   const LimitSwitch* model = &built->model();
   std::function<const Machine*()> machine = plug.machine();
   auto bounce = std::make_shared<SwitchBounce>(static_cast<SimTime>(config.bounce_ms * 1e6 + 0.5),

@@ -42,7 +42,8 @@ class OledDevice : public ModelDevice<Ssd1306Display> {
  public:
   using ModelDevice::ModelDevice;
   void add_page_parts(const std::string& name, SimTime, PageParts& parts) const override {
-    parts.push_back({"screens", {{"device", name}, {"on", model().display_on()}, {"rows", screen_rows(model().image())}}});
+    parts.push_back(
+        {"screens", {{"device", name}, {"on", model().display_on()}, {"rows", screen_rows(model().image())}}});
   }
   void write_outputs(const std::string& name, PictureSink& sink) override {
     model().finish();
@@ -66,7 +67,8 @@ void read_snapshots(DeviceReading& reading, OledConfig& config) {
   for (const toml::node& item : *times) {
     const auto time = item.value<double>();
     if (!time || !std::isfinite(*time) || *time < 0 || *time > last_s) {
-      reading.reader.error("snapshots_s", "'snapshots_s' must be a list of times in [0, " + scenario::format_number(last_s) + "] s");
+      reading.reader.error("snapshots_s",
+                           "'snapshots_s' must be a list of times in [0, " + scenario::format_number(last_s) + "] s");
       config.snapshots_s.clear();
       return;
     }
@@ -108,7 +110,8 @@ const DeviceKind& oled_kind() {
       "an OLED display",
       "QWIIC0 or QWIIC1",
       scenario::is_qwiic_connector,
-      {DeviceKey{"address", DeviceKey::Type::kInteger, 0x08, 0x77, ""}, DeviceKey{"snapshots_s", DeviceKey::Type::kList}},
+      {DeviceKey{"address", DeviceKey::Type::kInteger, 0x08, 0x77, ""},
+       DeviceKey{"snapshots_s", DeviceKey::Type::kList}},
       read,
       build,
       0,

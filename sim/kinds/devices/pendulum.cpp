@@ -17,7 +17,8 @@ class PendulumDevice : public ModelDevice<DampedPendulum> {
   using ModelDevice::ModelDevice;
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     const DampedPendulum* pendulum = &model();
-    probes.push_back({name + "_counts", 0, [pendulum](SimTime time) { return static_cast<double>(pendulum->count_at(time)); }});
+    probes.push_back(
+        {name + "_counts", 0, [pendulum](SimTime time) { return static_cast<double>(pendulum->count_at(time)); }});
   }
 };
 

@@ -30,7 +30,8 @@ class TwistDevice : public ModelDevice<QwiicTwistModel> {
   }
   void add_probes(const std::string& name, std::vector<DeviceProbe>& probes) const override {
     QwiicTwistModel* twist = const_cast<QwiicTwistModel*>(&model());  // count_at() applies due events
-    probes.push_back({name + "_count", 0, [twist](SimTime time) { return static_cast<double>(twist->count_at(time)); }});
+    probes.push_back(
+        {name + "_count", 0, [twist](SimTime time) { return static_cast<double>(twist->count_at(time)); }});
   }
 };
 

@@ -14,7 +14,8 @@ bool read(ExpectationReading& reading) {
   const auto length = reading.reader.number("drawn_mm");
   bool ok = length.has_value();
   if (length && (!std::isfinite(*length) || *length < 0)) {
-    reading.reader.error("drawn_mm", "'drawn_mm' must be a finite length >= 0, got " + scenario::format_number(*length));
+    reading.reader.error("drawn_mm",
+                         "'drawn_mm' must be a finite length >= 0, got " + scenario::format_number(*length));
     ok = false;
   }
   if (ok) check.drawn_mm = *length;
@@ -27,9 +28,9 @@ ExpectationResult check(const scenario::Expectation& expectation, const Finished
   const auto& check = settings_of<DrawnLengthCheck>(expectation);
   if (run.machine() == nullptr) return {false, "drawn_mm: the scenario has no machine"};
   const double drawn = run.machine()->stats().pen_down_mm;
-  return {std::fabs(drawn - check.drawn_mm) <= check.tolerance_mm,
-          "pen-down length " + millimetres(check.drawn_mm) + " mm ± " + millimetres(check.tolerance_mm) + ": got " +
-              millimetres(drawn)};
+  return {std::fabs(drawn - check.drawn_mm) <= check.tolerance_mm, "pen-down length " + millimetres(check.drawn_mm) +
+                                                                       " mm ± " + millimetres(check.tolerance_mm) +
+                                                                       ": got " + millimetres(drawn)};
 }
 
 }  // namespace

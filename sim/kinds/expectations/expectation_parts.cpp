@@ -13,7 +13,8 @@ bool read_tolerance(ExpectationReading& reading, const char* key, double& tolera
     if (*tolerance >= 0 && std::isfinite(*tolerance)) {
       tolerance_mm = *tolerance;
     } else {
-      reader.error("tolerance_mm", "'tolerance_mm' must be a finite number >= 0, got " + scenario::format_number(*tolerance));
+      reader.error("tolerance_mm",
+                   "'tolerance_mm' must be a finite number >= 0, got " + scenario::format_number(*tolerance));
       ok = false;
     }
   }

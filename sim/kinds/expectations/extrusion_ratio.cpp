@@ -21,7 +21,8 @@ bool read_relative_tolerance(scenario::TableReader& reader, double& relative_tol
     relative_tolerance = *tolerance;
     return true;
   }
-  reader.error("relative_tolerance", "'relative_tolerance' must be in (0, 1), got " + scenario::format_number(*tolerance));
+  reader.error("relative_tolerance",
+               "'relative_tolerance' must be in (0, 1), got " + scenario::format_number(*tolerance));
   return false;
 }
 
@@ -31,7 +32,8 @@ bool read(ExpectationReading& reading) {
   const auto ratio = reader.number("extruded_per_mm");
   bool ok = ratio.has_value() && std::isfinite(*ratio) && *ratio > 0;
   if (ratio && !ok) {
-    reader.error("extruded_per_mm", "'extruded_per_mm' must be a finite number > 0, got " + scenario::format_number(*ratio));
+    reader.error("extruded_per_mm",
+                 "'extruded_per_mm' must be a finite number > 0, got " + scenario::format_number(*ratio));
   }
   if (ok) check.extruded_per_mm = *ratio;
   ok = read_relative_tolerance(reader, check.relative_tolerance) && ok;

@@ -84,7 +84,8 @@ bool read_count_and_timing(scenario::TableReader& reader, HostCheck& check) {
     check.count = *count;
   }
   if (reader.has("within_ms")) {
-    const auto within = reader.number("within_ms", scenario::NumberRange{0, scenario::ranges::kTimeMs.high, true, "ms"});
+    const auto within =
+        reader.number("within_ms", scenario::NumberRange{0, scenario::ranges::kTimeMs.high, true, "ms"});
     if (within) check.within = from_seconds(*within / 1e3);
     ok = ok && within.has_value();
   }
@@ -106,7 +107,8 @@ bool read(ExpectationReading& reading) {
   HostCheck check;
   check.board = *board;
   const auto& hosts = reading.context.scenario.hosts;
-  bool ok = std::any_of(hosts.begin(), hosts.end(), [&](const scenario::HostClientConfig& host) { return host.board == *board; });
+  bool ok = std::any_of(hosts.begin(), hosts.end(),
+                        [&](const scenario::HostClientConfig& host) { return host.board == *board; });
   if (!ok) reader.error("host", "no [[host]] client on board '" + *board + "'");
   if (reader.has("completed")) {
     ok = read_completed(reader, check) && ok;
@@ -126,7 +128,8 @@ std::string quoted_list(const std::vector<std::string>& patterns) {
 }
 
 /// Replies matched in order, one after another.
-ExpectationResult replies_in_order(const HostCheck& check, const std::vector<HostLine>& transcript, const std::string& what) {
+ExpectationResult replies_in_order(const HostCheck& check, const std::vector<HostLine>& transcript,
+                                   const std::string& what) {
   std::vector<scenario::LinePattern> patterns;
   for (const std::string& reply : check.replies) patterns.emplace_back(reply);
   size_t next = 0;
@@ -138,7 +141,8 @@ ExpectationResult replies_in_order(const HostCheck& check, const std::vector<Hos
 }
 
 /// Timed: from the first sent line matching `after` (or the client's first line) to the reply.
-ExpectationResult reply_in_time(const HostCheck& check, const std::vector<HostLine>& transcript, const std::string& what) {
+ExpectationResult reply_in_time(const HostCheck& check, const std::vector<HostLine>& transcript,
+                                const std::string& what) {
   const scenario::LinePattern reply(check.replies[0]);
   const scenario::LinePattern after(check.after.empty() ? std::string(".*") : check.after);
   std::optional<SimTime> from;
@@ -173,7 +177,8 @@ ExpectationResult check(const scenario::Expectation& expectation, const Finished
   if (!client) return {false, "host " + check.board + ": no client"};
   if (!check.completed) return check_replies(check, *client->transcript);
   if (client->completed) return {true, "host " + check.board + " ran every step"};
-  return {false, client->failure.empty() ? "host " + check.board + " was still running when the run ended" : client->failure};
+  return {false,
+          client->failure.empty() ? "host " + check.board + " was still running when the run ended" : client->failure};
 }
 
 }  // namespace

@@ -25,9 +25,9 @@ ExpectationResult check(const scenario::Expectation& expectation, const Finished
   if (run.machine() == nullptr) return {false, "pen_mm: the scenario has no machine"};
   const PenPoint pen = run.machine()->pen_position();
   const double off = std::hypot(pen.x_mm - check.x_mm, pen.y_mm - check.y_mm);
-  return {off <= check.tolerance_mm, "pen at [" + millimetres(check.x_mm) + ", " + millimetres(check.y_mm) +
-                                         "] mm ± " + millimetres(check.tolerance_mm) + ": got [" +
-                                         millimetres(pen.x_mm) + ", " + millimetres(pen.y_mm) + "]"};
+  return {off <= check.tolerance_mm, "pen at [" + millimetres(check.x_mm) + ", " + millimetres(check.y_mm) + "] mm ± " +
+                                         millimetres(check.tolerance_mm) + ": got [" + millimetres(pen.x_mm) + ", " +
+                                         millimetres(pen.y_mm) + "]"};
 }
 
 }  // namespace

@@ -15,8 +15,8 @@ namespace stepdance::sim {
 namespace {
 
 /// from_point: an index into the arm's path_mm (any index >= 0 when the arm is unknown).
-bool read_from_point(scenario::TableReader& reader, const scenario::DeviceConfig* device,
-                     const FiveBarArmConfig* arm, int64_t& from_point) {
+bool read_from_point(scenario::TableReader& reader, const scenario::DeviceConfig* device, const FiveBarArmConfig* arm,
+                     int64_t& from_point) {
   const auto from = reader.integer("from_point");
   if (!from) return true;
   const int64_t points = arm != nullptr ? static_cast<int64_t>(arm->path_mm.size()) : 0;
@@ -78,7 +78,8 @@ ExpectationResult check(const scenario::Expectation& expectation, const Finished
   const FiveBarArm* arm = model_of<FiveBarArm>(run.device(check.arm));
   if (arm == nullptr || run.machine() == nullptr) return {false, "traces: no such arm or no machine"};
   Polyline path;
-  for (const PenPoint& point : arm->path()) path.push_back({point.x_mm + check.offset_mm[0], point.y_mm + check.offset_mm[1]});
+  for (const PenPoint& point : arm->path())
+    path.push_back({point.x_mm + check.offset_mm[0], point.y_mm + check.offset_mm[1]});
   const std::vector<Polyline>& strokes = run.machine()->strokes();
   double drawn_off = 0;
   for (const Polyline& stroke : strokes) {

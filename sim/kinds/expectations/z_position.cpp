@@ -33,9 +33,8 @@ ExpectationResult check(const scenario::Expectation& expectation, const Finished
   const auto& check = settings_of<ZPositionCheck>(expectation);
   const std::optional<double> z = run.machine() ? run.machine()->axis_mm(MachineAxis::kZ) : std::nullopt;
   if (!z) return {false, "z_mm: the machine has no z axis"};
-  return {std::fabs(*z - check.z_mm) <= check.tolerance_mm, "z at " + millimetres(check.z_mm) + " mm ± " +
-                                                                millimetres(check.tolerance_mm) + ": got " +
-                                                                millimetres(*z)};
+  return {std::fabs(*z - check.z_mm) <= check.tolerance_mm,
+          "z at " + millimetres(check.z_mm) + " mm ± " + millimetres(check.tolerance_mm) + ": got " + millimetres(*z)};
 }
 
 }  // namespace

@@ -37,7 +37,8 @@ std::any read(MachineReading& reading) {
     if (*draw == "z" || *draw == "extruding") {
       config.draws_while_extruding = *draw == "extruding";
     } else {
-      reader.error("draw", "'draw' must be \"z\" (the pen is down while z is low) or \"extruding\", got \"" + *draw + "\"");
+      reader.error("draw",
+                   "'draw' must be \"z\" (the pen is down while z is low) or \"extruding\", got \"" + *draw + "\"");
     }
     if (config.draws_while_extruding && !config.e) reader.error("draw", "'draw = \"extruding\"' needs an 'e' socket");
   }
@@ -54,8 +55,8 @@ std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const Soc
   // axis: the stored toolpath smooths that out (its length is then the path's, not the stairs').
   const double coarsest_step_mm = 1.0 / std::min(config.x_steps_per_mm, config.y_steps_per_mm);
   settings.trace.tolerance_mm = std::max(trace.tolerance_mm, 1.5 * coarsest_step_mm);
-  return std::make_unique<CartesianMachine>(CartesianDrivers{axis(config.x), axis(config.y), axis(config.z), axis(config.e)},
-                                            settings);
+  return std::make_unique<CartesianMachine>(
+      CartesianDrivers{axis(config.x), axis(config.y), axis(config.z), axis(config.e)}, settings);
 }
 
 }  // namespace

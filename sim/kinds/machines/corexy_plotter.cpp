@@ -21,7 +21,8 @@ void read_pair(scenario::TableReader& reader, const char* key, const scenario::N
     x = values[0];
     y = values[1];
   } else {
-    reader.error(key, "'" + std::string(key) + "' must be two numbers in " + scenario::describe(range) + ", e.g. " + example);
+    reader.error(
+        key, "'" + std::string(key) + "' must be two numbers in " + scenario::describe(range) + ", e.g. " + example);
   }
 }
 
@@ -32,7 +33,8 @@ std::any read(MachineReading& reading) {
   config.pen_servo = reading.sockets.take("pen_servo", SocketDevice::kServo, 'C').value_or('C');
   read_positive(reading.reader, "steps_per_mm", "steps/mm", config.steps_per_mm);
   read_positive(reading.reader, "pen_down_below_us", "µs", config.pen_down_below_us);
-  read_pair(reading.reader, "travel_mm", ranges::kPositiveLengthMm, "[300, 218]", config.travel_x_mm, config.travel_y_mm);
+  read_pair(reading.reader, "travel_mm", ranges::kPositiveLengthMm, "[300, 218]", config.travel_x_mm,
+            config.travel_y_mm);
   read_pair(reading.reader, "start_mm", ranges::kLengthMm, "[120.5, 80]", config.start_x_mm, config.start_y_mm);
   return config;
 }

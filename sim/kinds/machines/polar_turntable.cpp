@@ -28,8 +28,8 @@ std::unique_ptr<Machine> build(const scenario::MachineConfig& machine, const Soc
   if (angle == nullptr || radius == nullptr) return nullptr;
   PolarSettings settings = config;
   settings.trace = trace;
-  return std::make_unique<PolarTurntable>(*angle, *radius, config.pen_servo ? sockets.servo(*config.pen_servo) : nullptr,
-                                          settings);
+  return std::make_unique<PolarTurntable>(*angle, *radius,
+                                          config.pen_servo ? sockets.servo(*config.pen_servo) : nullptr, settings);
 }
 
 /// The page's "table" part: the table's angle and the pen's radius, to turn the paper by.

@@ -29,10 +29,10 @@ constexpr uint8_t kMaxBoardPorts = 4;
 /// module's wiring. A connector the module lacks has kNoPin in its place. One constant of this
 /// type per board (boards/<board>.hpp), listed in boards/board_registry.hpp.
 struct BoardDefinition {
-  const char* name;           ///< "Driver Module v1.0": what messages and active_board() show
-  const char* scenario_name;  ///< "driver": the scenario file's `module` value
-  const char* sketch_macro;   ///< "module_driver": the #define a sketch selects it with
-  const TeensyPinout* teensy;        ///< the Teensy it is built around; the simulator models this one
+  const char* name;            ///< "Driver Module v1.0": what messages and active_board() show
+  const char* scenario_name;   ///< "driver": the scenario file's `module` value
+  const char* sketch_macro;    ///< "module_driver": the #define a sketch selects it with
+  const TeensyPinout* teensy;  ///< the Teensy it is built around; the simulator models this one
   /// A second Teensy it also takes, or `teensy` again when it takes one. Never null: a constant
   /// expression cannot compare an inline variable's address with null under GCC's sanitizers,
   /// and the registry's static_assert checks both in every build.

@@ -25,7 +25,8 @@ constexpr bool builtin_boards_are_valid() {
   for (size_t i = 0; i < kBoardCount; ++i) {
     if (!board_is_valid(*kBoards[i])) return false;
     for (size_t j = i + 1; j < kBoardCount; ++j) {
-      if (same_text(kBoards[i]->name, kBoards[j]->name) || same_text(kBoards[i]->scenario_name, kBoards[j]->scenario_name) ||
+      if (same_text(kBoards[i]->name, kBoards[j]->name) ||
+          same_text(kBoards[i]->scenario_name, kBoards[j]->scenario_name) ||
           same_text(kBoards[i]->sketch_macro, kBoards[j]->sketch_macro)) {
         return false;
       }

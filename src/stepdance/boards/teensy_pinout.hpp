@@ -11,9 +11,9 @@ constexpr uint8_t kNoPin = 255;
 /// Pin facts of one Teensy model, from PJRC's pinout cards.
 struct TeensyPinout {
   const char* name;
-  uint8_t highest_pin;          ///< digital pins are 0..highest_pin (bottom pads included)
+  uint8_t highest_pin;  ///< digital pins are 0..highest_pin (bottom pads included)
   uint8_t analog_pin_count;
-  uint8_t analog_pins[18];      ///< the pins of A0, A1, … in order
+  uint8_t analog_pins[18];  ///< the pins of A0, A1, … in order
 };
 
 /// Teensy 4.0: pins 0–39 (24–39 on the bottom pads); A0–A13 on pins 14–27.

@@ -35,8 +35,7 @@ class BlockPort {
 
   /// Attaches the port to a block's state variable, with a direction and owner for deep sync.
   /// Without begin() the port holds its own private state. Context: loop.
-  void begin(DecimalPosition* target, BlockPortDirection direction = BLOCKPORT_UNDEFINED,
-             Block* parent = nullptr);
+  void begin(DecimalPosition* target, BlockPortDirection direction = BLOCKPORT_UNDEFINED, Block* parent = nullptr);
 
   /// world_units of the outside world equal block_units of the block. Precondition: both
   /// non-zero (a zero argument leaves the ratio unchanged). Context: any.

@@ -45,7 +45,8 @@ void report_block_counters(CounterEmit emit, void* context) {
 
 void report_warnings(WarningEmit emit, void* context) {
   WarningTally tally;
-  for (uint32_t i = 0; warning_tally(i, tally); ++i) emit(context, tally.source, to_string(tally.reason), tally.detail, tally.count);
+  for (uint32_t i = 0; warning_tally(i, tally); ++i)
+    emit(context, tally.source, to_string(tally.reason), tally.detail, tally.count);
 }
 
 }  // namespace stepdance

@@ -10,17 +10,13 @@ stepdance::Status dance_start() { return engine().start(); }
 
 void dance_loop() { engine().run_loop(); }
 
-stepdance::Status add_function_to_frame(void (*function)()) {
-  return engine().add_frame_function(function);
-}
+stepdance::Status add_function_to_frame(void (*function)()) { return engine().add_frame_function(function); }
 
 // The original's CPU-usage calls, as fractions of the frame budget (frame time in cycles over cycles
 // per frame period), peak and average.
 float stepdance_get_cpu_usage() { return static_cast<float>(engine().load().peak_fraction()); }
 
-float stepdance_get_average_cpu_usage() {
-  return static_cast<float>(engine().load().average_fraction());
-}
+float stepdance_get_average_cpu_usage() { return static_cast<float>(engine().load().average_fraction()); }
 
 uint32_t stepdance_get_frame_overruns() { return engine().load().overruns(); }
 

@@ -14,9 +14,8 @@ void kilohertz_isr() { engine().run_kilohertz_tick(); }
 
 // The stage names double as fault details, so they say which registry overflowed.
 constexpr const char* kRegistryNames[kNumStages] = {
-    "input-port stage registry", "pre-channel stage registry", "channel registry",
-    "output-port registry",      "post-channel stage registry", "kilohertz registry",
-    "loop registry",
+    "input-port stage registry",   "pre-channel stage registry", "channel registry", "output-port registry",
+    "post-channel stage registry", "kilohertz registry",         "loop registry",
 };
 
 }  // namespace

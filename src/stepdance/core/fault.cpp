@@ -14,8 +14,8 @@ volatile bool alarm_raised = false;
 
 // Report history: a ring written under a critical section from any context, read in the loop.
 FaultReport history[kFaultReportHistory];
-volatile uint32_t reports_made = 0;     // sequence number of the newest report
-uint32_t reports_delivered = 0;         // loop only: newest sequence handed to subscribers
+volatile uint32_t reports_made = 0;  // sequence number of the newest report
+uint32_t reports_delivered = 0;      // loop only: newest sequence handed to subscribers
 volatile uint32_t reports_lost = 0;
 FaultSubscriber subscribers[kMaxFaultSubscribers] = {};
 WarningTally tallies[kWarningKinds];
@@ -101,8 +101,10 @@ void report_fault(FaultLevel level, FaultReason reason, const char* source, cons
     return;
   }
   hal::CriticalSection guard;
-  if (level == FaultLevel::kAlarm) alarm_raised = true;
-  else tally_warning(reason, source != nullptr ? source : "", detail != nullptr ? detail : "");
+  if (level == FaultLevel::kAlarm)
+    alarm_raised = true;
+  else
+    tally_warning(reason, source != nullptr ? source : "", detail != nullptr ? detail : "");
 }
 
 void count_warning(FaultReason reason, const char* source) {

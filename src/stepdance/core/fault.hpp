@@ -44,8 +44,8 @@ struct FaultReport {
   FaultReason reason = FaultReason::kNone;
   const char* source = "";  ///< the block or interface that reported, e.g. "tbi", "gcode"
   const char* detail = "";
-  uint32_t time_us = 0;     ///< hal::micros_now() when reported
-  uint32_t sequence = 0;    ///< 1 for the first report since start or clear_fault(), then +1
+  uint32_t time_us = 0;   ///< hal::micros_now() when reported
+  uint32_t sequence = 0;  ///< 1 for the first report since start or clear_fault(), then +1
 };
 
 /// Reports kept for reading and for subscribers (the newest; older ones are overwritten and

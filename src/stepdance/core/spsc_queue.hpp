@@ -45,9 +45,7 @@ class SpscQueue {
   }
 
   /// Number of queued items (exact for the consumer, a lower bound for the producer).
-  size_t size() const {
-    return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire);
-  }
+  size_t size() const { return head_.load(std::memory_order_acquire) - tail_.load(std::memory_order_acquire); }
   bool empty() const { return size() == 0; }
   bool full() const { return size() == Capacity; }
   static constexpr size_t capacity() { return Capacity; }

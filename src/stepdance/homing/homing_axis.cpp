@@ -7,10 +7,7 @@
 #include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
-namespace {
-
-
-}  // namespace
+namespace {}  // namespace
 
 // Only the sign of direction counts (toward the switch), and velocity is a speed in world units/s.
 void HomingAxis::configure(uint8_t limit_pin, double value_at_limit, float direction, float velocity,
@@ -80,20 +77,24 @@ void HomingAxis::run() {
 void HomingAxis::run_state(bool active, bool released) {
   const double slow = slow_velocity_ > 0 ? slow_velocity_ : fast_velocity_ / 10.0;
   switch (state_) {
-    case HOMING_AXIS_STATE_BEGIN:
-      enter(active ? HOMING_AXIS_STATE_BACKING_OFF : HOMING_AXIS_STATE_SEEKING);
-      break;
+    case HOMING_AXIS_STATE_BEGIN: enter(active ? HOMING_AXIS_STATE_BACKING_OFF : HOMING_AXIS_STATE_SEEKING); break;
     case HOMING_AXIS_STATE_BACKING_OFF:
-      if (released) enter(HOMING_AXIS_STATE_SEEKING);
-      else move(-direction_ * fast_velocity_);
+      if (released)
+        enter(HOMING_AXIS_STATE_SEEKING);
+      else
+        move(-direction_ * fast_velocity_);
       break;
     case HOMING_AXIS_STATE_SEEKING:
-      if (active) enter(HOMING_AXIS_STATE_PULLING_OFF);
-      else if (!move(direction_ * fast_velocity_)) fail("homing: no switch within the maximum travel");
+      if (active)
+        enter(HOMING_AXIS_STATE_PULLING_OFF);
+      else if (!move(direction_ * fast_velocity_))
+        fail("homing: no switch within the maximum travel");
       break;
     case HOMING_AXIS_STATE_PULLING_OFF:
-      if (pull_off_done(released)) enter(HOMING_AXIS_STATE_APPROACHING);
-      else move(-direction_ * fast_velocity_);
+      if (pull_off_done(released))
+        enter(HOMING_AXIS_STATE_APPROACHING);
+      else
+        move(-direction_ * fast_velocity_);
       break;
     case HOMING_AXIS_STATE_APPROACHING:
       if (active) {
@@ -104,11 +105,12 @@ void HomingAxis::run_state(bool active, bool released) {
       }
       break;
     case HOMING_AXIS_STATE_FINAL_PULL_OFF:
-      if (pull_off_done(released)) enter(HOMING_AXIS_STATE_FINISHED);
-      else move(-direction_ * slow);
+      if (pull_off_done(released))
+        enter(HOMING_AXIS_STATE_FINISHED);
+      else
+        move(-direction_ * slow);
       break;
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -119,7 +121,8 @@ bool HomingAxis::move(double velocity) {
   double step = velocity * frame_period_s();
   const double moved = fabs(position_ - phase_start_);
   const bool pulling = state_ == HOMING_AXIS_STATE_PULLING_OFF || state_ == HOMING_AXIS_STATE_FINAL_PULL_OFF;
-  if (pulling && moved < pull_off_ && fabs(step) > pull_off_ - moved) step = step > 0 ? pull_off_ - moved : moved - pull_off_;
+  if (pulling && moved < pull_off_ && fabs(step) > pull_off_ - moved)
+    step = step > 0 ? pull_off_ - moved : moved - pull_off_;
   output.set(position_ + step);  // moves position_ (the port's target) and records the change
   return max_travel_ <= 0 || pulling || fabs(position_ - phase_start_) <= max_travel_;
 }

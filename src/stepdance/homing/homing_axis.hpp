@@ -15,9 +15,9 @@ constexpr float HOMING_DIR_BWD = -1.0f;
 
 /// Axis states (the original's numbers 0–5, then ours).
 constexpr uint8_t HOMING_AXIS_STATE_BEGIN = 0;
-constexpr uint8_t HOMING_AXIS_STATE_BACKING_OFF = 1;     ///< started on the switch: moving off it
-constexpr uint8_t HOMING_AXIS_STATE_SEEKING = 2;         ///< fast toward the switch
-constexpr uint8_t HOMING_AXIS_STATE_CENTERING = 3;       ///< the original's, never used
+constexpr uint8_t HOMING_AXIS_STATE_BACKING_OFF = 1;  ///< started on the switch: moving off it
+constexpr uint8_t HOMING_AXIS_STATE_SEEKING = 2;      ///< fast toward the switch
+constexpr uint8_t HOMING_AXIS_STATE_CENTERING = 3;    ///< the original's, never used
 constexpr uint8_t HOMING_AXIS_STATE_FINISHED = 4;
 constexpr uint8_t HOMING_AXIS_STATE_WAITING = 5;         ///< idle, or waiting for its turn
 constexpr uint8_t HOMING_AXIS_STATE_PULLING_OFF = 6;     ///< after the fast hit, away by the pull-off
@@ -116,7 +116,7 @@ class HomingAxis : public Block {
   DecimalPosition position_ = 0;  // world units (the output's ratio is 1)
   double phase_start_ = 0;        // position where the current phase began
   double trip_position_ = 0;
-  uint32_t frames_ = 0;           // since start()
+  uint32_t frames_ = 0;  // since start()
   volatile uint8_t state_ = HOMING_AXIS_STATE_WAITING;
 };
 

@@ -52,8 +52,7 @@ void SafetyInputs::set_debounce_ms(uint32_t ms) { debounce_ms_ = ms; }
 Status SafetyInputs::begin() {
   for (size_t i = 0; i < count_; ++i) {
     Input& input = inputs_[i];
-    const Status status =
-        hal::gpio_mode(input.pin, hal::PinMode::kInputPulldown);
+    const Status status = hal::gpio_mode(input.pin, hal::PinMode::kInputPulldown);
     if (status != Status::kOk) return status;
     input.debouncer.set_stable_samples(debounce_ms_);
     input.debouncer.restart(false, 0);  // an input active at power-on still reports once

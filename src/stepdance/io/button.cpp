@@ -135,8 +135,7 @@ void Button::on_level_change(bool pressed) {
       if (gesture_presses_ < kLongestGesture) gesture_presses_ = gesture_presses_ + 1;
       ms_since_press_ = 0;
       return;
-    default:
-      return;
+    default: return;
   }
 }
 
@@ -169,12 +168,8 @@ void Button::fire_state_callbacks(uint8_t state) {
       if (state == 2) call(on_second_press_);
       if (state == 0) call(on_third_press_);
       return;
-    case BUTTON_MODE_TOGGLE:
-      call(on_toggle_);
-      [[fallthrough]];
-    default:
-      call(state == BUTTON_STATE_PRESSED ? on_press_ : on_release_);
-      return;
+    case BUTTON_MODE_TOGGLE: call(on_toggle_); [[fallthrough]];
+    default: call(state == BUTTON_STATE_PRESSED ? on_press_ : on_release_); return;
   }
 }
 

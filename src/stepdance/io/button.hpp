@@ -138,13 +138,13 @@ class Button : public Block {
   uint32_t multipress_window_ms_ = 400;
 
   // Written by the kilohertz stage only.
-  volatile uint32_t state_changes_ = 0;           // every change of state_, in order
-  volatile uint32_t gestures_[3] = {};            // completed single / double / triple presses
+  volatile uint32_t state_changes_ = 0;  // every change of state_, in order
+  volatile uint32_t gestures_[3] = {};   // completed single / double / triple presses
   volatile uint32_t blackout_remaining_ms_ = 0;
   volatile uint32_t ms_since_press_ = 0;
   volatile uint8_t gesture_presses_ = 0;
   volatile uint8_t state_ = BUTTON_STATE_RELEASED;
-  volatile bool level_ = false;                   // debounced "pressed" level
+  volatile bool level_ = false;  // debounced "pressed" level
 
   // Owned by the loop.
   uint32_t state_changes_delivered_ = 0;

@@ -79,7 +79,10 @@ class Encoder : public Block {
   /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
   /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
   template <class Registry>
-  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
+  void enroll(Registry* registry, const char* instance_name) {
+    registry->enroll(instance_name, *this);
+  }
+
  private:
   // Virtuals stay inline (no key function): see Block.
   void sample_and_push();

@@ -132,14 +132,9 @@ void InputPort::receive_pulse(const protocol::CapturedPulse& pulse) {
   const protocol::DecodedPulse decoded =
       protocol::decode_pulse(pulse, hal::port_in_clock(port_), mode_, step_dir_signal_);
   switch (decoded.verdict) {
-    case protocol::PulseVerdict::kTooShort:
-      rejected_too_short_ = rejected_too_short_ + 1;
-      return;
-    case protocol::PulseVerdict::kTooLong:
-      rejected_too_long_ = rejected_too_long_ + 1;
-      return;
-    case protocol::PulseVerdict::kAccepted:
-      break;
+    case protocol::PulseVerdict::kTooShort: rejected_too_short_ = rejected_too_short_ + 1; return;
+    case protocol::PulseVerdict::kTooLong: rejected_too_long_ = rejected_too_long_ + 1; return;
+    case protocol::PulseVerdict::kAccepted: break;
   }
   const uint8_t signal = decoded.signal;
   if (!(enabled_mask_ & bit(signal))) {

@@ -81,8 +81,9 @@ bool OutputPort::accept_frame_period(uint32_t period_us) {
 // Stepdance port carries a signal if its pulse and slot fit the layout at that period at all.
 bool OutputPort::can_carry(uint8_t signal, uint32_t period_us) const {
   if (mode_ == OUTPUT_MODE_STEP_DIR) return signal == step_dir_signal_;
-  const protocol::FrameLayout layout = requested_format_ == kFormatForPeriod ? protocol::layout_for_period(period_us)
-                                                                             : protocol::frame_layout(requested_format_);
+  const protocol::FrameLayout layout = requested_format_ == kFormatForPeriod
+                                           ? protocol::layout_for_period(period_us)
+                                           : protocol::frame_layout(requested_format_);
   return protocol::signal_fits(layout, signal);
 }
 
@@ -124,7 +125,8 @@ Status OutputPort::claim(uint8_t port, uint8_t format, uint8_t transmit_mode) {
 // cancel instead of sending two opposite pulses. Frame or critical-section context.
 void OutputPort::add_signal(uint8_t signal, uint8_t direction) {
   if (signal >= kNumSignals) return;
-  const bool carried = mode_ == OUTPUT_MODE_STEP_DIR ? signal == step_dir_signal_ : protocol::signal_fits(layout_, signal);
+  const bool carried =
+      mode_ == OUTPUT_MODE_STEP_DIR ? signal == step_dir_signal_ : protocol::signal_fits(layout_, signal);
   if (!carried) {
     refuse_pulse();
     return;
@@ -166,8 +168,9 @@ void OutputPort::transmit_frame() {
 
 void OutputPort::refuse_transmit() {
   if (transmits_refused_++ != 0) return;
-  report_fault(FaultLevel::kWarning, FaultReason::kBadConfiguration, "OutputPort",
-               "transmit_frame() ignored: the port already sends once every frame (OUTPUT_TRANSMIT_ON_FRAME, or called twice)");
+  report_fault(
+      FaultLevel::kWarning, FaultReason::kBadConfiguration, "OutputPort",
+      "transmit_frame() ignored: the port already sends once every frame (OUTPUT_TRANSMIT_ON_FRAME, or called twice)");
 }
 
 // Frame context, at most once per engine frame (the frame count changes only between frames);
@@ -221,9 +224,8 @@ protocol::FrameWords OutputPort::encode_step_dir() {
 
 void OutputPort::report_counters(CounterSink& sink) const {
   static const char* const kSent[kNumSignals][2] = {
-      {"sent_x_forward", "sent_x_reverse"}, {"sent_y_forward", "sent_y_reverse"},
-      {"sent_r_forward", "sent_r_reverse"}, {"sent_t_forward", "sent_t_reverse"},
-      {"sent_z_forward", "sent_z_reverse"}, {"sent_e_forward", "sent_e_reverse"},
+      {"sent_x_forward", "sent_x_reverse"}, {"sent_y_forward", "sent_y_reverse"}, {"sent_r_forward", "sent_r_reverse"},
+      {"sent_t_forward", "sent_t_reverse"}, {"sent_z_forward", "sent_z_reverse"}, {"sent_e_forward", "sent_e_reverse"},
   };
   sink.counter("port", port_);
   sink.counter("carried", signals_carried_);

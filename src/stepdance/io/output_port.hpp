@@ -163,8 +163,8 @@ class OutputPort : public Block {
   uint32_t pulses_refused_ = 0;
   uint8_t transmit_mode_ = OUTPUT_TRANSMIT_ON_FRAME;
   uint32_t transmits_refused_ = 0;
-  bool transmitted_ = false;               // a frame has gone out while the engine ran …
-  uint32_t transmitted_in_frame_ = 0;      // … in this engine frame (Engine::frame_count())
+  bool transmitted_ = false;           // a frame has gone out while the engine ran …
+  uint32_t transmitted_in_frame_ = 0;  // … in this engine frame (Engine::frame_count())
   uint8_t carried_mask_ = 0;
   volatile int32_t pending_[kNumSignals] = {};
   // Signals with a non-zero / positive pending count: the frame reads these instead of scanning.

@@ -45,9 +45,9 @@ class Channel : public Block {
 
   Channel();
 
-  /// Resets the state, the rate (one pulse per frame: 25 000 pulses/s at 40 µs) and the statistics, begins both inputs and
-  /// registers the channel in the channel stage. kBadArgument if signal ≥ 6 (nothing begun);
-  /// kFull if the channel registry is full (a fault is recorded). Context: loop.
+  /// Resets the state, the rate (one pulse per frame: 25 000 pulses/s at 40 µs) and the statistics, begins both inputs
+  /// and registers the channel in the channel stage. kBadArgument if signal ≥ 6 (nothing begun); kFull if the channel
+  /// registry is full (a fault is recorded). Context: loop.
   Status begin(OutputPort* port, uint8_t signal);
   /// As begin(port, signal) without a port: the channel runs but emits nothing. Context: loop.
   Status begin();
@@ -89,7 +89,9 @@ class Channel : public Block {
   /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
   /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
   template <class Registry>
-  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
+  void enroll(Registry* registry, const char* instance_name) {
+    registry->enroll(instance_name, *this);
+  }
 
   /// Deep sync: makes current_position and filtered_target_position equal target + target_2,
   /// so a reset of the inputs re-zeroes the error without a single step. Called by the inputs'

@@ -66,7 +66,7 @@ bool FiveBarGeometry::inverse(double x, double y, double& a1, double& a2) const 
   for (const Point& c : c_options) {
     // A5 from T − C: with w(φ) = i·e^{−iφ} as complex numbers, T − C = i·e^{−iA5}(−L3 + L5·e^{−iA6}).
     const double kx = -l3 + l5 * cos(a6), ky = -l5 * sin(a6);  // −L3 + L5 e^{−iA6}
-    const double qx = -ky, qy = kx;                               // i·(that)
+    const double qx = -ky, qy = kx;                            // i·(that)
     const double vx = t.x - c.x, vy = t.y - c.y;
     // e^{−iA5} = (T − C) / q
     const double norm = qx * qx + qy * qy;

@@ -6,9 +6,7 @@ namespace {
 
 // A port's present state in world units (pending writes are not included: they are motion
 // still to come and stay motion after a deep sync).
-double world_position(const BlockPort& port) {
-  return port.convert_block_to_world_units(port.read_target());
-}
+double world_position(const BlockPort& port) { return port.convert_block_to_world_units(port.read_target()); }
 
 }  // namespace
 

@@ -30,7 +30,9 @@ class KinematicsCoreXY : public Block {
   /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
   /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
   template <class Registry>
-  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
+  void enroll(Registry* registry, const char* instance_name) {
+    registry->enroll(instance_name, *this);
+  }
   /// One frame: pull and update both inputs, set a and b, push both outputs. Context: frame ISR.
   void run() override;
 

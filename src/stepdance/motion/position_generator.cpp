@@ -65,14 +65,12 @@ void PositionGenerator::apply(const GoCommand& command) {
 // Loop context: the frame's target plus a reset the frame has not seen yet, under a critical section
 // because both change in the frame.
 double PositionGenerator::frame_target_world() const {
-  hal::CriticalSection guard;  // target_ and the reset shift change in the frame
+  hal::CriticalSection guard;                          // target_ and the reset shift change in the frame
   const double pending_shift = position_ - last_set_;  // a reset not yet seen by run()
   return output.convert_block_to_world_units(target_ + pending_shift);
 }
 
-double PositionGenerator::target() const {
-  return commands_.empty() ? frame_target_world() : queued_target_world_;
-}
+double PositionGenerator::target() const { return commands_.empty() ? frame_target_world() : queued_target_world_; }
 
 bool PositionGenerator::is_idle() const {
   if (!commands_.empty()) return false;

@@ -56,7 +56,9 @@ class PositionGenerator : public Block {
   /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
   /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
   template <class Registry>
-  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
+  void enroll(Registry* registry, const char* instance_name) {
+    registry->enroll(instance_name, *this);
+  }
   /// One frame: apply the queued go() commands, step toward the target by at most
   /// speed × 40 µs, then set and push the output. Context: frame ISR.
   void run() override;
@@ -68,7 +70,7 @@ class PositionGenerator : public Block {
 
  private:
   struct GoCommand {
-    double value = 0.0;      // world units
+    double value = 0.0;  // world units
     PositionMode mode = ABSOLUTE;
     bool set_speed = false;  // apply `speed` (world units/s) with the target
     double speed = 0.0;
@@ -82,10 +84,10 @@ class PositionGenerator : public Block {
 
   SpscQueue<GoCommand, kCommandCapacity> commands_;
   double queued_target_world_ = 0.0;  // loop only: the target after the last queued go()
-  DecimalPosition position_ = 0;  // the output's state, block units
-  DecimalPosition target_ = 0;    // block units
-  DecimalPosition last_set_ = 0;  // position_ as this block last set it
-  bool at_rest_ = false;          // a zero change was committed and pushed since the last move
+  DecimalPosition position_ = 0;      // the output's state, block units
+  DecimalPosition target_ = 0;        // block units
+  DecimalPosition last_set_ = 0;      // position_ as this block last set it
+  bool at_rest_ = false;              // a zero change was committed and pushed since the last move
 };
 
 }  // namespace stepdance

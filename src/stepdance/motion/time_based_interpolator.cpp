@@ -11,7 +11,6 @@ namespace {
 
 using planner::kPlannerAxes;
 
-
 /// Path length the speed refers to: XYZ if they move, else |E|, else the R/T length.
 // The length a speed (F) refers to, as Grbl and G-code readers expect: the XYZ distance, or for an
 // extruder-only move |E|, else the R/T length. The original mixed all seven axes (incl. a virtual
@@ -25,9 +24,7 @@ double path_length(const double (&delta)[kPlannerAxes]) {
 
 }  // namespace
 
-TimeBasedInterpolator::TimeBasedInterpolator() {
-  limits_.set_default_acceleration(kDefaultAccelerationPerS2);
-}
+TimeBasedInterpolator::TimeBasedInterpolator() { limits_.set_default_acceleration(kDefaultAccelerationPerS2); }
 
 // Two stages: moves are taken and planned in the loop (look-ahead is too slow for the frame), the
 // frame only follows committed profiles (docs/planner.md "What it guarantees").

@@ -49,7 +49,7 @@ class TimeBasedInterpolator : public Block, public MoveOutputPorts {
     double t_rad;
   };
   struct motion_block {
-    uint8_t block_type;          ///< a PositionMode: INCREMENTAL, ABSOLUTE or GLOBAL
+    uint8_t block_type;  ///< a PositionMode: INCREMENTAL, ABSOLUTE or GLOBAL
     uint32_t block_id;
     float block_time_s;          ///< > 0: a timed move (or a dwell when nothing moves)
     float block_velocity_per_s;  ///< used when block_time_s is 0
@@ -128,7 +128,9 @@ class TimeBasedInterpolator : public Block, public MoveOutputPorts {
   /// Publishes its names under "<instance_name>." in `registry`, an RPC, which lists them
   /// (docs/rpc.md): the same as registry->enroll(instance_name, *this). Context: loop (setup).
   template <class Registry>
-  void enroll(Registry* registry, const char* instance_name) { registry->enroll(instance_name, *this); }
+  void enroll(Registry* registry, const char* instance_name) {
+    registry->enroll(instance_name, *this);
+  }
   /// One frame: follow the committed blocks, set and push the outputs. Context: frame ISR.
   void run() override;
   /// Plans and commits final blocks; finishes stops. Context: loop (dance_loop).
@@ -166,7 +168,7 @@ class TimeBasedInterpolator : public Block, public MoveOutputPorts {
   uint32_t oldest_waiting_since_us_ = 0;  // when the oldest uncommitted block arrived
   uint32_t committed_until_us_ = 0;       // when the frame will finish what it holds (estimate)
   uint32_t refused_ = 0;
-  volatile bool stop_pending_ = false;   // loop: a stop was sent and has not completed
+  volatile bool stop_pending_ = false;    // loop: a stop was sent and has not completed
   volatile bool frame_stopping_ = false;  // frame: the executor is decelerating for a stop
   DecimalPosition state_[planner::kPlannerAxes] = {};
   DecimalPosition parameter_ = 1;

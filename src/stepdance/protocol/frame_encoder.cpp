@@ -25,7 +25,9 @@ constexpr uint8_t kStepDirSlotUs = slot_length_us(SIGNAL_X);
 
 // Frame context: a table lookup (one bit per subset of the six signals, computed once per layout)
 // instead of summing slot lengths on every frame.
-bool signals_fit(uint8_t mask, const FrameLayout& layout) { return (layout.fit_table >> (mask & kAllSignalsMask)) & 1u; }
+bool signals_fit(uint8_t mask, const FrameLayout& layout) {
+  return (layout.fit_table >> (mask & kAllSignalsMask)) & 1u;
+}
 
 // Frame context. Spec "Frames": each signal at most once per frame, pulses of 2 µs (X) … 7 µs (E), a
 // 2 µs gap after each. Signals carried over from the previous frame (priority_mask) are placed first
@@ -47,8 +49,8 @@ EncodedFrame encode_frame(const FrameRequest& request, const FrameLayout& layout
     const uint8_t width = pulse_width_us(signal);
     frame.words.step_bits |= bit_run(start_us, width);
     if (request.forward_mask & (1u << signal)) {
-      frame.words.dir_bits |= bit_run(static_cast<uint8_t>(start_us - kDirMarginUs),
-                                      static_cast<uint8_t>(width + 2 * kDirMarginUs));
+      frame.words.dir_bits |=
+          bit_run(static_cast<uint8_t>(start_us - kDirMarginUs), static_cast<uint8_t>(width + 2 * kDirMarginUs));
     }
     start_us = static_cast<uint8_t>(start_us + slot_length_us(signal));
   }

@@ -32,8 +32,8 @@ size_t read_wire_pulses(const FrameWords& words, WirePulse* pulses, size_t capac
 
 // What a capture timer would record for the pulse: edge times in ticks of the given clock, wrapped to
 // its counter width, and DIR at the edge the port samples.
-CapturedPulse capture_wire_pulse(const WirePulse& pulse, const CaptureClock& clock,
-                                 uint32_t frame_start_ticks, DirSampleEdge edge) {
+CapturedPulse capture_wire_pulse(const WirePulse& pulse, const CaptureClock& clock, uint32_t frame_start_ticks,
+                                 DirSampleEdge edge) {
   CapturedPulse captured;
   captured.rise_ticks = (frame_start_ticks + pulse.rise_us * clock.ticks_per_us) & clock.counter_mask;
   captured.fall_ticks = (frame_start_ticks + pulse.fall_us * clock.ticks_per_us) & clock.counter_mask;

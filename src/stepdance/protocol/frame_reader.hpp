@@ -23,7 +23,7 @@ size_t read_wire_pulses(const FrameWords& words, WirePulse* pulses, size_t capac
 
 /// Converts a wire pulse into what a capture unit clocked at `clock` would report, with the
 /// frame starting at counter value `frame_start_ticks` and DIR sampled at `edge`. Context: any.
-CapturedPulse capture_wire_pulse(const WirePulse& pulse, const CaptureClock& clock,
-                                 uint32_t frame_start_ticks, DirSampleEdge edge);
+CapturedPulse capture_wire_pulse(const WirePulse& pulse, const CaptureClock& clock, uint32_t frame_start_ticks,
+                                 DirSampleEdge edge);
 
 }  // namespace stepdance::protocol

@@ -5,8 +5,7 @@ namespace stepdance::protocol {
 
 // For a source with 64-bit time (the simulator): a pulse longer than the counter's period keeps its
 // whole periods in extra_periods, so it is still measured as too long instead of wrapping short.
-CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool dir_high,
-                                  const CaptureClock& clock) {
+CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool dir_high, const CaptureClock& clock) {
   const uint64_t period = uint64_t{clock.counter_mask} + 1;
   const uint64_t width = fall_ticks >= rise_ticks ? fall_ticks - rise_ticks : 0;
   const uint64_t extra = width / period;

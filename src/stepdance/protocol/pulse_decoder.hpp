@@ -45,8 +45,7 @@ struct CapturedPulse {
 
 /// A pulse from unwrapped tick counts (rise ≤ fall), as a backend that extends the hardware
 /// counter (or a simulator that knows the time) reports it. Context: any.
-CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool dir_high,
-                                  const CaptureClock& clock);
+CapturedPulse captured_from_ticks(uint64_t rise_ticks, uint64_t fall_ticks, bool dir_high, const CaptureClock& clock);
 
 /// Pulse width in capture ticks, extra periods included (wider than any 32-bit count). Context: any.
 uint64_t width_ticks(const CapturedPulse& pulse, const CaptureClock& clock);
@@ -57,9 +56,9 @@ enum class PulseVerdict : uint8_t { kAccepted, kTooShort, kTooLong };
 /// The result of decoding one pulse.
 struct DecodedPulse {
   PulseVerdict verdict = PulseVerdict::kTooShort;
-  uint8_t signal = 0;     ///< valid when accepted
-  int8_t direction = 0;   ///< +1 forward, −1 reverse; valid when accepted
-  uint8_t width_us = 0;   ///< measured width rounded to the nearest µs (ties round down)
+  uint8_t signal = 0;    ///< valid when accepted
+  int8_t direction = 0;  ///< +1 forward, −1 reverse; valid when accepted
+  uint8_t width_us = 0;  ///< measured width rounded to the nearest µs (ties round down)
 };
 
 /// Shortest pulse accepted in STEP_DIR mode, after rounding (shorter ones are glitches): a

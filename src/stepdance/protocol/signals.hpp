@@ -51,7 +51,9 @@ constexpr uint8_t kLastPulseBitUs = kFrameBitsUs - 1;
 constexpr uint8_t pulse_width_us(uint8_t signal) { return static_cast<uint8_t>(kMinPulseWidthUs + signal); }
 
 /// Microseconds of frame a signal occupies: its pulse plus the gap after it.
-constexpr uint8_t slot_length_us(uint8_t signal) { return static_cast<uint8_t>(pulse_width_us(signal) + kInterPulseGapUs); }
+constexpr uint8_t slot_length_us(uint8_t signal) {
+  return static_cast<uint8_t>(pulse_width_us(signal) + kInterPulseGapUs);
+}
 
 /// One frame's line levels: bit n is the level from n µs to n+1 µs after the frame starts.
 struct FrameWords {

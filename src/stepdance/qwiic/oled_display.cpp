@@ -1,8 +1,8 @@
 // OledDisplay: init sequence, chunked updates, failure and retry.
 #include "stepdance/qwiic/oled_display.hpp"
 
-#include "stepdance/hal/hal.hpp"
 #include "stepdance/core/text_writer.hpp"
+#include "stepdance/hal/hal.hpp"
 #include "stepdance/qwiic/font_5x7.hpp"
 #include "stepdance/qwiic/ssd1306.hpp"
 
@@ -169,8 +169,13 @@ void OledDisplay::send_window(uint8_t chunk) {
   chunk_ = chunk;
   const uint8_t page = chunk / kChunksPerPage;
   const uint8_t first_x = static_cast<uint8_t>((chunk % kChunksPerPage) * kChunkColumns);
-  const uint8_t window[] = {kControlCommands, kSetColumnRange, first_x, static_cast<uint8_t>(first_x + kChunkColumns - 1),
-                            kSetPageRange, page, page};
+  const uint8_t window[] = {kControlCommands,
+                            kSetColumnRange,
+                            first_x,
+                            static_cast<uint8_t>(first_x + kChunkColumns - 1),
+                            kSetPageRange,
+                            page,
+                            page};
   for (uint8_t i = 0; i < sizeof window; ++i) tx_[i] = window[i];
   submit(sizeof window);
 }
@@ -201,12 +206,8 @@ void OledDisplay::finish(hal::I2cResult result) {
       last_failure_ = hal::I2cResult::kIdle;
       hal::log_message("OledDisplay: ready");
       break;
-    case Step::kWindow:
-      send_data(chunk_);
-      break;
-    case Step::kData:
-      ++chunks_sent_;
-      break;
+    case Step::kWindow: send_data(chunk_); break;
+    case Step::kData: ++chunks_sent_; break;
   }
 }
 

@@ -19,9 +19,7 @@ void spend_pass_budget() {
   pass_of_last_start = engine().loop_passes();
 }
 
-bool is_final(hal::I2cResult result) {
-  return result != hal::I2cResult::kIdle && result != hal::I2cResult::kPending;
-}
+bool is_final(hal::I2cResult result) { return result != hal::I2cResult::kIdle && result != hal::I2cResult::kPending; }
 
 }  // namespace
 

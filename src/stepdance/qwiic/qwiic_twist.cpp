@@ -1,13 +1,13 @@
 // QwiicTwist: identification, polling, unwrapping the count, clearing latched events, writes.
 #include "stepdance/qwiic/qwiic_twist.hpp"
 
-#include "stepdance/hal/hal.hpp"
 #include "stepdance/core/text_writer.hpp"
+#include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
 namespace {
 
-constexpr uint8_t kFirstPolled = twist::kStatus;                   // 0x01
+constexpr uint8_t kFirstPolled = twist::kStatus;                            // 0x01
 constexpr uint8_t kPolledBytes = twist::kSinceButtonMs + 2 - kFirstPolled;  // through 0x0C
 static_assert(kPolledBytes == 12, "the poll reads registers 0x01..0x0C");
 
@@ -55,7 +55,8 @@ void QwiicTwist::service() {
     if (now_us - failed_at_us_ < kRetryMs * 1000u) return;
     state_ = State::kIdentifying;
   }
-  if (!read_request_.in_flight() && (state_ == State::kIdentifying || now_us - last_poll_us_ >= poll_interval_ms_ * 1000u)) {
+  if (!read_request_.in_flight() &&
+      (state_ == State::kIdentifying || now_us - last_poll_us_ >= poll_interval_ms_ * 1000u)) {
     last_poll_us_ = now_us;
     start_read();
   }
@@ -78,11 +79,14 @@ void QwiicTwist::service() {
 void QwiicTwist::start_read() {
   const bool identifying = state_ == State::kIdentifying;
   read_command_ = identifying ? twist::kId : kFirstPolled;
-  read_request_.transfer = hal::I2cTransfer{address_, &read_command_, 1, registers_, static_cast<uint16_t>(identifying ? 1 : kPolledBytes)};
+  read_request_.transfer =
+      hal::I2cTransfer{address_, &read_command_, 1, registers_, static_cast<uint16_t>(identifying ? 1 : kPolledBytes)};
   if (bus_->submit(read_request_) != Status::kOk) read_request_.result = hal::I2cResult::kIdle;
 }
 
-void QwiicTwist::on_read_done(void* self, hal::I2cResult result) { static_cast<QwiicTwist*>(self)->finish_read(result); }
+void QwiicTwist::on_read_done(void* self, hal::I2cResult result) {
+  static_cast<QwiicTwist*>(self)->finish_read(result);
+}
 
 // A status clear that reached the knob ends the latched click: the next clicked bit is a new one.
 void QwiicTwist::on_write_done(void* self, hal::I2cResult result) {
@@ -204,7 +208,8 @@ Status QwiicTwist::connect_color(int16_t red_per_detent, int16_t green_per_deten
   const auto r = static_cast<uint16_t>(red_per_detent);
   const auto g = static_cast<uint16_t>(green_per_detent);
   const auto b = static_cast<uint16_t>(blue_per_detent);
-  const uint8_t bytes[] = {twist::kConnectRed, low_byte(r), high_byte(r), low_byte(g), high_byte(g), low_byte(b), high_byte(b)};
+  const uint8_t bytes[] = {twist::kConnectRed, low_byte(r), high_byte(r), low_byte(g),
+                           high_byte(g),       low_byte(b), high_byte(b)};
   return queue_write(bytes, sizeof bytes);
 }
 
@@ -218,7 +223,8 @@ Status QwiicTwist::set_register_count(int16_t count) {
 }
 
 Status QwiicTwist::enable_interrupts(bool on_turn, bool on_button) {
-  const uint8_t bits = static_cast<uint8_t>((on_turn ? twist::kInterruptOnTurn : 0) | (on_button ? twist::kInterruptOnButton : 0));
+  const uint8_t bits =
+      static_cast<uint8_t>((on_turn ? twist::kInterruptOnTurn : 0) | (on_button ? twist::kInterruptOnButton : 0));
   const uint8_t bytes[] = {twist::kEnableInterrupts, bits};
   return queue_write(bytes, sizeof bytes);
 }

@@ -1,8 +1,8 @@
 // StatusMenu: knob events to cursor, edits and actions; items to text rows.
 #include "stepdance/qwiic/status_menu.hpp"
 
-#include "stepdance/hal/hal.hpp"
 #include "stepdance/core/text_writer.hpp"
+#include "stepdance/hal/hal.hpp"
 
 namespace stepdance {
 namespace {

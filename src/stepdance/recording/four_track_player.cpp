@@ -156,7 +156,8 @@ void FourTrackPlayer::stop() {
   file_open_ = false;
   end_of_file_ = false;
   uint8_t stale = 0;
-  while (ring_.pop(stale) == Status::kOk) {}
+  while (ring_.pop(stale) == Status::kOk) {
+  }
 }
 
 // Frame context (input-port stage). The ports are pushed every frame, playing or not, so a
@@ -176,7 +177,8 @@ bool FourTrackPlayer::play_frame() {
   if (ring_.size() < bytes) {
     if (end_of_file_) return false;
     ++underruns_;
-    if (!in_underrun_) report_fault(FaultLevel::kWarning, FaultReason::kOverrun, kSource, "storage too slow: playback waits");
+    if (!in_underrun_)
+      report_fault(FaultLevel::kWarning, FaultReason::kOverrun, kSource, "storage too slow: playback waits");
     in_underrun_ = true;
     return true;
   }

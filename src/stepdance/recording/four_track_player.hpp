@@ -86,11 +86,11 @@ class FourTrackPlayer : public Block {
   DecimalPosition positions_[recording::kTracks] = {};  // steps played per track
   double resolution_ = 0.01;                            // world units per step, original files
   recording::RecordingFormat file_format_ = recording::RecordingFormat::kOriginal;
-  int handle_ = -1;                 // loop only
-  bool file_open_ = false;          // loop only
+  int handle_ = -1;                    // loop only
+  bool file_open_ = false;             // loop only
   volatile bool end_of_file_ = false;  // loop: everything in the file is in the ring
   volatile bool paused_ = false;
-  bool in_underrun_ = false;        // frame only
+  bool in_underrun_ = false;  // frame only
   uint64_t bytes_read_ = 0;
   uint32_t underruns_ = 0;
   uint32_t storage_errors_ = 0;

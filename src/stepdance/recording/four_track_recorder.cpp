@@ -1,7 +1,6 @@
 // FourTrackRecorder: the frame packs samples into RAM, the loop writes them to storage.
 #include "stepdance/recording/four_track_recorder.hpp"
 
-
 #include "stepdance/core/engine.hpp"
 #include "stepdance/core/fault.hpp"
 #include "stepdance/core/frame_period.hpp"
@@ -46,14 +45,16 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
     return Status::kBadArgument;
   }
   if (format_ == RecordingFormat::kOriginal && frame_period_us() != recording::kOriginalFramePeriodUs) {
-    hal::log_message("FourTrackRecorder::start: the original format holds 40 us frames only; use RECORDING_FORMAT_STEPDANCE");
+    hal::log_message(
+        "FourTrackRecorder::start: the original format holds 40 us frames only; use RECORDING_FORMAT_STEPDANCE");
     report_fault(FaultLevel::kWarning, FaultReason::kRefused, kSource, "the original format holds 40 us frames only");
     return Status::kUnsupported;
   }
   FileStorage& storage = hal::storage();
   const Status opened = storage.open(data_name_, FileMode::kWriteTruncate, handle_);
   if (opened == Status::kUnsupported) {
-    hal::log_message("FourTrackRecorder::start: this board has no SD card slot (a Teensy 4.0 has none; record on a 4.1)");
+    hal::log_message(
+        "FourTrackRecorder::start: this board has no SD card slot (a Teensy 4.0 has none; record on a 4.1)");
     report_fault(FaultLevel::kWarning, FaultReason::kRefused, kSource, "no SD card slot on this board");
     return Status::kUnsupported;
   }
@@ -65,7 +66,8 @@ Status FourTrackRecorder::start(const char* name, uint32_t minutes) {
   file_open_ = true;
   file_format_ = format_;
   uint8_t stale = 0;
-  while (ring_.pop(stale) == Status::kOk) {}  // left by a recording the card cut short
+  while (ring_.pop(stale) == Status::kOk) {
+  }  // left by a recording the card cut short
   bytes_written_ = 0;
   if (file_format_ == RecordingFormat::kStepdance) {
     recording::RecordingHeader header;

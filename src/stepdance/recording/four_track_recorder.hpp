@@ -105,8 +105,8 @@ class FourTrackRecorder : public Block {
   recording::FileName length_name_ = {};
   RecordingFormat format_ = RecordingFormat::kOriginal;
   RecordingFormat file_format_ = RecordingFormat::kOriginal;  // of the open file
-  int handle_ = -1;             // loop only
-  bool file_open_ = false;      // loop only
+  int handle_ = -1;                                           // loop only
+  bool file_open_ = false;                                    // loop only
   volatile bool paused_ = false;
   volatile StopCause stop_cause_ = StopCause::kNone;  // written by whoever stopped recording
   uint64_t bytes_written_ = 0;

@@ -74,8 +74,8 @@ HeaderCheck read_header(const uint8_t* data, size_t length, RecordingHeader& out
   header.version = static_cast<uint16_t>(get_le(data + 8, 2));
   header.header_bytes = static_cast<uint16_t>(get_le(data + 10, 2));
   header.frame_period_ns = static_cast<uint32_t>(get_le(data + 12, 4));
-  if (header.version != kFormatVersion || header.header_bytes != kHeaderBytes || data[16] != kTracks ||
-      data[17] != 1 || header.frame_period_ns % 1000u != 0 || !frame_period_supported(header.frame_period_ns / 1000u)) {
+  if (header.version != kFormatVersion || header.header_bytes != kHeaderBytes || data[16] != kTracks || data[17] != 1 ||
+      header.frame_period_ns % 1000u != 0 || !frame_period_supported(header.frame_period_ns / 1000u)) {
     return HeaderCheck::kUnsupported;
   }
   for (size_t track = 0; track < kTracks; ++track) {

@@ -68,10 +68,10 @@ constexpr uint16_t kFormatVersion = 1;
 
 /// How a file's first bytes read.
 enum class HeaderCheck : uint8_t {
-  kOk,                  ///< a header this code can play
-  kNotOurs,             ///< no magic: an original-format file
-  kUnsupported,         ///< our magic, but a version, track layout or frame period (not 10, 20, 25, 40 µs) we cannot play
-  kTruncated,           ///< our magic, but shorter than the header
+  kOk,           ///< a header this code can play
+  kNotOurs,      ///< no magic: an original-format file
+  kUnsupported,  ///< our magic, but a version, track layout or frame period (not 10, 20, 25, 40 µs) we cannot play
+  kTruncated,    ///< our magic, but shorter than the header
 };
 
 /// Writes `header` into 64 bytes. Context: any (pure).

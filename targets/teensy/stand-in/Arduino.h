@@ -119,9 +119,7 @@ class Print {
   size_t print(const char* text) { return write(text); }
   size_t print(char c) { return write(static_cast<uint8_t>(c)); }
   size_t print(int value, int base = DEC) { return print(static_cast<long>(value), base); }
-  size_t print(unsigned value, int base = DEC) {
-    return print(static_cast<unsigned long>(value), base);
-  }
+  size_t print(unsigned value, int base = DEC) { return print(static_cast<unsigned long>(value), base); }
   size_t print(long value, int base = DEC);
   size_t print(unsigned long value, int base = DEC);
   size_t print(double value, int digits = 2);

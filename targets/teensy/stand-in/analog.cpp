@@ -77,7 +77,7 @@ extern "C" int analogRead(uint8_t pin) {
   const Channel input = channel_of(pin);
   if (input.channel == kNone) return 0;
   adc::hc0(input.module) = adc::hc_channel(input.channel);  // starts one software-triggered conversion
-  while ((adc::hs(input.module) & 1u) == 0) {              // HS.COCO0
+  while ((adc::hs(input.module) & 1u) == 0) {               // HS.COCO0
   }
   return static_cast<int>(adc::r0(input.module) & 0x3FFu);  // reading R0 clears COCO0
 }

@@ -31,37 +31,37 @@ constexpr uint32_t lut_pair(uint32_t first, uint32_t second) { return first | se
 /// The FlexSPI NOR configuration block, RM Table 9-15 (common FlexSPI part, 448 bytes) followed by
 /// Table 9-16 (serial NOR part, 64 bytes).
 struct FlexSpiNorConfig {
-  uint32_t tag;                    // 0x000 "FCFB"
-  uint32_t version;                // 0x004 'V' major minor bugfix
-  uint32_t reserved0;              // 0x008
-  uint8_t read_sample_clock_source;  // 0x00C 1 = loopback from the DQS pad
-  uint8_t cs_hold_time;            // 0x00D serial clock cycles
-  uint8_t cs_setup_time;           // 0x00E serial clock cycles
-  uint8_t column_address_width;    // 0x00F 0 for serial NOR
-  uint32_t device_mode_words[3];   // 0x010 device mode configuration: off
-  uint32_t config_command_words[9];  // 0x01C configuration commands: off
-  uint32_t controller_misc_option;  // 0x040
-  uint8_t device_type;             // 0x044 1 = serial NOR
-  uint8_t serial_flash_pad_type;   // 0x045 4 = quad
-  uint8_t serial_clock_frequency;  // 0x046 ROM frequency code
+  uint32_t tag;                        // 0x000 "FCFB"
+  uint32_t version;                    // 0x004 'V' major minor bugfix
+  uint32_t reserved0;                  // 0x008
+  uint8_t read_sample_clock_source;    // 0x00C 1 = loopback from the DQS pad
+  uint8_t cs_hold_time;                // 0x00D serial clock cycles
+  uint8_t cs_setup_time;               // 0x00E serial clock cycles
+  uint8_t column_address_width;        // 0x00F 0 for serial NOR
+  uint32_t device_mode_words[3];       // 0x010 device mode configuration: off
+  uint32_t config_command_words[9];    // 0x01C configuration commands: off
+  uint32_t controller_misc_option;     // 0x040
+  uint8_t device_type;                 // 0x044 1 = serial NOR
+  uint8_t serial_flash_pad_type;       // 0x045 4 = quad
+  uint8_t serial_clock_frequency;      // 0x046 ROM frequency code
   uint8_t lut_custom_sequence_enable;  // 0x047
-  uint32_t reserved1[2];           // 0x048
-  uint32_t flash_a1_size_bytes;    // 0x050
-  uint32_t flash_other_sizes[3];   // 0x054 A2, B1, B2: no second chip
-  uint32_t pad_overrides[4];       // 0x060 CS, SCLK, data, DQS pad settings: ROM defaults
-  uint32_t timeout_ms;             // 0x070
-  uint32_t command_interval;       // 0x074
-  uint32_t data_valid_time;        // 0x078
-  uint32_t busy_offset_polarity;   // 0x07C status bit 0 (WIP), 1 = busy
-  uint32_t lookup_table[64];       // 0x080 16 sequences of 4 words
-  uint32_t lut_custom_sequence[12];  // 0x180
-  uint32_t reserved2[4];           // 0x1B0
-  uint32_t page_size_bytes;        // 0x1C0 serial NOR part
-  uint32_t sector_size_bytes;      // 0x1C4
-  uint32_t ip_command_clock;       // 0x1C8 ipCmdSerialClkFreq (byte), 1 = 30 MHz
-  uint32_t reserved3;              // 0x1CC
-  uint32_t block_size_bytes;       // 0x1D0
-  uint32_t reserved4[11];          // 0x1D4
+  uint32_t reserved1[2];               // 0x048
+  uint32_t flash_a1_size_bytes;        // 0x050
+  uint32_t flash_other_sizes[3];       // 0x054 A2, B1, B2: no second chip
+  uint32_t pad_overrides[4];           // 0x060 CS, SCLK, data, DQS pad settings: ROM defaults
+  uint32_t timeout_ms;                 // 0x070
+  uint32_t command_interval;           // 0x074
+  uint32_t data_valid_time;            // 0x078
+  uint32_t busy_offset_polarity;       // 0x07C status bit 0 (WIP), 1 = busy
+  uint32_t lookup_table[64];           // 0x080 16 sequences of 4 words
+  uint32_t lut_custom_sequence[12];    // 0x180
+  uint32_t reserved2[4];               // 0x1B0
+  uint32_t page_size_bytes;            // 0x1C0 serial NOR part
+  uint32_t sector_size_bytes;          // 0x1C4
+  uint32_t ip_command_clock;           // 0x1C8 ipCmdSerialClkFreq (byte), 1 = 30 MHz
+  uint32_t reserved3;                  // 0x1CC
+  uint32_t block_size_bytes;           // 0x1D0
+  uint32_t reserved4[11];              // 0x1D4
 };
 static_assert(sizeof(FlexSpiNorConfig) == 512, "RM Tables 9-15 and 9-16: 512 bytes");
 
@@ -143,8 +143,14 @@ __attribute__((section(".boot_data"), used)) const BootData stand_in_boot_data =
 
 extern const ImageVectorTable stand_in_image_vector_table;
 __attribute__((section(".image_vector_table"), used)) const ImageVectorTable stand_in_image_vector_table = {
-    0x412000D1u, reinterpret_cast<const void*>(&stand_in_reset_handler), 0, nullptr, &stand_in_boot_data,
-    &stand_in_image_vector_table, nullptr, 0,
+    0x412000D1u,
+    reinterpret_cast<const void*>(&stand_in_reset_handler),
+    0,
+    nullptr,
+    &stand_in_boot_data,
+    &stand_in_image_vector_table,
+    nullptr,
+    0,
 };
 
 }  // extern "C"

@@ -96,8 +96,8 @@ extern "C" STAND_IN_FLASH void stand_in_usb_pll_start() {
   const uint32_t pll = reg32(analog::kPllUsb1);
   if (pll & analog::kPllUsb1DivSelect) {  // 528 MHz mode: bypass, power down, then start afresh
     reg32(analog::kPllUsb1Set) = analog::kPllUsb1Bypass;
-    reg32(analog::kPllUsb1Clr) = analog::kPllUsb1BypassClkSrcMask | analog::kPllUsb1Power |
-                                 analog::kPllUsb1DivSelect | analog::kPllUsb1Enable | analog::kPllUsb1EnUsbClks;
+    reg32(analog::kPllUsb1Clr) = analog::kPllUsb1BypassClkSrcMask | analog::kPllUsb1Power | analog::kPllUsb1DivSelect |
+                                 analog::kPllUsb1Enable | analog::kPllUsb1EnUsbClks;
   }
   reg32(analog::kPllUsb1Set) = analog::kPllUsb1Enable | analog::kPllUsb1Power;
   while ((reg32(analog::kPllUsb1) & analog::kPllLock) == 0) {
@@ -109,7 +109,8 @@ extern "C" STAND_IN_FLASH void stand_in_usb_pll_start() {
 extern "C" STAND_IN_FLASH void stand_in_clocks_start() {
   namespace iomuxc = stepdance::platform::teensy::regs::iomuxc;
   // PERCLK (PIT, GPT) from the oscillator, undivided: 24 MHz whatever the core runs at.
-  backend_ccm::cscmr1() = (backend_ccm::cscmr1() & ~backend_ccm::kCscmr1PerclkPodfMask) | backend_ccm::kCscmr1PerclkSelOsc;
+  backend_ccm::cscmr1() =
+      (backend_ccm::cscmr1() & ~backend_ccm::kCscmr1PerclkPodfMask) | backend_ccm::kCscmr1PerclkSelOsc;
   // Every pad's GPIO goes to the fast GPIO6..9 (IOMUXC_GPR26..29, RM §11.4), as on a Teensy.
   for (unsigned port = 0; port < 4; ++port) iomuxc::gpr_fast_gpio_select(port) = 0xFFFFFFFFu;
   stand_in_usb_pll_start();

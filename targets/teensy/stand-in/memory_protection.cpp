@@ -19,7 +19,7 @@ namespace mpu = stand_in::mpu;
 
 // Memory types (ARMv7-M ARM §B3.5.9, TEX/C/B encodings).
 constexpr uint32_t kStronglyOrdered = mpu::rasr_type(0, 0, 0);
-constexpr uint32_t kDevice = mpu::rasr_type(2, 0, 0);             // non-shareable device
+constexpr uint32_t kDevice = mpu::rasr_type(2, 0, 0);  // non-shareable device
 constexpr uint32_t kNormalUncached = mpu::rasr_type(1, 0, 0);
 constexpr uint32_t kNormalWriteThrough = mpu::rasr_type(0, 1, 0);
 constexpr uint32_t kNormalWriteBackAllocate = mpu::rasr_type(1, 1, 1);
@@ -38,15 +38,15 @@ struct Region {
 // In region-number order. Region 5's base is filled in at run time (the stack guard).
 constexpr int kStackGuardRegion = 5;
 constexpr Region kRegions[] = {
-    {0x00000000u, kStronglyOrdered | kNoAccess | kNoExecute, 32},       // 0 everything else
-    {0x00000000u, kNormalUncached | kReadOnly, 19},                     // 1 ITCM, 512 KB: code
-    {0x00000000u, kDevice | kNoAccess | kNoExecute, 5},                 // 2 null pointer trap
-    {0x00200000u, kNormalWriteThrough | kReadOnly, 17},                 // 3 boot ROM, 128 KB
-    {0x20000000u, kNormalUncached | kReadWrite | kNoExecute, 19},       // 4 DTCM, 512 KB
-    {0x00000000u, kStronglyOrdered | kNoAccess | kNoExecute, 5},        // 5 stack guard
+    {0x00000000u, kStronglyOrdered | kNoAccess | kNoExecute, 32},           // 0 everything else
+    {0x00000000u, kNormalUncached | kReadOnly, 19},                         // 1 ITCM, 512 KB: code
+    {0x00000000u, kDevice | kNoAccess | kNoExecute, 5},                     // 2 null pointer trap
+    {0x00200000u, kNormalWriteThrough | kReadOnly, 17},                     // 3 boot ROM, 128 KB
+    {0x20000000u, kNormalUncached | kReadWrite | kNoExecute, 19},           // 4 DTCM, 512 KB
+    {0x00000000u, kStronglyOrdered | kNoAccess | kNoExecute, 5},            // 5 stack guard
     {0x20200000u, kNormalWriteBackAllocate | kReadWrite | kNoExecute, 20},  // 6 OCRAM, 1 MB
-    {0x40000000u, kDevice | kReadWrite | kNoExecute, 26},               // 7 peripherals, 64 MB
-    {0x60000000u, kNormalWriteBackAllocate | kReadOnly, 24},            // 8 QSPI flash, 16 MB
+    {0x40000000u, kDevice | kReadWrite | kNoExecute, 26},                   // 7 peripherals, 64 MB
+    {0x60000000u, kNormalWriteBackAllocate | kReadOnly, 24},                // 8 QSPI flash, 16 MB
 };
 
 STAND_IN_FLASH void program_regions() {
@@ -54,9 +54,8 @@ STAND_IN_FLASH void program_regions() {
   stand_in::barrier();
   uint32_t number = 0;
   for (const Region& region : kRegions) {
-    const uint32_t base = number == kStackGuardRegion
-                              ? static_cast<uint32_t>(reinterpret_cast<uintptr_t>(_stack_guard))
-                              : region.base;
+    const uint32_t base =
+        number == kStackGuardRegion ? static_cast<uint32_t>(reinterpret_cast<uintptr_t>(_stack_guard)) : region.base;
     stand_in::reg32(mpu::kRbar) = base | mpu::kRbarValid | number;
     stand_in::reg32(mpu::kRasr) = region.attributes | mpu::rasr_size(region.log2_bytes) | mpu::kRasrEnable;
     ++number;

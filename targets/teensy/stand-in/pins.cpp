@@ -28,16 +28,14 @@ bool gates_on = false;
 // Pad settings per mode: the backend's (pins.hpp, gpio.cpp): pulls of 22 kΩ up or 100 kΩ down.
 uint32_t pad_for(uint8_t mode) {
   switch (mode) {
-    case OUTPUT:
-      return teensy::kPadOutput;
+    case OUTPUT: return teensy::kPadOutput;
     case INPUT_PULLUP:
       return iomuxc::kPadKeeperEnable | iomuxc::kPadPullSelect | iomuxc::pad_pull(iomuxc::kPull22kUp) |
              iomuxc::kPadHysteresis;
     case INPUT_PULLDOWN:
       return iomuxc::kPadKeeperEnable | iomuxc::kPadPullSelect | iomuxc::pad_pull(iomuxc::kPull100kDown) |
              iomuxc::kPadHysteresis;
-    default:
-      return teensy::kPadInput;
+    default: return teensy::kPadInput;
   }
 }
 

@@ -28,29 +28,29 @@ inline void barrier() {
 
 // ---- System control block, ARMv7-M ARM §B3.2 ---------------------------------------------------
 namespace scb {
-constexpr uint32_t kIcsr = 0xE000ED04u;             // §B3.2.4 ICSR
-constexpr uint32_t kIcsrPendSysTick = 1u << 26;     //   PENDSTSET: SysTick pending
-constexpr uint32_t kVtor = 0xE000ED08u;             // §B3.2.5 VTOR
-constexpr uint32_t kCcr = 0xE000ED14u;              // §B3.2.8 CCR
-constexpr uint32_t kCcrDataCache = 1u << 16;        //   DC (Cortex-M7 cache enables, §B2.2.7)
-constexpr uint32_t kCcrInstructionCache = 1u << 17; //   IC
-constexpr uint32_t kShpr3 = 0xE000ED20u;            // §B3.2.12 SHPR3: PendSV 23:16, SysTick 31:24
-constexpr uint32_t kShcsr = 0xE000ED24u;            // §B3.2.13 SHCSR
-constexpr uint32_t kShcsrFaultsEnabled = 7u << 16;  //   MEMFAULTENA, BUSFAULTENA, USGFAULTENA
-constexpr uint32_t kCpacr = 0xE000ED88u;            // §B3.2.20 CPACR
-constexpr uint32_t kCpacrFpuFull = 0xFu << 20;      //   CP10 and CP11 full access: the FPU
-constexpr uint32_t kIciallu = 0xE000EF50u;          // §B2.2.7 ICIALLU: invalidate all I-cache
-constexpr uint32_t kDcisw = 0xE000EF60u;            // §B2.2.7 DCISW: invalidate D-cache by set/way
+constexpr uint32_t kIcsr = 0xE000ED04u;              // §B3.2.4 ICSR
+constexpr uint32_t kIcsrPendSysTick = 1u << 26;      //   PENDSTSET: SysTick pending
+constexpr uint32_t kVtor = 0xE000ED08u;              // §B3.2.5 VTOR
+constexpr uint32_t kCcr = 0xE000ED14u;               // §B3.2.8 CCR
+constexpr uint32_t kCcrDataCache = 1u << 16;         //   DC (Cortex-M7 cache enables, §B2.2.7)
+constexpr uint32_t kCcrInstructionCache = 1u << 17;  //   IC
+constexpr uint32_t kShpr3 = 0xE000ED20u;             // §B3.2.12 SHPR3: PendSV 23:16, SysTick 31:24
+constexpr uint32_t kShcsr = 0xE000ED24u;             // §B3.2.13 SHCSR
+constexpr uint32_t kShcsrFaultsEnabled = 7u << 16;   //   MEMFAULTENA, BUSFAULTENA, USGFAULTENA
+constexpr uint32_t kCpacr = 0xE000ED88u;             // §B3.2.20 CPACR
+constexpr uint32_t kCpacrFpuFull = 0xFu << 20;       //   CP10 and CP11 full access: the FPU
+constexpr uint32_t kIciallu = 0xE000EF50u;           // §B2.2.7 ICIALLU: invalidate all I-cache
+constexpr uint32_t kDcisw = 0xE000EF60u;             // §B2.2.7 DCISW: invalidate D-cache by set/way
 }  // namespace scb
 
 // ---- SysTick, ARMv7-M ARM §B3.3 ----------------------------------------------------------------
 namespace systick {
-constexpr uint32_t kCsr = 0xE000E010u;         // §B3.3.3 SYST_CSR
-constexpr uint32_t kCsrEnable = 1u << 0;       //   ENABLE
-constexpr uint32_t kCsrTickInt = 1u << 1;      //   TICKINT: exception 15 on each wrap
-constexpr uint32_t kCsrCoreClock = 1u << 2;    //   CLKSOURCE = 1: the processor clock
-constexpr uint32_t kRvr = 0xE000E014u;         // §B3.3.4 SYST_RVR, 24-bit reload value
-constexpr uint32_t kCvr = 0xE000E018u;         // §B3.3.5 SYST_CVR, current value (counts down)
+constexpr uint32_t kCsr = 0xE000E010u;       // §B3.3.3 SYST_CSR
+constexpr uint32_t kCsrEnable = 1u << 0;     //   ENABLE
+constexpr uint32_t kCsrTickInt = 1u << 1;    //   TICKINT: exception 15 on each wrap
+constexpr uint32_t kCsrCoreClock = 1u << 2;  //   CLKSOURCE = 1: the processor clock
+constexpr uint32_t kRvr = 0xE000E014u;       // §B3.3.4 SYST_RVR, 24-bit reload value
+constexpr uint32_t kCvr = 0xE000E018u;       // §B3.3.5 SYST_CVR, current value (counts down)
 }  // namespace systick
 
 // ---- NVIC, ARMv7-M ARM §B3.4 -------------------------------------------------------------------
@@ -68,8 +68,8 @@ constexpr uint32_t kRasr = 0xE000EDA0u;           // §B3.5.8 MPU_RASR
 constexpr uint32_t kRasrEnable = 1u << 0;         //   ENABLE
 constexpr uint32_t kRasrExecuteNever = 1u << 28;  //   XN
 constexpr uint32_t rasr_size(unsigned log2_bytes) { return (log2_bytes - 1u) << 1; }  // SIZE 5:1
-constexpr uint32_t rasr_access(uint32_t ap) { return ap << 24; }                       // AP 26:24
-constexpr uint32_t rasr_type(uint32_t tex, uint32_t c, uint32_t b) {                   // §B3.5.9
+constexpr uint32_t rasr_access(uint32_t ap) { return ap << 24; }                      // AP 26:24
+constexpr uint32_t rasr_type(uint32_t tex, uint32_t c, uint32_t b) {                  // §B3.5.9
   return (tex << 19) | (c << 17) | (b << 16);
 }
 }  // namespace mpu
@@ -111,72 +111,72 @@ constexpr uint32_t kCdhiprArmPodfBusy = 1u << 16;
 // ---- CCM_ANALOG (PLLs), RM §14.8 ---------------------------------------------------------------
 namespace analog {
 constexpr uint32_t kBase = 0x400D8000u;
-constexpr uint32_t kPllArm = kBase + 0x00u;        // CCM_ANALOG_PLL_ARM
-constexpr uint32_t kPllArmDivSelectMask = 0x7Fu;   //   DIV_SELECT 6:0: Fout = 24 MHz × DIV_SELECT / 2
-constexpr uint32_t kPllArmPowerDown = 1u << 12;    //   POWERDOWN
-constexpr uint32_t kPllArmEnable = 1u << 13;       //   ENABLE (output)
-constexpr uint32_t kPllArmBypass = 1u << 16;       //   BYPASS
-constexpr uint32_t kPllLock = 1u << 31;            //   LOCK (all PLLs)
-constexpr uint32_t kPllUsb1 = kBase + 0x10u;       // CCM_ANALOG_PLL_USB1
-constexpr uint32_t kPllUsb1Set = kBase + 0x14u;    //   its SET alias
-constexpr uint32_t kPllUsb1Clr = kBase + 0x18u;    //   its CLR alias
-constexpr uint32_t kPllUsb1DivSelect = 1u << 1;    //   DIV_SELECT: 0 = 20 × 24 MHz = 480 MHz
-constexpr uint32_t kPllUsb1EnUsbClks = 1u << 6;    //   EN_USB_CLKS
-constexpr uint32_t kPllUsb1Power = 1u << 12;       //   POWER
-constexpr uint32_t kPllUsb1Enable = 1u << 13;      //   ENABLE
+constexpr uint32_t kPllArm = kBase + 0x00u;              // CCM_ANALOG_PLL_ARM
+constexpr uint32_t kPllArmDivSelectMask = 0x7Fu;         //   DIV_SELECT 6:0: Fout = 24 MHz × DIV_SELECT / 2
+constexpr uint32_t kPllArmPowerDown = 1u << 12;          //   POWERDOWN
+constexpr uint32_t kPllArmEnable = 1u << 13;             //   ENABLE (output)
+constexpr uint32_t kPllArmBypass = 1u << 16;             //   BYPASS
+constexpr uint32_t kPllLock = 1u << 31;                  //   LOCK (all PLLs)
+constexpr uint32_t kPllUsb1 = kBase + 0x10u;             // CCM_ANALOG_PLL_USB1
+constexpr uint32_t kPllUsb1Set = kBase + 0x14u;          //   its SET alias
+constexpr uint32_t kPllUsb1Clr = kBase + 0x18u;          //   its CLR alias
+constexpr uint32_t kPllUsb1DivSelect = 1u << 1;          //   DIV_SELECT: 0 = 20 × 24 MHz = 480 MHz
+constexpr uint32_t kPllUsb1EnUsbClks = 1u << 6;          //   EN_USB_CLKS
+constexpr uint32_t kPllUsb1Power = 1u << 12;             //   POWER
+constexpr uint32_t kPllUsb1Enable = 1u << 13;            //   ENABLE
 constexpr uint32_t kPllUsb1BypassClkSrcMask = 3u << 14;  // BYPASS_CLK_SRC: 0 = 24 MHz oscillator
-constexpr uint32_t kPllUsb1Bypass = 1u << 16;      //   BYPASS
+constexpr uint32_t kPllUsb1Bypass = 1u << 16;            //   BYPASS
 }  // namespace analog
 
 // ---- PMU, RM "Power Management Unit" chapter (PMU_MISC0 at the CCM_ANALOG base + 0x150) --------
 namespace pmu {
-constexpr uint32_t kMisc0Set = 0x400D8154u;          // PMU_MISC0_SET
+constexpr uint32_t kMisc0Set = 0x400D8154u;            // PMU_MISC0_SET
 constexpr uint32_t kMisc0RefTopSelfBiasOff = 1u << 3;  // REFTOP_SELFBIASOFF: bandgap bias currents
 }  // namespace pmu
 
 // ---- DCDC converter, RM "DCDC Converter" chapter -----------------------------------------------
 namespace dcdc {
 constexpr uint32_t kBase = 0x40080000u;
-constexpr uint32_t kReg0 = kBase + 0x00u;       // DCDC_REG0
-constexpr uint32_t kReg0StsDcOk = 1u << 31;     //   STS_DC_OK: output has settled
-constexpr uint32_t kReg3 = kBase + 0x0Cu;       // DCDC_REG3
-constexpr uint32_t kReg3TrgMask = 0x1Fu;        //   TRG 4:0: VDD_SOC = 0.8 V + TRG × 25 mV
+constexpr uint32_t kReg0 = kBase + 0x00u;    // DCDC_REG0
+constexpr uint32_t kReg0StsDcOk = 1u << 31;  //   STS_DC_OK: output has settled
+constexpr uint32_t kReg3 = kBase + 0x0Cu;    // DCDC_REG3
+constexpr uint32_t kReg3TrgMask = 0x1Fu;     //   TRG 4:0: VDD_SOC = 0.8 V + TRG × 25 mV
 }  // namespace dcdc
 
 // ---- LPI2C, RM "Low Power Inter-Integrated Circuit" chapter ------------------------------------
 namespace lpi2c {
 constexpr uint32_t kLpi2c1Base = 0x403F0000u;
 constexpr uint32_t kLpi2c3Base = 0x403F8000u;
-constexpr uint32_t kMcr = 0x10u;                // MCR
-constexpr uint32_t kMcrEnable = 1u << 0;        //   MEN
-constexpr uint32_t kMcrReset = 1u << 1;         //   RST
-constexpr uint32_t kMcrResetTxFifo = 1u << 8;   //   RTF
-constexpr uint32_t kMcrResetRxFifo = 1u << 9;   //   RRF
-constexpr uint32_t kMsr = 0x14u;                // MSR (flags write 1 to clear)
-constexpr uint32_t kMsrStopDetected = 1u << 9;  //   SDF
-constexpr uint32_t kMsrNack = 1u << 10;         //   NDF
+constexpr uint32_t kMcr = 0x10u;                    // MCR
+constexpr uint32_t kMcrEnable = 1u << 0;            //   MEN
+constexpr uint32_t kMcrReset = 1u << 1;             //   RST
+constexpr uint32_t kMcrResetTxFifo = 1u << 8;       //   RTF
+constexpr uint32_t kMcrResetRxFifo = 1u << 9;       //   RRF
+constexpr uint32_t kMsr = 0x14u;                    // MSR (flags write 1 to clear)
+constexpr uint32_t kMsrStopDetected = 1u << 9;      //   SDF
+constexpr uint32_t kMsrNack = 1u << 10;             //   NDF
 constexpr uint32_t kMsrArbitrationLost = 1u << 11;  // ALF
-constexpr uint32_t kMsrFifoError = 1u << 12;    //   FEF
-constexpr uint32_t kMsrPinLowTimeout = 1u << 13;  // PLTF
-constexpr uint32_t kMsrClearable = 0x7Fu << 8;  //   EPF..DMF, bits 14:8
-constexpr uint32_t kMsrMasterBusy = 1u << 24;   //   MBF
-constexpr uint32_t kMsrBusBusy = 1u << 25;      //   BBF
-constexpr uint32_t kMcfgr0 = 0x20u;             // MCFGR0
-constexpr uint32_t kMcfgr1 = 0x24u;             // MCFGR1: PRESCALE 2:0
-constexpr uint32_t kMcfgr2 = 0x28u;             // MCFGR2: BUSIDLE 11:0, FILTSCL 19:16, FILTSDA 27:24
-constexpr uint32_t kMcfgr3 = 0x2Cu;             // MCFGR3: PINLOW 19:8
-constexpr uint32_t kMccr0 = 0x48u;              // MCCR0: CLKLO 5:0, CLKHI 13:8, SETHOLD 21:16, DATAVD 29:24
-constexpr uint32_t kMccr1 = 0x50u;              // MCCR1 (high-speed mode timing)
-constexpr uint32_t kMfcr = 0x58u;               // MFCR: TXWATER 1:0, RXWATER 17:16
-constexpr uint32_t kMfsr = 0x5Cu;               // MFSR: TXCOUNT 2:0, RXCOUNT 18:16
-constexpr uint32_t kMtdr = 0x60u;               // MTDR: DATA 7:0, CMD 10:8
+constexpr uint32_t kMsrFifoError = 1u << 12;        //   FEF
+constexpr uint32_t kMsrPinLowTimeout = 1u << 13;    // PLTF
+constexpr uint32_t kMsrClearable = 0x7Fu << 8;      //   EPF..DMF, bits 14:8
+constexpr uint32_t kMsrMasterBusy = 1u << 24;       //   MBF
+constexpr uint32_t kMsrBusBusy = 1u << 25;          //   BBF
+constexpr uint32_t kMcfgr0 = 0x20u;                 // MCFGR0
+constexpr uint32_t kMcfgr1 = 0x24u;                 // MCFGR1: PRESCALE 2:0
+constexpr uint32_t kMcfgr2 = 0x28u;                 // MCFGR2: BUSIDLE 11:0, FILTSCL 19:16, FILTSDA 27:24
+constexpr uint32_t kMcfgr3 = 0x2Cu;                 // MCFGR3: PINLOW 19:8
+constexpr uint32_t kMccr0 = 0x48u;                  // MCCR0: CLKLO 5:0, CLKHI 13:8, SETHOLD 21:16, DATAVD 29:24
+constexpr uint32_t kMccr1 = 0x50u;                  // MCCR1 (high-speed mode timing)
+constexpr uint32_t kMfcr = 0x58u;                   // MFCR: TXWATER 1:0, RXWATER 17:16
+constexpr uint32_t kMfsr = 0x5Cu;                   // MFSR: TXCOUNT 2:0, RXCOUNT 18:16
+constexpr uint32_t kMtdr = 0x60u;                   // MTDR: DATA 7:0, CMD 10:8
 constexpr uint32_t kCmdTransmit = 0u << 8;
-constexpr uint32_t kCmdReceive = 1u << 8;       //   receive DATA + 1 bytes
+constexpr uint32_t kCmdReceive = 1u << 8;  //   receive DATA + 1 bytes
 constexpr uint32_t kCmdStop = 2u << 8;
-constexpr uint32_t kCmdStart = 4u << 8;         //   (repeated) START, then the address byte in DATA
-constexpr uint32_t kMrdr = 0x70u;               // MRDR: DATA 7:0, RXEMPTY 14
+constexpr uint32_t kCmdStart = 4u << 8;  //   (repeated) START, then the address byte in DATA
+constexpr uint32_t kMrdr = 0x70u;        // MRDR: DATA 7:0, RXEMPTY 14
 constexpr uint32_t kMrdrEmpty = 1u << 14;
-constexpr unsigned kFifoWords = 4;              // PARAM: MTXFIFO = MRXFIFO = 4 words on the RT1062
+constexpr unsigned kFifoWords = 4;  // PARAM: MTXFIFO = MRXFIFO = 4 words on the RT1062
 }  // namespace lpi2c
 
 // ---- IOMUXC daisy chain (input selects) for LPI2C1 and LPI2C3, RM §11.7 ------------------------

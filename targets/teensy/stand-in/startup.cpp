@@ -65,11 +65,11 @@ int __aeabi_atexit(void*, void (*)(void*), void*) { return 0; }
 // 0xA). RM §11.4 (IOMUXC_GPR_GPR14/16/17), RM §30 (FlexRAM).
 extern "C" __attribute__((naked, section(".startup"))) void stand_in_reset_handler() {
   __asm__ volatile(
-      "ldr r0, =0x400AC000\n\t"     // IOMUXC_GPR
+      "ldr r0, =0x400AC000\n\t"  // IOMUXC_GPR
       "ldr r1, =_flexram_bank_config\n\t"
-      "str r1, [r0, #0x44]\n\t"     // GPR17 = bank roles
+      "str r1, [r0, #0x44]\n\t"  // GPR17 = bank roles
       "ldr r1, [r0, #0x40]\n\t"
-      "orr r1, r1, #7\n\t"          // GPR16 |= INIT_ITCM_EN | INIT_DTCM_EN | FLEXRAM_BANK_CFG_SEL
+      "orr r1, r1, #7\n\t"  // GPR16 |= INIT_ITCM_EN | INIT_DTCM_EN | FLEXRAM_BANK_CFG_SEL
       "str r1, [r0, #0x40]\n\t"
       "ldr r1, [r0, #0x38]\n\t"
       "bic r1, r1, #0x00FF0000\n\t"
@@ -99,13 +99,13 @@ __attribute__((section(".startup"), noinline)) void zero_words(uint32_t* to, uin
 }
 
 // ---- 3. Vectors -----------------------------------------------------------------------------------
-constexpr int kExceptionCount = 16;  // Cortex-M7 system exceptions before the first interrupt
-constexpr int kInterruptCount = 160;  // i.MX RT1062 interrupts, RM chapter 4
+constexpr int kExceptionCount = 16;                 // Cortex-M7 system exceptions before the first interrupt
+constexpr int kInterruptCount = 160;                // i.MX RT1062 interrupts, RM chapter 4
 constexpr uint8_t kDefaultInterruptPriority = 128;  // as Teensyduino: half way, below SysTick (32)
 
 __attribute__((section(".startup"), noinline)) void install_vectors() {
   for (int i = 0; i < kExceptionCount + kInterruptCount; ++i) stand_in_vectors_ram[i] = &stand_in_unused_handler;
-  stand_in_vectors_ram[3] = &stand_in_hard_fault;        // ARMv7-M ARM §B1.5.2 exception numbers
+  stand_in_vectors_ram[3] = &stand_in_hard_fault;  // ARMv7-M ARM §B1.5.2 exception numbers
   stand_in_vectors_ram[4] = &stand_in_mem_manage_fault;
   stand_in_vectors_ram[5] = &stand_in_bus_fault;
   stand_in_vectors_ram[6] = &stand_in_usage_fault;

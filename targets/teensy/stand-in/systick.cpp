@@ -33,7 +33,7 @@ extern "C" STAND_IN_FLASH void stand_in_systick_start() {
   cycles_per_millisecond = F_CPU_ACTUAL / 1000u;
   reg32(systick::kCsr) = 0;
   reg32(systick::kRvr) = cycles_per_millisecond - 1;  // 599999 at 600 MHz: fits the 24-bit reload
-  reg32(systick::kCvr) = 0;                             // any write clears the counter
+  reg32(systick::kCvr) = 0;                           // any write clears the counter
   reg32(stand_in::scb::kShpr3) = kSysTickAndPendSvPriority32;
   reg32(systick::kCsr) = systick::kCsrCoreClock | systick::kCsrTickInt | systick::kCsrEnable;
   dwt::demcr() |= dwt::kDemcrTraceEnable;

@@ -26,10 +26,10 @@ namespace nvic = stepdance::platform::teensy::regs::nvic;
 constexpr uint32_t kPllUsb1 = 0x400D8010u;  // CCM_ANALOG_PLL_USB1 (+4 SET, +8 CLR)
 constexpr uint32_t kPllLock = 1u << 31, kPllBypass = 1u << 16, kPllEnable = 1u << 13;
 constexpr uint32_t kPllPower = 1u << 12, kPllUsbClocks = 1u << 6;
-constexpr uint32_t kCcgr6 = 0x400FC080u;   // CCM_CCGR6: CG0 = usboh3
+constexpr uint32_t kCcgr6 = 0x400FC080u;    // CCM_CCGR6: CG0 = usboh3
 constexpr uint32_t kUsbPhy1 = 0x400D9000u;  // USBPHY1_PWD at +0, USBPHY1_CTRL at +0x30 (+4 SET, +8 CLR)
 constexpr uint32_t kPhySoftReset = 1u << 31, kPhyClockGate = 1u << 30;
-constexpr uint32_t kUsbPriority = 128;     // as Teensyduino: below the frame and tick ISRs
+constexpr uint32_t kUsbPriority = 128;  // as Teensyduino: below the frame and tick ISRs
 
 volatile uint32_t& mmio(uint32_t address) { return *reinterpret_cast<volatile uint32_t*>(address); }
 
@@ -140,12 +140,12 @@ void start_clocks() {
 
 void start_controller() {
   mmio(kUsbPhy1 + 0x34) = kPhySoftReset;  // CTRL_SET: reset the PHY,
-  usb(kUsbCmd) = kCmdReset;                 // and the controller
+  usb(kUsbCmd) = kCmdReset;               // and the controller
   while (usb(kUsbCmd) & kCmdReset) {
   }
   mmio(kUsbPhy1 + 0x38) = kPhySoftReset | kPhyClockGate;  // CTRL_CLR: out of reset, clocks on
   mmio(kUsbPhy1 + 0x00) = 0;                              // PWD: everything powered
-  usb(kUsbMode) = 2u | (1u << 3);  // device mode, setup lockout off (the tripwire is used)
+  usb(kUsbMode) = 2u | (1u << 3);                         // device mode, setup lockout off (the tripwire is used)
   memset(queue_heads, 0, sizeof queue_heads);
   for (QueueHead& head : queue_heads) head.next = 1;
   queue_heads[queue(0, false)].config = (kControlPacket << 16) | kConfigIos;

@@ -87,9 +87,7 @@ void control_setup(const uint8_t s[8]) {
       line_coding_pending = true;
       return;
     case kGetLineCoding: return send(line_coding, sizeof line_coding, length);
-    case kSetLineState:
-      set_line_state(value);
-      return acknowledge();
+    case kSetLineState: set_line_state(value); return acknowledge();
     case kSendBreak: return acknowledge();
     default: return standard_request(request, value, index, length);
   }

@@ -14,9 +14,9 @@ constexpr uint32_t kEndptListAddr = 0x158, kPortSc1 = 0x184, kUsbMode = 0x1A8, k
 constexpr uint32_t kEndptPrime = 0x1B0, kEndptFlush = 0x1B4, kEndptComplete = 0x1BC, kEndptCtrl0 = 0x1C0;
 constexpr uint32_t kCmdRunStop = 1u << 0, kCmdReset = 1u << 1, kCmdSetupTripwire = 1u << 13;
 constexpr uint32_t kStsUi = 1u << 0, kStsUei = 1u << 1, kStsUri = 1u << 6;
-constexpr uint32_t kPortHighSpeed = 1u << 9;             // PORTSC1.HSP
-constexpr uint32_t kDeviceAddrAdvance = 1u << 24;       // DEVICEADDR.USBADRA
-constexpr uint32_t kIrqUsb1 = 113;                       // RM ch. 4: USB OTG1
+constexpr uint32_t kPortHighSpeed = 1u << 9;       // PORTSC1.HSP
+constexpr uint32_t kDeviceAddrAdvance = 1u << 24;  // DEVICEADDR.USBADRA
+constexpr uint32_t kIrqUsb1 = 113;                 // RM ch. 4: USB OTG1
 
 // ---- Endpoints of the CDC-ACM function --------------------------------------------------------
 constexpr unsigned kNotifyEndpoint = 2;  // interrupt IN 0x82

@@ -33,10 +33,10 @@ using stepdance::platform::teensy::pin_pad;
 struct Controller {
   uint32_t base;
   ccm::ClockGate gate;
-  uint8_t scl_pin, sda_pin;  // Teensy pins
-  uint8_t alt;               // pad mux mode of the LPI2C function
+  uint8_t scl_pin, sda_pin;         // Teensy pins
+  uint8_t alt;                      // pad mux mode of the LPI2C function
   uint16_t scl_select, sda_select;  // input select registers (offset from the IOMUXC base)
-  uint8_t select_value;      // the daisy value that picks these pads
+  uint8_t select_value;             // the daisy value that picks these pads
 };
 constexpr Controller kControllers[2] = {
     {lpi2c::kLpi2c1Base, {2, 3}, 19, 18, 3, stand_in::daisy::kLpi2c1Scl, stand_in::daisy::kLpi2c1Sda, 1},
@@ -132,8 +132,8 @@ void configure_pad(uint8_t pin, uint8_t alt) {
 void TwoWire::begin() {
   const Controller& c = kControllers[controller_];
   // LPI2C clock root: the 24 MHz oscillator, undivided.
-  stand_in::reg32(stand_in::ccm::kCscdr2) = (stand_in::reg32(stand_in::ccm::kCscdr2) & ~stand_in::ccm::kCscdr2Lpi2cPodfMask) |
-                                            stand_in::ccm::kCscdr2Lpi2cOsc;
+  stand_in::reg32(stand_in::ccm::kCscdr2) =
+      (stand_in::reg32(stand_in::ccm::kCscdr2) & ~stand_in::ccm::kCscdr2Lpi2cPodfMask) | stand_in::ccm::kCscdr2Lpi2cOsc;
   ccm::gate_on(c.gate);
   reg(c, lpi2c::kMcr) = lpi2c::kMcrReset;
   reg(c, lpi2c::kMcr) = 0;

@@ -146,10 +146,10 @@ TEST(CaptureDecoder, GlitchesAreTooShortAndAnEightMicrosecondPulseIsTooLong) {
 
 TEST(CaptureDecoder, WidthsRoundInCaptureTicksLikeTheFirmware) {
   EdgeList step;
-  append_pulse(step, 10 * kMicrosecond, 1500);   // 225 ticks = 1.5 µs → 1 (ties down): too short
-  append_pulse(step, 20 * kMicrosecond, 1507);   // 226 ticks → 2: X
-  append_pulse(step, 30 * kMicrosecond, 7500);   // 1125 ticks → 7: E
-  append_pulse(step, 40 * kMicrosecond, 7507);   // 1126 ticks → 8: too long
+  append_pulse(step, 10 * kMicrosecond, 1500);      // 225 ticks = 1.5 µs → 1 (ties down): too short
+  append_pulse(step, 20 * kMicrosecond, 1507);      // 226 ticks → 2: X
+  append_pulse(step, 30 * kMicrosecond, 7500);      // 1125 ticks → 7: E
+  append_pulse(step, 40 * kMicrosecond, 7507);      // 1126 ticks → 8: too long
   append_pulse(step, 50 * kMicrosecond + 3, 1504);  // ticks round(7500.45)=7500 … round(7726.05)=7726: 226 → X
   const DecodeResult result = decode_step_dir(step, EdgeList{}, DecodeOptions{});
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{0, 2}));
@@ -160,9 +160,9 @@ TEST(CaptureDecoder, WidthsRoundInCaptureTicksLikeTheFirmware) {
 
 TEST(CaptureDecoder, CaptureTicksRoundHalfUp) {
   EXPECT_EQ(capture_ticks(0, 150), 0u);
-  EXPECT_EQ(capture_ticks(3, 150), 0u);    // 0.45
-  EXPECT_EQ(capture_ticks(4, 150), 1u);    // 0.6
-  EXPECT_EQ(capture_ticks(10, 150), 2u);   // 1.5 → 2
+  EXPECT_EQ(capture_ticks(3, 150), 0u);   // 0.45
+  EXPECT_EQ(capture_ticks(4, 150), 1u);   // 0.6
+  EXPECT_EQ(capture_ticks(10, 150), 2u);  // 1.5 → 2
   EXPECT_EQ(capture_ticks(1000, 150), 150u);
   EXPECT_EQ(capture_ticks(600 * kSecond, 150), 90'000'000'000u);
 }
@@ -170,9 +170,9 @@ TEST(CaptureDecoder, CaptureTicksRoundHalfUp) {
 TEST(CaptureDecoder, PulsesPastTheCounterWrapAreMeasuredWholeLikeTheFirmware) {
   EdgeList step;
   append_pulse(step, 10 * kSecond + 123, 2 * kMicrosecond);  // far into the run: still X
-  append_pulse(step, 11 * kSecond, 437 * kMicrosecond);       // 65550 ticks (wrapped alone: 14, "too short")
-  append_pulse(step, 12 * kSecond, 439 * kMicrosecond);       // 65850 ticks (wrapped alone: 314, an X)
-  append_pulse(step, 13 * kSecond, 500 * kMicrosecond);       // 75000 ticks (wrapped alone: 63 µs)
+  append_pulse(step, 11 * kSecond, 437 * kMicrosecond);      // 65550 ticks (wrapped alone: 14, "too short")
+  append_pulse(step, 12 * kSecond, 439 * kMicrosecond);      // 65850 ticks (wrapped alone: 314, an X)
+  append_pulse(step, 13 * kSecond, 500 * kMicrosecond);      // 75000 ticks (wrapped alone: 63 µs)
   const DecodeResult result = decode_step_dir(step, EdgeList{}, DecodeOptions{});
   EXPECT_EQ(result.counts[SIGNAL_X], (DirectionCounts{0, 1}));
   EXPECT_EQ(result.counts.too_short, 0u);
@@ -233,8 +233,11 @@ TEST(CaptureDecoder, ADirEdgeAtTheSamplingInstantHasAlreadyHappened) {
 
 TEST(CaptureDecoder, InitialLevelsAndPulsesCutByTheCapture) {
   PortWaveform wave;
-  wave.step = {{1 * kMicrosecond, false}, {10 * kMicrosecond, true}, {13 * kMicrosecond, false},
-               {13 * kMicrosecond, false}, {20 * kMicrosecond, true}};
+  wave.step = {{1 * kMicrosecond, false},
+               {10 * kMicrosecond, true},
+               {13 * kMicrosecond, false},
+               {13 * kMicrosecond, false},
+               {20 * kMicrosecond, true}};
   const DecodeResult result = decode_step_dir(wave.step, wave.dir, DecodeOptions{}, InitialLevels{true, true});
   EXPECT_EQ(result.incomplete, 2u);
   EXPECT_EQ(result.counts[SIGNAL_Y], (DirectionCounts{1, 0}));
@@ -290,8 +293,8 @@ TEST(CaptureDecoder, FramesGroupByTheSendersPeriod) {
     const DecodeResult result = decode_step_dir(capture.wave.step, capture.wave.dir, options);
     EXPECT_EQ(result.accepted, 6u * 32u) << period_us;  // each signal is in 32 of the 63 sets
     EXPECT_EQ(result.frames.count, capture.pulses_per_frame.size()) << period_us;
-    EXPECT_EQ(result.frames.max_pulses,
-              static_cast<uint32_t>(*std::max_element(capture.pulses_per_frame.begin(), capture.pulses_per_frame.end())))
+    EXPECT_EQ(result.frames.max_pulses, static_cast<uint32_t>(*std::max_element(capture.pulses_per_frame.begin(),
+                                                                                capture.pulses_per_frame.end())))
         << period_us;
     EXPECT_EQ(result.frames.min_start_spacing, SimTime{period_us} * kMicrosecond) << period_us;
     EXPECT_EQ(result.frames.max_start_spacing, SimTime{period_us} * kMicrosecond) << period_us;

@@ -40,15 +40,16 @@ TEST(DecodeReport, TextIsExact) {
 }
 
 TEST(DecodeReport, JsonIsExact) {
-  EXPECT_EQ(decode_report_json(sample_result()).dump(),
-            R"({"accepted":12345682,"clock_ticks_per_us":150,)"
-            R"("frames":{"count":3,"max_pulses_per_frame":5,"max_start_spacing_us":80.001,"min_start_spacing_us":40.0,"period_us":40},)"
-            R"("incomplete":1,"mode":"STEPDANCE",)"
-            R"("pulses":{"E":{"forward":0,"reverse":12345678},"R":{"forward":0,"reverse":0},)"
-            R"("T":{"forward":0,"reverse":0},"X":{"forward":1,"reverse":1},"Y":{"forward":2,"reverse":0},)"
-            R"("Z":{"forward":0,"reverse":0}},)"
-            R"("rejected":{"examples":[{"reason":"too_short","rise_us":310.0,"width_us":0.5},)"
-            R"({"reason":"too_long","rise_us":500.0,"width_us":8.0}],"too_long":1,"too_short":2}})");
+  EXPECT_EQ(
+      decode_report_json(sample_result()).dump(),
+      R"({"accepted":12345682,"clock_ticks_per_us":150,)"
+      R"("frames":{"count":3,"max_pulses_per_frame":5,"max_start_spacing_us":80.001,"min_start_spacing_us":40.0,"period_us":40},)"
+      R"("incomplete":1,"mode":"STEPDANCE",)"
+      R"("pulses":{"E":{"forward":0,"reverse":12345678},"R":{"forward":0,"reverse":0},)"
+      R"("T":{"forward":0,"reverse":0},"X":{"forward":1,"reverse":1},"Y":{"forward":2,"reverse":0},)"
+      R"("Z":{"forward":0,"reverse":0}},)"
+      R"("rejected":{"examples":[{"reason":"too_short","rise_us":310.0,"width_us":0.5},)"
+      R"({"reason":"too_long","rise_us":500.0,"width_us":8.0}],"too_long":1,"too_short":2}})");
 }
 
 TEST(DecodeReport, StepDirModeNamesItsSignalAndFewFramesOmitSpacing) {

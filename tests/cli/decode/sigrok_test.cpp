@@ -101,7 +101,8 @@ TEST(Sigrok, ReadsADemoDeviceCapture) {
   const std::string path = test::temp_path("demo.vcd");
   std::string output;
   // 24 MHz makes sigrok write a 100 ps timescale.
-  ASSERT_EQ(run("sigrok-cli -d demo --config samplerate=24m --samples 2000 -C D0,D1 -O vcd -o '" + path + "'", output), 0)
+  ASSERT_EQ(run("sigrok-cli -d demo --config samplerate=24m --samples 2000 -C D0,D1 -O vcd -o '" + path + "'", output),
+            0)
       << output;
   const VcdReadResult read = read_vcd_file(path);
   ASSERT_TRUE(read.ok) << read.error;

@@ -59,12 +59,14 @@ TEST(VcdReaderErrors, ScopeStructure) {
 TEST(VcdReaderErrors, TextWhereADeclarationBelongs) {
   EXPECT_EQ(error_of("hello\n"), "bad.vcd:1: expected a declaration command, found 'hello'");
   EXPECT_EQ(error_of("$end\n"), "bad.vcd:1: expected a declaration command, found '$end'");
-  EXPECT_EQ(error_of(std::string("\x01\xff\x7f rest")), "bad.vcd:1: expected a declaration command, found '\\x01\\xff\\x7f'");
+  EXPECT_EQ(error_of(std::string("\x01\xff\x7f rest")),
+            "bad.vcd:1: expected a declaration command, found '\\x01\\xff\\x7f'");
 }
 
 TEST(VcdReaderErrors, UndeclaredIdentifier) {
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n1?\n"), "bad.vcd:5: value change for undeclared identifier '?'");
-  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb1 \"\n"), "bad.vcd:5: value change for undeclared identifier '\"'");
+  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb1 \"\n"),
+            "bad.vcd:5: value change for undeclared identifier '\"'");
 }
 
 TEST(VcdReaderErrors, TimeGoingBackwards) {
@@ -85,7 +87,8 @@ TEST(VcdReaderErrors, MalformedValues) {
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nhello\n"), "bad.vcd:5: unexpected 'hello' in value changes");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n1\n"), "bad.vcd:5: value '1' has no identifier");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb102 !\n"), "bad.vcd:5: bad binary value 'b102'");
-  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb1\n"), "bad.vcd:5: unexpected end of file: value 'b1' has no identifier");
+  EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\nb1\n"),
+            "bad.vcd:5: unexpected end of file: value 'b1' has no identifier");
   EXPECT_EQ(error_of(std::string(kDeclarations) + "#0\n$bogus\n"), "bad.vcd:5: unexpected '$bogus' in value changes");
 }
 
@@ -110,7 +113,8 @@ TEST(VcdReaderTruncation, ALastLineWithoutNewlineLosesItsLastTokenOnly) {
   const VcdReadResult result = read_vcd(in, "cut.vcd");
   ASSERT_TRUE(result.ok) << result.error;
   EXPECT_TRUE(result.truncated);
-  EXPECT_EQ(result.warning, "cut.vcd:7: the capture is truncated (it ends in the middle of line 7); decoded up to there");
+  EXPECT_EQ(result.warning,
+            "cut.vcd:7: the capture is truncated (it ends in the middle of line 7); decoded up to there");
   ASSERT_EQ(result.capture.wires[0].edges.size(), 1u);
   EXPECT_EQ(result.capture.wires[0].edges[0].time, 1000);
   EXPECT_EQ(result.capture.end_time, 1000);
@@ -134,7 +138,8 @@ TEST(VcdReaderErrors, DumpBlocks) {
 }
 
 TEST(VcdReaderErrors, LongTokensAreShortenedInMessages) {
-  EXPECT_EQ(error_of(std::string(60, 'q') + "\n"), "bad.vcd:1: expected a declaration command, found '" + std::string(40, 'q') + "...'");
+  EXPECT_EQ(error_of(std::string(60, 'q') + "\n"),
+            "bad.vcd:1: expected a declaration command, found '" + std::string(40, 'q') + "...'");
 }
 
 // The reader holds one chunk and one token at a time: a token (a run of bytes without blanks)
@@ -148,7 +153,8 @@ TEST(VcdReaderErrors, EndlessTokensAndCommandsAreRefused) {
   for (int i = 0; i < 17; ++i) words += " w";
   EXPECT_EQ(error_of(words + " $end\n"), "bad.vcd:1: $attrbegin (from line 1) has more than 16 words before its $end");
   // A vector value of the widest wire (1,000,000 bits) is still one token.
-  std::istringstream wide("$var wire 1000000 ! bus $end\n$enddefinitions $end\n#0\nb" + std::string(1000000, '1') + " !\n");
+  std::istringstream wide("$var wire 1000000 ! bus $end\n$enddefinitions $end\n#0\nb" + std::string(1000000, '1') +
+                          " !\n");
   EXPECT_TRUE(read_vcd(wide, "wide.vcd").ok);
 }
 
@@ -219,8 +225,10 @@ TEST(VcdReaderErrors, EveryTruncationGivesAResultOrAnError) {
 
 TEST(VcdReaderErrors, RandomMutationsGiveAResultOrAnError) {
   const std::string seed = fuzz_seed();
-  const std::vector<std::string> dictionary = {"$end", "$var", "$scope", "$upscope", "$enddefinitions", "#", "b", "r",
-                                               "x", "$dumpvars", "$comment", "#18446744073709551615", "\n", " ", "\0"};
+  const std::vector<std::string> dictionary = {
+      "$end", "$var", "$scope", "$upscope",  "$enddefinitions", "#",
+      "b",    "r",    "x",      "$dumpvars", "$comment",        "#18446744073709551615",
+      "\n",   " ",    "\0"};
   std::mt19937 rng(20241121);
   for (int round = 0; round < 3000; ++round) {
     std::string text = seed;

@@ -99,8 +99,8 @@ TEST(VcdReader, ConvertsEveryTimescaleToNanoseconds) {
   EXPECT_EQ(end_time("10 us", "7"), 70000);
   EXPECT_EQ(end_time("1 ms", "7"), 7000000);
   EXPECT_EQ(end_time("1 s", "7"), 7000000000);
-  EXPECT_EQ(end_time("100 ps", "14"), 1);    // 1.4 ns
-  EXPECT_EQ(end_time("100 ps", "15"), 2);    // 1.5 ns rounds up
+  EXPECT_EQ(end_time("100 ps", "14"), 1);  // 1.4 ns
+  EXPECT_EQ(end_time("100 ps", "15"), 2);  // 1.5 ns rounds up
   EXPECT_EQ(end_time("1 fs", "2500000"), 3);
   EXPECT_EQ(end_time("1 ns", "9223372036854775807"), 9223372036854775807);
 }
@@ -166,8 +166,9 @@ TEST(VcdReader, AcceptsCrLfCommentsAndUnknownDeclarations) {
 }
 
 TEST(VcdReader, SkipsSigrokCliMetaLinesBeforeTheHeader) {
-  const VcdCapture capture = parse("META samplerate: 1000000000\n$timescale 1 ns $end\n$var wire 1 ! D0 $end\n"
-                                   "$enddefinitions $end\n#0 0!\n#5 1!\n");
+  const VcdCapture capture = parse(
+      "META samplerate: 1000000000\n$timescale 1 ns $end\n$var wire 1 ! D0 $end\n"
+      "$enddefinitions $end\n#0 0!\n#5 1!\n");
   EXPECT_EQ(pairs(capture.wires[0].edges), (EdgePairs{{5, true}}));
 }
 

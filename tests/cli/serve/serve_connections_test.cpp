@@ -41,8 +41,8 @@ class ServeProcess {
     if (pid_ == 0) {
       dup2(out[1], STDOUT_FILENO);
       close(out[0]);
-      const std::string command = "ulimit -n " + std::to_string(descriptor_limit) + " && exec " STEPDANCE_BUILD_DIR
-                                  "/stepdance serve " + device + " --port 0";
+      const std::string command = "ulimit -n " + std::to_string(descriptor_limit) +
+                                  " && exec " STEPDANCE_BUILD_DIR "/stepdance serve " + device + " --port 0";
       execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
       _exit(127);
     }
@@ -121,7 +121,8 @@ bool closed_within(int fd, std::chrono::milliseconds wait) {
 std::string get_page(int port) {
   const int fd = connect_to(port);
   if (fd < 0) return {};
-  const std::string request = "GET / HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\nConnection: close\r\n\r\n";
+  const std::string request =
+      "GET / HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\nConnection: close\r\n\r\n";
   send(fd, request.data(), request.size(), MSG_NOSIGNAL);
   std::string reply;
   char buffer[512];

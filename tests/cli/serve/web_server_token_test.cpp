@@ -19,8 +19,8 @@ TEST(WebServerToken, TheUpgradeMustCarryTheRunsTokenExactly) {
   EXPECT_TRUE(server.token_allowed("/ws?x=1&token=0123abcd"));
   EXPECT_FALSE(server.token_allowed("/ws"));
   EXPECT_FALSE(server.token_allowed("/ws?token="));
-  EXPECT_FALSE(server.token_allowed("/ws?token=0123abc"));     // a prefix
-  EXPECT_FALSE(server.token_allowed("/ws?token=0123abcde"));   // longer
+  EXPECT_FALSE(server.token_allowed("/ws?token=0123abc"));    // a prefix
+  EXPECT_FALSE(server.token_allowed("/ws?token=0123abcde"));  // longer
   EXPECT_FALSE(server.token_allowed("/ws?xtoken=0123abcd"));
 }
 

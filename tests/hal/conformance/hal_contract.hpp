@@ -65,19 +65,19 @@ using ::stepdance::Status;
 using stepdance::protocol::FrameWords;
 
 // ---- Facts of the contract and of the board (not of any backend) ---------------------------
-constexpr uint32_t kFramePeriodUs = 40;       // the frame period every board runs by default
-constexpr uint32_t kKhzPeriodUs = 1000;       // the kilohertz timer's period
-constexpr uint32_t kCoreHz = 600000000u;      // hal.hpp: cycles_per_second() on a Teensy 4.x
-constexpr uint32_t kBusTicksPerUs = 150;      // Teensy 4.x bus clock: 150 MHz
+constexpr uint32_t kFramePeriodUs = 40;            // the frame period every board runs by default
+constexpr uint32_t kKhzPeriodUs = 1000;            // the kilohertz timer's period
+constexpr uint32_t kCoreHz = 600000000u;           // hal.hpp: cycles_per_second() on a Teensy 4.x
+constexpr uint32_t kBusTicksPerUs = 150;           // Teensy 4.x bus clock: 150 MHz
 constexpr uint32_t kCaptureCounterMask = 0xFFFFu;  // 16-bit capture counters
-constexpr uint16_t kAdcFullScale = 1023;      // hal.hpp: 10-bit conversions, 0..1023
-constexpr uint8_t kAdcPin = 14;               // Teensy 4.x: pin 14 = A0
-constexpr uint8_t kPinWithoutAdc = 13;        // Teensy 4.x: pin 13 (the LED) has no ADC input
+constexpr uint16_t kAdcFullScale = 1023;           // hal.hpp: 10-bit conversions, 0..1023
+constexpr uint8_t kAdcPin = 14;                    // Teensy 4.x: pin 14 = A0
+constexpr uint8_t kPinWithoutAdc = 13;             // Teensy 4.x: pin 13 (the LED) has no ADC input
 constexpr uint8_t kGpioPin = 13;
 constexpr uint8_t kInputPin = 2;
-constexpr uint8_t kMissingPin = 200;          // no Teensy has a pin 200
-constexpr uint8_t kMissingPort = 4;           // ports are 0..3 (A..D)
-constexpr uint8_t kMissingEncoder = 2;        // decoders are 0 (ENC1) and 1 (ENC2)
+constexpr uint8_t kMissingPin = 200;    // no Teensy has a pin 200
+constexpr uint8_t kMissingPort = 4;     // ports are 0..3 (A..D)
+constexpr uint8_t kMissingEncoder = 2;  // decoders are 0 (ENC1) and 1 (ENC2)
 
 // ---- What the timers' handlers saw -----------------------------------------------------------
 struct TimerLog {
@@ -126,8 +126,8 @@ class HalContract : public ::testing::Test {
 TYPED_TEST_SUITE_P(HalContract);
 
 // GTEST_SKIP returns only from the function it is written in, so each test opens with this.
-#define HAL_CONTRACT_SKIP_UNLESS(clause)                                        \
-  do {                                                                          \
+#define HAL_CONTRACT_SKIP_UNLESS(clause)                                       \
+  do {                                                                         \
     if (const char* why = TypeParam::skip_reason(clause)) GTEST_SKIP() << why; \
   } while (0)
 
@@ -215,8 +215,8 @@ TYPED_TEST_P(HalContract, PortOutBeginClaimsOnceAndRefusesAMissingPort) {
 TYPED_TEST_P(HalContract, PortOutShiftsTheHandedWordsUnchangedAtTheNextTick) {
   HAL_CONTRACT_SKIP_UNLESS(Clause::kPortOutWaveform);
   // Distinct STEP and DIR words, with the highest bit set (bit 0 is the idle level, kept low).
-  const std::vector<FrameWords> words = {{0x0000000Cu, 0x0000000Eu}, {0x80000300u, 0x00000380u},
-                                         {0x00F00000u, 0xFFFFFFFEu}};
+  const std::vector<FrameWords> words = {
+      {0x0000000Cu, 0x0000000Eu}, {0x80000300u, 0x00000380u}, {0x00F00000u, 0xFFFFFFFEu}};
   timer_log().to_hand = words;
   timer_log().ports = {0, 1};
   ASSERT_EQ(stepdance::hal::port_out_begin(0), Status::kOk);
@@ -258,9 +258,9 @@ TYPED_TEST_P(HalContract, CapturedPulseReachesTheSinkUnchangedWithItsContext) {
   EXPECT_FALSE(log.pulses[1].dir_high);
   EXPECT_EQ(log.pulses[1].extra_periods, 2u);
   EXPECT_EQ(log.contexts[0], &log);
-  EXPECT_EQ(stepdance::hal::port_in_begin(kMissingPort, stepdance::protocol::DirSampleEdge::kRising, &capture_sink,
-                                          &log),
-            Status::kNoSuchPin);
+  EXPECT_EQ(
+      stepdance::hal::port_in_begin(kMissingPort, stepdance::protocol::DirSampleEdge::kRising, &capture_sink, &log),
+      Status::kNoSuchPin);
 }
 
 TYPED_TEST_P(HalContract, CaptureClockIsTheBusClockOnSixteenBitCounters) {
@@ -351,12 +351,14 @@ TYPED_TEST_P(HalContract, ConsoleBytesPassUnchangedAndInOrder) {
   stepdance::ByteStream& console = stepdance::hal::console();
   EXPECT_EQ(console.bytes_available(), bytes.size());
   std::string received;
-  for (int byte = console.read_byte(); byte >= 0; byte = console.read_byte()) received.push_back(static_cast<char>(byte));
+  for (int byte = console.read_byte(); byte >= 0; byte = console.read_byte())
+    received.push_back(static_cast<char>(byte));
   EXPECT_EQ(received, bytes);
   EXPECT_EQ(console.bytes_available(), 0u);
   size_t sent = 0;
   while (sent < bytes.size()) {
-    const size_t wrote = console.write_bytes(reinterpret_cast<const uint8_t*>(bytes.data()) + sent, bytes.size() - sent);
+    const size_t wrote =
+        console.write_bytes(reinterpret_cast<const uint8_t*>(bytes.data()) + sent, bytes.size() - sent);
     ASSERT_GT(wrote, 0u);
     sent += wrote;
   }
@@ -414,15 +416,15 @@ TYPED_TEST_P(HalContract, NonvolatileStoreReadsBackWritesAndErasedBytesAreFF) {
 
 TYPED_TEST_P(HalContract, CriticalSectionsNestAndRestoreTheOuterState) {
   HAL_CONTRACT_SKIP_UNLESS(Clause::kCriticalNesting);
-  const uint32_t outer = stepdance::hal::irq_save();   // interrupts were on
-  const uint32_t inner = stepdance::hal::irq_save();   // they were off
+  const uint32_t outer = stepdance::hal::irq_save();  // interrupts were on
+  const uint32_t inner = stepdance::hal::irq_save();  // they were off
   EXPECT_NE(inner, outer) << "irq_save() must tell 'on' from 'off'";
   stepdance::hal::irq_restore(inner);
-  const uint32_t still = stepdance::hal::irq_save();   // restoring the inner state keeps them off
+  const uint32_t still = stepdance::hal::irq_save();  // restoring the inner state keeps them off
   EXPECT_EQ(still, inner);
   stepdance::hal::irq_restore(still);
   stepdance::hal::irq_restore(outer);
-  const uint32_t after = stepdance::hal::irq_save();   // the outer restore turned them back on
+  const uint32_t after = stepdance::hal::irq_save();  // the outer restore turned them back on
   EXPECT_EQ(after, outer);
   stepdance::hal::irq_restore(after);
   {
@@ -457,19 +459,16 @@ TYPED_TEST_P(HalContract, EnterSafeStateStopsFramesAndDisablesTheDrivers) {
   EXPECT_TRUE(TypeParam::drivers_disabled());
 }
 
-REGISTER_TYPED_TEST_SUITE_P(HalContract, MicrosNowCountsMicrosecondsAndNeverGoesBack, CyclesNowRunsAtCyclesPerSecond,
-                            FrameTimerCallsOnFrameOncePerTick, FrameTimerCallsOnFrameEveryPeriodUs,
-                            KhzTimerCallsOnTickEveryPeriodUsAfterTheFrame, TimersStopEndsBothTimers,
-                            PortOutBeginClaimsOnceAndRefusesAMissingPort,
-                            PortOutShiftsTheHandedWordsUnchangedAtTheNextTick,
-                            CapturedPulseReachesTheSinkUnchangedWithItsContext,
-                            CaptureClockIsTheBusClockOnSixteenBitCounters,
-                            QuadratureReadsTheCountAndWriteOverwritesIt, AdcReadsTenBitsAndCountsConversions,
-                            AdcBeginRefusesAPinWithoutAdc, GpioOutputReadsBackTheLevelItDrives,
-                            GpioInputReadsTheLevelDrivenFromOutside, GpioModeRefusesAMissingPin,
-                            ConsoleBytesPassUnchangedAndInOrder, StorageReadsBackWhatWasWrittenThenEndOfFile,
-                            NonvolatileStoreReadsBackWritesAndErasedBytesAreFF,
-                            CriticalSectionsNestAndRestoreTheOuterState,
-                            EnterSafeStateStopsFramesAndDisablesTheDrivers);
+REGISTER_TYPED_TEST_SUITE_P(
+    HalContract, MicrosNowCountsMicrosecondsAndNeverGoesBack, CyclesNowRunsAtCyclesPerSecond,
+    FrameTimerCallsOnFrameOncePerTick, FrameTimerCallsOnFrameEveryPeriodUs,
+    KhzTimerCallsOnTickEveryPeriodUsAfterTheFrame, TimersStopEndsBothTimers,
+    PortOutBeginClaimsOnceAndRefusesAMissingPort, PortOutShiftsTheHandedWordsUnchangedAtTheNextTick,
+    CapturedPulseReachesTheSinkUnchangedWithItsContext, CaptureClockIsTheBusClockOnSixteenBitCounters,
+    QuadratureReadsTheCountAndWriteOverwritesIt, AdcReadsTenBitsAndCountsConversions, AdcBeginRefusesAPinWithoutAdc,
+    GpioOutputReadsBackTheLevelItDrives, GpioInputReadsTheLevelDrivenFromOutside, GpioModeRefusesAMissingPin,
+    ConsoleBytesPassUnchangedAndInOrder, StorageReadsBackWhatWasWrittenThenEndOfFile,
+    NonvolatileStoreReadsBackWritesAndErasedBytesAreFF, CriticalSectionsNestAndRestoreTheOuterState,
+    EnterSafeStateStopsFramesAndDisablesTheDrivers);
 
 }  // namespace hal_conformance

@@ -14,14 +14,11 @@ struct ManualAdapter {
   // The manual backend's skip list: what it does not model, by design.
   static const char* skip_reason(Clause clause) {
     switch (clause) {
-      case Clause::kCyclesRate:
-        return "manual: cycles_now() is a cost model (set_cycles_per_read), not a clock";
-      case Clause::kAdcPins:
-        return "manual: adc_begin() accepts every pin up to kMaxPin (tests set any pin's value)";
+      case Clause::kCyclesRate: return "manual: cycles_now() is a cost model (set_cycles_per_read), not a clock";
+      case Clause::kAdcPins: return "manual: adc_begin() accepts every pin up to kMaxPin (tests set any pin's value)";
       case Clause::kCriticalNesting:
         return "manual: one thread and no interrupts; irq_save()/irq_restore() keep no state";
-      default:
-        return nullptr;
+      default: return nullptr;
     }
   }
 

@@ -33,14 +33,14 @@ struct FakeSimulator {
   uint32_t khz_period_us = 0;
   int64_t next_khz_ns = 0;
   uint8_t claimed = 0;
-  FrameWords given[4] = {};     // handed over since the last tick
-  FrameWords playing[4] = {};   // launched at the last tick
+  FrameWords given[4] = {};    // handed over since the last tick
+  FrameWords playing[4] = {};  // launched at the last tick
   int32_t counts[2] = {};
   std::map<uint8_t, uint16_t> adc;
   std::map<uint8_t, uint32_t> adc_samples;
   std::map<uint8_t, int> modes;
-  std::map<uint8_t, bool> driven;    // by the board (outputs)
-  std::map<uint8_t, bool> outside;   // by the world (inputs)
+  std::map<uint8_t, bool> driven;   // by the board (outputs)
+  std::map<uint8_t, bool> outside;  // by the world (inputs)
   bool safe = false;
   std::deque<uint8_t> console_in;
   std::string console_out;
@@ -214,7 +214,9 @@ struct SimAdapter {
     ++sim.adc_samples[pin];
   }
   static void drive_pin(uint8_t pin, bool high) { sim.outside[pin] = high; }
-  static void feed_console(const std::string& bytes) { sim.console_in.insert(sim.console_in.end(), bytes.begin(), bytes.end()); }
+  static void feed_console(const std::string& bytes) {
+    sim.console_in.insert(sim.console_in.end(), bytes.begin(), bytes.end());
+  }
   static std::string take_console_output() {
     std::string out;
     out.swap(sim.console_out);

@@ -16,16 +16,16 @@ namespace hal_conformance {
 namespace {
 
 // ---- The frame clock (RM §50 FlexIO3; NVIC, ARMv7-M ARM §B3.4) --------------------------------
-constexpr uint32_t kFlexio3 = 0x42020000u;                  // FLEXIO3 base
-constexpr uint32_t kTimstat = kFlexio3 + 0x018u;            // FLEXIO_TIMSTAT
+constexpr uint32_t kFlexio3 = 0x42020000u;        // FLEXIO3 base
+constexpr uint32_t kTimstat = kFlexio3 + 0x018u;  // FLEXIO_TIMSTAT
 constexpr uint32_t shiftbuf(unsigned n) { return kFlexio3 + 0x200u + 4u * n; }
 constexpr uint32_t timctl(unsigned n) { return kFlexio3 + 0x400u + 4u * n; }
-constexpr unsigned kFrameClockTimer = 4;                    // the backend's frame clock: timer 4
-constexpr uint32_t kTimodMask = 3u;                         // TIMCTL TIMOD: 0 = disabled
-constexpr uint32_t kMarkerFlag = 1u << 5;                   // timer 5: the tick marker
-constexpr uint32_t kIspr4 = 0xE000E210u;                    // NVIC_ISPR4: IRQs 128..159
-constexpr uint32_t kIcpr4 = 0xE000E290u;                    // NVIC_ICPR4
-constexpr unsigned kFrameIrq = 155, kTickIrq = 156;         // reserved line, FLEXIO3
+constexpr unsigned kFrameClockTimer = 4;             // the backend's frame clock: timer 4
+constexpr uint32_t kTimodMask = 3u;                  // TIMCTL TIMOD: 0 = disabled
+constexpr uint32_t kMarkerFlag = 1u << 5;            // timer 5: the tick marker
+constexpr uint32_t kIspr4 = 0xE000E210u;             // NVIC_ISPR4: IRQs 128..159
+constexpr uint32_t kIcpr4 = 0xE000E290u;             // NVIC_ICPR4
+constexpr unsigned kFrameIrq = 155, kTickIrq = 156;  // reserved line, FLEXIO3
 constexpr uint32_t kCyclesPerUs = teensy_model::kCoreHz / 1000000u;
 
 // ---- GPT2 (RM §52.7): CR at the base; its software reset (SWR, bit 15) clears itself when done --
@@ -112,20 +112,14 @@ struct TeensyAdapter {
   // The Teensy backend's skip list: clauses whose hardware the suite's model does not play yet.
   static const char* skip_reason(Clause clause) {
     switch (clause) {
-      case Clause::kFramePeriod:
-        return "teensy model: the FlexIO3 clock does not run; the harness plays its edges";
-      case Clause::kKhzTimer:
-        return "teensy model: GPT2 compare events are not played by the harness";
+      case Clause::kFramePeriod: return "teensy model: the FlexIO3 clock does not run; the harness plays its edges";
+      case Clause::kKhzTimer: return "teensy model: GPT2 compare events are not played by the harness";
       case Clause::kCaptureDelivery:
         return "teensy model: FlexPWM capture registers and their ISR are not played by the harness";
-      case Clause::kQuadrature:
-        return "teensy model: the ENC/XBAR decoders are not in the model build";
-      case Clause::kAdcRange:
-        return "teensy model: ADC conversions are not played by the harness";
-      case Clause::kStorageRoundTrip:
-        return "teensy model: SdFat has no host model";
-      default:
-        return nullptr;
+      case Clause::kQuadrature: return "teensy model: the ENC/XBAR decoders are not in the model build";
+      case Clause::kAdcRange: return "teensy model: ADC conversions are not played by the harness";
+      case Clause::kStorageRoundTrip: return "teensy model: SdFat has no host model";
+      default: return nullptr;
     }
   }
 
@@ -155,8 +149,10 @@ struct TeensyAdapter {
   static void drive_pin(uint8_t pin, bool high) {
     for (const PadBit& pad : kOutsidePins) {
       if (pad.pin != pin) continue;
-      if (high) outside_levels[pad.fast] |= 1u << pad.bit;
-      else outside_levels[pad.fast] &= ~(1u << pad.bit);
+      if (high)
+        outside_levels[pad.fast] |= 1u << pad.bit;
+      else
+        outside_levels[pad.fast] &= ~(1u << pad.bit);
     }
   }
   static void feed_console(const std::string& bytes) { usb_in.insert(usb_in.end(), bytes.begin(), bytes.end()); }

@@ -136,7 +136,7 @@ TEST_F(EbbCommandsTest, EmIsQueuedAndQeShowsWhatTheFrameApplied) {
 }
 
 TEST_F(EbbCommandsTest, QmQgAndQsReportWhatTheFramePublished) {
-  EXPECT_EQ(run("SM,40,10"), "OK\r\n");  // 10 steps over 1000 ticks: one per 100
+  EXPECT_EQ(run("SM,40,10"), "OK\r\n");    // 10 steps over 1000 ticks: one per 100
   EXPECT_EQ(run("QM"), "QM,1,0,0,1\n\r");  // executing (waiting in the FIFO)
   frames(150);
   EXPECT_EQ(run("QM"), "QM,1,1,0,0\n\r");

@@ -18,7 +18,8 @@ constexpr double kPi = 3.14159265358979323846;
 /// An arc from its centre, radius, start angle and signed sweep; the other axes move linearly.
 Motion make_arc(int plane, double c0, double c1, double radius, double start_rad, double sweep_rad,
                 const double (&other_start)[kAxisCount], const double (&other_end)[kAxisCount]) {
-  static constexpr uint8_t kPlanes[3][3] = {{kAxisX, kAxisY, kAxisZ}, {kAxisZ, kAxisX, kAxisY}, {kAxisY, kAxisZ, kAxisX}};
+  static constexpr uint8_t kPlanes[3][3] = {
+      {kAxisX, kAxisY, kAxisZ}, {kAxisZ, kAxisX, kAxisY}, {kAxisY, kAxisZ, kAxisX}};
   Motion arc;
   arc.kind = MotionKind::kArc;
   arc.plane_axis_0 = kPlanes[plane][0];

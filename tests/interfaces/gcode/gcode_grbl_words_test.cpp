@@ -56,12 +56,12 @@ TEST_F(GrblWords, DynamicToolLengthOffsetShiftsAbsoluteZ) {
 }
 
 TEST_F(GrblWords, ToolLengthErrorsAreGrbls) {
-  EXPECT_EQ(run("G43.1"), GrblError::kG43DynamicAxisError);      // 37: no Z
+  EXPECT_EQ(run("G43.1"), GrblError::kG43DynamicAxisError);        // 37: no Z
   EXPECT_EQ(run("G43.1 X1 Z1"), GrblError::kG43DynamicAxisError);  // 37: another axis
   EXPECT_EQ(run("G43.1 Z1 G0"), GrblError::kAxisCommandConflict);  // 24
   EXPECT_EQ(run("G49 G1 X1 F100"), GrblError::kAxisCommandConflict);
   EXPECT_EQ(run("G43.1 Z1 G92"), GrblError::kAxisCommandConflict);
-  EXPECT_EQ(run("G43 Z1"), GrblError::kUnsupportedCommand);        // 20: G43 itself
+  EXPECT_EQ(run("G43 Z1"), GrblError::kUnsupportedCommand);  // 20: G43 itself
   EXPECT_EQ(run("G43.2 Z1"), GrblError::kUnsupportedCommand);
   EXPECT_DOUBLE_EQ(interpreter.modal().tool_length_offset_mm, 0.0);
   EXPECT_TRUE(sink.list.empty());
@@ -97,7 +97,7 @@ TEST_F(GrblWords, OffsetFormIgnoresTheOutOfPlaneOffsetWord) {
     EXPECT_NEAR(arc.end_mm[kAxisX], expected_end_x[i], 1e-12);
     EXPECT_DOUBLE_EQ(arc.end_mm[kAxisZ], 0.0);
   }
-  EXPECT_EQ(run("G17 G2 X0 R5 K1"), GrblError::kUnusedValueWords);  // 36: R leaves K unused
+  EXPECT_EQ(run("G17 G2 X0 R5 K1"), GrblError::kUnusedValueWords);    // 36: R leaves K unused
   EXPECT_EQ(run("G17 G2 X10 K1"), GrblError::kNoInPlaneOffsetWords);  // 35: no in-plane offset
 }
 

@@ -141,7 +141,9 @@ TEST_F(GrblLink, ControlBytesInsideALineAreDroppedAndTheRestIsKept) {
   ASSERT_EQ(machine.motions.size(), 1u);
   EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisX], 3.0);
   EXPECT_DOUBLE_EQ(machine.motions[0].end_mm[kAxisY], 4.0);
-  EXPECT_EQ(exchange("G0\tX5\x01 Y\x1b" "6\x02\n"), "ok\r\n");
+  EXPECT_EQ(exchange("G0\tX5\x01 Y\x1b"
+                     "6\x02\n"),
+            "ok\r\n");
   ASSERT_EQ(machine.motions.size(), 2u);
   EXPECT_DOUBLE_EQ(machine.motions[1].end_mm[kAxisX], 5.0);
   EXPECT_DOUBLE_EQ(machine.motions[1].end_mm[kAxisY], 6.0);

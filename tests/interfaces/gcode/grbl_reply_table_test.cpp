@@ -54,7 +54,9 @@ std::string unescape(const std::string& text) {
 struct Expected {
   std::string text;
   bool pattern = false;
-  bool matches(const std::string& line) const { return pattern ? std::regex_search(line, std::regex(text)) : line == text; }
+  bool matches(const std::string& line) const {
+    return pattern ? std::regex_search(line, std::regex(text)) : line == text;
+  }
 };
 
 /// One exchange of the file: what is sent, Grbl's reply and, where it differs, ours.
@@ -181,7 +183,8 @@ TEST_F(GrblReplyTable, ASoftLimitWhileMovingStopsThePathFirst) {
   EXPECT_TRUE(gcode->interpolator().is_idle());
   EXPECT_DOUBLE_EQ(gcode->output_x.read_absolute(), stopped_x);  // the rest of the job was dropped
   EXPECT_EQ(exchange("G0 X1\n"), std::vector<std::string>{});
-  EXPECT_EQ(exchange("\x18"), (std::vector<std::string>{"ok", "", "Grbl 1.1h ['$' for help]", "[MSG:'$H'|'$X' to unlock]"}));
+  EXPECT_EQ(exchange("\x18"),
+            (std::vector<std::string>{"ok", "", "Grbl 1.1h ['$' for help]", "[MSG:'$H'|'$X' to unlock]"}));
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <unistd.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -33,7 +33,7 @@ struct ReferenceMotion {
   double end_a = 0.0;        // the A axis (where a printer file's E words go)
   double center_0_mm = 0.0;  // arcs: centre in the plane's first and second axes
   double center_1_mm = 0.0;
-  int rotation = 0;          // arcs: turns, negative clockwise
+  int rotation = 0;  // arcs: turns, negative clockwise
   int axis_0 = 0;
   int axis_1 = 1;
 };
@@ -138,8 +138,8 @@ std::vector<ReferenceMotion> run_rs274(const fs::path& program) {
   fs::create_directories(scratch);
   // rs274 keeps its tool table in $HOME/.tool.mmap: each run gets its own HOME, or two tests
   // running at once truncate each other's table and one of them sees no motion.
-  const std::string command = "cd '" + scratch.string() + "' && HOME='" + scratch.string() + "' rs274 -g '" +
-                              program.string() + "' 2>&1";
+  const std::string command =
+      "cd '" + scratch.string() + "' && HOME='" + scratch.string() + "' rs274 -g '" + program.string() + "' 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   CanonReader reader;
   if (pipe != nullptr) {
@@ -182,8 +182,8 @@ void expect_same_arc(const Motion& ours, const ReferenceMotion& reference, const
   for (uint32_t k = 1; k <= chords.segment_count(); ++k) {
     double point[kAxisCount];
     chords.point_mm(k, point);
-    const double distance = hypot(point[reference.axis_0] - reference.center_0_mm,
-                                  point[reference.axis_1] - reference.center_1_mm);
+    const double distance =
+        hypot(point[reference.axis_0] - reference.center_0_mm, point[reference.axis_1] - reference.center_1_mm);
     EXPECT_NEAR(distance, radius, kArcToleranceMm) << where << " chord " << k;
   }
 }

@@ -80,7 +80,7 @@ TEST(LineReaderTest, AWaitingLineStopsReadingUntilTaken) {
   EXPECT_EQ(stream.to_board.size(), 4u);  // "B\rC\r" stays in the stream: back-pressure
   ASSERT_TRUE(reader.pump(stream));       // pumping again reads nothing while A waits
   EXPECT_EQ(stream.to_board.size(), 4u);
-  EXPECT_FALSE(reader.feed('Z'));         // nor does feeding
+  EXPECT_FALSE(reader.feed('Z'));  // nor does feeding
   EXPECT_STREQ(reader.text(), "A");
   reader.take();
   ASSERT_TRUE(reader.pump(stream));
@@ -109,7 +109,7 @@ TEST(ReplyRingTest, QueuesWholeTextsAndFlushesAsTheHostReads) {
   EXPECT_TRUE(ring.send_line(line));  // 4 bytes
   EXPECT_TRUE(ring.send("abc"));      // 7 bytes
   EXPECT_FALSE(ring.reserve(2));
-  EXPECT_FALSE(ring.send("de"));      // refused whole, counted
+  EXPECT_FALSE(ring.send("de"));  // refused whole, counted
   EXPECT_EQ(ring.dropped(), 1u);
   EXPECT_EQ(ring.flush(stream), 3u);
   EXPECT_EQ(stream.take(), "OK\r");
@@ -165,7 +165,8 @@ using Handler = void (Calls::*)();
 constexpr auto kTable = make_command_table<Handler>({{"SM", &Calls::one}, {"QP", &Calls::two}});
 static_assert(kTable.names_unique(), "each command once");
 static_assert(kTable.find("SM") == &kTable.commands[0], "found at compile time");
-static_assert(kTable.find("S") == nullptr && kTable.find("SMX") == nullptr, "a prefix or a longer name is another name");
+static_assert(kTable.find("S") == nullptr && kTable.find("SMX") == nullptr,
+              "a prefix or a longer name is another name");
 static_assert(kTable.find("XX") == nullptr, "unknown names are not found");
 constexpr auto kDuplicate = make_command_table<Handler>({{"$$", &Calls::one}, {"$$", &Calls::two}});
 static_assert(!kDuplicate.names_unique(), "a name twice is caught");

@@ -133,7 +133,8 @@ TEST_F(TbiTest, ThousandCollinearSegmentsFlowAtFullSpeed) {
   // Once accelerated (v/a = 40 ms), every frame until the final ramp moves at full speed.
   const size_t ramp = static_cast<size_t>(v / a / kDt) + 2;
   ASSERT_GT(speeds.size(), 2 * ramp);
-  for (size_t i = ramp; i + ramp < speeds.size(); ++i) ASSERT_NEAR(speeds[i], v, 1e-6) << "frame " << i << " of " << speeds.size();
+  for (size_t i = ramp; i + ramp < speeds.size(); ++i)
+    ASSERT_NEAR(speeds[i], v, 1e-6) << "frame " << i << " of " << speeds.size();
   EXPECT_NEAR(moving_time_s(), 100.0 / v + v / a, 3 * kDt);
   EXPECT_EQ(tbi.underruns(), 0u);
 }
@@ -184,7 +185,8 @@ TEST_F(TbiTest, ThousandSegmentCircleRunsAtItsCentripetalLimit) {
   last_x = radius;
   last_y = 0.0;
   const int n = 1000;
-  for (int i = 1; i <= n; ++i) add_or_wait(ABSOLUTE, 1000.0, radius * cos(2 * kPi * i / n), radius * sin(2 * kPi * i / n));
+  for (int i = 1; i <= n; ++i)
+    add_or_wait(ABSOLUTE, 1000.0, radius * cos(2 * kPi * i / n), radius * sin(2 * kPi * i / n));
   run_until_idle();
   // Centripetal: v² = a·R at each vertex, with R the circle through the chords' midpoints
   // (R·cos(π/N)); between vertices a chord of length L may speed up to √(v² + a·L) and back.
@@ -295,7 +297,7 @@ TEST_F(TbiTest, ZeroLengthAndZeroTimeMovesNeverStall) {
   EXPECT_GE(tbi.add_move(ABSOLUTE, 10.0f, 0, 0, 0, 0, 0, 0), 0);
   EXPECT_GE(tbi.add_timed_move(INCREMENTAL, 0.0f, 0, 0, 0, 0, 0, 0), 0);
   EXPECT_TRUE(tbi.is_idle());
-  EXPECT_EQ(tbi.add_move(ABSOLUTE, 0.0f, 5, 0, 0, 0, 0, 0), -1);  // no speed, no time: refused
+  EXPECT_EQ(tbi.add_move(ABSOLUTE, 0.0f, 5, 0, 0, 0, 0, 0), -1);           // no speed, no time: refused
   EXPECT_GE(tbi.add_timed_move(INCREMENTAL, 0.01f, 0, 0, 0, 0, 0, 0), 0);  // a 10 ms dwell
   const int frames = run_until_idle();
   const double start_delay_s = TimeBasedInterpolator::kStartDelayUs * 1e-6;

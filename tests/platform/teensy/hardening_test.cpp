@@ -18,16 +18,16 @@ namespace {
 using teensy_model::Access;
 
 // ---- Addresses and bits from the RM (i.MX RT1060 Processor Reference Manual) ----------------
-constexpr uint32_t kFlexio3 = 0x42020000u;                  // §50.5 FLEXIO3 base
-constexpr uint32_t kTimstat = kFlexio3 + 0x018u;            // FLEXIO_TIMSTAT
+constexpr uint32_t kFlexio3 = 0x42020000u;        // §50.5 FLEXIO3 base
+constexpr uint32_t kTimstat = kFlexio3 + 0x018u;  // FLEXIO_TIMSTAT
 constexpr uint32_t shiftbuf(unsigned n) { return kFlexio3 + 0x200u + 4u * n; }
 constexpr uint32_t timctl(unsigned n) { return kFlexio3 + 0x400u + 4u * n; }
-constexpr uint32_t kMarkerFlag = 1u << 5;                   // timer 5: the tick marker
-constexpr uint32_t kGuardFlag = 1u << 6;                    // timer 6: the commit guard
-constexpr uint32_t kIspr4 = 0xE000E210u;                    // NVIC_ISPR4: IRQs 128..159
-constexpr uint32_t kIcpr4 = 0xE000E290u;                    // NVIC_ICPR4
-constexpr uint32_t kFrameIrq = 155, kTickIrq = 156;         // reserved line, FLEXIO3
-constexpr uint32_t kTickPriority = 16;                      // docs/hardware-backend.md table
+constexpr uint32_t kMarkerFlag = 1u << 5;            // timer 5: the tick marker
+constexpr uint32_t kGuardFlag = 1u << 6;             // timer 6: the commit guard
+constexpr uint32_t kIspr4 = 0xE000E210u;             // NVIC_ISPR4: IRQs 128..159
+constexpr uint32_t kIcpr4 = 0xE000E290u;             // NVIC_ICPR4
+constexpr uint32_t kFrameIrq = 155, kTickIrq = 156;  // reserved line, FLEXIO3
+constexpr uint32_t kTickPriority = 16;               // docs/hardware-backend.md table
 constexpr uint32_t kCyclesPerUs = teensy_model::kCoreHz / 1000000u;
 
 // ---- The frame clock as the hardware runs it ------------------------------------------------
@@ -219,11 +219,12 @@ TEST(TeensyHardening, AdcCalibratesOnceAndOnlyAfterTheCoresCalibrationEnded) {
   adc1 = AdcWatch{};
   constexpr uint32_t kAdc1 = 0x400C4000u;  // RM ADC chapter: ADC1 base
   constexpr uint32_t kHc0 = kAdc1 + 0x00u, kCfg = kAdc1 + 0x44u, kGc = kAdc1 + 0x48u, kGs = kAdc1 + 0x4Cu;
-  constexpr uint32_t kCal = 1u << 7;       // ADC_GC CAL
-  teensy_model::write_one_to_clear(kGs);   // ADC_GS CALF is write-1-to-clear
+  constexpr uint32_t kCal = 1u << 7;      // ADC_GC CAL
+  teensy_model::write_one_to_clear(kGs);  // ADC_GS CALF is write-1-to-clear
   teensy_model::poke(kGc, kCal);
   teensy_model::on_read(kGc, [](uint32_t stored) {
-    int& left = adc1.core_calibration_reads_left > 0 ? adc1.core_calibration_reads_left : adc1.our_calibration_reads_left;
+    int& left =
+        adc1.core_calibration_reads_left > 0 ? adc1.core_calibration_reads_left : adc1.our_calibration_reads_left;
     if (left > 0 && --left == 0) stored &= ~kCal;  // the calibration finishes
     teensy_model::poke(kGc, stored);
     return stored;
@@ -255,8 +256,8 @@ TEST(TeensyHardening, AdcCalibratesOnceAndOnlyAfterTheCoresCalibrationEnded) {
 // ---- 7. analogWrite on a pin sharing an input port's PWM submodule --------------------------
 struct SharedPin {
   uint8_t port;
-  uint32_t mux;    // SW_MUX_CTL_PAD of the shared pin (RM §11.7)
-  uint32_t alt;    // its FlexPWM function (Teensy 4.x PWM pin list)
+  uint32_t mux;             // SW_MUX_CTL_PAD of the shared pin (RM §11.7)
+  uint32_t alt;             // its FlexPWM function (Teensy 4.x PWM pin list)
   uint32_t submodule_base;  // RM §55.8: PWMn base + 0x60 × submodule
 };
 
@@ -271,9 +272,9 @@ TEST(TeensyHardening, InputPortRefusesWhenAnalogWriteOwnsItsSubmodule) {
     teensy_model::reset();
     stepdance::clear_fault();
     teensy_model::poke(pin.mux, pin.alt);  // what Teensyduino's analogWrite leaves in the pad
-    EXPECT_EQ(stepdance::hal::port_in_begin(pin.port, stepdance::protocol::DirSampleEdge::kFalling, &ignore_pulse,
-                                            nullptr),
-              stepdance::Status::kBusy);
+    EXPECT_EQ(
+        stepdance::hal::port_in_begin(pin.port, stepdance::protocol::DirSampleEdge::kFalling, &ignore_pulse, nullptr),
+        stepdance::Status::kBusy);
     for (const Access& access : teensy_model::log()) {
       const bool in_submodule = access.address >= pin.submodule_base && access.address < pin.submodule_base + 0x60u;
       EXPECT_FALSE(access.kind == Access::kWrite && in_submodule) << "the refused port touched its submodule";

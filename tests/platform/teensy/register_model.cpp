@@ -130,7 +130,8 @@ void write_special(const char* name, uint32_t value) {
 #if !defined(TEENSY_MODEL_WITHOUT_SERVICES)
 uint32_t micros() {
   teensy_model::advance_cycles(10);
-  return static_cast<uint32_t>(teensy_model::now_cycles() / (teensy_model::kCoreHz / 1000000u)); }
+  return static_cast<uint32_t>(teensy_model::now_cycles() / (teensy_model::kCoreHz / 1000000u));
+}
 volatile uint32_t F_CPU_ACTUAL = teensy_model::kCoreHz;
 volatile uint32_t F_BUS_ACTUAL = teensy_model::kBusHz;
 void attachInterruptVector(IRQ_NUMBER_t irq, void (*handler)()) {

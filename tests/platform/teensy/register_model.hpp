@@ -16,12 +16,12 @@ namespace teensy_model {
 /// One logged register access.
 struct Access {
   enum Kind { kRead, kWrite, kSpecialWrite } kind;
-  uint32_t address;   ///< register address (0 for special registers)
-  uint32_t value;     ///< value read or written
+  uint32_t address;     ///< register address (0 for special registers)
+  uint32_t value;       ///< value read or written
   const char* special;  ///< "primask" / "basepri" for kSpecialWrite, else nullptr
-  uint32_t primask;   ///< PRIMASK when the access happened
-  uint32_t basepri;   ///< BASEPRI when the access happened
-  uint64_t cycles;    ///< model time in core cycles
+  uint32_t primask;     ///< PRIMASK when the access happened
+  uint32_t basepri;     ///< BASEPRI when the access happened
+  uint64_t cycles;      ///< model time in core cycles
 };
 
 /// Core clock of the model (Teensyduino's default 600 MHz) and its bus clock (150 MHz).

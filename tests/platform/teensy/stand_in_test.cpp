@@ -205,7 +205,7 @@ TEST(StandInAnalog, StartUpCalibratesBothAdcsIn10BitMode) {
     teensy_model::on_read(base + 0x48, [](uint32_t v) { return v & ~(1u << 7); });  // CAL done at once
     teensy_model::write_one_to_clear(base + 0x4C);
   }
-  teensy_model::poke(0x400C804C, 1u << 1);  // ADC2 reports CALF
+  teensy_model::poke(0x400C804C, 1u << 1);                                         // ADC2 reports CALF
   teensy_model::on_write(0x400C804C, [](uint32_t, uint32_t) { return 1u << 1; });  // and keeps it
   stand_in_analog_start();
   EXPECT_EQ((teensy_model::peek(0x400C4044) >> 2) & 3u, 1u) << "ADC1 CFG.MODE = 10-bit";
@@ -222,7 +222,8 @@ TEST(StandInMemoryProtection, RegionsAreTeensysWithAStackGuard) {
   std::vector<std::pair<uint32_t, uint32_t>> regions;  // (RBAR, RASR) as written
   const auto& log = teensy_model::log();
   for (size_t i = 0; i + 1 < log.size(); ++i) {
-    if (log[i].address == 0xE000ED9C && log[i + 1].address == 0xE000EDA0) regions.emplace_back(log[i].value, log[i + 1].value);
+    if (log[i].address == 0xE000ED9C && log[i + 1].address == 0xE000EDA0)
+      regions.emplace_back(log[i].value, log[i + 1].value);
   }
   ASSERT_EQ(regions.size(), 9u);
   EXPECT_EQ(regions[0], std::make_pair(0x00000010u, 0x1000003Fu)) << "4 GB, XN, no access";

@@ -42,7 +42,7 @@ void play_lpi2c(uint32_t base) {
   });
   teensy_model::on_read(base + kMsr, [](uint32_t) {
     if (bus.nack_at >= 0 && bus.commands.size() > static_cast<size_t>(bus.nack_at)) return 1u << 10;  // NDF
-    if (!bus.commands.empty() && (bus.commands.back() >> 8) == 2) return 1u << 9;                   // SDF
+    if (!bus.commands.empty() && (bus.commands.back() >> 8) == 2) return 1u << 9;                     // SDF
     return 0u;
   });
   teensy_model::on_read(base + kMrdr, [](uint32_t) {

@@ -35,11 +35,11 @@ TEST_F(MathTest, MinMaxConstrainInTheCommonType) {
 TEST_F(MathTest, IntegerMapTruncatesTowardZero) {
   EXPECT_EQ(map(512, 0, 1023, 0, 255), 127);  // 130 560 / 1023 = 127.6
   EXPECT_EQ(map(1023, 0, 1023, 0, 255), 255);
-  EXPECT_EQ(map(-5, 0, 10, 0, 100), -50);     // no clamping
-  EXPECT_EQ(map(3, 0, 10, 100, 0), 70);       // reversed output range
-  EXPECT_EQ(map(7, 0, 3, 0, 10), 23);         // 70 / 3 = 23.3
-  EXPECT_EQ(map(-1, 0, 3, 0, 10), -3);        // −10 / 3 = −3.3, truncated toward zero
-  EXPECT_EQ(map(5, 2, 2, 40, 80), 40);        // empty input range: out_min
+  EXPECT_EQ(map(-5, 0, 10, 0, 100), -50);  // no clamping
+  EXPECT_EQ(map(3, 0, 10, 100, 0), 70);    // reversed output range
+  EXPECT_EQ(map(7, 0, 3, 0, 10), 23);      // 70 / 3 = 23.3
+  EXPECT_EQ(map(-1, 0, 3, 0, 10), -3);     // −10 / 3 = −3.3, truncated toward zero
+  EXPECT_EQ(map(5, 2, 2, 40, 80), 40);     // empty input range: out_min
   static_assert(std::is_same_v<decltype(map(1, 0, 2, 0, 4)), long>);
 }
 

@@ -33,7 +33,7 @@ TEST(PrintTest, IntegersInDecimal) {
   EXPECT_EQ(printed(LLONG_MIN), "-9223372036854775808");
   EXPECT_EQ(printed(ULLONG_MAX), "18446744073709551615");
   EXPECT_EQ(printed(static_cast<int16_t>(-300)), "-300");
-  EXPECT_EQ(printed(static_cast<int8_t>(-5)), "-5");  // signed char promotes to int: a number
+  EXPECT_EQ(printed(static_cast<int8_t>(-5)), "-5");     // signed char promotes to int: a number
   EXPECT_EQ(printed(static_cast<uint8_t>(200)), "200");  // uint8_t is a number, not a character
   EXPECT_EQ(printed(static_cast<uint32_t>(3000000000u)), "3000000000");
 }
@@ -84,7 +84,7 @@ TEST(PrintTest, FloatsWithChosenDigits) {
 }
 
 TEST(PrintTest, FloatSignsAndSpecialValues) {
-  EXPECT_EQ(printed(-0.0), "0.00");    // negative zero prints unsigned, as on the board
+  EXPECT_EQ(printed(-0.0), "0.00");     // negative zero prints unsigned, as on the board
   EXPECT_EQ(printed(-0.001), "-0.00");  // a small negative value keeps its sign
   EXPECT_EQ(printed(NAN), "nan");
   EXPECT_EQ(printed(INFINITY), "inf");

@@ -37,7 +37,8 @@ png = ""
 class BoardRuntimeTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const scenario::Scenario scenario = parse(kScenario, source_path("tests/sim/assembly/fixtures/HostFeatures/scenario.toml"));
+    const scenario::Scenario scenario =
+        parse(kScenario, source_path("tests/sim/assembly/fixtures/HostFeatures/scenario.toml"));
     simulation_ = create(scenario, "board_runtime");
     ASSERT_NE(simulation_, nullptr);
     board_ = simulation_->board("board");

@@ -40,7 +40,8 @@ TEST(ChainingTest, DecodingTheSimulatorsOwnVcdReproducesItsCounts) {
     const VcdWire& dir = read.capture.wires[pair.dir];
     const DecodeResult decoded = decode_step_dir(step.edges, dir.edges, DecodeOptions{}, {step.initial, dir.initial});
     const bool output = pair.label == "knobs.OUT_A";
-    const PulseCounts& counted = output ? simulation->board("knobs")->ports().sent(0) : simulation->board("plotter")->ports().received(0);
+    const PulseCounts& counted =
+        output ? simulation->board("knobs")->ports().sent(0) : simulation->board("plotter")->ports().received(0);
     ASSERT_TRUE(output || pair.label == "plotter.IN_A") << pair.label;
     for (uint8_t signal = 0; signal < kNumSignals; ++signal) {
       EXPECT_EQ(decoded.counts[signal].forward, counted[signal].forward) << pair.label;

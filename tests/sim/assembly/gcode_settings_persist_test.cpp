@@ -10,8 +10,8 @@ namespace {
 std::string scenario_text(const std::string& out, const std::string& steps) {
   return "duration_s = 0.5\n" + gcode_step_a_sketch_board() +
          "[[host]]\nboard = \"driver\"\n"
-         "[[host.step]]\nwait = \"^Grbl 1\\\\.1\"\ntimeout_s = 0.1\n" + steps +
-         "[output]\ndirectory = \"" + out + "\"\nsvg = \"\"\npng = \"\"\nsummary = \"\"\n";
+         "[[host.step]]\nwait = \"^Grbl 1\\\\.1\"\ntimeout_s = 0.1\n" +
+         steps + "[output]\ndirectory = \"" + out + "\"\nsvg = \"\"\npng = \"\"\nsummary = \"\"\n";
 }
 
 /// Runs the scenario into `out` without emptying it first (a re-run into the same folder).
@@ -46,7 +46,8 @@ TEST(GcodeSettingsPersist, ASettingWrittenInOneRunIsListedByTheNext) {
   ASSERT_EQ(image.size(), 1080u);
   EXPECT_EQ(image.substr(0, 4), "SDGS");
 
-  auto second = run_into(out, "[[host.step]]\nsend = \"$$\\n\"\n[[host.step]]\nwait = \"^\\\\$132=\"\ntimeout_s = 0.1\n");
+  auto second =
+      run_into(out, "[[host.step]]\nsend = \"$$\\n\"\n[[host.step]]\nwait = \"^\\\\$132=\"\ntimeout_s = 0.1\n");
   ASSERT_NE(second, nullptr);
   ASSERT_TRUE(second->host_client("driver")->completed()) << second->host_client("driver")->failure();
   EXPECT_TRUE(received(*second, "$110=7200.000"));
@@ -55,7 +56,8 @@ TEST(GcodeSettingsPersist, ASettingWrittenInOneRunIsListedByTheNext) {
 
   // An emptied folder is a fresh board: the defaults again.
   std::filesystem::remove_all(out);
-  auto fresh = run_into(out, "[[host.step]]\nsend = \"$$\\n\"\n[[host.step]]\nwait = \"^\\\\$132=\"\ntimeout_s = 0.1\n");
+  auto fresh =
+      run_into(out, "[[host.step]]\nsend = \"$$\\n\"\n[[host.step]]\nwait = \"^\\\\$132=\"\ntimeout_s = 0.1\n");
   ASSERT_NE(fresh, nullptr);
   EXPECT_TRUE(received(*fresh, "$110=6000.000"));
   std::filesystem::remove_all(out);

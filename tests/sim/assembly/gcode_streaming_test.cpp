@@ -24,7 +24,8 @@ std::vector<Point> spiral() {
   for (int k = 0; k <= kSegments; ++k) {
     const double turns = 6.0 * k / kSegments;
     const double radius = 5.0 + 45.0 * k / kSegments;
-    points.push_back({kCenterMm + radius * std::cos(2 * M_PI * turns), kCenterMm + radius * std::sin(2 * M_PI * turns)});
+    points.push_back(
+        {kCenterMm + radius * std::cos(2 * M_PI * turns), kCenterMm + radius * std::sin(2 * M_PI * turns)});
   }
   return points;
 }
@@ -79,12 +80,14 @@ TEST_P(GcodeStreamingTest, FiveThousandLinesAcknowledgedInOrderAndDrawnWithinOne
   std::filesystem::create_directories(input_dir);
   const std::string gcode_path = input_dir + "/spiral.gcode";
   std::ofstream(gcode_path) << gcode;
-  const std::string text =
-      "duration_s = 60\n" + gcode_step_a_sketch_board() +
-      "[[host]]\nboard = \"driver\"\n"
-      "[[host.step]]\nwait = \"^Grbl\"\n"
-      "[[host.step]]\nstream_file = \"" + gcode_path + "\"\nflow = \"" + flow + "\"\npoll = \"?\"\npoll_every_s = 0.1\n"
-      "[output]\ndirectory = \"" + out + "\"\nsvg = \"\"\npng = \"\"\nsummary = \"\"\n";
+  const std::string text = "duration_s = 60\n" + gcode_step_a_sketch_board() +
+                           "[[host]]\nboard = \"driver\"\n"
+                           "[[host.step]]\nwait = \"^Grbl\"\n"
+                           "[[host.step]]\nstream_file = \"" +
+                           gcode_path + "\"\nflow = \"" + flow +
+                           "\"\npoll = \"?\"\npoll_every_s = 0.1\n"
+                           "[output]\ndirectory = \"" +
+                           out + "\"\nsvg = \"\"\npng = \"\"\nsummary = \"\"\n";
   auto simulation = create(parse(text, input_dir + "/scenario.toml"), "gcode_streaming_" + flow);
   simulation->finish();
   const HostClient* client = simulation->host_client("driver");

@@ -22,7 +22,9 @@ std::string scenario_text() {
          "[board.sockets]\nA = { device = \"stepper\" }\n"
          "[[host]]\nboard = \"board\"\ntranscript = \"host.txt\"\n"
          "[[host.step]]\nwait = \"^setup done\"\ntimeout_s = 0.1\n"
-         "[[host.step]]\nsend = \"" + long_line() + "\\n\"\n"
+         "[[host.step]]\nsend = \"" +
+         long_line() +
+         "\\n\"\n"
          "[[host.step]]\nwait = \"(a|b)*b$\"\ntimeout_s = 0.1\n"
          "[output]\nsvg = \"\"\npng = \"\"\n";
 }

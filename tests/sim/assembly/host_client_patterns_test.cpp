@@ -16,8 +16,12 @@ std::string scenario_text(const std::string& pattern) {
          "[board.sockets]\nA = { device = \"stepper\" }\n"
          "[[host]]\nboard = \"board\"\n"
          "[[host.step]]\nwait = \"^setup done\"\ntimeout_s = 0.1\n"
-         "[[host.step]]\nsend = \"" + std::string(48, 'a') + "!\\n\"\n"
-         "[[host.step]]\nwait = '" + pattern + "'\ntimeout_s = 0.05\n"
+         "[[host.step]]\nsend = \"" +
+         std::string(48, 'a') +
+         "!\\n\"\n"
+         "[[host.step]]\nwait = '" +
+         pattern +
+         "'\ntimeout_s = 0.05\n"
          "[output]\nsvg = \"\"\npng = \"\"\n";
 }
 
@@ -31,8 +35,9 @@ struct PatternRun {
 PatternRun run(const std::string& pattern, const std::string& name) {
   PatternRun result;
   const auto started = std::chrono::steady_clock::now();
-  result.simulation = create(parse(scenario_text(pattern), source_path("tests/sim/assembly/fixtures/HostFeatures/scenario.toml")),
-                             name, false);
+  result.simulation =
+      create(parse(scenario_text(pattern), source_path("tests/sim/assembly/fixtures/HostFeatures/scenario.toml")), name,
+             false);
   if (result.simulation == nullptr) return result;
   result.simulation->finish();
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

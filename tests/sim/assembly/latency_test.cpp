@@ -42,8 +42,7 @@ TEST(ChainLatency, EachHopTakesAtMostTwoFrames) {  // the knob's hop: + the puls
     ASSERT_GE(relay, 0);
     ASSERT_GE(relay2, 0);
     std::cout << "latency after the count at " << to_seconds(knob) << " s (µs): knob→knobs " << (knobs - knob) / 1000.0
-              << ", knobs→relay " << (relay - knobs) / 1000.0 << ", relay→relay2 " << (relay2 - relay) / 1000.0
-              << "\n";
+              << ", knobs→relay " << (relay - knobs) / 1000.0 << ", relay→relay2 " << (relay2 - relay) / 1000.0 << "\n";
     EXPECT_LE(knobs - knob, 2 * kFrame + 2 * kMicrosecond);
     EXPECT_LE(relay - knobs, 2 * kFrame);
     EXPECT_LE(relay2 - relay, 2 * kFrame);

@@ -35,7 +35,8 @@ connector = "ENC1"
 [[cable]]
 from = "knobs:A"
 to = "receiver:A"
-stretch_ns = )" + std::to_string(width_ns - 2000) + R"(
+stretch_ns = )" + std::to_string(width_ns - 2000) +
+                           R"(
 
 [[at]]
 time_s = 0.1
@@ -53,7 +54,7 @@ summary = ""
 
 struct Received {
   PulseCounts sent;
-  PulseCounts host_decoded;   // the simulator's own decode of what reached the port
+  PulseCounts host_decoded;    // the simulator's own decode of what reached the port
   uint64_t port_too_long = 0;  // the sketch's InputPort counters
   uint64_t port_accepted = 0;
 };

@@ -34,7 +34,8 @@ struct Outcome {
 };
 
 Outcome run(bool b_reversed, const std::string& name) {
-  const scenario::Scenario loaded = parse(plus_x_move_scenario(b_reversed), source_path("tests/sim/assembly/directions.toml"));
+  const scenario::Scenario loaded =
+      parse(plus_x_move_scenario(b_reversed), source_path("tests/sim/assembly/directions.toml"));
   auto simulation = create(loaded, name, false);
   Outcome outcome;
   if (simulation == nullptr) return outcome;
@@ -69,10 +70,9 @@ TEST(MachineDirections, AReversedMotorFlipsThatMotorsContribution) {
 }
 
 TEST(MachineDirections, ReversedIsRefusedOnAServoSocket) {
-  const std::string text =
-      "duration_s = 1\n[[board]]\nname = \"driver\"\nsketch = \"" +
-      source_path("examples/GCodeStepASketch/GCodeStepASketch.ino") +
-      "\"\nmodule = \"driver\"\nsockets = { C = { device = \"servo\", reversed = true } }\n";
+  const std::string text = "duration_s = 1\n[[board]]\nname = \"driver\"\nsketch = \"" +
+                           source_path("examples/GCodeStepASketch/GCodeStepASketch.ino") +
+                           "\"\nmodule = \"driver\"\nsockets = { C = { device = \"servo\", reversed = true } }\n";
   const scenario::LoadResult loaded = scenario::parse_scenario(text, source_path("tests/sim/assembly/directions.toml"));
   ASSERT_FALSE(loaded.ok());
   EXPECT_NE(loaded.error_text().find("'reversed' does not apply to a servo"), std::string::npos) << loaded.error_text();

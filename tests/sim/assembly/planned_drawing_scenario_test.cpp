@@ -19,7 +19,7 @@ TEST(PlannedDrawingScenario, TheFeedKnobPausesThePenOnThePathAndResumes) {
   const PenPoint paused = pen_at(*simulation, 3.2);
   const PenPoint still = pen_at(*simulation, 5.9);
   EXPECT_GT(std::hypot(paused.x_mm - before.x_mm, paused.y_mm - before.y_mm), 1.0);  // it was drawing
-  EXPECT_EQ(paused, still);                                                           // then it waited
+  EXPECT_EQ(paused, still);                                                          // then it waited
   const PenPoint resumed = pen_at(*simulation, 6.5);
   EXPECT_GT(std::hypot(resumed.x_mm - still.x_mm, resumed.y_mm - still.y_mm), 1.0);  // and went on
   const SimulationReport report = simulation->finish();

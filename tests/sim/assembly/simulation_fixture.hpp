@@ -10,10 +10,10 @@
 #include <sstream>
 #include <string>
 
-#include "scenario/load_scenario.hpp"
 #include "assembly/simulation.hpp"
 #include "board/loader/sketch_builder.hpp"
 #include "output/png_picture_writer.hpp"
+#include "scenario/load_scenario.hpp"
 
 namespace stepdance::sim::test {
 

@@ -14,7 +14,8 @@ duration_s = 3
 [[board]]
 name = "driver"
 sketch = "fixtures/Storage/RecordKnob/RecordKnob.ino"
-)" + card + R"(
+)" + card +
+         R"(
 [board.sockets]
 A = { device = "stepper" }
 [[device]]
@@ -70,7 +71,8 @@ name = "driver"
 sketch = "fixtures/Storage/PlayBack/PlayBack.ino"
 [board.sockets]
 A = { device = "stepper" }
-)", kScenarioFile);
+)",
+                                  kScenarioFile);
   SimulationOptions options;
   plug_test_hooks(options);
   options.output_directory = test_output_dir("storage_record");
@@ -85,7 +87,8 @@ A = { device = "stepper" }
 
 TEST(StorageScenario, ASlowCardMakesTheRecorderOverrunWithACountedWarning) {
   // 10 kB/s is less than the 25 kB/s the original format needs: the 16 KB ring fills.
-  auto simulation = create(parse(record_scenario("sd_card = { write_kb_per_s = 10 }"), kScenarioFile), "storage_slow", false);
+  auto simulation =
+      create(parse(record_scenario("sd_card = { write_kb_per_s = 10 }"), kScenarioFile), "storage_slow", false);
   ASSERT_NE(simulation, nullptr);
   simulation->finish();
   EXPECT_EQ(counter(*simulation, "FourTrackRecorder", "overruns"), 1u);
@@ -101,8 +104,8 @@ TEST(StorageScenario, ASlowCardMakesTheRecorderOverrunWithACountedWarning) {
 
 TEST(StorageScenario, AStallLongerThanTheBufferOverrunsAsWell) {
   // 800 ms stalls every 16 kB: the ring holds 655 ms of the original format.
-  auto simulation = create(
-      parse(record_scenario("sd_card = { stall_every_kb = 16, stall_ms = 800 }"), kScenarioFile), "storage_stall", false);
+  auto simulation = create(parse(record_scenario("sd_card = { stall_every_kb = 16, stall_ms = 800 }"), kScenarioFile),
+                           "storage_stall", false);
   ASSERT_NE(simulation, nullptr);
   simulation->finish();
   EXPECT_EQ(counter(*simulation, "FourTrackRecorder", "overruns"), 1u);
@@ -115,7 +118,9 @@ duration_s = 0.1
 [[board]]
 name = "driver"
 sketch = "fixtures/Storage/FrameStorage/FrameStorage.ino"
-)", kScenarioFile), "storage_frame", false);
+)",
+                                 kScenarioFile),
+                           "storage_frame", false);
   ASSERT_NE(simulation, nullptr);
   const SimulationReport report = simulation->finish();
   EXPECT_FALSE(report.all_expectations_met());

@@ -1,8 +1,8 @@
 // A real sketch compiled into a board library and run on a SimBoard: timers, encoders, ports, pins.
 #include <gtest/gtest.h>
 
-#include <memory>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -43,8 +43,8 @@ TEST(SimBoardTest, StepASketchTurnsKnobCountsIntoMotorPulses) {
   EXPECT_EQ(board->ports().sent(1)[SIGNAL_E].forward, 80u);
   const StepdanceBoardStatsV1 stats = board->stats();
   EXPECT_EQ(board->port_counter("OutputPort", 0, "sent_e_forward"), 80u);  // the board's own count agrees with the wire
-  EXPECT_EQ(stats.frames, 2500u);               // frames at 40 µs … 100 ms
-  EXPECT_FALSE(board->pin_level(14));           // ENABLE A driven low: driver on
+  EXPECT_EQ(stats.frames, 2500u);                                          // frames at 40 µs … 100 ms
+  EXPECT_FALSE(board->pin_level(14));                                      // ENABLE A driven low: driver on
 }
 
 // BoardOptions::encoder_sample_phase_ns: reads see the counts of the last instant phase + k × 40 µs

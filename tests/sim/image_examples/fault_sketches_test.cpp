@@ -20,10 +20,10 @@ std::string fault_image(const std::string& name) {
 }
 
 struct FaultCase {
-  std::string sketch;      ///< fixture folder and image name
-  std::string fault;       ///< what the report must name
-  std::string symbol;      ///< the sketch function the report must name
-  EscapeCause cause;       ///< kCrashed (exit 5) or kHung (exit 6)
+  std::string sketch;  ///< fixture folder and image name
+  std::string fault;   ///< what the report must name
+  std::string symbol;  ///< the sketch function the report must name
+  EscapeCause cause;   ///< kCrashed (exit 5) or kHung (exit 6)
 };
 
 void PrintTo(const FaultCase& fault, std::ostream* out) { *out << fault.sketch; }

@@ -100,7 +100,8 @@ scenario::Scenario on_image_clocks(scenario::Scenario scenario, const ExampleRun
   for (scenario::BoardConfig& board : scenario.boards) {
     if (images.count(board.name) == 0) continue;
     const SimTime first_frame_ns = image.wires.at(board.name + ":A").first_frame_ns;
-    const auto first_khz_ns = static_cast<SimTime>(std::llround(figure(image, board.name, "khz_interrupt_first_s") * 1e9));
+    const auto first_khz_ns =
+        static_cast<SimTime>(std::llround(figure(image, board.name, "khz_interrupt_first_s") * 1e9));
     EXPECT_GE(first_frame_ns, 0);
     EXPECT_GE(first_khz_ns, 0);
     board.frame_phase_ns = first_frame_ns % (40 * kMicrosecond);
@@ -140,7 +141,8 @@ scenario::Scenario started_like_the_image(scenario::Scenario scenario, const Exa
     if (images.count(board.name) == 0) continue;
     const SimTime ours = first_step_ns(probe, board.name), theirs = first_step_ns(image, board.name);
     if (ours < 0 || theirs <= ours) continue;
-    EXPECT_EQ((theirs - ours) % (40 * kMicrosecond), 0) << board.name << ": first steps not a whole number of frames apart";
+    EXPECT_EQ((theirs - ours) % (40 * kMicrosecond), 0)
+        << board.name << ": first steps not a whole number of frames apart";
     board.power_on_ns = theirs - ours;
     std::cout << board.name << ": host board powered on " << (theirs - ours) / kMicrosecond
               << " us later, where the image's first step came\n";
@@ -150,10 +152,10 @@ scenario::Scenario started_like_the_image(scenario::Scenario scenario, const Exa
 }
 
 struct ImageExample {
-  std::string folder;                            ///< examples/<folder>
-  std::map<std::string, std::string> images;     ///< board name → image file (teensy41/… relative)
-  double duration_s = 0;                         ///< > 0: run only this long (no expectations then)
-  bool fed_over_serial = false;                  ///< its motion comes from a scripted host's lines
+  std::string folder;                         ///< examples/<folder>
+  std::map<std::string, std::string> images;  ///< board name → image file (teensy41/… relative)
+  double duration_s = 0;                      ///< > 0: run only this long (no expectations then)
+  bool fed_over_serial = false;               ///< its motion comes from a scripted host's lines
   /// Run to its end, its frames must match to the last. False where, measured, a step lands a
   /// frame apart after a while though the steps, the drawing and every expectation stay the same
   /// (the difference is printed and kept as a test property): ClayTexturizer, whose pedal is an
@@ -208,8 +210,9 @@ size_t expect_same_frames(const ExampleRun& host, const ExampleRun& image, bool 
     }
     if (first_difference < compared) print_frames_around(ours, theirs, first_difference);
     if (must_match) {
-      EXPECT_EQ(first_difference, compared) << "frame words differ from the " << first_difference
-                                             << "th frame after the first step" << (idle_too ? "" : " (stepping frames)");
+      EXPECT_EQ(first_difference, compared)
+          << "frame words differ from the " << first_difference << "th frame after the first step"
+          << (idle_too ? "" : " (stepping frames)");
     } else if (first_difference < compared) {
       std::cout << wire << ": frames part from the " << first_difference << "th of " << compared
                 << " after the first step (allowed: frames_to_the_end is false)\n";
@@ -293,7 +296,8 @@ TEST_P(ImageExamples, RunLikeTheHostCompiledSketch) {
   if (timed_alike) {
     EXPECT_EQ(image.drawing, host.drawing);
   }
-  EXPECT_GT(expect_same_steps(scenario, host, image, timed_alike), 0) << "the host run moved no motor: nothing was compared";
+  EXPECT_GT(expect_same_steps(scenario, host, image, timed_alike), 0)
+      << "the host run moved no motor: nothing was compared";
 }
 
 // Every example runs to its end in the full build of this test (label image_full: about an hour
@@ -315,7 +319,8 @@ INSTANTIATE_TEST_SUITE_P(
                       // The plotter on its image, the knobs' Basic Module host-compiled, over their
                       // cable. (Both on images, the two emulated cores bound each other's runs to
                       // a block or so: about 100 times slower; issue 37's notes.)
-                      ImageExample{"ChainedPlotterDriver", {{"plotter", "teensy41/ChainedPlotterDriver"}}, kSmokeS / 2}),
+                      ImageExample{
+                          "ChainedPlotterDriver", {{"plotter", "teensy41/ChainedPlotterDriver"}}, kSmokeS / 2}),
     [](const ::testing::TestParamInfo<ImageExample>& param) { return param.param.folder; });
 
 }  // namespace

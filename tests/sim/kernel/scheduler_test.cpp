@@ -75,9 +75,9 @@ TEST(SchedulerTest, PastTimesAreRaisedToNow) {
 TEST(PeriodicTimerTest, TicksAtEveryPeriodUntilStopped) {
   Scheduler scheduler;
   std::vector<SimTime> ticks;
-  PeriodicTimer timer(scheduler, [](void* context, SimTime time) {
-    static_cast<std::vector<SimTime>*>(context)->push_back(time);
-  }, &ticks);
+  PeriodicTimer timer(
+      scheduler, [](void* context, SimTime time) { static_cast<std::vector<SimTime>*>(context)->push_back(time); },
+      &ticks);
   timer.start(5, 40);
   scheduler.run_until(125);
   EXPECT_EQ(ticks, (std::vector<SimTime>{5, 45, 85, 125}));
@@ -89,9 +89,12 @@ TEST(PeriodicTimerTest, TicksAtEveryPeriodUntilStopped) {
 TEST(OneShotPoolTest, DeliversPayloadsAndReusesEvents) {
   Scheduler scheduler;
   std::vector<std::pair<SimTime, int>> got;
-  OneShotPool<int> pool(scheduler, [](void* context, SimTime time, const int& value) {
-    static_cast<std::vector<std::pair<SimTime, int>>*>(context)->emplace_back(time, value);
-  }, &got);
+  OneShotPool<int> pool(
+      scheduler,
+      [](void* context, SimTime time, const int& value) {
+        static_cast<std::vector<std::pair<SimTime, int>>*>(context)->emplace_back(time, value);
+      },
+      &got);
   for (int round = 0; round < 3; ++round) {
     for (int i = 0; i < 300; ++i) pool.post(scheduler.now() + 1000 - i, i);
     scheduler.run_until(scheduler.now() + 2000);
@@ -122,7 +125,6 @@ TEST(SchedulerTest, NestedRunUntilHandlesEventsInsideAHandler) {
   const std::vector<std::pair<SimTime, int>> expected{{10, 1}, {50, 2}, {110, 10}, {200, 3}};
   EXPECT_EQ(recorder.seen, expected);
 }
-
 
 // The slots, their heap and the time index against the plainest model of the contract: an
 // ordered set of (time, order of scheduling, event). 200,000 random schedules (150 distinct

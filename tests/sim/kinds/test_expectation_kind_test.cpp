@@ -29,7 +29,8 @@ std::string scenario_text(const std::string& expect) {
 
 std::vector<std::string> errors_of(const std::string& text) {
   std::vector<std::string> errors;
-  for (const scenario::Diagnostic& error : scenario::parse_scenario(text, kFile).errors) errors.push_back(error.to_string());
+  for (const scenario::Diagnostic& error : scenario::parse_scenario(text, kFile).errors)
+    errors.push_back(error.to_string());
   return errors;
 }
 
@@ -51,7 +52,8 @@ TEST(TestExpectationKindRegistry, IsUnknownUntilRegisteredAndGoneAfter) {
   {
     ScopedKind<ExpectationRegistry> turns(test_turns_kind());
     EXPECT_EQ(find_expectation_kind("test_turns"), &test_turns_kind());
-    EXPECT_EQ(errors_of(text), (std::vector<std::string>{kFile + kNeedsOneCheck + ", i2c_loop_pass_max_us or test_turns"}))
+    EXPECT_EQ(errors_of(text),
+              (std::vector<std::string>{kFile + kNeedsOneCheck + ", i2c_loop_pass_max_us or test_turns"}))
         << "the list names the new kind last";
   }
   EXPECT_EQ(find_expectation_kind("test_turns"), nullptr);
@@ -75,18 +77,18 @@ TEST_F(TestExpectationKind, KeysAreCheckedLikeTheBuiltInOnes) {
   // Lines: 13 [[expect]], 14 to 16 its keys.
   EXPECT_EQ(errors_of(scenario_text("[[expect]]\ntest_turns = \"driver:A\"\nturns = 2000\n")),
             (std::vector<std::string>{kFile + ":15: 'turns' must be in [-1,000, 1,000] turns, got 2,000"}));
-  EXPECT_EQ(errors_of(scenario_text("[[expect]]\ntest_turns = \"driver:C\"\nturns = 1\n")),
-            (std::vector<std::string>{
-                kFile + ":14: 'test_turns' must name a stepper socket \"board:A\", got \"driver:C\""}));
+  EXPECT_EQ(
+      errors_of(scenario_text("[[expect]]\ntest_turns = \"driver:C\"\nturns = 1\n")),
+      (std::vector<std::string>{kFile + ":14: 'test_turns' must name a stepper socket \"board:A\", got \"driver:C\""}));
   EXPECT_EQ(errors_of(scenario_text("[[expect]]\ntest_turns = \"driver:A\"\n")),
             (std::vector<std::string>{kFile + ":13: [[expect]] is missing required key 'turns'"}));
   EXPECT_EQ(errors_of(scenario_text("[[expect]]\ntest_turns = \"driver:A\"\nturns = 1\nsteps = 3\n")),
             (std::vector<std::string>{kFile + ":16: 'steps' only goes with 'motor'"}));
   EXPECT_EQ(errors_of(scenario_text("[[expect]]\nmotor = \"driver:A\"\nsteps = 3\nturns = 1\n")),
             (std::vector<std::string>{kFile + ":16: 'turns' only goes with 'test_turns'"}));
-  EXPECT_EQ(errors_of(scenario_text("[[expect]]\nmotor = \"driver:A\"\ntest_turns = \"driver:A\"\n")),
-            (std::vector<std::string>{
-                kFile + ":15: an [[expect]] checks one thing, but has both 'motor' and 'test_turns'"}));
+  EXPECT_EQ(
+      errors_of(scenario_text("[[expect]]\nmotor = \"driver:A\"\ntest_turns = \"driver:A\"\n")),
+      (std::vector<std::string>{kFile + ":15: an [[expect]] checks one thing, but has both 'motor' and 'test_turns'"}));
 }
 
 TEST_F(TestExpectationKind, ChecksTheEndOfARunUnderARealSketch) {

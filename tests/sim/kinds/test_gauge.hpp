@@ -62,8 +62,8 @@ inline void add_test_gauge_page_parts(const Machine& machine, SimTime, PageParts
 }
 
 inline const MachineKind& test_gauge_kind() {
-  static const MachineKind kind{"test_gauge", "x", read_test_gauge, build_test_gauge, test_gauge_page,
-                                add_test_gauge_page_parts, {"gauge"}};
+  static const MachineKind kind{
+      "test_gauge", "x", read_test_gauge, build_test_gauge, test_gauge_page, add_test_gauge_page_parts, {"gauge"}};
   return kind;
 }
 

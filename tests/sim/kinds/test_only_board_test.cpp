@@ -26,12 +26,14 @@ std::string board_text(const std::string& module, const std::string& extra = "")
 }
 
 std::string device_text(const std::string& name, const std::string& type, const std::string& connector) {
-  return "[[device]]\nname = \"" + name + "\"\ntype = \"" + type + "\"\nboard = \"b\"\nconnector = \"" + connector + "\"\n";
+  return "[[device]]\nname = \"" + name + "\"\ntype = \"" + type + "\"\nboard = \"b\"\nconnector = \"" + connector +
+         "\"\n";
 }
 
 std::vector<std::string> errors_of(const std::string& text) {
   std::vector<std::string> errors;
-  for (const scenario::Diagnostic& error : scenario::parse_scenario(text, kFile).errors) errors.push_back(error.to_string());
+  for (const scenario::Diagnostic& error : scenario::parse_scenario(text, kFile).errors)
+    errors.push_back(error.to_string());
   return errors;
 }
 
@@ -62,8 +64,9 @@ TEST_F(TestOnlyBoard, TheReaderTakesItsName) {
   const scenario::Scenario read = parse(board_text("test"), kFile);
   ASSERT_EQ(read.boards.size(), 1u);
   EXPECT_EQ(read.boards[0].module, &kTestModule);
-  EXPECT_EQ(errors_of(board_text("lathe")),
-            (std::vector<std::string>{kFile + ":5: 'module' must be \"driver\", \"basic\" or \"test\", got \"lathe\""}));
+  EXPECT_EQ(
+      errors_of(board_text("lathe")),
+      (std::vector<std::string>{kFile + ":5: 'module' must be \"driver\", \"basic\" or \"test\", got \"lathe\""}));
 }
 
 TEST_F(TestOnlyBoard, ItsConnectorsAreThoseOfItsTable) {
@@ -118,8 +121,9 @@ TEST_F(TestOnlyBoard, AScenarioThatNamesAnotherModuleIsRefused) {
   options.output_directory = test_output_dir("test_only_board_mismatch");
   SimulationError error;
   EXPECT_EQ(Simulation::create(parse(board_text("driver"), kFile), options, error), nullptr);
-  EXPECT_EQ(error.message, kFile + ":2: board 'b' is a Driver Module v1.0 in the scenario, but its sketch selects the "
-                                   "Test Module v0 (#define STEPDANCE_BOARD stepdance::test::kTestModule)");
+  EXPECT_EQ(error.message, kFile +
+                               ":2: board 'b' is a Driver Module v1.0 in the scenario, but its sketch selects the "
+                               "Test Module v0 (#define STEPDANCE_BOARD stepdance::test::kTestModule)");
 }
 
 TEST(TestOnlyBoardRegistry, ASketchOnAnUnregisteredBoardIsRefused) {

@@ -28,7 +28,8 @@ std::string scenario_text(const std::string& crank_keys, const std::string& mach
 
 std::vector<std::string> errors_of(const std::string& text) {
   std::vector<std::string> errors;
-  for (const scenario::Diagnostic& error : scenario::parse_scenario(text, kFile).errors) errors.push_back(error.to_string());
+  for (const scenario::Diagnostic& error : scenario::parse_scenario(text, kFile).errors)
+    errors.push_back(error.to_string());
   return errors;
 }
 
@@ -58,12 +59,14 @@ TEST_F(TestOnlyKinds, UnknownTypeMessagesListThem) {
                                                     "\"\n[[device]]\nname = \"d\"\ntype = \"lever\"\nboard = \"b\"\n"
                                                     "connector = \"ENC1\"\n");
   ASSERT_EQ(errors.size(), 1u);
-  EXPECT_EQ(errors[0], kFile + ":7: 'type' must be \"encoder\", \"potentiometer\", \"button\", \"limit_switch\", "
-                               "\"pendulum\", \"five_bar_arm\", \"oled\", \"twist\" or \"test_crank\", got \"lever\"");
+  EXPECT_EQ(errors[0], kFile +
+                           ":7: 'type' must be \"encoder\", \"potentiometer\", \"button\", \"limit_switch\", "
+                           "\"pendulum\", \"five_bar_arm\", \"oled\", \"twist\" or \"test_crank\", got \"lever\"");
 }
 
 TEST_F(TestOnlyKinds, KeysAreReadIntoTheirSettings) {
-  const scenario::Scenario read = parse(scenario_text("counts_per_s = -1200\nstop_s = 2\n", "steps_per_mm = 40\n"), kFile);
+  const scenario::Scenario read =
+      parse(scenario_text("counts_per_s = -1200\nstop_s = 2\n", "steps_per_mm = 40\n"), kFile);
   ASSERT_EQ(read.devices.size(), 1u);
   EXPECT_EQ(read.devices[0].kind, &test_crank_kind());
   ASSERT_NE(read.devices[0].settings_as<TestCrankConfig>(), nullptr);
@@ -76,14 +79,16 @@ TEST_F(TestOnlyKinds, KeysAreReadIntoTheirSettings) {
 
 TEST_F(TestOnlyKinds, KeysAreCheckedLikeTheBuiltInOnes) {
   // Lines: 9 steps_per_mm, 11 [[device]], 16 counts_per_s, 17 stop_s, 18 bounce_ms.
-  EXPECT_EQ(errors_of(scenario_text("counts_per_s = 200000\nstop_s = 4\nbounce_ms = 2\n", "steps_per_mm = 0\nmotor = \"B\"\n")),
+  EXPECT_EQ(errors_of(scenario_text("counts_per_s = 200000\nstop_s = 4\nbounce_ms = 2\n",
+                                    "steps_per_mm = 0\nmotor = \"B\"\n")),
             (std::vector<std::string>{
                 kFile + ":9: 'steps_per_mm' must be in (0, 1,000] steps/mm, got 0",
                 kFile + ":16: 'counts_per_s' must be in [-100,000, 100,000] counts/s, got 200,000",
                 kFile + ":17: 'stop_s' must be in [0, 3] s, got 4",
                 kFile + ":18: 'bounce_ms' does not apply to a test crank",
             }));
-  EXPECT_EQ(errors_of(scenario_text("")), (std::vector<std::string>{kFile + ":9: [[device]] is missing required key 'counts_per_s'"}));
+  EXPECT_EQ(errors_of(scenario_text("")),
+            (std::vector<std::string>{kFile + ":9: [[device]] is missing required key 'counts_per_s'"}));
 }
 
 TEST_F(TestOnlyKinds, ItsKeysDoNotApplyToOtherKinds) {

@@ -38,8 +38,8 @@ inline bool read_test_turns(ExpectationReading& reading) {
     return false;
   }
   if (!turns || socket == nullptr) return false;
-  reading.settings = TestTurnsCheck{{board->name, socket->port},
-                                    int64_t{socket->microsteps} * socket->full_steps_per_rev, *turns};
+  reading.settings =
+      TestTurnsCheck{{board->name, socket->port}, int64_t{socket->microsteps} * socket->full_steps_per_rev, *turns};
   return true;
 }
 

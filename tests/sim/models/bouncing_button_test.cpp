@@ -59,7 +59,8 @@ TEST(BouncingButton, TheSameSeedGivesTheSameEdges) {
     EXPECT_EQ(first.edges()[i].level, second.edges()[i].level);
   }
   bool differs = first.edges().size() != third.edges().size();
-  for (size_t i = 0; !differs && i < first.edges().size(); ++i) differs = first.edges()[i].time != third.edges()[i].time;
+  for (size_t i = 0; !differs && i < first.edges().size(); ++i)
+    differs = first.edges()[i].time != third.edges()[i].time;
   EXPECT_TRUE(differs);
 }
 

@@ -97,15 +97,15 @@ TEST(CartesianMachine, APrinterDrawsWhileTheExtruderAdvances) {
   steps(e, 1);
   machine.update(20 * kMillisecond);
   EXPECT_TRUE(machine.pen_down());
-  steps(x, 80);                                 // printing 1 mm...
-  machine.update(120 * kMillisecond);           // ...100 ms after the extruder's last step
+  steps(x, 80);                        // printing 1 mm...
+  machine.update(120 * kMillisecond);  // ...100 ms after the extruder's last step
   EXPECT_TRUE(machine.pen_down());
   steps(x, 80);
-  machine.update(121 * kMillisecond);           // past the hold: the nozzle is travelling
+  machine.update(121 * kMillisecond);  // past the hold: the nozzle is travelling
   EXPECT_FALSE(machine.pen_down());
-  steps(e, -5);                                 // retract...
+  steps(e, -5);  // retract...
   machine.update(130 * kMillisecond);
-  steps(e, 5);                                  // ...and refill to where it was: no deposit
+  steps(e, 5);  // ...and refill to where it was: no deposit
   machine.update(140 * kMillisecond);
   EXPECT_FALSE(machine.pen_down());
   EXPECT_EQ(machine.axis_mm(MachineAxis::kE), 1.0 / 93);

@@ -12,8 +12,7 @@ constexpr SimTime kMs = kMillisecond;
 
 /// Two enabled motors, the pen servo board and a plotter bound to them.
 struct Plotter {
-  explicit Plotter(const CorexySettings& settings = {})
-      : a(enabled()), b(enabled()), plotter(a, b, &servo, settings) {}
+  explicit Plotter(const CorexySettings& settings = {}) : a(enabled()), b(enabled()), plotter(a, b, &servo, settings) {}
   static StepperDriverSettings enabled() {
     StepperDriverSettings settings;
     settings.enabled = true;
@@ -47,7 +46,7 @@ TEST(CorexyPlotter, PenPositionIsHalfTheSumAndHalfTheDifference) {
   rig.plotter.update(3);
   EXPECT_DOUBLE_EQ(rig.plotter.pen_position().x_mm, 0.0);
   EXPECT_DOUBLE_EQ(rig.plotter.pen_position().y_mm, 10.0);
-  steps(rig.a, 200, 4);  // a = 12.5 mm
+  steps(rig.a, 200, 4);   // a = 12.5 mm
   steps(rig.b, 1200, 4);  // b = 5 mm
   rig.plotter.update(5);
   EXPECT_DOUBLE_EQ(rig.plotter.a_mm(), -12.5);  // motor positions count DIR-high steps
@@ -97,7 +96,7 @@ TEST(CorexyPlotter, AReversedMotorFlipsItsContributionOnly) {
 TEST(CorexyPlotter, PenIsDownWhileTheServoPulseIsBelowTheThreshold) {
   Plotter rig;
   rig.plotter.update(0);
-  EXPECT_FALSE(rig.plotter.pen_down());  // 1540 µs
+  EXPECT_FALSE(rig.plotter.pen_down());   // 1540 µs
   servo_steps(rig.servo, -200, 1 * kMs);  // 1340 µs from pulse 2 (49.7 ms)
   rig.plotter.update(49 * kMs);
   EXPECT_FALSE(rig.plotter.pen_down());
@@ -132,12 +131,12 @@ TEST(CorexyPlotter, StrokesSplitOnPenUpAndDown) {
   servo_steps(rig.servo, 200, 53 * kMs);  // after sample 2: up from pulse 4 (99.4 ms)
   steps(rig.b, 800, 79 * kMs);            // (10, 0)
   plotter.update(80 * kMs);
-  plotter.update(100 * kMs);              // up
-  steps(rig.b, -800, 101 * kMs);          // (5, 5), pen up
+  plotter.update(100 * kMs);      // up
+  steps(rig.b, -800, 101 * kMs);  // (5, 5), pen up
   plotter.update(102 * kMs);
   servo_steps(rig.servo, -200, 103 * kMs);  // down from pulse 6 (149.1 ms)
-  plotter.update(150 * kMs);              // stroke 2 starts at (5, 5)
-  steps(rig.a, 800, 151 * kMs);           // (10, 10)
+  plotter.update(150 * kMs);                // stroke 2 starts at (5, 5)
+  steps(rig.a, 800, 151 * kMs);             // (10, 10)
   plotter.update(152 * kMs);
 
   ASSERT_EQ(plotter.strokes().size(), 2u);

@@ -100,9 +100,9 @@ TEST(FiveBarArm, PathBuiltFromPosesInsideTheStopsComesBackAsThosePoses) {
   const double cx = px + (along * (ex - px) - across * ey) / span, cy = (along * ey + across * (ex - px)) / span;
   const double dead_right = std::atan2(-cy, cx - px);
   ASSERT_GT(dead_right, settings.right_min_rad);
-  const SeenAngles poses[] = {{-40 * kDegree, 235 * kDegree}, {-20 * kDegree, 230 * kDegree},
-                              {dead_right, left},             {20 * kDegree, 200 * kDegree},
-                              {20 * kDegree, 170 * kDegree},  {30 * kDegree, 150 * kDegree}};
+  const SeenAngles poses[] = {
+      {-40 * kDegree, 235 * kDegree}, {-20 * kDegree, 230 * kDegree}, {dead_right, left},
+      {20 * kDegree, 200 * kDegree},  {20 * kDegree, 170 * kDegree},  {30 * kDegree, 150 * kDegree}};
   PenPoint home;
   ASSERT_TRUE(geometry.stylus_for(settings.home_right_rad, settings.home_left_rad, home));
   for (const SeenAngles& pose : poses) {

@@ -13,8 +13,8 @@ namespace {
 TEST(HighSpeedCable, GlitchesBetween100kHzPulsesAreRejectedAndNoStepIsLost) {
   CableSettings settings;
   settings.stretch = 200;
-  settings.glitch_every = 37 * kMicrosecond;  // drifts across the frame phase
-  settings.glitch_width = 500;               // rounds to 0 µs: too short for either mode
+  settings.glitch_every = 37 * kMicrosecond;                           // drifts across the frame phase
+  settings.glitch_width = 500;                                         // rounds to 0 µs: too short for either mode
   const StreamResult r = stream(10, 100000, settings, x_every_frame);  // 1 s
   EXPECT_GT(r.cable.glitches_injected, 10000u);
   EXPECT_EQ(r.stepdance.net[SIGNAL_X], r.expected[SIGNAL_X]);
@@ -31,9 +31,12 @@ protocol::FrameRequest busiest(uint32_t period_us, uint64_t k) {
   static const uint8_t k20[] = {0b000111, 0b001011, 0b100001, 0b010010};
   const uint8_t forward = static_cast<uint8_t>(k % 3 == 0 ? 0x3F : (k % 3 == 1 ? 0x15 : 0x00));
   uint8_t mask = 0;
-  if (period_us == 40) mask = k40[k % 4];
-  else if (period_us >= 20) mask = k20[k % 4];
-  else mask = static_cast<uint8_t>(1u << (k % kNumSignals));
+  if (period_us == 40)
+    mask = k40[k % 4];
+  else if (period_us >= 20)
+    mask = k20[k % 4];
+  else
+    mask = static_cast<uint8_t>(1u << (k % kNumSignals));
   return protocol::FrameRequest{mask, static_cast<uint8_t>(forward & mask), 0};
 }
 
@@ -65,8 +68,10 @@ TEST(HighSpeedCable, StretchToleranceAtEveryPeriod) {
     SimTime stepdance_low, stepdance_high, step_dir_low, step_dir_high;  // first failing stretch (ns)
   };
   const Expected table[] = {
-      {40, -500, 550, -1500, 2000}, {25, -500, 550, -1500, 2000},
-      {20, -500, 550, -1500, 2000}, {10, -500, 550, -1500, kNone},
+      {40, -500, 550, -1500, 2000},
+      {25, -500, 550, -1500, 2000},
+      {20, -500, 550, -1500, 2000},
+      {10, -500, 550, -1500, kNone},
   };
   for (const Expected& row : table) {
     SimTime found[4] = {0, 0, 0, 0};
@@ -76,7 +81,8 @@ TEST(HighSpeedCable, StretchToleranceAtEveryPeriod) {
       for (SimTime s = 0; (stepdance_ok || step_dir_ok) && s <= 4000; s += 50) {
         CableSettings settings;
         settings.stretch = side == 0 ? -s : s;
-        const StreamResult r = stream(row.period_us, 2000, settings, [&](uint64_t k) { return busiest(row.period_us, k); });
+        const StreamResult r =
+            stream(row.period_us, 2000, settings, [&](uint64_t k) { return busiest(row.period_us, k); });
         if (stepdance_ok && !exact(r, r.stepdance, false)) {
           stepdance_ok = false;
           found[side] = settings.stretch;
@@ -87,9 +93,11 @@ TEST(HighSpeedCable, StretchToleranceAtEveryPeriod) {
         }
       }
     }
-    std::printf("period %2u us: first failing stretch: STEPDANCE %+5lld / %+5lld ns, STEP_DIR %+5lld / %+5lld ns (0: none within 4 us)\n",
-                row.period_us, static_cast<long long>(found[0]), static_cast<long long>(found[1]),
-                static_cast<long long>(found[2]), static_cast<long long>(found[3]));
+    std::printf(
+        "period %2u us: first failing stretch: STEPDANCE %+5lld / %+5lld ns, STEP_DIR %+5lld / %+5lld ns (0: none "
+        "within 4 us)\n",
+        row.period_us, static_cast<long long>(found[0]), static_cast<long long>(found[1]),
+        static_cast<long long>(found[2]), static_cast<long long>(found[3]));
     EXPECT_EQ(found[0], row.stepdance_low) << row.period_us;
     EXPECT_EQ(found[1], row.stepdance_high) << row.period_us;
     EXPECT_EQ(found[2], row.step_dir_low) << row.period_us;

@@ -53,7 +53,8 @@ class FarEnd {
       if (!open_) continue;
       open_ = false;
       const bool dir_at_fall = dir_at(edge.time);
-      const bool dir = protocol::dir_sample_edge(mode_) == protocol::DirSampleEdge::kRising ? dir_at_rise_ : dir_at_fall;
+      const bool dir =
+          protocol::dir_sample_edge(mode_) == protocol::DirSampleEdge::kRising ? dir_at_rise_ : dir_at_fall;
       // 150 capture ticks per µs: 3 ticks per 20 ns.
       const auto pulse = protocol::captured_from_ticks(rise_ns_ * 3 / 20, edge.time * 3 / 20, dir, kClock);
       const auto decoded = protocol::decode_pulse(pulse, kClock, mode_, SIGNAL_X);

@@ -34,9 +34,9 @@ TEST(LimitSwitch, ReadsTheMachineAxisAtItsLastUpdate) {
   const LimitSwitch z_top(MachineAxis::kZ, 2.0, LimitSide::kAbove);
   machine.update(0);
   EXPECT_FALSE(x_home.active(machine));
-  for (int i = 0; i < 80; ++i) x.on_step_rising(i, false);   // x = −1 mm
-  for (int i = 0; i < 800; ++i) z.on_step_rising(i, true);   // z = 2 mm at 400 steps/mm
-  EXPECT_FALSE(x_home.active(machine));                      // not updated yet
+  for (int i = 0; i < 80; ++i) x.on_step_rising(i, false);  // x = −1 mm
+  for (int i = 0; i < 800; ++i) z.on_step_rising(i, true);  // z = 2 mm at 400 steps/mm
+  EXPECT_FALSE(x_home.active(machine));                     // not updated yet
   machine.update(1000);
   EXPECT_TRUE(x_home.active(machine));
   EXPECT_TRUE(z_top.active(machine));

@@ -130,9 +130,9 @@ TEST(PenTrace, ShadeChangesKeepTheirVertexAndMarkIt) {
   PenTrace trace;
   trace.record(PenPoint{0, 0}, true);
   trace.record(PenPoint{1, 0}, true);
-  trace.record(PenPoint{2, 0}, true, 0.05);   // first shade: from the stroke's start
+  trace.record(PenPoint{2, 0}, true, 0.05);  // first shade: from the stroke's start
   trace.record(PenPoint{3, 0}, true, 0.05);
-  trace.record(PenPoint{4, 0}, true, 0.06);   // a change at (4, 0)
+  trace.record(PenPoint{4, 0}, true, 0.06);  // a change at (4, 0)
   trace.record(PenPoint{5, 0}, true, 0.06);
   trace.record(PenPoint{6, 0}, true, 0.06);
   ASSERT_EQ(trace.strokes().size(), 1u);

@@ -40,7 +40,7 @@ TEST(SdCardTiming, WritesBeyondTheFailurePointFailAndWriteNothing) {
   settings.fail_after_bytes = 1000;
   SdCardTiming card(settings);
   EXPECT_FALSE(card.write(512).fails);
-  EXPECT_TRUE(card.write(512).fails);  // 1024 > 1000
+  EXPECT_TRUE(card.write(512).fails);   // 1024 > 1000
   EXPECT_FALSE(card.write(488).fails);  // exactly 1000
   EXPECT_EQ(card.bytes_written(), 1000u);
 }

@@ -70,7 +70,7 @@ TEST(ServoBoard, WindowIsClampedButTheCountKeepsGoing) {
   EXPECT_EQ(narrow.pulse_width_us_at(2 * kPeriod), 2040);  // 1540 + 500
   EXPECT_EQ(wide.pulse_width_us_at(2 * kPeriod), 918);     // 622 steps by sample 1 (24 853.5 µs)
   EXPECT_EQ(wide.pulse_width_us_at(3 * kPeriod), 790);     // all 800: 1540 − 750
-  steps(narrow, 3 * kPeriod, 150, false);                   // 450: back inside the window
+  steps(narrow, 3 * kPeriod, 150, false);                  // 450: back inside the window
   EXPECT_EQ(narrow.pulse_width_us_at(5 * kPeriod), 1990);
 }
 

@@ -36,10 +36,10 @@ TEST(Ssd1306Display, HorizontalAddressingWrapsToTheNextPageOfTheWindow) {
   send(oled, {0x00, 0x20, 0x00, 0x21, 10, 11, 0x22, 1, 2});
   send(oled, {0x40, 0x01, 0x02, 0x04, 0x80});
   const OledImage picture = oled.image();
-  EXPECT_TRUE(picture.at(10, 8));    // page 1, bit 0
-  EXPECT_TRUE(picture.at(11, 9));    // page 1, bit 1
-  EXPECT_TRUE(picture.at(10, 18));   // page 2, bit 2
-  EXPECT_TRUE(picture.at(11, 23));   // page 2, bit 7
+  EXPECT_TRUE(picture.at(10, 8));   // page 1, bit 0
+  EXPECT_TRUE(picture.at(11, 9));   // page 1, bit 1
+  EXPECT_TRUE(picture.at(10, 18));  // page 2, bit 2
+  EXPECT_TRUE(picture.at(11, 23));  // page 2, bit 7
   int lit = 0;
   for (bool pixel : picture.lit) lit += pixel ? 1 : 0;
   EXPECT_EQ(lit, 4);

@@ -44,7 +44,9 @@ class Image {
   int width() const { return cairo_image_surface_get_width(surface_); }
   int height() const { return cairo_image_surface_get_height(surface_); }
   /// The colour at a machine position in mm, at 4 px/mm with a 10 mm margin.
-  uint32_t at_mm(double x, double y) const { return pixel(static_cast<int>((x + 10) * 4), static_cast<int>((y + 10) * 4)); }
+  uint32_t at_mm(double x, double y) const {
+    return pixel(static_cast<int>((x + 10) * 4), static_cast<int>((y + 10) * 4));
+  }
   uint32_t pixel(int x, int y) const {
     const unsigned char* data = cairo_image_surface_get_data(surface_);
     const int stride = cairo_image_surface_get_stride(surface_);
@@ -98,11 +100,11 @@ TEST(PngWriter, PenDownStrokesAreBlackOnWhite) {
   EXPECT_EQ(image.height(), 280);
   EXPECT_EQ(image.pixel(0, 0), kWhite);
   EXPECT_EQ(image.pixel(479, 279), kWhite);
-  EXPECT_EQ(image.at_mm(50, 10), kBlack);     // on the line
-  EXPECT_EQ(image.at_mm(50, 9.75), kBlack);   // inside its 1 mm width
-  EXPECT_EQ(image.at_mm(50, 11), kWhite);     // beyond it
-  EXPECT_EQ(image.at_mm(30, 40), kBlack);     // the dot
-  EXPECT_EQ(image.at_mm(70, 21), kWhite);     // pen-up travel is not drawn
+  EXPECT_EQ(image.at_mm(50, 10), kBlack);    // on the line
+  EXPECT_EQ(image.at_mm(50, 9.75), kBlack);  // inside its 1 mm width
+  EXPECT_EQ(image.at_mm(50, 11), kWhite);    // beyond it
+  EXPECT_EQ(image.at_mm(30, 40), kBlack);    // the dot
+  EXPECT_EQ(image.at_mm(70, 21), kWhite);    // pen-up travel is not drawn
 }
 
 TEST(PngWriter, PenUpTravelIsGreyAndDashed) {

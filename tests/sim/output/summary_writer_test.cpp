@@ -61,7 +61,8 @@ std::string expected_text(const std::string& wall_time) {
           "forward": 0,
           "reverse": 1
         },
-        )") + kZeroCounts + R"(
+        )") +
+         kZeroCounts + R"(
         "X": {
           "forward": 120,
           "reverse": 4
@@ -82,7 +83,8 @@ std::string expected_text(const std::string& wall_time) {
           "forward": 0,
           "reverse": 0
         },
-        )" + kZeroCounts + R"(
+        )" +
+         kZeroCounts + R"(
         "X": {
           "forward": 119,
           "reverse": 4
@@ -103,12 +105,11 @@ std::string expected_text(const std::string& wall_time) {
     }
   },
   "simulated_time_s": 2.5,
-  "strokes": 3)" + wall_time + "\n}\n";
+  "strokes": 3)" +
+         wall_time + "\n}\n";
 }
 
-TEST(SummaryWriter, ExactTextWithoutWallTime) {
-  EXPECT_EQ(summary_text(sample_summary()), expected_text(""));
-}
+TEST(SummaryWriter, ExactTextWithoutWallTime) { EXPECT_EQ(summary_text(sample_summary()), expected_text("")); }
 
 TEST(SummaryWriter, WallTimeIsTheLastKey) {
   RunSummary summary = sample_summary();

@@ -65,8 +65,10 @@ TEST(SvgWriter, ShadedStrokesAreColouredOnTheScale) {
   style.shade_low = 0.04;
   style.shade_high = 0.06;
   style.shade_name = "filament mm per toolpath mm";
-  std::vector<Stroke> strokes = {{{{0, 0}, {1, 0}}, true, 0.04}, {{{1, 0}, {2, 0}}, true, 0.05},
-                                 {{{2, 0}, {3, 0}}, true, 0.07}, {{{3, 0}, {4, 0}}, true, std::nullopt}};
+  std::vector<Stroke> strokes = {{{{0, 0}, {1, 0}}, true, 0.04},
+                                 {{{1, 0}, {2, 0}}, true, 0.05},
+                                 {{{2, 0}, {3, 0}}, true, 0.07},
+                                 {{{3, 0}, {4, 0}}, true, std::nullopt}};
   const std::string svg = svg_document(strokes, style);
   EXPECT_NE(svg.find("<polyline stroke=\"#0000cc\" points=\"0,0 1,0\"/>"), std::string::npos) << svg;
   EXPECT_NE(svg.find("<polyline stroke=\"#009900\" points=\"1,0 2,0\"/>"), std::string::npos) << svg;

@@ -45,7 +45,8 @@ std::vector<BadCase> cases() {
        {{15, "'time_s' = 12 is after the end of the run (duration_s = 10)"},
         {23, "the turn ends at 10.5 s, after the end of the run (duration_s = 10)"}}},
       {"bad_connector",
-       {{12, "unknown connector 'ENC3' (connectors are ENC1, ENC2, A1..A4, D1, D2, LIMIT_A..LIMIT_D, QWIIC0 and QWIIC1)"}}},
+       {{12,
+         "unknown connector 'ENC3' (connectors are ENC1, ENC2, A1..A4, D1, D2, LIMIT_A..LIMIT_D, QWIIC0 and QWIIC1)"}}},
       {"connector_for_type",
        {{13, "a button cannot use connector ENC1 (use D1, D2 or A1..A4)"},
         {15, "a limit_switch needs a [machine] to watch"},
@@ -115,7 +116,10 @@ namespace {
 // Found by fuzz/scenario_fuzz.cpp: toml++ 3.3 asserts on a control character in a table header.
 // TOML allows none but tab, LF and CR, so the scenario reader refuses them first.
 TEST(BadScenarioText, AControlCharacterIsRefusedWithItsLine) {
-  const LoadResult result = parse_scenario("duration_s = 1\n[[\x01" "board]]\n", "x.toml");
+  const LoadResult result = parse_scenario(
+      "duration_s = 1\n[[\x01"
+      "board]]\n",
+      "x.toml");
   ASSERT_EQ(result.errors.size(), 1u);
   EXPECT_EQ(result.errors[0].to_string(), "x.toml:2: control character U+0001 is not allowed in a scenario file");
   EXPECT_TRUE(parse_scenario("duration_s = 1\t# a tab is fine\r\n", "x.toml").ok());
@@ -136,8 +140,7 @@ TEST(BadScenarioText, NonAsciiOutsideStringsAndCommentsIsRefusedWithItsLine) {
   ASSERT_EQ(result.errors.size(), 1u);
   EXPECT_EQ(result.errors[0].to_string(),
             "x.toml:2: a non-ASCII character outside a string or comment is not allowed in a scenario file");
-  const LoadResult fine = parse_scenario(
-      "# 3 \xc2\xb5s \xe2\x86\x92 X\nduration_s = 1 # \xc2\xb1 0.1\n", "x.toml");
+  const LoadResult fine = parse_scenario("# 3 \xc2\xb5s \xe2\x86\x92 X\nduration_s = 1 # \xc2\xb1 0.1\n", "x.toml");
   EXPECT_TRUE(fine.ok()) << fine.error_text();
   const LoadResult quoted = parse_scenario("duration_s = 1\n\"k\\\"\xc2\xb5\" = 'x\xc2\xb5'\n", "x.toml");
   for (const Diagnostic& error : quoted.errors) {
@@ -169,10 +172,10 @@ TEST(BadScenarioText, ABraceWhereAnArrayValueBelongsIsRefusedWithItsLine) {
   for (const auto& [text, line] : cases) {
     const LoadResult result = parse_scenario(std::string("duration_s = 1\n") + text, "x.toml");
     ASSERT_EQ(result.errors.size(), 1u) << text;
-    EXPECT_EQ(result.errors[0].to_string(), "x.toml:" + std::to_string(line) + ": '}' cannot follow '[' or ','") << text;
+    EXPECT_EQ(result.errors[0].to_string(), "x.toml:" + std::to_string(line) + ": '}' cannot follow '[' or ','")
+        << text;
   }
-  const LoadResult fine = parse_scenario(
-      "duration_s = 1\nx = [{}, { a = 1 }, \"[}\", ',}'] # [}\n", "x.toml");
+  const LoadResult fine = parse_scenario("duration_s = 1\nx = [{}, { a = 1 }, \"[}\", ',}'] # [}\n", "x.toml");
   for (const Diagnostic& error : fine.errors) {
     EXPECT_EQ(error.to_string().find("cannot follow"), std::string::npos) << error.to_string();
   }
@@ -215,12 +218,18 @@ TEST(BadScenarioText, AnUnquotedValueMustBeANumberOrABoolean) {
 TEST(BadScenarioText, NonAsciiWhereTomlPlusPlusTestsForWhitespaceIsRefusedWithItsLine) {
   const std::string u048c = "\xd2\x8c";
   const std::pair<std::string, std::string> cases[] = {
-      {"sketch = 1\"C" + u048c + "x\n", "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
-      {"x = \"a\" \"" + u048c + "\"\n", "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
-      {"x = 1.\"" + u048c + "\"\n", "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
-      {"x = \"\"\"a \\ " + u048c + "\"\"\"\n", "a non-ASCII character after a backslash in a string is not allowed in a scenario file"},
-      {"x = \"a\\" + u048c + "\"\n", "a non-ASCII character after a backslash in a string is not allowed in a scenario file"},
-      {"x = \"\"\"a\\\n\n  " + u048c + "\"\"\"\n", "a non-ASCII character after a backslash in a string is not allowed in a scenario file"}};
+      {"sketch = 1\"C" + u048c + "x\n",
+       "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
+      {"x = \"a\" \"" + u048c + "\"\n",
+       "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
+      {"x = 1.\"" + u048c + "\"\n",
+       "a non-ASCII character outside a string or comment is not allowed in a scenario file"},
+      {"x = \"\"\"a \\ " + u048c + "\"\"\"\n",
+       "a non-ASCII character after a backslash in a string is not allowed in a scenario file"},
+      {"x = \"a\\" + u048c + "\"\n",
+       "a non-ASCII character after a backslash in a string is not allowed in a scenario file"},
+      {"x = \"\"\"a\\\n\n  " + u048c + "\"\"\"\n",
+       "a non-ASCII character after a backslash in a string is not allowed in a scenario file"}};
   for (const auto& [text, message] : cases) {
     const LoadResult result = parse_scenario("duration_s = 1\n" + text, "x.toml");
     ASSERT_EQ(result.errors.size(), 1u) << text;
@@ -244,16 +253,15 @@ TEST(BadScenarioText, KeysOfManyPartsOrGreatLengthAreRefusedWithTheirLine) {
   for (int i = 1; i < 17; ++i) parts_17 += ".a";
   const std::string many = "a key of more than 16 dotted parts is not allowed in a scenario file";
   const std::string long_key = "a key longer than 256 characters is not allowed in a scenario file";
-  const std::pair<std::string, std::string> cases[] = {
-      {parts_40000 + " = 1\n", many},
-      {"[" + parts_40000 + "]\n", many},
-      {"[[" + parts_17 + "]]\n", many},
-      {"x = { " + parts_17 + " = 1 }\n", many},
-      {"x = [{ y = 2, " + parts_17 + " = 1 }]\n", many},
-      {"\"a\" . 'b' . " + parts_17 + " = 1\n", many},
-      {std::string(257, 'k') + " = 1\n", long_key},
-      {"\"" + std::string(255, 'k') + "\" = 1\n", long_key},
-      {"x.\"" + std::string(300, '.') + "\" = 1\n", long_key}};
+  const std::pair<std::string, std::string> cases[] = {{parts_40000 + " = 1\n", many},
+                                                       {"[" + parts_40000 + "]\n", many},
+                                                       {"[[" + parts_17 + "]]\n", many},
+                                                       {"x = { " + parts_17 + " = 1 }\n", many},
+                                                       {"x = [{ y = 2, " + parts_17 + " = 1 }]\n", many},
+                                                       {"\"a\" . 'b' . " + parts_17 + " = 1\n", many},
+                                                       {std::string(257, 'k') + " = 1\n", long_key},
+                                                       {"\"" + std::string(255, 'k') + "\" = 1\n", long_key},
+                                                       {"x.\"" + std::string(300, '.') + "\" = 1\n", long_key}};
   for (const auto& [text, message] : cases) {
     const LoadResult result = parse_scenario("duration_s = 1\n" + text, "x.toml");
     ASSERT_EQ(result.errors.size(), 1u) << text.substr(0, 60);
@@ -262,8 +270,8 @@ TEST(BadScenarioText, KeysOfManyPartsOrGreatLengthAreRefusedWithTheirLine) {
   // Keys at the limits pass, and dots inside string values are no key's.
   std::string parts_16 = "a";
   for (int i = 1; i < 16; ++i) parts_16 += ".a";
-  const LoadResult fine = parse_scenario("duration_s = 1\n" + parts_16 + " = 1\n" + std::string(256, 'k') +
-                                             " = \"" + std::string(1000, '.') + "\"\n[" + parts_16 + "]\n",
+  const LoadResult fine = parse_scenario("duration_s = 1\n" + parts_16 + " = 1\n" + std::string(256, 'k') + " = \"" +
+                                             std::string(1000, '.') + "\"\n[" + parts_16 + "]\n",
                                          "x.toml");
   for (const Diagnostic& error : fine.errors) {
     EXPECT_EQ(error.to_string().find("a key"), std::string::npos) << error.to_string();

@@ -22,8 +22,8 @@ TEST(DecimalTextTest, PlainDecimalsRead) {
 
 TEST(DecimalTextTest, WhatStrtodTakesButAUserDidNotMeanIsRefused) {
   // strtod reads "0x10" as 16 and "0x2" as 2, skips leading blanks and stops at trailing ones.
-  for (const char* text : {"0x10", "0x2", " 2", "1 ", "\t3", "2\n", "", "+", "-", ".", "e3", "1e", "1e+", "1,5",
-                           "1_000", "1.2.3", "2s", "0b1", "--2", "infinite", "nan(1)"}) {
+  for (const char* text : {"0x10", "0x2", " 2",  "1 ",    "\t3",   "2\n", "",    "+",   "-",        ".",     "e3",
+                           "1e",   "1e+", "1,5", "1_000", "1.2.3", "2s",  "0b1", "--2", "infinite", "nan(1)"}) {
     EXPECT_FALSE(parse_decimal(text).has_value()) << "'" << text << "'";
   }
 }

@@ -46,8 +46,7 @@ TEST(FiveBarArmStops, AreReadWhenGiven) {
 // A right stop above −60° or a left one below 240° would hold the arm's home past its stop; one
 // more than a turn away would be the same stop met from the other side.
 TEST(FiveBarArmStops, MustLeaveHomeInsideTheTurnTheyAllow) {
-  const LoadResult result =
-      parse_scenario(arm_scenario("right_min_deg = -50\nleft_max_deg = 239\n"), kFile);
+  const LoadResult result = parse_scenario(arm_scenario("right_min_deg = -50\nleft_max_deg = 239\n"), kFile);
   ASSERT_EQ(result.errors.size(), 2u);
   EXPECT_EQ(result.errors[0].to_string(), kFile + ":13: 'right_min_deg' must be in [-420, -60] °, got -50");
   EXPECT_EQ(result.errors[1].to_string(), kFile + ":14: 'left_max_deg' must be in [240, 600] °, got 239");

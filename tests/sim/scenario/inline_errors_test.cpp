@@ -79,8 +79,10 @@ std::vector<InlineCase> cases() {
        {{12, "the click releases at 5.05 s, after the end of the run (duration_s = 5)"}}},
       {"cable_values",
        "[[cable]]\nfrom = \"driver:D\"\nto = \"driver:B\"\ndelay_ns = -1\nglitch_width_ns = 0\n",
-       {{9, "'delay_ns' must be in [0, 1,000,000,000] ns, got -1"}, {10, "'glitch_width_ns' must be in [1, 1,000,000] ns, got 0"}}},
-      {"cable_bad_form", "[[cable]]\nfrom = \"driver\"\nto = \"driver:E\"\n",
+       {{9, "'delay_ns' must be in [0, 1,000,000,000] ns, got -1"},
+        {10, "'glitch_width_ns' must be in [1, 1,000,000] ns, got 0"}}},
+      {"cable_bad_form",
+       "[[cable]]\nfrom = \"driver\"\nto = \"driver:E\"\n",
        {{7, "'from' must look like \"board:A\", got \"driver\""},
         {8, "board 'driver' (driver module) has no input port E"}}},
       {"port_check_shape",
@@ -100,7 +102,7 @@ std::vector<InlineCase> cases() {
        "[[expect]]\nbounds_mm = [0, 1, 2]\n"
        "[[expect]]\ndrawn_mm = -3\n"
        "[[expect]]\ndrawn_mm = 30\ntolerance_mm = nan\n",
- {{10, "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max"},
+       {{10, "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max"},
         {12, "'bounds_mm' must be four numbers [x_min, y_min, x_max, y_max] with min <= max"},
         {14, "'drawn_mm' must be a finite length >= 0, got -3"},
         {17, "'tolerance_mm' must be a finite number"}}},
@@ -145,8 +147,7 @@ std::vector<InlineCase> cases() {
       {"non_finite_and_huge_times",
        "[[device]]\nname = \"pen\"\ntype = \"button\"\nboard = \"driver\"\nconnector = \"D1\"\n"
        "[[at]]\ntime_s = nan\npress = \"pen\"\n[[at]]\ntime_s = 1e300\nrelease = \"pen\"\n",
-       {{12, "'time_s' must be a finite number"},
-        {15, "'time_s' must be in [0, 86,400] s, got 1e+300"}}},
+       {{12, "'time_s' must be a finite number"}, {15, "'time_s' must be in [0, 86,400] s, got 1e+300"}}},
       {"host_without_steps_and_unknown_board",
        "[[host]]\nboard = \"driver\"\n[[host]]\nboard = \"ghost\"\n[[host.step]]\nsend = \"?\"\n",
        {{6, "a [[host]] needs at least one [[host.step]]"}, {9, "unknown board 'ghost'"}}},
@@ -171,9 +172,14 @@ std::vector<InlineCase> cases() {
        "[[host.step]]\nwait = '(ok)(?=x)'\n"
        "[[host.step]]\nwait = 'a{2,1001}'\n"
        "[[host.step]]\nwait = '(o)k{3}x{1000}\\1'\n"
-       "[[host.step]]\nwait = '" + std::string(1001, 'a') + "'\n"
-       "[[host.step]]\nwait = '(" + many_alternatives(100) + "){1000}'\n"
-       "[[host.step]]\nwait = '(" + many_alternatives(40) + "){1000}'\n",
+       "[[host.step]]\nwait = '" +
+           std::string(1001, 'a') +
+           "'\n"
+           "[[host.step]]\nwait = '(" +
+           many_alternatives(100) +
+           "){1000}'\n"
+           "[[host.step]]\nwait = '(" +
+           many_alternatives(40) + "){1000}'\n",
        {{11, "'wait' is not a valid regular expression (RE2 syntax): invalid escape sequence: \\9"},
         {13, "'wait' is not a valid regular expression (RE2 syntax): invalid perl operator: (?="},
         {15, "'wait' is not a valid regular expression (RE2 syntax): invalid repetition size: {2,1001}"},
@@ -205,7 +211,8 @@ TEST_P(InlineErrors, ReportsExactlyTheseErrors) {
   const InlineCase& bad = GetParam();
   const LoadResult result = parse_scenario(kDriver + bad.text, kFile);
   std::vector<std::string> expected;
-  for (const auto& [line, message] : bad.errors) expected.push_back(kFile + ":" + std::to_string(line) + ": " + message);
+  for (const auto& [line, message] : bad.errors)
+    expected.push_back(kFile + ":" + std::to_string(line) + ": " + message);
   std::vector<std::string> actual;
   for (const Diagnostic& error : result.errors) actual.push_back(error.to_string());
   EXPECT_EQ(actual, expected);

@@ -32,16 +32,16 @@ std::vector<std::string> errors_of(const std::string& text) {
 std::string at(int line, const std::string& message) { return kFile + ":" + std::to_string(line) + ": " + message; }
 
 TEST(QwiicDevices, ScreenAndKnobShareQwiic1WithDefaultAddresses) {
-  const LoadResult result = parse_scenario(
-      kDriver +
-          "[[device]]\nname = \"screen\"\ntype = \"oled\"\nboard = \"driver\"\nconnector = \"QWIIC1\"\n"
-          "snapshots_s = [1, 2.5]\n"
-          "[[device]]\nname = \"knob\"\ntype = \"twist\"\nboard = \"driver\"\nconnector = \"QWIIC1\"\n"
-          "[[at]]\ntime_s = 1\nturn = \"knob\"\ncounts = -3\n"
-          "[[at]]\ntime_s = 2\nclick = \"knob\"\n"
-          "[[expect]]\nscreen = \"screen\"\nrow = 2\nshows = \"X 1.00\"\n"
-          "[[expect]]\ni2c_loop_pass_max_us = 1000\nboard = \"driver\"\n",
-      kFile);
+  const LoadResult result =
+      parse_scenario(kDriver +
+                         "[[device]]\nname = \"screen\"\ntype = \"oled\"\nboard = \"driver\"\nconnector = \"QWIIC1\"\n"
+                         "snapshots_s = [1, 2.5]\n"
+                         "[[device]]\nname = \"knob\"\ntype = \"twist\"\nboard = \"driver\"\nconnector = \"QWIIC1\"\n"
+                         "[[at]]\ntime_s = 1\nturn = \"knob\"\ncounts = -3\n"
+                         "[[at]]\ntime_s = 2\nclick = \"knob\"\n"
+                         "[[expect]]\nscreen = \"screen\"\nrow = 2\nshows = \"X 1.00\"\n"
+                         "[[expect]]\ni2c_loop_pass_max_us = 1000\nboard = \"driver\"\n",
+                     kFile);
   ASSERT_TRUE(result.ok()) << result.error_text();
   const Scenario& scenario = result.scenario;
   EXPECT_EQ(scenario.device("screen")->i2c_address, 0x3C);
@@ -58,15 +58,15 @@ TEST(QwiicDevices, ScreenAndKnobShareQwiic1WithDefaultAddresses) {
 
 TEST(QwiicDevices, BadValuesAreReportedWhereTheyAre) {
   const std::vector<std::string> errors = errors_of(
-      "[[device]]\nname = \"screen\"\ntype = \"oled\"\nboard = \"driver\"\nconnector = \"ENC1\"\n"   // 5..9
+      "[[device]]\nname = \"screen\"\ntype = \"oled\"\nboard = \"driver\"\nconnector = \"ENC1\"\n"  // 5..9
       "[[device]]\nname = \"a\"\ntype = \"twist\"\nboard = \"driver\"\nconnector = \"QWIIC0\"\n"    // 10..14
       "[[device]]\nname = \"b\"\ntype = \"oled\"\nboard = \"driver\"\nconnector = \"QWIIC0\"\n"     // 15..19
-      "address = 63\nsnapshots_s = [9]\n"                                                         // 20..21
+      "address = 63\nsnapshots_s = [9]\n"                                                           // 20..21
       "[[device]]\nname = \"c\"\ntype = \"twist\"\nboard = \"driver\"\nconnector = \"QWIIC1\"\n"    // 22..26
-      "address = 200\n"                                                                           // 27
-      "[[at]]\ntime_s = 1\nset = \"a\"\nposition = 0.5\n"                                         // 28..31
-      "[[expect]]\nscreen = \"a\"\nshows = \"THIS LINE IS FAR TOO LONG\"\nrow = 4\n"              // 32..35
-      "[[expect]]\ni2c_loop_pass_max_us = 0\nboard = \"ghost\"\n");                               // 36..38
+      "address = 200\n"                                                                             // 27
+      "[[at]]\ntime_s = 1\nset = \"a\"\nposition = 0.5\n"                                           // 28..31
+      "[[expect]]\nscreen = \"a\"\nshows = \"THIS LINE IS FAR TOO LONG\"\nrow = 4\n"                // 32..35
+      "[[expect]]\ni2c_loop_pass_max_us = 0\nboard = \"ghost\"\n");                                 // 36..38
   const std::vector<std::string> expected = {
       at(9, "an OLED display cannot use connector ENC1 (use QWIIC0 or QWIIC1)"),
       at(20, "address 63 on QWIIC0 of board 'driver' is already used by device 'a'"),

@@ -24,9 +24,12 @@ class NoBoards : public BoardSource {
 /// One Driver Module running the Step-A-Sketch example (the reader checks that the sketch
 /// exists), writing no file.
 const std::string kSketch = STEPDANCE_SOURCE_DIR "/examples/StepASketch/StepASketch.ino";
-const std::string kScenario = "duration_s = 1\n"
-                              "[[board]]\nname = \"driver\"\nsketch = \"" + kSketch + "\"\nmodule = \"driver\"\n"
-                              "[output]\nsvg = \"\"\npng = \"\"\nsummary = \"\"\nvcd = \"\"\ncsv = \"\"\n";
+const std::string kScenario =
+    "duration_s = 1\n"
+    "[[board]]\nname = \"driver\"\nsketch = \"" +
+    kSketch +
+    "\"\nmodule = \"driver\"\n"
+    "[output]\nsvg = \"\"\npng = \"\"\nsummary = \"\"\nvcd = \"\"\ncsv = \"\"\n";
 
 scenario::Scenario scenario_in(const std::string& file) {
   const scenario::LoadResult loaded = scenario::parse_scenario(kScenario, file);

@@ -29,7 +29,8 @@ struct PageModel {
       motors[motor["board"].get<std::string>() + " " + motor["port"].get<std::string>()] = motor;
     }
     for (const nlohmann::json& board : update.value("boards", nlohmann::json::array())) boards[board["name"]] = board;
-    for (const nlohmann::json& screen : update.value("screens", nlohmann::json::array())) screens[screen["device"]] = screen;
+    for (const nlohmann::json& screen : update.value("screens", nlohmann::json::array()))
+      screens[screen["device"]] = screen;
     for (const nlohmann::json& arm : update.value("arms", nlohmann::json::array())) arms[arm["device"]] = arm;
     for (const nlohmann::json& stroke : update.value("strokes", nlohmann::json::array())) {
       const size_t index = stroke["i"];
@@ -46,8 +47,8 @@ struct PageModel {
   /// (a rate is over the time since the page's previous update, which a new page does not have).
   bool same_state(const PageModel& other) const {
     return run == other.run && pen == other.pen && table == other.table && shade_scale == other.shade_scale &&
-           travel == other.travel && steps() == other.steps() && boards == other.boards &&
-           screens == other.screens && arms == other.arms && strokes == other.strokes;
+           travel == other.travel && steps() == other.steps() && boards == other.boards && screens == other.screens &&
+           arms == other.arms && strokes == other.strokes;
   }
   std::map<std::string, int64_t> steps() const {
     std::map<std::string, int64_t> result;

@@ -71,7 +71,8 @@ json record(const ReplayLimits& limits, const std::string& output, SimTime inter
 const json& at(const json& recording, double t_s) {
   const json* best = &recording["samples"][0];
   for (const json& sample : recording["samples"]) {
-    if (std::abs(sample["update"]["t_s"].get<double>() - t_s) < std::abs((*best)["update"]["t_s"].get<double>() - t_s)) {
+    if (std::abs(sample["update"]["t_s"].get<double>() - t_s) <
+        std::abs((*best)["update"]["t_s"].get<double>() - t_s)) {
       best = &sample;
     }
   }
@@ -170,7 +171,8 @@ TEST(ReplayRecorder, CapacitiesAreStatedNotSilent) {
   const json recording = record(few, "replay_capacity", 33333333);
   EXPECT_FALSE(recording["complete"]);
   ASSERT_EQ(recording["samples"].size(), 10u);
-  EXPECT_EQ(recording["note"], "the recording reached its capacity of 10 instants at 0.333 s; the run went on without it");
+  EXPECT_EQ(recording["note"],
+            "the recording reached its capacity of 10 instants at 0.333 s; the run went on without it");
   ReplayLimits small;
   small.max_bytes = 20000;
   const json cut = record(small, "replay_bytes");

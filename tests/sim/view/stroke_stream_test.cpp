@@ -65,7 +65,8 @@ TEST(StrokeStream, NoStrokeIsLostHoweverSmall) {
   }
   StrokeStream stream;
   PageStrokes page;
-  for (int round = 0; round < 1000 && stream.strokes_done() + 1 < strokes.size(); ++round) page.apply(stream.take(strokes, 7));
+  for (int round = 0; round < 1000 && stream.strokes_done() + 1 < strokes.size(); ++round)
+    page.apply(stream.take(strokes, 7));
   page.apply(stream.take(strokes, 7));
   ASSERT_EQ(page.strokes.size(), strokes.size());
   for (size_t i = 0; i < strokes.size(); ++i) {

@@ -113,11 +113,13 @@ at_mm = -5
   EXPECT_EQ(device["kind"], "limit_switch");
   EXPECT_EQ(device["control"]["type"], "button");
   for (const char* action : {"press", "release", "click"}) {
-    EXPECT_TRUE(session.receive(std::string(R"({"type":"input","device":"home_x","action":")") + action + "\"}").empty())
+    EXPECT_TRUE(
+        session.receive(std::string(R"({"type":"input","device":"home_x","action":")") + action + "\"}").empty())
         << action;
   }
-  EXPECT_EQ(only_message(session.receive(R"({"type":"input","device":"home_x","action":"turn","counts":1})"))["message"],
-            "input: a limit switch does not take \"turn\"");
+  EXPECT_EQ(
+      only_message(session.receive(R"({"type":"input","device":"home_x","action":"turn","counts":1})"))["message"],
+      "input: a limit switch does not take \"turn\"");
 }
 
 TEST(ViewSession, InputsGiveExactlyTheStepsAndStrokeOfTheSameTimelineActions) {
@@ -129,7 +131,8 @@ TEST(ViewSession, InputsGiveExactlyTheStepsAndStrokeOfTheSameTimelineActions) {
   live->run_until(200 * kMillisecond);
   EXPECT_TRUE(session.receive(R"({"type":"input","device":"pen_button","action":"click"})").empty());
   live->run_until(1000 * kMillisecond);
-  EXPECT_TRUE(session.receive(R"({"type":"input","device":"knob_x","action":"turn","counts":-2400,"over_ms":500})").empty());
+  EXPECT_TRUE(
+      session.receive(R"({"type":"input","device":"knob_x","action":"turn","counts":-2400,"over_ms":500})").empty());
   live->run_until(3 * kSecond);
   for (Simulation* simulation : {scripted.get(), live.get()}) {
     EXPECT_EQ(simulation->stepper("driver", 'A')->position_steps(), -1920);
@@ -167,7 +170,7 @@ TEST(ViewSession, UpdatesCarryTheDrawingAndComeAtMostSixtyTimesASecond) {
   page.apply(json::parse(session.update_now()));
   EXPECT_EQ(page.motors["driver A"]["steps"], -1920);
   EXPECT_EQ(page.motors["driver A"]["rate_steps_per_s"], 0);  // at rest since the turn ended at 1.5 s
-  EXPECT_TRUE(page.pen["down"]);  // one click: the pen stays down
+  EXPECT_TRUE(page.pen["down"]);                              // one click: the pen stays down
 }
 
 // Version 2's deltas: an update carries a part only when it differs from what the page has.
@@ -183,7 +186,7 @@ TEST(ViewSession, UpdatesCarryOnlyWhatChanged) {
   for (const char* part : {"run", "pen", "strokes", "motors", "console"}) EXPECT_FALSE(still.contains(part)) << part;
   ASSERT_TRUE(still.contains("boards"));
   EXPECT_EQ(still["boards"][0]["frames"].get<int64_t>() - first["boards"][0]["frames"].get<int64_t>(),
-            100 * 25);  // 0.1 s of 25 kHz frames
+            100 * 25);                         // 0.1 s of 25 kHz frames
   simulation->run_until(1200 * kMillisecond);  // the turn under way: the pen, both motors, a stroke
   const json moving = json::parse(session.update_now());
   EXPECT_TRUE(moving.contains("pen"));
@@ -254,7 +257,8 @@ time_s = 2.0
 turn = "knob_x"
 counts = -4800
 over_s = 1
-)", "view_travel");
+)",
+                         "view_travel");
   RunControl control;
   ViewSession session(*simulation, control);
   page_test::PageModel page;
@@ -276,7 +280,7 @@ over_s = 1
   simulation->run_until(3 * kSecond);
   page.apply(json::parse(session.update_now()));
   EXPECT_EQ(page.travel["excursions"], 1);
-  EXPECT_EQ(page.travel["outside"], false);  // back at x = +24 mm
+  EXPECT_EQ(page.travel["outside"], false);                         // back at x = +24 mm
   EXPECT_EQ(simulation->machine()->stats().travel_excursions, 1u);  // what the summary counts
 }
 

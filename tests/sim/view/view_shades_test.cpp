@@ -89,9 +89,9 @@ TEST(ViewShades, AShadedDrawingArrivesInTheSvgsPiecesAndColours) {
       if (strokes.size() <= i) strokes.resize(i + 1), shades.resize(i + 1);
       strokes[i].resize(from);
       for (const json& point : part["points"]) strokes[i].push_back({point[0], point[1]});
-      shades[i].erase(std::remove_if(shades[i].begin(), shades[i].end(),
-                                     [from](const auto& start) { return start.first >= from; }),
-                      shades[i].end());
+      shades[i].erase(
+          std::remove_if(shades[i].begin(), shades[i].end(), [from](const auto& start) { return start.first >= from; }),
+          shades[i].end());
       if (part.contains("shades")) {
         for (const json& start : part["shades"]) shades[i].emplace_back(start[0], start[1]);
       }
@@ -132,7 +132,9 @@ TEST(ViewShades, AShadedDrawingArrivesInTheSvgsPiecesAndColours) {
   // at the origin. The page keeps machine mm; the offset is the first point's (exact in both).
   const PenPoint offset{page[0].points.front().x_mm - svg[0].points.front().x_mm,
                         page[0].points.front().y_mm - svg[0].points.front().y_mm};
-  const auto moved = [&offset](const PenPoint& point) { return PenPoint{point.x_mm - offset.x_mm, point.y_mm - offset.y_mm}; };
+  const auto moved = [&offset](const PenPoint& point) {
+    return PenPoint{point.x_mm - offset.x_mm, point.y_mm - offset.y_mm};
+  };
   for (size_t k = 0; k < svg.size(); ++k) {
     EXPECT_EQ(page[k].colour, svg[k].colour) << "piece " << k;
     ASSERT_FALSE(page[k].points.empty()) << "piece " << k;

@@ -26,9 +26,10 @@ std::string turntable_scenario() {
   std::ifstream file(test::source_path("examples/PolarTurntable/scenario.toml"));
   std::stringstream text;
   text << file.rdbuf();
-  std::string scenario = std::regex_replace(text.str(), std::regex(R"(\[machine\]\ntype = "corexy_plotter"\nboard = "driver"\n)"),
-                                            "[machine]\ntype = \"polar\"\nboard = \"driver\"\nangle = \"A\"\nradius = \"B\"\n"
-                                            "steps_per_rev = 3200\nsteps_per_mm = 80\n");
+  std::string scenario =
+      std::regex_replace(text.str(), std::regex(R"(\[machine\]\ntype = "corexy_plotter"\nboard = "driver"\n)"),
+                         "[machine]\ntype = \"polar\"\nboard = \"driver\"\nangle = \"A\"\nradius = \"B\"\n"
+                         "steps_per_rev = 3200\nsteps_per_mm = 80\n");
   return scenario.substr(0, scenario.find("[[expect]]"));
 }
 

@@ -26,8 +26,7 @@ class EbbCommands {
 
   /// Answers through `replies`, queues motion in `queue`, keeps the pen in `pen`; all three must
   /// outlive the command set.
-  EbbCommands(EbbReplies& replies, EbbMotionQueue& queue, EbbPen& pen)
-      : replies_(replies), queue_(queue), pen_(pen) {}
+  EbbCommands(EbbReplies& replies, EbbMotionQueue& queue, EbbPen& pen) : replies_(replies), queue_(queue), pen_(pen) {}
 
   /// Runs command `name` (upper case, as the replies were told with set_command()) with its
   /// parameters. False only when it is a motion command and the queue has no room: nothing was

@@ -69,15 +69,9 @@ void EbbMotionExecutor::start(const EbbMove& move) {
   ticks_left_ = move.ticks;
   switch (move.kind) {
     case EbbMove::Kind::kSteps:
-    case EbbMove::Kind::kTime:
-      begin_accumulated(move);
-      break;
-    case EbbMove::Kind::kHome:
-      begin_home(move);
-      break;
-    case EbbMove::Kind::kDelay:
-      busy_ = ticks_left_ > 0;
-      break;
+    case EbbMove::Kind::kTime: begin_accumulated(move); break;
+    case EbbMove::Kind::kHome: begin_home(move); break;
+    case EbbMove::Kind::kDelay: busy_ = ticks_left_ > 0; break;
     case EbbMove::Kind::kServo:
       servo_target_ = move.servo_target;
       servo_rate_per_tick_ = move.servo_rate / kTicksPerServoPeriod;
@@ -156,9 +150,7 @@ bool EbbMotionExecutor::tick() {
       }
       busy_ = --ticks_left_ > 0;
       break;
-    default:
-      busy_ = --ticks_left_ > 0;
-      break;
+    default: busy_ = --ticks_left_ > 0; break;
   }
   return busy_;
 }

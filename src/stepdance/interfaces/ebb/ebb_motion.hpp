@@ -16,28 +16,28 @@ constexpr uint32_t kTickPeriodUs = 1000000u / kTicksPerSecond;
 /// layer converts SM/XM/HM/SP/S2/EM parameters into these.
 struct EbbMove {
   enum class Kind : uint8_t {
-    kSteps,  ///< LM/SM/XM: each axis takes |steps| steps, accumulator algorithm; ends when both are done
-    kTime,   ///< LT: both axes run the accumulator algorithm for `ticks` ticks
-    kHome,   ///< HM: to target[] (global step counters) at `frequency` steps/s, computed when it starts
-    kDelay,  ///< SM with no steps, or a pen command's delay: `ticks` ticks of nothing
-    kServo,  ///< SP/S2/TP: servo to `servo_target` at `servo_rate`, then `ticks` ticks of delay
-    kEnable, ///< EM: microstep mode and enables; clears the global step counters and accumulators
+    kSteps,   ///< LM/SM/XM: each axis takes |steps| steps, accumulator algorithm; ends when both are done
+    kTime,    ///< LT: both axes run the accumulator algorithm for `ticks` ticks
+    kHome,    ///< HM: to target[] (global step counters) at `frequency` steps/s, computed when it starts
+    kDelay,   ///< SM with no steps, or a pen command's delay: `ticks` ticks of nothing
+    kServo,   ///< SP/S2/TP: servo to `servo_target` at `servo_rate`, then `ticks` ticks of delay
+    kEnable,  ///< EM: microstep mode and enables; clears the global step counters and accumulators
   };
   Kind kind = Kind::kDelay;
-  int64_t rate[2] = {};     ///< accumulator increment per tick, ≥ 0 (direction in `direction`)
-  int64_t accel[2] = {};    ///< added to rate every tick (the first tick starts from rate − accel/2)
-  uint32_t steps[2] = {};   ///< kSteps: steps each axis takes
+  int64_t rate[2] = {};    ///< accumulator increment per tick, ≥ 0 (direction in `direction`)
+  int64_t accel[2] = {};   ///< added to rate every tick (the first tick starts from rate − accel/2)
+  uint32_t steps[2] = {};  ///< kSteps: steps each axis takes
   int8_t direction[2] = {1, 1};
-  uint32_t ticks = 0;       ///< kTime / kDelay / kServo: duration in ticks
-  uint8_t clear = 0;        ///< bit 0: zero axis 1's accumulator first; bit 1: axis 2's
-  int32_t target[2] = {};   ///< kHome: destination in global steps
-  uint32_t frequency = 0;   ///< kHome: step frequency of the longer axis, steps/s
-  uint16_t servo_target = 0;  ///< kServo: pulse width in 1/12 µs (83.3 ns)
-  uint16_t servo_rate = 0;    ///< kServo: pulse-width change per 24 ms, 1/12 µs (0 = at once)
-  bool pen_up = false;        ///< kServo: the pen state this move stands for
-  uint8_t microstep_mode = 1; ///< kEnable: 1 = 1/16 … 5 = full step; 0 = leave it
+  uint32_t ticks = 0;          ///< kTime / kDelay / kServo: duration in ticks
+  uint8_t clear = 0;           ///< bit 0: zero axis 1's accumulator first; bit 1: axis 2's
+  int32_t target[2] = {};      ///< kHome: destination in global steps
+  uint32_t frequency = 0;      ///< kHome: step frequency of the longer axis, steps/s
+  uint16_t servo_target = 0;   ///< kServo: pulse width in 1/12 µs (83.3 ns)
+  uint16_t servo_rate = 0;     ///< kServo: pulse-width change per 24 ms, 1/12 µs (0 = at once)
+  bool pen_up = false;         ///< kServo: the pen state this move stands for
+  uint8_t microstep_mode = 1;  ///< kEnable: 1 = 1/16 … 5 = full step; 0 = leave it
   bool enable[2] = {true, true};
-  char command[2] = {};       ///< the command that queued it ("SM", "LM", "HM"…), for reports
+  char command[2] = {};  ///< the command that queued it ("SM", "LM", "HM"…), for reports
 };
 
 /// Ticks a step-limited axis of `move` needs to cover its steps: steps·2^31 = rate·T + accel·T²/2

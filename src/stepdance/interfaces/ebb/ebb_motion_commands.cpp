@@ -187,12 +187,13 @@ bool EbbCommands::command_s2(EbbParameters& p) {
   p.integer(0, 65535, false, rate);
   p.integer(0, 65535, false, delay_ms);
   if (!p.finish()) return replies_.parameter_error(p), true;
-  if (position == 0 || pin != EbbPen::kServoPin) {  // S2,0,pin turns an output off at once; other pins have no servo here
+  if (position == 0 ||
+      pin != EbbPen::kServoPin) {  // S2,0,pin turns an output off at once; other pins have no servo here
     replies_.ok();
     return true;
   }
-  const EbbMove move = pen_.position_move(static_cast<uint16_t>(position), static_cast<uint16_t>(rate),
-                                          static_cast<uint32_t>(delay_ms));
+  const EbbMove move =
+      pen_.position_move(static_cast<uint16_t>(position), static_cast<uint16_t>(rate), static_cast<uint32_t>(delay_ms));
   if (!queue_and_reply(move)) return false;
   pen_.commanded(move.pen_up);
   return true;

@@ -22,12 +22,9 @@ bool moves_motors(const EbbMove& move) {
 /// For the output_duration port: the longer of the two axes for SM/LM, the tick count otherwise.
 double duration_s(const EbbMove& move) {
   switch (move.kind) {
-    case EbbMove::Kind::kSteps:
-      return fmax(ticks_to_cover(move, 0), ticks_to_cover(move, 1)) / kTicksPerSecond;
-    case EbbMove::Kind::kHome:
-      return 0.0;  // known only when it starts
-    default:
-      return static_cast<double>(move.ticks) / kTicksPerSecond;
+    case EbbMove::Kind::kSteps: return fmax(ticks_to_cover(move, 0), ticks_to_cover(move, 1)) / kTicksPerSecond;
+    case EbbMove::Kind::kHome: return 0.0;  // known only when it starts
+    default: return static_cast<double>(move.ticks) / kTicksPerSecond;
   }
 }
 

@@ -90,11 +90,11 @@ class EbbMotionQueue {
   SpscQueue<EbbMove, kCapacity> fifo_;
   SpscQueue<EbbControl, 8> controls_;
   uint32_t depth_ = 1;
-  volatile uint32_t moves_queued_ = 0;   // loop: moves pushed
-  volatile uint32_t moves_started_ = 0;  // frame: moves taken from the FIFO
+  volatile uint32_t moves_queued_ = 0;    // loop: moves pushed
+  volatile uint32_t moves_started_ = 0;   // frame: moves taken from the FIFO
   volatile uint16_t pen_now_target_ = 0;  // written before kPenUpNow is queued
   volatile uint16_t pen_now_rate_ = 0;
-  volatile uint16_t reset_servo_ = 0;     // written before kReset is queued
+  volatile uint16_t reset_servo_ = 0;  // written before kReset is queued
   // frame side
   EbbMotionExecutor executor_;
   EbbTickClock clock_;

@@ -5,8 +5,8 @@ namespace stepdance::ebb {
 
 namespace {
 constexpr uint32_t kTicksPerMs = kTicksPerSecond / 1000;
-constexpr double kNeutralSteps = 1500.0;  // servo-board steps (µs) at the neutral 1.5 ms
-constexpr double kTwelfthsPerStep = 12.0; // 1/12 µs per servo-board step
+constexpr double kNeutralSteps = 1500.0;   // servo-board steps (µs) at the neutral 1.5 ms
+constexpr double kTwelfthsPerStep = 12.0;  // 1/12 µs per servo-board step
 }  // namespace
 
 // SC,4/5 set the positions, SC,10 both rates, SC,11/12 one each (ebb-protocol.md "SC").

@@ -42,10 +42,10 @@ class EbbPen {
   static double steps_from_neutral(double position_twelfths_us);
 
  private:
-  uint16_t up_ = 20000;    // SC,4: 1.667 ms, pen up on an AxiDraw-style lift
-  uint16_t down_ = 16000;  // SC,5: 1.333 ms
-  uint16_t rate_up_ = 0;   // SC,11 / SC,10
-  uint16_t rate_down_ = 0; // SC,12 / SC,10
+  uint16_t up_ = 20000;     // SC,4: 1.667 ms, pen up on an AxiDraw-style lift
+  uint16_t down_ = 16000;   // SC,5: 1.333 ms
+  uint16_t rate_up_ = 0;    // SC,11 / SC,10
+  uint16_t rate_down_ = 0;  // SC,12 / SC,10
   bool commanded_up_ = true;
 };
 

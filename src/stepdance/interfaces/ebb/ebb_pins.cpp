@@ -38,14 +38,22 @@ uint8_t EbbPins::read(int port, int pin, const EbbDriverState& driver) const {
 // The EBB's wiring: RE0 motor 1 enable and RC1 motor 2 enable (active low), RE2/RE1/RA6 MS1/MS2/MS3,
 // RB4 pen (low = up in this emulation), RB1 the servo output (read low).
 bool EbbPins::driver_pin(int port, int pin, const EbbDriverState& driver, uint8_t& level) const {
-  if (port == kPortE && pin == 0) level = driver.motor_enabled[0] ? 0 : 1;
-  else if (port == kPortC && pin == 1) level = driver.motor_enabled[1] ? 0 : 1;
-  else if (port == kPortE && pin == 2) level = microstep_pin(driver, 0);
-  else if (port == kPortE && pin == 1) level = microstep_pin(driver, 1);
-  else if (port == kPortA && pin == 6) level = microstep_pin(driver, 2);
-  else if (port == kPortB && pin == 4) level = driver.pen_up ? 0 : 1;
-  else if (port == kPortB && pin == 1) level = 0;
-  else return false;
+  if (port == kPortE && pin == 0)
+    level = driver.motor_enabled[0] ? 0 : 1;
+  else if (port == kPortC && pin == 1)
+    level = driver.motor_enabled[1] ? 0 : 1;
+  else if (port == kPortE && pin == 2)
+    level = microstep_pin(driver, 0);
+  else if (port == kPortE && pin == 1)
+    level = microstep_pin(driver, 1);
+  else if (port == kPortA && pin == 6)
+    level = microstep_pin(driver, 2);
+  else if (port == kPortB && pin == 4)
+    level = driver.pen_up ? 0 : 1;
+  else if (port == kPortB && pin == 1)
+    level = 0;
+  else
+    return false;
   return true;
 }
 

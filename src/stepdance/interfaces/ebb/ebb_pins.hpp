@@ -7,9 +7,9 @@ namespace stepdance::ebb {
 
 /// What the emulated board drives on its own pins, as the frame last published it.
 struct EbbDriverState {
-  bool motor_enabled[2] = {};   ///< EM (or motion) enabled the driver
-  uint8_t microstep_mode = 1;   ///< 1 = 1/16 … 5 = full step (EM's Enable1)
-  bool pen_up = true;           ///< the pen as executed
+  bool motor_enabled[2] = {};  ///< EM (or motion) enabled the driver
+  uint8_t microstep_mode = 1;  ///< 1 = 1/16 … 5 = full step (EM's Enable1)
+  bool pen_up = true;          ///< the pen as executed
 };
 
 /// Ports A to E of an EBB v1.3+ (PIC18F46J50), eight pins each. PI reads the pins the EBB drives

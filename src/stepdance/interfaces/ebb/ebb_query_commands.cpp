@@ -42,7 +42,8 @@ bool EbbCommands::command_cu(EbbParameters& p) {
       break;
     case 4:
       if (value < 1) return replies_.error(EbbError::kInvalid), true;
-      queue_.set_depth(static_cast<uint32_t>(value > int64_t{EbbMotionQueue::kCapacity} ? EbbMotionQueue::kCapacity : value));  // clamped to ours
+      queue_.set_depth(static_cast<uint32_t>(value > int64_t{EbbMotionQueue::kCapacity} ? EbbMotionQueue::kCapacity
+                                                                                        : value));  // clamped to ours
       break;
     case 10:
       if (!boolean) return replies_.error(EbbError::kInvalid), true;
@@ -51,8 +52,7 @@ bool EbbCommands::command_cu(EbbParameters& p) {
     case 54:
       if (value != 0) return replies_.error(EbbError::kInvalid), true;  // no checksums here
       break;
-    default:
-      break;  // limit checks, LED, motor auto-enable, limit switches, thresholds: accepted
+    default: break;  // limit checks, LED, motor auto-enable, limit switches, thresholds: accepted
   }
   replies_.ok();
   return true;

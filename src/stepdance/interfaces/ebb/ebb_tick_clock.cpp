@@ -17,9 +17,7 @@ bool EbbTickClock::advance(uint32_t period_us) {
   return true;
 }
 
-double EbbTickClock::carried_per_tick(uint32_t period_us) {
-  return static_cast<double>(kTickPeriodUs) / period_us;
-}
+double EbbTickClock::carried_per_tick(uint32_t period_us) { return static_cast<double>(kTickPeriodUs) / period_us; }
 
 // A channel steps at most once per frame: a faster move runs on a slower clock, the whole move, so
 // every motor keeps its place on the path.

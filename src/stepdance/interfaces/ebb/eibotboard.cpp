@@ -11,8 +11,8 @@ Eibotboard::Eibotboard() = default;
 // Two stages: commands are parsed and answered in the loop, moves are executed in the frame (as the
 // EBB's own 25 kHz ISR executes its FIFO).
 Status Eibotboard::begin_stream(ByteStream&) {
-  BlockPort* ports[8] = {&output_x, &output_y, &output_z, &output_e, &output_r, &output_t,
-                         &output_parameter, &output_duration};
+  BlockPort* ports[8] = {&output_x, &output_y, &output_z,         &output_e,
+                         &output_r, &output_t, &output_parameter, &output_duration};
   for (int i = 0; i < 8; ++i) {
     state_[i] = 0;
     ports[i]->begin(&state_[i], BLOCKPORT_OUTPUT, this);

@@ -33,8 +33,8 @@ GrblError complete_arc_ijk(Motion& arc, bool clockwise, double offset_0_mm, doub
   arc.center_0_mm = arc.start_mm[arc.plane_axis_0] + offset_0_mm;
   arc.center_1_mm = arc.start_mm[arc.plane_axis_1] + offset_1_mm;
   const double start_radius = hypot(offset_0_mm, offset_1_mm);
-  const double end_radius = hypot(arc.end_mm[arc.plane_axis_0] - arc.center_0_mm,
-                                  arc.end_mm[arc.plane_axis_1] - arc.center_1_mm);
+  const double end_radius =
+      hypot(arc.end_mm[arc.plane_axis_0] - arc.center_0_mm, arc.end_mm[arc.plane_axis_1] - arc.center_1_mm);
   const double difference = fabs(end_radius - start_radius);
   if (difference > 0.005 && (difference > 0.5 || difference > 0.001 * start_radius)) {
     return GrblError::kInvalidTarget;
@@ -78,8 +78,8 @@ void arc_bounds_mm(const Motion& arc, double (&low_mm)[kAxisCount], double (&hig
     low_mm[axis] = fmin(arc.start_mm[axis], arc.end_mm[axis]);
     high_mm[axis] = fmax(arc.start_mm[axis], arc.end_mm[axis]);
   }
-  const double start_rad = atan2(arc.start_mm[arc.plane_axis_1] - arc.center_1_mm,
-                                 arc.start_mm[arc.plane_axis_0] - arc.center_0_mm);
+  const double start_rad =
+      atan2(arc.start_mm[arc.plane_axis_1] - arc.center_1_mm, arc.start_mm[arc.plane_axis_0] - arc.center_0_mm);
   const double sweep = fabs(arc.sweep_rad);
   const double direction = arc.sweep_rad < 0.0 ? -1.0 : 1.0;
   // The extreme points in turn: +axis 0, +axis 1, -axis 0, -axis 1 (0°, 90°, 180°, 270°).
@@ -125,8 +125,8 @@ void ArcSegmenter::point_mm(uint32_t k, double (&out)[kAxisCount]) const {
   for (int axis = 0; axis < kAxisCount; ++axis) {
     out[axis] = arc_.start_mm[axis] + fraction * (arc_.end_mm[axis] - arc_.start_mm[axis]);
   }
-  const double start_angle = atan2(arc_.start_mm[arc_.plane_axis_1] - arc_.center_1_mm,
-                                   arc_.start_mm[arc_.plane_axis_0] - arc_.center_0_mm);
+  const double start_angle =
+      atan2(arc_.start_mm[arc_.plane_axis_1] - arc_.center_1_mm, arc_.start_mm[arc_.plane_axis_0] - arc_.center_0_mm);
   const double angle = start_angle + fraction * arc_.sweep_rad;
   out[arc_.plane_axis_0] = arc_.center_0_mm + arc_.radius_mm * cos(angle);
   out[arc_.plane_axis_1] = arc_.center_1_mm + arc_.radius_mm * sin(angle);

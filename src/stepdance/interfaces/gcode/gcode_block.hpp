@@ -7,17 +7,17 @@ namespace stepdance::gcode {
 
 /// Modal groups of G commands, as the RS274/NGC standard and Grbl define them.
 enum class GGroup : uint8_t {
-  kNonModal = 0,   ///< G4, G10, G28, G28.1, G30, G30.1, G53, G92, G92.1
-  kMotion,         ///< G0, G1, G2, G3, G80
-  kPlane,          ///< G17, G18, G19
-  kDistance,       ///< G90, G91
-  kArcDistance,    ///< G91.1
-  kFeedMode,       ///< G93, G94
-  kUnits,          ///< G20, G21
-  kCutterComp,     ///< G40
-  kToolLength,     ///< G49
-  kCoordSystem,    ///< G54 .. G59
-  kPathControl,    ///< G61
+  kNonModal = 0,  ///< G4, G10, G28, G28.1, G30, G30.1, G53, G92, G92.1
+  kMotion,        ///< G0, G1, G2, G3, G80
+  kPlane,         ///< G17, G18, G19
+  kDistance,      ///< G90, G91
+  kArcDistance,   ///< G91.1
+  kFeedMode,      ///< G93, G94
+  kUnits,         ///< G20, G21
+  kCutterComp,    ///< G40
+  kToolLength,    ///< G49
+  kCoordSystem,   ///< G54 .. G59
+  kPathControl,   ///< G61
   kCount,
 };
 

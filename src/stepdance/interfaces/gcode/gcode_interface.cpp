@@ -109,13 +109,9 @@ void GCodeInterface::drain_pending() {
     const Pending& request = pending_[pending_head_];
     bool done = false;
     switch (request.kind) {
-      case Pending::Kind::kDwell:
-        done = dwell_done(request.dwell_s);
-        break;
+      case Pending::Kind::kDwell: done = dwell_done(request.dwell_s); break;
       case Pending::Kind::kSpindle:
-      case Pending::Kind::kPause:
-        done = act_when_idle(request);
-        break;
+      case Pending::Kind::kPause: done = act_when_idle(request); break;
       case Pending::Kind::kJog:
         done = queue_line_motion(request.motion, request.motion.feed_mm_per_min / kSecondsPerMinute, 0.0);
         break;
@@ -162,7 +158,8 @@ bool GCodeInterface::queue_line_motion(const Motion& motion, double speed_mm_per
   if (interpolator_.queue_is_full()) return false;
   const double* end = motion.end_mm;
   if (time_s > 0.0) {
-    return interpolator_.add_timed_move(ABSOLUTE, static_cast<float>(time_s), end[0], end[1], end[2], end[3], 0, 0) >= 0;
+    return interpolator_.add_timed_move(ABSOLUTE, static_cast<float>(time_s), end[0], end[1], end[2], end[3], 0, 0) >=
+           0;
   }
   if (speed_mm_per_s < 0.0) {  // a rapid: as fast as the axis limits allow, scaled by the override
     double delta[planner::kPlannerAxes] = {};
@@ -330,9 +327,7 @@ void GCodeInterface::set_overrides(uint8_t feed_percent, uint8_t rapid_percent) 
 
 // Feed hold is override 0 (the planner decelerates on the path); otherwise the feed override. Rapids
 // carry their override in their planned speed instead (queue_line_motion).
-void GCodeInterface::apply_override() {
-  interpolator_.speed_overide = holding_ ? 0.0 : feed_percent_ / 100.0;
-}
+void GCodeInterface::apply_override() { interpolator_.speed_overide = holding_ ? 0.0 : feed_percent_ / 100.0; }
 
 double GCodeInterface::steps_per_mm(int axis) { return settings().value(100 + static_cast<uint32_t>(axis)); }
 

@@ -93,7 +93,7 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
     /// waits for it too, then lets its time pass over loop passes (Grbl's mc_dwell).
     enum class Kind : uint8_t { kMotion, kDwell, kJog, kSpindle, kPause } kind = Kind::kMotion;
     gcode::Motion motion;
-    double dwell_s = 0.0;      // kDwell; kSpindle: the speed
+    double dwell_s = 0.0;         // kDwell; kSpindle: the speed
     gcode::CommandCode code = 0;  // kSpindle: M3/M4/M5 (×10)
   };
   static constexpr int kPendingCapacity = 4;  // a line asks for at most a dwell and two motions
@@ -144,14 +144,14 @@ class GCodeInterface : public Block, public link::LinkedProtocol<GCodeInterface>
   int pending_head_ = 0;
   int pending_count_ = 0;
   gcode::LineAnswer* line_answer_ = nullptr;  // the last line's, until its requests are all planned
-  uint32_t arc_next_chord_ = 0;  // chords of the pending arc already queued
+  uint32_t arc_next_chord_ = 0;               // chords of the pending arc already queued
   uint32_t arc_chords_left_this_pass_ = kArcChordsPerLoopPass;
   uint32_t arc_chords_queued_ = 0;
   bool holding_ = false;
   bool jogging_ = false;
   // G4 at the head of the requests: the planner has drained and the dwell runs (Idle meanwhile).
   bool dwelling_ = false;
-  uint32_t dwell_last_us_ = 0;    // hal::micros_now() at the last loop pass of the dwell
+  uint32_t dwell_last_us_ = 0;  // hal::micros_now() at the last loop pass of the dwell
   uint64_t dwell_elapsed_us_ = 0;
   uint8_t feed_percent_ = 100;
   uint8_t rapid_percent_ = 100;

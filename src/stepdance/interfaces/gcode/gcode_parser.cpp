@@ -90,32 +90,25 @@ struct CommandEntry {
 // The G codes Grbl 1.1 accepts (×10, so G28.1 = 281) with their NIST modal groups; two codes of one
 // group on a line are error:21.
 constexpr CommandEntry kGCommands[] = {
-    {0, uint8_t(GGroup::kMotion)},       {10, uint8_t(GGroup::kMotion)},
-    {20, uint8_t(GGroup::kMotion)},      {30, uint8_t(GGroup::kMotion)},
-    {40, uint8_t(GGroup::kNonModal)},    {100, uint8_t(GGroup::kNonModal)},
-    {170, uint8_t(GGroup::kPlane)},      {180, uint8_t(GGroup::kPlane)},
-    {190, uint8_t(GGroup::kPlane)},      {200, uint8_t(GGroup::kUnits)},
-    {210, uint8_t(GGroup::kUnits)},      {280, uint8_t(GGroup::kNonModal)},
-    {281, uint8_t(GGroup::kNonModal)},   {300, uint8_t(GGroup::kNonModal)},
-    {301, uint8_t(GGroup::kNonModal)},   {400, uint8_t(GGroup::kCutterComp)},
-    {431, uint8_t(GGroup::kToolLength)}, {490, uint8_t(GGroup::kToolLength)},
-    {530, uint8_t(GGroup::kNonModal)},
-    {540, uint8_t(GGroup::kCoordSystem)}, {550, uint8_t(GGroup::kCoordSystem)},
-    {560, uint8_t(GGroup::kCoordSystem)}, {570, uint8_t(GGroup::kCoordSystem)},
-    {580, uint8_t(GGroup::kCoordSystem)}, {590, uint8_t(GGroup::kCoordSystem)},
-    {610, uint8_t(GGroup::kPathControl)}, {800, uint8_t(GGroup::kMotion)},
-    {900, uint8_t(GGroup::kDistance)},   {910, uint8_t(GGroup::kDistance)},
-    {911, uint8_t(GGroup::kArcDistance)}, {920, uint8_t(GGroup::kNonModal)},
-    {921, uint8_t(GGroup::kNonModal)},   {930, uint8_t(GGroup::kFeedMode)},
+    {0, uint8_t(GGroup::kMotion)},        {10, uint8_t(GGroup::kMotion)},       {20, uint8_t(GGroup::kMotion)},
+    {30, uint8_t(GGroup::kMotion)},       {40, uint8_t(GGroup::kNonModal)},     {100, uint8_t(GGroup::kNonModal)},
+    {170, uint8_t(GGroup::kPlane)},       {180, uint8_t(GGroup::kPlane)},       {190, uint8_t(GGroup::kPlane)},
+    {200, uint8_t(GGroup::kUnits)},       {210, uint8_t(GGroup::kUnits)},       {280, uint8_t(GGroup::kNonModal)},
+    {281, uint8_t(GGroup::kNonModal)},    {300, uint8_t(GGroup::kNonModal)},    {301, uint8_t(GGroup::kNonModal)},
+    {400, uint8_t(GGroup::kCutterComp)},  {431, uint8_t(GGroup::kToolLength)},  {490, uint8_t(GGroup::kToolLength)},
+    {530, uint8_t(GGroup::kNonModal)},    {540, uint8_t(GGroup::kCoordSystem)}, {550, uint8_t(GGroup::kCoordSystem)},
+    {560, uint8_t(GGroup::kCoordSystem)}, {570, uint8_t(GGroup::kCoordSystem)}, {580, uint8_t(GGroup::kCoordSystem)},
+    {590, uint8_t(GGroup::kCoordSystem)}, {610, uint8_t(GGroup::kPathControl)}, {800, uint8_t(GGroup::kMotion)},
+    {900, uint8_t(GGroup::kDistance)},    {910, uint8_t(GGroup::kDistance)},    {911, uint8_t(GGroup::kArcDistance)},
+    {920, uint8_t(GGroup::kNonModal)},    {921, uint8_t(GGroup::kNonModal)},    {930, uint8_t(GGroup::kFeedMode)},
     {940, uint8_t(GGroup::kFeedMode)},
 };
 
 constexpr CommandEntry kMCommands[] = {
-    {0, uint8_t(MGroup::kStopping)},  {10, uint8_t(MGroup::kStopping)},
-    {20, uint8_t(MGroup::kStopping)}, {300, uint8_t(MGroup::kStopping)},
-    {30, uint8_t(MGroup::kSpindle)},  {40, uint8_t(MGroup::kSpindle)},
-    {50, uint8_t(MGroup::kSpindle)},  {70, uint8_t(MGroup::kCoolant)},
-    {80, uint8_t(MGroup::kCoolant)},  {90, uint8_t(MGroup::kCoolant)},
+    {0, uint8_t(MGroup::kStopping)},   {10, uint8_t(MGroup::kStopping)}, {20, uint8_t(MGroup::kStopping)},
+    {300, uint8_t(MGroup::kStopping)}, {30, uint8_t(MGroup::kSpindle)},  {40, uint8_t(MGroup::kSpindle)},
+    {50, uint8_t(MGroup::kSpindle)},   {70, uint8_t(MGroup::kCoolant)},  {80, uint8_t(MGroup::kCoolant)},
+    {90, uint8_t(MGroup::kCoolant)},
 };
 
 /// Printer housekeeping M numbers accepted without action when printer codes are on.
@@ -189,11 +182,21 @@ GrblError add_m(GcodeBlock& block, CommandCode code, const ParserOptions& option
 
 bool is_value_letter(char letter) {
   switch (letter) {
-    case 'E': case 'F': case 'I': case 'J': case 'K': case 'L': case 'N':
-    case 'P': case 'R': case 'S': case 'T': case 'X': case 'Y': case 'Z':
-      return true;
-    default:
-      return false;
+    case 'E':
+    case 'F':
+    case 'I':
+    case 'J':
+    case 'K':
+    case 'L':
+    case 'N':
+    case 'P':
+    case 'R':
+    case 'S':
+    case 'T':
+    case 'X':
+    case 'Y':
+    case 'Z': return true;
+    default: return false;
   }
 }
 

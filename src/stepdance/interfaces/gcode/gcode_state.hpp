@@ -18,19 +18,19 @@ struct CoordinateData {
 
 /// Modal state after the last accepted line.
 struct ModalState {
-  CommandCode motion = 0;       ///< 0, 10, 20, 30 or 800 (G80)
-  CommandCode plane = 170;      ///< 170, 180, 190
-  bool absolute = true;         ///< G90 (true) / G91
-  bool inverse_time = false;    ///< G93 (true) / G94
-  bool inches = false;          ///< G20 (true) / G21
-  uint8_t coordinate_system = 0;  ///< 0 = G54 .. 5 = G59
-  bool extruder_relative = false;  ///< M83 (true) / M82
-  CommandCode spindle = 50;     ///< 30, 40 or 50 (M5)
-  CommandCode coolant = 90;     ///< 70, 80 or 90 (M9)
-  double feed_mm_per_min = 0.0;  ///< F in force (G94); 0 = never set
-  double spindle_speed = 0.0;   ///< S in force
-  uint8_t tool = 0;             ///< T in force
-  bool tool_length_dynamic = false;  ///< G43.1 (true) / G49
+  CommandCode motion = 0;              ///< 0, 10, 20, 30 or 800 (G80)
+  CommandCode plane = 170;             ///< 170, 180, 190
+  bool absolute = true;                ///< G90 (true) / G91
+  bool inverse_time = false;           ///< G93 (true) / G94
+  bool inches = false;                 ///< G20 (true) / G21
+  uint8_t coordinate_system = 0;       ///< 0 = G54 .. 5 = G59
+  bool extruder_relative = false;      ///< M83 (true) / M82
+  CommandCode spindle = 50;            ///< 30, 40 or 50 (M5)
+  CommandCode coolant = 90;            ///< 70, 80 or 90 (M9)
+  double feed_mm_per_min = 0.0;        ///< F in force (G94); 0 = never set
+  double spindle_speed = 0.0;          ///< S in force
+  uint8_t tool = 0;                    ///< T in force
+  bool tool_length_dynamic = false;    ///< G43.1 (true) / G49
   double tool_length_offset_mm = 0.0;  ///< G43.1's Z offset, added to absolute Z targets
 };
 

@@ -6,6 +6,7 @@
 
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/core/nonvolatile_store.hpp"
+#include "stepdance/core/text_writer.hpp"
 #include "stepdance/interfaces/gcode/gcode_interpreter_stage.hpp"
 #include "stepdance/interfaces/gcode/gcode_parser_stage.hpp"
 #include "stepdance/interfaces/gcode/grbl_line_reply.hpp"
@@ -14,7 +15,6 @@
 #include "stepdance/interfaces/gcode/grbl_settings.hpp"
 #include "stepdance/interfaces/link/command_table.hpp"
 #include "stepdance/interfaces/link/reply_ring.hpp"
-#include "stepdance/core/text_writer.hpp"
 
 namespace stepdance::gcode {
 
@@ -73,12 +73,14 @@ class GrblProtocol final : private RealtimeHandler {
     uint8_t states = 0;
   };
   using DollarTable = link::CommandTable<DollarCommand, 11>;
-  static constexpr uint8_t state_bit(LinkState state) { return static_cast<uint8_t>(1u << static_cast<uint8_t>(state)); }
+  static constexpr uint8_t state_bit(LinkState state) {
+    return static_cast<uint8_t>(1u << static_cast<uint8_t>(state));
+  }
   static constexpr uint8_t kAnyState = 0xFF;
-  static constexpr uint8_t kIdleOrJog = (1u << static_cast<uint8_t>(LinkState::kIdle)) |
-                                        (1u << static_cast<uint8_t>(LinkState::kJog));
-  static constexpr uint8_t kIdleOrAlarm = (1u << static_cast<uint8_t>(LinkState::kIdle)) |
-                                          (1u << static_cast<uint8_t>(LinkState::kAlarm));
+  static constexpr uint8_t kIdleOrJog =
+      (1u << static_cast<uint8_t>(LinkState::kIdle)) | (1u << static_cast<uint8_t>(LinkState::kJog));
+  static constexpr uint8_t kIdleOrAlarm =
+      (1u << static_cast<uint8_t>(LinkState::kIdle)) | (1u << static_cast<uint8_t>(LinkState::kAlarm));
   static const DollarTable kDollarCommands;
 
   GrblError execute_system(const char* text, size_t length);

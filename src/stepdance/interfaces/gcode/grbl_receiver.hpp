@@ -40,8 +40,8 @@ struct ReceivedLine {
   /// Characters a line may hold, spaces not counted: Grbl's LINE_BUFFER_SIZE (80) less its NUL.
   static constexpr size_t kMaxLength = 79;
   const char* text = "";
-  size_t length = 0;         ///< bytes in text (the kept spaces included)
-  bool overflowed = false;   ///< a character beyond kMaxLength was dropped: reply error:11
+  size_t length = 0;        ///< bytes in text (the kept spaces included)
+  bool overflowed = false;  ///< a character beyond kMaxLength was dropped: reply error:11
 };
 
 /// The receive side of a Grbl link. pump() moves bytes from the stream into a 128-byte buffer
@@ -80,8 +80,8 @@ class GrblReceiver {
   void end_line(uint8_t byte);
 
   uint8_t ring_[kBufferBytes] = {};
-  size_t head_ = 0;   // next byte to take
-  size_t count_ = 0;  // bytes held
+  size_t head_ = 0;     // next byte to take
+  size_t count_ = 0;    // bytes held
   int held_byte_ = -1;  // a line byte read while the buffer was full, or −1
   // Room for the characters and the one space kept between them; the count of characters
   // (Grbl's limit) is kept here, so the reader itself never overflows.

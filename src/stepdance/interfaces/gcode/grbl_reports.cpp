@@ -78,8 +78,10 @@ void GrblProtocol::append_position(TextWriter& line, const double (&offset)[kOff
 // use for pacing; FS: the current feed and the programmed spindle speed (0 when M5).
 void GrblProtocol::append_buffer_and_feed(TextWriter& line) {
   if (settings_.report_buffer_state()) {
-    line.text("|Bf:").unsigned_number(machine_->queue_slots_free()).character(',').unsigned_number(
-        static_cast<uint32_t>(receiver_.bytes_free()));
+    line.text("|Bf:")
+        .unsigned_number(machine_->queue_slots_free())
+        .character(',')
+        .unsigned_number(static_cast<uint32_t>(receiver_.bytes_free()));
   }
   const double feed = machine_->feed_now_mm_per_min();
   const double speed = interpreter().modal().spindle == 50 ? 0.0 : interpreter().modal().spindle_speed;

@@ -17,18 +17,15 @@ bool fits(const GrblSetting& setting, double value) {
 
 GrblSettings::GrblSettings()
     : settings_{
-          {0, 10, true, true},      {1, 25, true, true},     {2, 0, true, true},
-          {3, 0, true, true},       {4, 0, true, true},      {5, 0, true, true},
-          {6, 0, true, true},       {10, 3, true, true},     {11, 0.010, false, true},
-          {12, 0.002, false, true}, {13, 0, true, true},     {20, 0, true, true},
-          {21, 0, true, true},      {22, 0, true, true},    {23, 0, true, true},
-          {24, 25, false, true},    {25, 500, false, true},  {26, 250, true, true},
-          {27, 1, false, true},     {30, 1000, true, true},  {31, 0, true, true},
-          {32, 0, true, true},      {100, 0, false, false},  {101, 0, false, false},
-          {102, 0, false, false},   {110, 5000, false, true}, {111, 5000, false, true},
-          {112, 1000, false, true}, {120, 1000, false, true}, {121, 1000, false, true},
-          {122, 200, false, true},  {130, 300, false, true}, {131, 220, false, true},
-          {132, 50, false, true},
+          {0, 10, true, true},      {1, 25, true, true},      {2, 0, true, true},       {3, 0, true, true},
+          {4, 0, true, true},       {5, 0, true, true},       {6, 0, true, true},       {10, 3, true, true},
+          {11, 0.010, false, true}, {12, 0.002, false, true}, {13, 0, true, true},      {20, 0, true, true},
+          {21, 0, true, true},      {22, 0, true, true},      {23, 0, true, true},      {24, 25, false, true},
+          {25, 500, false, true},   {26, 250, true, true},    {27, 1, false, true},     {30, 1000, true, true},
+          {31, 0, true, true},      {32, 0, true, true},      {100, 0, false, false},   {101, 0, false, false},
+          {102, 0, false, false},   {110, 5000, false, true}, {111, 5000, false, true}, {112, 1000, false, true},
+          {120, 1000, false, true}, {121, 1000, false, true}, {122, 200, false, true},  {130, 300, false, true},
+          {131, 220, false, true},  {132, 50, false, true},
       } {
   for (GrblSetting& setting : settings_) setting.default_value = setting.value;
 }

@@ -11,8 +11,8 @@ namespace stepdance::gcode {
 struct GrblSetting {
   uint8_t number;
   double value;
-  bool integer;    ///< printed without decimals; writes must be whole numbers
-  bool writable;   ///< false: the sketch owns it (steps/mm come from the channels)
+  bool integer;                ///< printed without decimals; writes must be whole numbers
+  bool writable;               ///< false: the sketch owns it (steps/mm come from the channels)
   double default_value = 0.0;  ///< Grbl's default or the sketch's (set_from_sketch); `$RST=$`
   bool host_set = false;       ///< written by the host (`$N=v`) or loaded from the store
   bool sketch_set = false;     ///< given by the sketch (set_from_sketch)

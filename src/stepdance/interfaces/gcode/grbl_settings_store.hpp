@@ -19,9 +19,9 @@ constexpr size_t kSettingsStoreMaxBytes = 4 + 2 + GrblSettings::kCount * 9 + 2;
 
 /// What load_settings() found.
 enum class SettingsLoad : uint8_t {
-  kLoaded,      ///< a valid store: its settings applied
-  kBlank,       ///< erased or never written: defaults, nothing to say
-  kCorrupt,     ///< wrong magic, bad checksum or an impossible entry: defaults
+  kLoaded,        ///< a valid store: its settings applied
+  kBlank,         ///< erased or never written: defaults, nothing to say
+  kCorrupt,       ///< wrong magic, bad checksum or an impossible entry: defaults
   kOtherVersion,  ///< written by another firmware version: defaults
   kUnavailable,   ///< no store on this board (or too small): defaults, nothing persists
 };

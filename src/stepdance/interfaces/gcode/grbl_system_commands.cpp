@@ -145,7 +145,8 @@ constexpr uint16_t group_bit(GGroup group) { return static_cast<uint16_t>(1u << 
 GrblError check_jog_words(const GcodeBlock& block) {
   constexpr uint32_t kAxes = word_bit('X') | word_bit('Y') | word_bit('Z');
   constexpr uint32_t kAllowedWords = kAxes | word_bit('F') | word_bit('N');
-  constexpr uint16_t kAllowedGroups = group_bit(GGroup::kUnits) | group_bit(GGroup::kDistance) | group_bit(GGroup::kNonModal);
+  constexpr uint16_t kAllowedGroups =
+      group_bit(GGroup::kUnits) | group_bit(GGroup::kDistance) | group_bit(GGroup::kNonModal);
   const bool only_g53 = !block.has_g(GGroup::kNonModal) || block.g_code(GGroup::kNonModal) == 530;
   if ((block.words_present & ~kAllowedWords) != 0 || (block.g_groups_present & ~kAllowedGroups) != 0 ||
       block.m_groups_present != 0 || !only_g53 || block.printer_housekeeping) {

@@ -24,8 +24,8 @@ struct Motion {
   MotionKind kind = MotionKind::kRapid;
   double start_mm[kAxisCount] = {};
   double end_mm[kAxisCount] = {};
-  double feed_mm_per_min = 0.0;    ///< G94 feed; 0 for rapids and inverse-time moves
-  double duration_min = 0.0;       ///< G93: the whole motion takes this long; 0 otherwise
+  double feed_mm_per_min = 0.0;  ///< G94 feed; 0 for rapids and inverse-time moves
+  double duration_min = 0.0;     ///< G93: the whole motion takes this long; 0 otherwise
   // Arcs only: the plane's two axes, the centre in them, the start radius and the signed sweep
   // (positive counter-clockwise looking down the plane's normal).
   uint8_t plane_axis_0 = kAxisX;

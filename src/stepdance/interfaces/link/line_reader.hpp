@@ -55,7 +55,8 @@ class LineReaderBase {
   size_t capacity() const { return capacity_; }
 
  protected:
-  LineReaderBase(char* buffer, size_t capacity, LineRules rules) : buffer_(buffer), capacity_(capacity), rules_(rules) {}
+  LineReaderBase(char* buffer, size_t capacity, LineRules rules)
+      : buffer_(buffer), capacity_(capacity), rules_(rules) {}
   ~LineReaderBase() = default;
 
  private:

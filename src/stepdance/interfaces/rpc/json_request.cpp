@@ -67,7 +67,9 @@ class Reader {
     if (position_ >= length_) return fail(JsonError::kSyntax);
     const char letter = text_[position_++];
     switch (letter) {
-      case '"': case '\\': case '/': c = letter; return true;
+      case '"':
+      case '\\':
+      case '/': c = letter; return true;
       case 'b': c = '\b'; return true;
       case 'f': c = '\f'; return true;
       case 'n': c = '\n'; return true;
@@ -86,8 +88,10 @@ class Reader {
     unsigned code = 0;
     for (int i = 0; i < 4; ++i) {
       const char h = text_[position_++];
-      const int digit = (h >= '0' && h <= '9') ? h - '0' : (h >= 'a' && h <= 'f') ? h - 'a' + 10
-                        : (h >= 'A' && h <= 'F') ? h - 'A' + 10 : -1;
+      const int digit = (h >= '0' && h <= '9')   ? h - '0'
+                        : (h >= 'a' && h <= 'f') ? h - 'a' + 10
+                        : (h >= 'A' && h <= 'F') ? h - 'A' + 10
+                                                 : -1;
       if (digit < 0) return fail(JsonError::kSyntax);
       code = code * 16 + static_cast<unsigned>(digit);
     }
@@ -139,7 +143,8 @@ class Reader {
     if (position_ >= length_ || (text_[position_] != 'e' && text_[position_] != 'E')) return true;
     ++position_;
     bool negative = false;
-    if (position_ < length_ && (text_[position_] == '+' || text_[position_] == '-')) negative = text_[position_++] == '-';
+    if (position_ < length_ && (text_[position_] == '+' || text_[position_] == '-'))
+      negative = text_[position_++] == '-';
     int power = 0;
     size_t exponent_digits = 0;
     while (at_digit()) {
@@ -305,7 +310,8 @@ const char* to_string(JsonError error) {
     case JsonError::kNone: return "ok";
     case JsonError::kSyntax: return "malformed JSON request";
     case JsonError::kMissingName: return "request has no \"name\" string";
-    case JsonError::kTooManyArgs: return "too many arguments, or an argument that is not a number, string, boolean or null";
+    case JsonError::kTooManyArgs:
+      return "too many arguments, or an argument that is not a number, string, boolean or null";
     case JsonError::kTooLong: return "a name, id or string is too long";
   }
   return "unknown error";

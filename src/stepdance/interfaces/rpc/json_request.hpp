@@ -29,10 +29,10 @@ struct JsonRequest {
 /// Why a line is not a request (the reply's error code is the enum's value).
 enum class JsonError : uint8_t {
   kNone = 0,
-  kSyntax = 1,         ///< not well-formed JSON, or not an object
-  kMissingName = 2,    ///< no "name" string
-  kTooManyArgs = 3,    ///< more than kMaxArgs arguments, or an argument that is an array/object
-  kTooLong = 4,        ///< a name, id or the strings' total over their limit
+  kSyntax = 1,       ///< not well-formed JSON, or not an object
+  kMissingName = 2,  ///< no "name" string
+  kTooManyArgs = 3,  ///< more than kMaxArgs arguments, or an argument that is an array/object
+  kTooLong = 4,      ///< a name, id or the strings' total over their limit
 };
 
 /// Parses `line` (length bytes, no line ending). Strings go into `pool` (pool_size bytes).

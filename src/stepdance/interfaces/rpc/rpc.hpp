@@ -103,8 +103,7 @@ class RPC : public Block, public link::LinkedProtocol<RPC> {
   }
   /// A variable (int, float, double, bool, a ControlParameter …): read or written by name.
   /// Context: loop (setup).
-  template <class Name, typename T,
-            typename = std::enable_if_t<std::is_arithmetic_v<std::remove_cv_t<T>>>>
+  template <class Name, typename T, typename = std::enable_if_t<std::is_arithmetic_v<std::remove_cv_t<T>>>>
   void enroll(const Name& name, T& parameter) {
     enroll_parameter(text_of(name), "", parameter);
   }
@@ -186,7 +185,7 @@ class RPC : public Block, public link::LinkedProtocol<RPC> {
   link::LineReader<kMaxLineBytes> lines_{link::LineRules{false, true, true, false}};
   char pool_[kMaxLineBytes] = {};
   link::ReplyRing<kReplyBufferBytes> replies_;
-  int index_cursor_ = -1;  // __index__ being sent: next entry, or −1
+  int index_cursor_ = -1;         // __index__ being sent: next entry, or −1
   bool index_describes_ = false;  // sending __describe__ rather than __index__
   char index_id_[rpc::JsonRequest::kMaxIdBytes + 1] = {};
 };

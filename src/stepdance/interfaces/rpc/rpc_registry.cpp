@@ -17,7 +17,8 @@ Entry* Registry::add(const char* prefix, const char* suffix, bool parameter) {
   const size_t length = prefix_length + (suffix_length > 0 ? 1 + suffix_length : 0);
   if (count_ == kMaxEntries || length > kMaxNameBytes || prefix_length == 0) {
     ++failures_;
-    report_fault(FaultLevel::kWarning, FaultReason::kRegistryFull, "rpc", "enroll refused: registry full or name too long");
+    report_fault(FaultLevel::kWarning, FaultReason::kRegistryFull, "rpc",
+                 "enroll refused: registry full or name too long");
     return nullptr;
   }
   char name[kMaxNameBytes + 1];

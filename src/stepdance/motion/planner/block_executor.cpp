@@ -88,8 +88,7 @@ double BlockExecutor::advance_block(double dt_s, double override_factor, double 
     const double c = exit_target * exit_target + 2.0 * a * remaining - a * dt_s * speed_;
     // When the end falls inside this frame the bound is below the exit speed itself; ending
     // the block at its exit speed is always allowed.
-    const double braking =
-        max2(0.5 * (-a * dt_s + sqrt(fmax(a * a * dt_s * dt_s + 4.0 * c, 0.0))), exit_target);
+    const double braking = max2(0.5 * (-a * dt_s + sqrt(fmax(a * a * dt_s * dt_s + 4.0 * c, 0.0))), exit_target);
     const double change = a * dt_s;
     next_speed = min2(min2(cruise, braking), speed_ + change);
     next_speed = max2(next_speed, max2(speed_ - change, 0.0));

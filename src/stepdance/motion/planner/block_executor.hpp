@@ -52,7 +52,7 @@ class BlockExecutor {
   PlannedBlock block_;
   bool active_ = false;
   bool stopping_ = false;
-  double travelled_ = 0.0;   // along the current block, units
+  double travelled_ = 0.0;           // along the current block, units
   double start_[kPlannerAxes] = {};  // position of each axis when the current block loaded
   double speed_ = 0.0;
   double dwell_left_s_ = 0.0;

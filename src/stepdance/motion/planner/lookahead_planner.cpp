@@ -27,8 +27,8 @@ Status LookaheadPlanner::add(const PlannedBlock& block) {
   slot = block;
   const bool motion = block.length > 0.0;
   double direction[3] = {};
-  const double xyz = sqrt(block.delta[0] * block.delta[0] + block.delta[1] * block.delta[1] +
-                          block.delta[2] * block.delta[2]);
+  const double xyz =
+      sqrt(block.delta[0] * block.delta[0] + block.delta[1] * block.delta[1] + block.delta[2] * block.delta[2]);
   if (motion && xyz > 0.0) {
     for (int i = 0; i < 3; ++i) direction[i] = block.delta[i] / xyz;
   }

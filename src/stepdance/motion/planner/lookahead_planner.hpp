@@ -47,7 +47,7 @@ class LookaheadPlanner {
   double junction_deviation_ = 0.02;
   double committed_exit_speed_ = 0.0;  // exit speed of the last block handed out
   double last_direction_[3] = {};
-  bool last_was_motion_ = false;       // false after a dwell, a clear or at start: next starts at rest
+  bool last_was_motion_ = false;  // false after a dwell, a clear or at start: next starts at rest
   double last_cruise_ = 0.0;
   double last_length_ = 0.0;
   double last_acceleration_ = 0.0;

@@ -31,9 +31,7 @@ class MemoryPort final : public ByteStream {
     outgoing.append(reinterpret_cast<const char*>(data), accepted);
     return accepted;
   }
-  size_t write_space() override {
-    return outgoing.size() < capacity ? capacity - outgoing.size() : 0;
-  }
+  size_t write_space() override { return outgoing.size() < capacity ? capacity - outgoing.size() : 0; }
 
   std::deque<char> incoming;
   std::string outgoing;
@@ -50,9 +48,7 @@ struct ManualArduino {
 
 ManualArduino the_state;
 
-MemoryPort& port_of(arduino_backend::SerialPortId port) {
-  return the_state.ports.at(static_cast<size_t>(port));
-}
+MemoryPort& port_of(arduino_backend::SerialPortId port) { return the_state.ports.at(static_cast<size_t>(port)); }
 
 }  // namespace
 
@@ -95,13 +91,9 @@ void feed_serial(arduino_backend::SerialPortId port, const std::string& bytes) {
   memory.incoming.insert(memory.incoming.end(), bytes.begin(), bytes.end());
 }
 
-void set_serial_connected(arduino_backend::SerialPortId port, bool connected) {
-  port_of(port).connected = connected;
-}
+void set_serial_connected(arduino_backend::SerialPortId port, bool connected) { port_of(port).connected = connected; }
 
-void set_serial_write_space(arduino_backend::SerialPortId port, size_t bytes) {
-  port_of(port).capacity = bytes;
-}
+void set_serial_write_space(arduino_backend::SerialPortId port, size_t bytes) { port_of(port).capacity = bytes; }
 
 uint64_t delayed_us() { return the_state.delayed_us; }
 uint32_t delay_calls() { return the_state.delay_calls; }

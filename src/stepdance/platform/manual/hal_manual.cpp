@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "stepdance/core/byte_stream.hpp"
-#include "stepdance/hal/console.hpp"
-#include "stepdance/hal/storage.hpp"
-#include "stepdance/hal/nonvolatile.hpp"
 #include "stepdance/core/units.hpp"
+#include "stepdance/hal/console.hpp"
+#include "stepdance/hal/nonvolatile.hpp"
+#include "stepdance/hal/storage.hpp"
 
 namespace stepdance {
 namespace {
@@ -255,9 +255,7 @@ void enter_safe_state() {
   board().safe_state = true;
   timers_stop();
 }
-void log_fault(const char* reason, const char* detail) {
-  board().fault_log = std::string(reason) + ": " + detail;
-}
+void log_fault(const char* reason, const char* detail) { board().fault_log = std::string(reason) + ": " + detail; }
 void log_message(const char* text) {
   board().console.output += text;
   board().console.output += "\r\n";

@@ -19,8 +19,7 @@ struct I2cRecord {
 };
 
 /// Answers a transfer: fills `read` (read_length bytes, preset to 0xFF) and returns its result.
-using I2cResponder =
-    std::function<hal::I2cResult(const I2cRecord& transfer, uint8_t* read, uint16_t read_length)>;
+using I2cResponder = std::function<hal::I2cResult(const I2cRecord& transfer, uint8_t* read, uint16_t read_length)>;
 
 /// Forgets buses, transfers and the responder (every transfer is then acknowledged).
 void i2c_reset();

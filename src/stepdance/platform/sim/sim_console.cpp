@@ -1,10 +1,10 @@
 // Inside a board's shared object: the console stream and file storage, forwarded to the simulator.
 #if defined(STEPDANCE_PLATFORM_SIM)
 
-#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/hal/console.hpp"
 #include "stepdance/hal/storage.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 namespace stepdance {
 namespace {

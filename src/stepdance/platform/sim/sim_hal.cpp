@@ -8,10 +8,10 @@
 
 #include "stepdance/platform/sim/sim_hal.hpp"
 
-#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/boards/board.hpp"
 #include "stepdance/core/engine.hpp"
 #include "stepdance/hal/hal.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 namespace stepdance {
 namespace {

@@ -4,8 +4,8 @@
 #if defined(STEPDANCE_PLATFORM_SIM)
 
 #include "board/abi/board_abi.h"
-#include "stepdance/platform/sim/host_link.hpp"
 #include "stepdance/hal/i2c.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 namespace stepdance::hal {
 namespace {
@@ -32,9 +32,9 @@ Status i2c_start(uint8_t bus, const I2cTransfer& transfer) {
   const Status valid = i2c_check_start(bus, begun, transfer);
   if (valid != Status::kOk) return valid;
   int64_t wire_ns = 0;
-  const int result = sim_runtime::host().i2c_transfer(sim_runtime::host_context(), bus, transfer.address, transfer.write,
-                                                      transfer.write_length, transfer.read, transfer.read_length,
-                                                      &wire_ns);
+  const int result =
+      sim_runtime::host().i2c_transfer(sim_runtime::host_context(), bus, transfer.address, transfer.write,
+                                       transfer.write_length, transfer.read, transfer.read_length, &wire_ns);
   latest[bus] = static_cast<I2cResult>(result);
   if (wire_ns > 0) sim_runtime::set_now_ns(sim_runtime::host().delay_ns(sim_runtime::host_context(), wire_ns));
   return Status::kOk;

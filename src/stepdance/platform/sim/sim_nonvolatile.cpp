@@ -5,9 +5,9 @@
 
 #include <string.h>
 
-#include "stepdance/platform/sim/host_link.hpp"
-#include "stepdance/hal/storage.hpp"
 #include "stepdance/hal/nonvolatile.hpp"
+#include "stepdance/hal/storage.hpp"
+#include "stepdance/platform/sim/host_link.hpp"
 
 namespace stepdance {
 namespace {

@@ -29,8 +29,8 @@ void set_clock_root() {
   const bool flexio2_was_on = ccm::gate_is_on(ccm::kGateFlexio2);
   ccm::gate_off(ccm::kGateFlexio2);
   ccm::gate_off(ccm::kGateFlexio3);
-  ccm::cscmr2() = (ccm::cscmr2() & ~ccm::kCscmr2Flexio2SelMask) |
-                  regs::field(ccm::kFlexio2SelPll3, ccm::kCscmr2Flexio2SelShift);
+  ccm::cscmr2() =
+      (ccm::cscmr2() & ~ccm::kCscmr2Flexio2SelMask) | regs::field(ccm::kFlexio2SelPll3, ccm::kCscmr2Flexio2SelShift);
   ccm::cs1cdr() = (ccm::cs1cdr() & ~(ccm::kCs1cdrFlexio2PodfMask | ccm::kCs1cdrFlexio2PredMask)) |
                   regs::field(1, ccm::kCs1cdrFlexio2PodfShift) | regs::field(1, ccm::kCs1cdrFlexio2PredShift);
   static_assert(ccm::kPll3Hz / 2 / 2 == kClockHz, "FlexIO clock root settings");

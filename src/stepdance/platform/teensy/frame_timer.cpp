@@ -138,7 +138,7 @@ Status frame_timer_start(uint32_t period_us, Isr on_frame) {
   teensy::irq::install(teensy::kTickIrq, &teensy::tick_isr, teensy::irq::kTickPriority);
   teensy::running = true;
   teensy::wait_after_stop(period_us);
-  teensy::sample_clock_arm(period_us);  // if it cannot, the encoders are read live
+  teensy::sample_clock_arm(period_us);               // if it cannot, the encoders are read live
   const uint32_t ticks_before = teensy::tick_count;  // read first: the first tick comes at once
   const Status started = teensy::flexio::start_frame_clock(period_us);
   if (started != Status::kOk) {

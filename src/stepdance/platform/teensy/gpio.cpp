@@ -18,12 +18,10 @@ uint32_t pad_for(PinMode mode) {
       return iomuxc::kPadKeeperEnable | iomuxc::kPadPullSelect | iomuxc::pad_pull(iomuxc::kPull22kUp) |
              iomuxc::kPadHysteresis;
     case PinMode::kInputPulldown:
-      return iomuxc::kPadKeeperEnable | iomuxc::kPadPullSelect |
-             iomuxc::pad_pull(iomuxc::kPull100kDown) | iomuxc::kPadHysteresis;
-    case PinMode::kOutput:
-      return teensy::kPadOutput;
-    case PinMode::kInput:
-      break;
+      return iomuxc::kPadKeeperEnable | iomuxc::kPadPullSelect | iomuxc::pad_pull(iomuxc::kPull100kDown) |
+             iomuxc::kPadHysteresis;
+    case PinMode::kOutput: return teensy::kPadOutput;
+    case PinMode::kInput: break;
   }
   return teensy::kPadInput;
 }

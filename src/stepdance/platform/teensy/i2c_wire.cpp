@@ -33,7 +33,8 @@ I2cResult run(uint8_t bus, const I2cTransfer& transfer) {
         platform::teensy::services::wire_write(bus, transfer.address, transfer.write, transfer.write_length, !reads));
     if (written != I2cResult::kOk || !reads) return written;
   }
-  const size_t received = platform::teensy::services::wire_read(bus, transfer.address, transfer.read, transfer.read_length);
+  const size_t received =
+      platform::teensy::services::wire_read(bus, transfer.address, transfer.read, transfer.read_length);
   if (received == transfer.read_length) return I2cResult::kOk;
   // Nothing at all after no write: nobody answered the address.
   return received == 0 && transfer.write_length == 0 ? I2cResult::kAddressNack : I2cResult::kBusError;

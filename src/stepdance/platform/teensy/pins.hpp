@@ -45,12 +45,12 @@ constexpr PinInfo emc(uint8_t n) {
 
 /// Pins 0..33 are the same on the Teensy 4.0 and 4.1.
 constexpr PinInfo kCommonPins[34] = {
-    pad::ad_b0(3),  pad::ad_b0(2),  pad::emc(4),    pad::emc(5),    pad::emc(6),    // 0-4
-    pad::emc(8),    pad::b0(10),    pad::b1(1),     pad::b1(0),     pad::b0(11),    // 5-9
-    pad::b0(0),     pad::b0(2),     pad::b0(1),     pad::b0(3),     pad::ad_b1(2),  // 10-14
-    pad::ad_b1(3),  pad::ad_b1(7),  pad::ad_b1(6),  pad::ad_b1(1),  pad::ad_b1(0),  // 15-19
-    pad::ad_b1(10), pad::ad_b1(11), pad::ad_b1(8),  pad::ad_b1(9),  pad::ad_b0(12), // 20-24
-    pad::ad_b0(13), pad::ad_b1(14), pad::ad_b1(15), pad::emc(32),   pad::emc(31),   // 25-29
+    pad::ad_b0(3),  pad::ad_b0(2),  pad::emc(4),    pad::emc(5),   pad::emc(6),     // 0-4
+    pad::emc(8),    pad::b0(10),    pad::b1(1),     pad::b1(0),    pad::b0(11),     // 5-9
+    pad::b0(0),     pad::b0(2),     pad::b0(1),     pad::b0(3),    pad::ad_b1(2),   // 10-14
+    pad::ad_b1(3),  pad::ad_b1(7),  pad::ad_b1(6),  pad::ad_b1(1), pad::ad_b1(0),   // 15-19
+    pad::ad_b1(10), pad::ad_b1(11), pad::ad_b1(8),  pad::ad_b1(9), pad::ad_b0(12),  // 20-24
+    pad::ad_b0(13), pad::ad_b1(14), pad::ad_b1(15), pad::emc(32),  pad::emc(31),    // 25-29
     pad::emc(37),   pad::emc(36),   pad::b0(12),    pad::emc(7),                    // 30-33
 };
 
@@ -62,7 +62,7 @@ constexpr PinInfo kBoardPins[6] = {pad::sd_b0(3), pad::sd_b0(2), pad::sd_b0(1),
 inline constexpr const TeensyPinout& kThisTeensy = kTeensy40;
 #else
 /// Teensy 4.1 pins 34..41.
-constexpr PinInfo kBoardPins[8] = {pad::b1(13),  pad::b1(12), pad::b1(2),  pad::b1(3),
+constexpr PinInfo kBoardPins[8] = {pad::b1(13),    pad::b1(12),    pad::b1(2),    pad::b1(3),
                                    pad::ad_b1(12), pad::ad_b1(13), pad::ad_b1(4), pad::ad_b1(5)};
 inline constexpr const TeensyPinout& kThisTeensy = kTeensy41;
 #endif

@@ -123,7 +123,7 @@ Status quadrature_begin(uint8_t index) {
   teensy::attach_phase(wiring.a);
   teensy::attach_phase(wiring.b);
   CriticalSection guard;
-  enc::ctrl(index) = 0;  // quadrature mode (x4: every edge counts), no interrupts
+  enc::ctrl(index) = 0;                                 // quadrature mode (x4: every edge counts), no interrupts
   enc::ctrl2(index) = enc::kCtrl2UpdateHoldsOnTrigger;  // free 32-bit counter, sampled on TRIGGER
   teensy::xbar1::connect(teensy::xbar1::in_pit_trigger(teensy::kSampleClockPitChannel), wiring.trigger_output);
   enc::umod(index) = 0;

@@ -24,13 +24,13 @@ inline Reg32 hs(unsigned module) { return reg32(base(module) + 0x20u); }
 inline Reg32 r0(unsigned module) { return reg32(base(module) + 0x24u); }
 /// CFG: configuration. ADC_CFG.
 inline Reg32 cfg(unsigned module) { return reg32(base(module) + 0x44u); }
-constexpr uint32_t cfg_input_clock(uint32_t adiclk) { return adiclk & 3u; }      // ADICLK: 1 = IPG/2
-constexpr uint32_t cfg_mode(uint32_t mode) { return (mode & 3u) << 2; }          // MODE: 1 = 10-bit
-constexpr uint32_t kCfgLongSample = 1u << 4;                                     // ADLSMP
-constexpr uint32_t cfg_divider(uint32_t adiv) { return (adiv & 3u) << 5; }       // ADIV: 3 = /8
+constexpr uint32_t cfg_input_clock(uint32_t adiclk) { return adiclk & 3u; }       // ADICLK: 1 = IPG/2
+constexpr uint32_t cfg_mode(uint32_t mode) { return (mode & 3u) << 2; }           // MODE: 1 = 10-bit
+constexpr uint32_t kCfgLongSample = 1u << 4;                                      // ADLSMP
+constexpr uint32_t cfg_divider(uint32_t adiv) { return (adiv & 3u) << 5; }        // ADIV: 3 = /8
 constexpr uint32_t cfg_sample_time(uint32_t adsts) { return (adsts & 3u) << 8; }  // ADSTS
-constexpr uint32_t cfg_average(uint32_t avgs) { return (avgs & 3u) << 14; }      // AVGS: 3 = 32
-constexpr uint32_t kCfgOverwrite = 1u << 16;                                     // OVWREN
+constexpr uint32_t cfg_average(uint32_t avgs) { return (avgs & 3u) << 14; }       // AVGS: 3 = 32
+constexpr uint32_t kCfgOverwrite = 1u << 16;                                      // OVWREN
 /// GC: general control. ADC_GC.
 inline Reg32 gc(unsigned module) { return reg32(base(module) + 0x48u); }
 constexpr uint32_t kGcAverageEnable = 1u << 5;  // AVGE

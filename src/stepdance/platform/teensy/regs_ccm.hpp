@@ -19,15 +19,15 @@ constexpr uint32_t kCscmr1PerclkPodfMask = 0x3Fu;  // PERCLK_PODF, bits 5:0, div
 
 /// CSCMR2: serial clock multiplexer 2. RM §14.7, CCM_CSCMR2.
 inline Reg32 cscmr2() { return reg32(kBase + 0x20u); }
-constexpr unsigned kCscmr2Flexio2SelShift = 19;     // FLEXIO2_CLK_SEL, bits 20:19
+constexpr unsigned kCscmr2Flexio2SelShift = 19;  // FLEXIO2_CLK_SEL, bits 20:19
 constexpr uint32_t kCscmr2Flexio2SelMask = 3u << 19;
-constexpr uint32_t kFlexio2SelPll3 = 3;             // 3 = PLL3 (480 MHz, USB1 PLL)
+constexpr uint32_t kFlexio2SelPll3 = 3;  // 3 = PLL3 (480 MHz, USB1 PLL)
 
 /// CS1CDR: clock divider for FlexIO2 (which also clocks FlexIO3). RM §14.7, CCM_CS1CDR.
 inline Reg32 cs1cdr() { return reg32(kBase + 0x28u); }
-constexpr unsigned kCs1cdrFlexio2PodfShift = 25;    // FLEXIO2_CLK_PODF, bits 27:25, divide by (n+1)
+constexpr unsigned kCs1cdrFlexio2PodfShift = 25;  // FLEXIO2_CLK_PODF, bits 27:25, divide by (n+1)
 constexpr uint32_t kCs1cdrFlexio2PodfMask = 7u << 25;
-constexpr unsigned kCs1cdrFlexio2PredShift = 9;     // FLEXIO2_CLK_PRED, bits 11:9, divide by (n+1)
+constexpr unsigned kCs1cdrFlexio2PredShift = 9;  // FLEXIO2_CLK_PRED, bits 11:9, divide by (n+1)
 constexpr uint32_t kCs1cdrFlexio2PredMask = 7u << 9;
 
 /// CCGRn: clock gating registers, two bits per gate (CGx at bits 2x+1:2x). RM §14.7, CCM_CCGR0..7.

@@ -35,7 +35,9 @@ class Register {
     write(address_, sizeof(T), static_cast<T>(value));
     return *this;
   }
-  const Register& operator=(const Register& other) const { return *this = static_cast<uint32_t>(static_cast<T>(other)); }
+  const Register& operator=(const Register& other) const {
+    return *this = static_cast<uint32_t>(static_cast<T>(other));
+  }
   const Register& operator|=(uint32_t bits) const { return *this = static_cast<T>(*this) | bits; }
   const Register& operator&=(uint32_t bits) const { return *this = static_cast<T>(*this) & bits; }
 

@@ -45,9 +45,7 @@ inline uint32_t basepri() {
 inline void set_basepri(uint32_t value) { __asm__ volatile("msr basepri, %0" ::"r"(value) : "memory"); }
 /// BASEPRI_MAX: raises the masking level to `value`, never lowers it. The ISB makes the new level
 /// apply to the next instruction (ARMv7-M ARM §B5.2.3).
-inline void raise_basepri(uint32_t value) {
-  __asm__ volatile("msr basepri_max, %0\n\tisb" ::"r"(value) : "memory");
-}
+inline void raise_basepri(uint32_t value) { __asm__ volatile("msr basepri_max, %0\n\tisb" ::"r"(value) : "memory"); }
 /// IPSR: the number of the exception being handled, 0 in thread mode.
 inline uint32_t ipsr() {
   uint32_t value;

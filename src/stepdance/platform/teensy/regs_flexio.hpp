@@ -14,8 +14,8 @@ constexpr uint32_t kBase = 0x42020000u;  // RM §50.5, FLEXIO3 base address
 
 /// CTRL: module control. RM §50.5, FLEXIO_CTRL.
 inline Reg32 ctrl() { return reg32(kBase + 0x008u); }
-constexpr uint32_t kCtrlEnable = 1u << 0;      // FLEXEN
-constexpr uint32_t kCtrlSoftReset = 1u << 1;   // SWRST
+constexpr uint32_t kCtrlEnable = 1u << 0;     // FLEXEN
+constexpr uint32_t kCtrlSoftReset = 1u << 1;  // SWRST
 
 /// SHIFTSTAT: shifter status flags, one bit per shifter. RM §50.5, FLEXIO_SHIFTSTAT.
 inline Reg32 shiftstat() { return reg32(kBase + 0x010u); }
@@ -28,7 +28,7 @@ inline Reg32 timien() { return reg32(kBase + 0x028u); }
 
 /// SHIFTCTLn: shifter control. RM §50.5, FLEXIO_SHIFTCTLn.
 inline Reg32 shiftctl(unsigned n) { return reg32(kBase + 0x080u + 4u * n); }
-constexpr uint32_t shiftctl_timer(uint32_t timer) { return (timer & 7u) << 24;}  // TIMSEL
+constexpr uint32_t shiftctl_timer(uint32_t timer) { return (timer & 7u) << 24; }  // TIMSEL
 constexpr uint32_t kShiftctlPinOutput = 3u << 16;                                 // PINCFG = output
 constexpr uint32_t shiftctl_pin(uint32_t pin) { return (pin & 0x1Fu) << 8; }      // PINSEL
 constexpr uint32_t kShiftctlTransmit = 2u;                                        // SMOD = transmit
@@ -43,8 +43,8 @@ inline Reg32 shiftbuf(unsigned n) { return reg32(kBase + 0x200u + 4u * n); }
 inline Reg32 timctl(unsigned n) { return reg32(kBase + 0x400u + 4u * n); }
 constexpr uint32_t timctl_trigger_timer(uint32_t timer) { return ((4u * timer + 3u) & 0x3Fu) << 24; }  // TRGSEL
 constexpr uint32_t kTimctlTriggerActiveLow = 1u << 23;  // TRGPOL: trigger inverted
-constexpr uint32_t kTimctlTriggerInternal = 1u << 22;  // TRGSRC
-constexpr uint32_t kTimodDisabled = 0u;                // TIMOD
+constexpr uint32_t kTimctlTriggerInternal = 1u << 22;   // TRGSRC
+constexpr uint32_t kTimodDisabled = 0u;                 // TIMOD
 constexpr uint32_t kTimodDual8Baud = 1u;
 constexpr uint32_t kTimod16Bit = 3u;
 constexpr uint32_t kTimodMask = 3u;

@@ -35,16 +35,16 @@ constexpr uint32_t kAltGpio = 5;     // ALT5 is GPIO on every pad we use
 constexpr uint32_t kAltFlexio3 = 9;  // ALT9 is FlexIO3 on the AD_B1 and B1 pads we use
 
 // SW_PAD_CTL_PAD fields (RM §11.7).
-constexpr uint32_t kPadSlewFast = 1u << 0;                           // SRE
-constexpr uint32_t pad_drive(uint32_t dse) { return (dse & 7u) << 3; }   // DSE: R0/dse, 0 = output off
+constexpr uint32_t kPadSlewFast = 1u << 0;                                  // SRE
+constexpr uint32_t pad_drive(uint32_t dse) { return (dse & 7u) << 3; }      // DSE: R0/dse, 0 = output off
 constexpr uint32_t pad_speed(uint32_t speed) { return (speed & 3u) << 6; }  // SPEED
-constexpr uint32_t kPadOpenDrain = 1u << 11;                         // ODE
-constexpr uint32_t kPadKeeperEnable = 1u << 12;                      // PKE
-constexpr uint32_t kPadPullSelect = 1u << 13;                        // PUE: 1 = pull, 0 = keeper
-constexpr uint32_t pad_pull(uint32_t pus) { return (pus & 3u) << 14; }  // PUS
+constexpr uint32_t kPadOpenDrain = 1u << 11;                                // ODE
+constexpr uint32_t kPadKeeperEnable = 1u << 12;                             // PKE
+constexpr uint32_t kPadPullSelect = 1u << 13;                               // PUE: 1 = pull, 0 = keeper
+constexpr uint32_t pad_pull(uint32_t pus) { return (pus & 3u) << 14; }      // PUS
 constexpr uint32_t kPull100kDown = 0;
 constexpr uint32_t kPull22kUp = 3;
-constexpr uint32_t kPadHysteresis = 1u << 16;                        // HYS
+constexpr uint32_t kPadHysteresis = 1u << 16;  // HYS
 
 // ---- Input (daisy) selects, at kBase + offset. RM §11.7, IOMUXC_*_SELECT_INPUT.
 constexpr uint16_t kSelectFlexpwm1PwmA3 = 0x454;
@@ -65,9 +65,7 @@ inline Reg32 gpr6() { return reg32(kGprBase + 0x18u); }
 constexpr uint32_t gpr6_xbar_output(unsigned inout) { return 1u << (inout + 12u); }
 
 /// GPR26..GPR29: per-bit choice between GPIO1..4 (0) and the fast GPIO6..9 (1).
-inline Reg32 gpr_fast_gpio_select(unsigned fast_gpio_index) {
-  return reg32(kGprBase + 0x68u + 4u * fast_gpio_index);
-}
+inline Reg32 gpr_fast_gpio_select(unsigned fast_gpio_index) { return reg32(kGprBase + 0x68u + 4u * fast_gpio_index); }
 
 }  // namespace stepdance::platform::teensy::regs::iomuxc
 

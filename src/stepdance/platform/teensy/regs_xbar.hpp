@@ -1,5 +1,5 @@
-// XBARA1: routes the encoder pads to the ENC phase inputs, and the sample clock to their TRIGGER. RM chapter 61 (XBAR), memory map §61.4;
-// input and output numbers from RM chapter 4 (XBAR1 input/output assignments).
+// XBARA1: routes the encoder pads to the ENC phase inputs, and the sample clock to their TRIGGER. RM chapter 61 (XBAR),
+// memory map §61.4; input and output numbers from RM chapter 4 (XBAR1 input/output assignments).
 #pragma once
 
 #if defined(__IMXRT1062__)

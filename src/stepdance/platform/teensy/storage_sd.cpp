@@ -8,8 +8,8 @@
 // Context: loop only; card operations may block for milliseconds.
 #if defined(__IMXRT1062__)
 
-#include <new>
 #include <string.h>
+#include <new>
 
 #include "stepdance/core/byte_stream.hpp"
 #include "stepdance/hal/storage.hpp"

@@ -80,9 +80,7 @@ inline bool sd_begin_builtin(SdVolume& sd) {
 
 /// Opens `name` for reading, for writing from empty, or for writing at its end (created if
 /// needed). Context: loop.
-inline bool sd_open_read(SdVolume& sd, SdFile& file, const char* name) {
-  return file.open(&sd.volume, name, O_RDONLY);
-}
+inline bool sd_open_read(SdVolume& sd, SdFile& file, const char* name) { return file.open(&sd.volume, name, O_RDONLY); }
 inline bool sd_open_truncate(SdVolume& sd, SdFile& file, const char* name) {
   return file.open(&sd.volume, name, O_WRONLY | O_CREAT | O_TRUNC);
 }

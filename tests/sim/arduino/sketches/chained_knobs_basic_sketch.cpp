@@ -126,10 +126,9 @@ TEST_F(ChainedKnobsBasicTest, AReceiverDecodesExactlyWhatWasSent) {
     stepdance::protocol::WirePulse pulses[16];
     const size_t count = stepdance::protocol::read_wire_pulses(last_frame(kPortA), pulses, 16);
     for (size_t i = 0; i < count; ++i) {
-      const auto captured = stepdance::protocol::capture_wire_pulse(
-          pulses[i], clock, frame_start_ticks, stepdance::protocol::DirSampleEdge::kFalling);
-      const auto pulse =
-          stepdance::protocol::decode_pulse(captured, clock, INPUT_MODE_STEPDANCE, SIGNAL_X);
+      const auto captured = stepdance::protocol::capture_wire_pulse(pulses[i], clock, frame_start_ticks,
+                                                                    stepdance::protocol::DirSampleEdge::kFalling);
+      const auto pulse = stepdance::protocol::decode_pulse(captured, clock, INPUT_MODE_STEPDANCE, SIGNAL_X);
       if (pulse.verdict != stepdance::protocol::PulseVerdict::kAccepted) {
         ++rejected;
         continue;

@@ -16,7 +16,7 @@ using stepdance::hal_manual::run_frames;
 using stepdance::protocol::CapturedPulse;
 
 constexpr uint8_t kInputA = 0;
-constexpr uint8_t kButtonPin = 28;  // D1 on the Driver Module
+constexpr uint8_t kButtonPin = 28;     // D1 on the Driver Module
 constexpr uint32_t kTicksPerUs = 150;  // the manual backend's capture clock
 
 // Runs frames in 1 ms slices, calling the sketch's loop() after each, as the board does.
@@ -117,9 +117,8 @@ TEST_F(ChainedPlotterDriverTest, FramesFromTheKnobsModuleDriveMotorB) {
   uint32_t frame_start_ticks = 0;
   for (uint32_t i = 0; i < 100; ++i) {
     for (size_t p = 0; p < count; ++p) {
-      inject_pulse(kInputA, stepdance::protocol::capture_wire_pulse(
-                                pulses[p], clock, frame_start_ticks,
-                                stepdance::protocol::DirSampleEdge::kFalling));
+      inject_pulse(kInputA, stepdance::protocol::capture_wire_pulse(pulses[p], clock, frame_start_ticks,
+                                                                    stepdance::protocol::DirSampleEdge::kFalling));
     }
     run_frames(1);
     frame_start_ticks = (frame_start_ticks + 40 * kTicksPerUs) & clock.counter_mask;

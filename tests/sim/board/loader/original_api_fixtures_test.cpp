@@ -24,9 +24,8 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kFixtures = fs::path(STEPDANCE_SOURCE_DIR) / "tests/sim/assembly/fixtures/original_api";
-const std::vector<std::string> kFixtureNames = {"CoreDriver", "CoreBasic", "CoreAdditions",
-                                                "Generators", "Filters",   "Kinematics",
-                                                "Recording",  "Homing"};
+const std::vector<std::string> kFixtureNames = {"CoreDriver", "CoreBasic",  "CoreAdditions", "Generators",
+                                                "Filters",    "Kinematics", "Recording",     "Homing"};
 
 // The names after "// waits-for:" on the fixture's first line.
 std::vector<std::string> waits_for(const std::string& name) {
@@ -97,17 +96,20 @@ TEST(OriginalApiFixtures, EveryFixtureFolderIsBuilt) {
 
 TEST(OriginalApiFixtures, AWaitedNameOnlyExcusesItsOwnAbsence) {
   const std::vector<std::string> waited = {"VelocityGenerator", "AnalogInput::last_value_raw"};
-  EXPECT_TRUE(only_waiting("a.ino:3:1: error: \u2018VelocityGenerator\u2019 does not name a type\n"
-                           "a.ino:9:3: error: \u2018spin\u2019 was not declared in this scope\n",
-                           waited));
-  EXPECT_TRUE(only_waiting("a.ino:4:9: error: \u2018class stepdance::AnalogInput\u2019 has no member named "
-                           "\u2018last_value_raw\u2019\n",
-                           waited));
+  EXPECT_TRUE(
+      only_waiting("a.ino:3:1: error: \u2018VelocityGenerator\u2019 does not name a type\n"
+                   "a.ino:9:3: error: \u2018spin\u2019 was not declared in this scope\n",
+                   waited));
+  EXPECT_TRUE(
+      only_waiting("a.ino:4:9: error: \u2018class stepdance::AnalogInput\u2019 has no member named "
+                   "\u2018last_value_raw\u2019\n",
+                   waited));
   EXPECT_TRUE(only_waiting("a.ino:3:1: error: 'VelocityGenerator' does not name a type\n", waited));  // C locale
   // The class exists now, but a member the sketches use does not: a real failure.
-  EXPECT_FALSE(only_waiting("a.ino:5:9: error: \u2018class stepdance::VelocityGenerator\u2019 has no member named "
-                            "\u2018speed_units_per_sec\u2019\n",
-                            waited));
+  EXPECT_FALSE(
+      only_waiting("a.ino:5:9: error: \u2018class stepdance::VelocityGenerator\u2019 has no member named "
+                   "\u2018speed_units_per_sec\u2019\n",
+                   waited));
   // Only consequences, no waited-for name: something else is wrong.
   EXPECT_FALSE(only_waiting("a.ino:9:3: error: \u2018spin\u2019 was not declared in this scope\n", waited));
 }

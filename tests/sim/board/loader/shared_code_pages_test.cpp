@@ -54,7 +54,8 @@ std::unique_ptr<BoardLibrary> load(const std::string& path) {
 }
 
 TEST(SharedCodePages, EveryBoardOfOneLibraryRunsTheOriginalFilesCodePages) {
-  const SketchBuild build = SketchBuilder(STEPDANCE_BUILD_DIR "/sketch-cache").build(STEPDANCE_SOURCE_DIR "/examples/StepASketch/StepASketch.ino");
+  const SketchBuild build = SketchBuilder(STEPDANCE_BUILD_DIR "/sketch-cache")
+                                .build(STEPDANCE_SOURCE_DIR "/examples/StepASketch/StepASketch.ino");
   ASSERT_TRUE(build.ok) << build.error;
   const uint64_t original_inode = inode_of(build.library_path);
   ASSERT_NE(original_inode, 0u);
@@ -83,7 +84,8 @@ TEST(SharedCodePages, EveryBoardOfOneLibraryRunsTheOriginalFilesCodePages) {
 TEST(SharedCodePages, BoardsSharingCodeStillKeepTheirOwnGlobalsAndRunAsAlone) {
   // StepASketch's ±0.01 mm/count knob and 80 steps/mm: 50 counts → 40 steps, -25 → 20 steps
   // back; three boards of one library, run together, each as one board alone would.
-  const SketchBuild build = SketchBuilder(STEPDANCE_BUILD_DIR "/sketch-cache").build(STEPDANCE_SOURCE_DIR "/examples/StepASketch/StepASketch.ino");
+  const SketchBuild build = SketchBuilder(STEPDANCE_BUILD_DIR "/sketch-cache")
+                                .build(STEPDANCE_SOURCE_DIR "/examples/StepASketch/StepASketch.ino");
   ASSERT_TRUE(build.ok) << build.error;
   Scheduler scheduler;
   std::unique_ptr<SimBoard> boards[3];

@@ -16,7 +16,8 @@ std::vector<std::string> prototypes_of(const std::string& text) {
 }
 
 TEST(SketchPrototypes, PlainFunctionsInOrderWithTheirLines) {
-  const SketchScan scan = scan_sketch_functions("int x = 3;\n\nvoid setup() {\n  go(1);\n}\n\nvoid go(int steps) { x += steps; }\n");
+  const SketchScan scan =
+      scan_sketch_functions("int x = 3;\n\nvoid setup() {\n  go(1);\n}\n\nvoid go(int steps) { x += steps; }\n");
   ASSERT_EQ(scan.functions.size(), 2u);
   EXPECT_EQ(scan.functions[0].prototype, "void setup();");
   EXPECT_EQ(scan.functions[1].prototype, "void go(int steps);");
@@ -45,10 +46,11 @@ TEST(SketchPrototypes, ReturnTypesAndAttributesAsSketchesWriteThem) {
       "FASTRUN void on_frame(void) {}\n"
       "extern \"C\" int from_c(void) { return 1; }\n"
       "__attribute__((noinline)) volatile float64_t *level_ptr() { return &level; }\n";
-  EXPECT_EQ(prototypes_of(text), (std::vector<std::string>{"char * name_of(int pin);", "const String & label();",
-                                                           "unsigned long elapsed_since(unsigned long start);",
-                                                           "FASTRUN void on_frame(void);", "extern \"C\" int from_c(void);",
-                                                           "__attribute__((noinline)) volatile float64_t * level_ptr();"}));
+  EXPECT_EQ(prototypes_of(text),
+            (std::vector<std::string>{"char * name_of(int pin);", "const String & label();",
+                                      "unsigned long elapsed_since(unsigned long start);",
+                                      "FASTRUN void on_frame(void);", "extern \"C\" int from_c(void);",
+                                      "__attribute__((noinline)) volatile float64_t * level_ptr();"}));
   EXPECT_EQ(scan_sketch_functions(text).functions[2].line, 4u);  // the name's line, not the type's
 }
 
@@ -138,9 +140,10 @@ TEST(SketchPrototypes, UnbalancedTextDoesNotCrash) {
 }
 
 TEST(SketchPrototypes, RandomTokenSoupNeverCrashesAndStaysInBounds) {
-  static const char* const kPieces[] = {"void ", "int ", "f", "g", "(", ")", "{", "}", ";", ",", "=", "<", ">",
-                                        "::", "template ", "\"", "'", "/*", "*/", "//", "\n", "#if X\n",
-                                        "#else\n", "#endif\n", "\\\n", "R\"(", ")\"", "1'0", " "};
+  static const char* const kPieces[] = {"void ", "int ", "f",   "g",   "(",  ")",       "{",         "}",
+                                        ";",     ",",    "=",   "<",   ">",  "::",      "template ", "\"",
+                                        "'",     "/*",   "*/",  "//",  "\n", "#if X\n", "#else\n",   "#endif\n",
+                                        "\\\n",  "R\"(", ")\"", "1'0", " "};
   uint32_t state = 12345;  // a fixed linear congruential sequence: the same soup on every run
   for (int round = 0; round < 2000; ++round) {
     std::string text;

@@ -73,13 +73,13 @@ TEST(SketchSources, AnInoNotNamedAfterItsFolderStandsAlone) {
 
 TEST(SketchAssembly, PrototypesGoBeforeTheFirstDefinitionUnderTheirConditionsWithLineDirectives) {
   const std::string main_ino =
-      "#include \"pins.h\"\n"       // 1
-      "int counter = 0;\n"          // 2
-      "void setup() { later(); }\n"  // 3
-      "#ifdef FAST\n"               // 4
+      "#include \"pins.h\"\n"                      // 1
+      "int counter = 0;\n"                         // 2
+      "void setup() { later(); }\n"                // 3
+      "#ifdef FAST\n"                              // 4
       "void later(int n = 2) { counter += n; }\n"  // 5
-      "#endif\n";                   // 6
-  const std::string second = "void loop() {}";  // no final newline
+      "#endif\n";                                  // 6
+  const std::string second = "void loop() {}";     // no final newline
   const std::string text = assemble_sketch({{"/s/Main.ino", main_ino}, {"/s/b \"q\".ino", second}});
   const std::string expected =
       "#include <Arduino.h>\n"

@@ -18,8 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 std::vector<std::string> run_fixture(const std::string& storage_dir, SimTime until) {
-  const SketchBuild build =
-      SketchBuilder(STEPDANCE_BUILD_DIR "/sketch-cache").build(STEPDANCE_SOURCE_DIR "/tests/sim/assembly/fixtures/TeensyExtras");
+  const SketchBuild build = SketchBuilder(STEPDANCE_BUILD_DIR "/sketch-cache")
+                                .build(STEPDANCE_SOURCE_DIR "/tests/sim/assembly/fixtures/TeensyExtras");
   EXPECT_TRUE(build.ok) << build.error;
   if (!build.ok) return {};
   std::string error;

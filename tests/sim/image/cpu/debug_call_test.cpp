@@ -29,7 +29,8 @@ class DebugCall : public ::testing::Test {
   }
   bool call(const std::string& function, const std::array<uint32_t, 4>& args) {
     error.clear();
-    return fixture.chip->call_function(fixture.address_of(function), args, [this] { on_callout(); }, error);
+    return fixture.chip->call_function(
+        fixture.address_of(function), args, [this] { on_callout(); }, error);
   }
   void on_callout() {
     ImageChip& chip = *fixture.chip;
@@ -65,7 +66,7 @@ TEST_F(DebugCall, PassesFourArgumentsInR0ToR3) {
 
 TEST_F(DebugCall, LeavesRegistersTimeAndCountsAsTheyWere) {
   ImageChip& chip = *fixture.chip;
-  const int registers[] = {UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3, UC_ARM_REG_R12,
+  const int registers[] = {UC_ARM_REG_R0, UC_ARM_REG_R1, UC_ARM_REG_R2, UC_ARM_REG_R3,  UC_ARM_REG_R12,
                            UC_ARM_REG_SP, UC_ARM_REG_LR, UC_ARM_REG_PC, UC_ARM_REG_XPSR};
   std::vector<uint32_t> before;
   for (int reg : registers) before.push_back(chip.read_register(reg));

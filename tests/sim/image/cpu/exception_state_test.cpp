@@ -35,7 +35,7 @@ TEST(ExceptionState, SubpriorityDoesNotPreempt) {
   state.activate(irq(0));
   state.set_pending(irq(1), true);
   EXPECT_EQ(state.next_to_take(Masks{}), 0u);  // 0x00 and 0x40 are both group 0
-  state.set_priority_group(5);                   // group = bits [7:6]: now 0x00 < 0x40
+  state.set_priority_group(5);                 // group = bits [7:6]: now 0x00 < 0x40
   EXPECT_EQ(state.next_to_take(Masks{}), irq(1));
 }
 
@@ -49,7 +49,7 @@ TEST(ExceptionState, MasksHoldOffByPriority) {
   EXPECT_EQ(state.next_to_take(Masks{false, false, 0x50}), irq(0));
   state.set_pending(kHardFault, true);
   EXPECT_EQ(state.next_to_take(Masks{true, false, 0}), static_cast<unsigned>(kHardFault));
-  EXPECT_EQ(state.next_to_take(Masks{false, true, 0}), 0u);      // FAULTMASK: not even HardFault
+  EXPECT_EQ(state.next_to_take(Masks{false, true, 0}), 0u);  // FAULTMASK: not even HardFault
 }
 
 TEST(ExceptionState, AHighLevelPendsAgainAfterItsHandler) {

@@ -45,7 +45,7 @@ TEST(ImageChipFault, AnUndefinedInstructionIsAUsageFault) {
   EXPECT_EQ(stop.exit_code, 5);
   uint16_t instruction = 0;
   ASSERT_TRUE(f.chip->read_memory(stop.pc, &instruction, 2));
-  EXPECT_EQ(instruction, 0xDE07);  // the UDF #7 itself
+  EXPECT_EQ(instruction, 0xDE07);                                   // the UDF #7 itself
   EXPECT_EQ(f.chip->core_registers().cfsr & (1u << 16), 1u << 16);  // UFSR.UNDEFINSTR
 }
 
@@ -67,7 +67,7 @@ TEST(ImageChipFault, ADivideByZeroWithDiv0TrpIsAUsageFault) {
   expect_in(f, stop, "divide_here");
   uint16_t instruction = 0;
   ASSERT_TRUE(f.chip->read_memory(stop.pc, &instruction, 2));
-  EXPECT_EQ(instruction & 0xFFF0, 0xFB90);  // SDIV
+  EXPECT_EQ(instruction & 0xFFF0, 0xFB90);                          // SDIV
   EXPECT_EQ(f.chip->core_registers().cfsr & (1u << 25), 1u << 25);  // UFSR.DIVBYZERO
 }
 

@@ -24,8 +24,8 @@ TEST(ImageChipDouble, ALoopOfDoubleArithmeticGivesExactResultsAndCountsEachInstr
   ASSERT_TRUE(f.boot_with_device());
   f.scheduler.run_until(100 * kMicrosecond);  // 10048 instructions at 396 MHz: 25.4 µs
   ASSERT_TRUE(f.stops.empty()) << f.stops[0].what << " at " << f.stops[0].symbol;
-  const std::vector<TestDevice::Mark> expected{
-      {1, 18}, {501, 10033}, {251250, 10036}, {0xFFFFFFFF, 10039}, {3, 10045}, {0x80000000, 10047}};
+  const std::vector<TestDevice::Mark> expected{{1, 18},    {501, 10033},       {251250, 10036}, {0xFFFFFFFF, 10039},
+                                               {3, 10045}, {0x80000000, 10047}};
   EXPECT_EQ(f.device->marks, expected);
 }
 

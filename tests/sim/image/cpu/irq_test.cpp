@@ -42,17 +42,17 @@ TEST(ImageChipIrq, EntersAtThePendingCycleWithIpsrSet) {
 TEST(ImageChipIrq, AHigherGroupPriorityPreemptsALowerOneWaits) {
   IrqFixture f;
   ASSERT_TRUE(f.boot_with_device("irq_nesting"));
-  const uint64_t c1 = 7920;               // IRQ 4 at 20 µs
+  const uint64_t c1 = 7920;  // IRQ 4 at 20 µs
   f.pend_at(20 * kMicrosecond, 4);
-  f.pend_at(20100, 6);                    // lower priority than 4: waits
-  f.pend_at(20254, 5);                    // cycle ceil(20254 · 0.396) = 8021 = c1 + 101: a loop block's start (5 + 2k)
+  f.pend_at(20100, 6);  // lower priority than 4: waits
+  f.pend_at(20254, 5);  // cycle ceil(20254 · 0.396) = 8021 = c1 + 101: a loop block's start (5 + 2k)
   f.run_until(40 * kMicrosecond);
   const std::vector<uint32_t> order{40, 50, 41, 60};
   EXPECT_EQ(f.device->values(), order);
   EXPECT_EQ(f.device->cycle_of(40), c1 + 1);
   EXPECT_EQ(f.device->cycle_of(50), 8021u + 1);
-  EXPECT_EQ(f.device->cycle_of(41), c1 + 204 + 5);      // IRQ 5's 5 instructions inside
-  EXPECT_EQ(f.device->cycle_of(60), c1 + 208 + 5 + 1);  // taken as IRQ 4 returns
+  EXPECT_EQ(f.device->cycle_of(41), c1 + 204 + 5);         // IRQ 5's 5 instructions inside
+  EXPECT_EQ(f.device->cycle_of(60), c1 + 208 + 5 + 1);     // taken as IRQ 4 returns
   EXPECT_EQ(f.chip->handler_cost(20).instructions, 208u);  // nested ones excluded
   EXPECT_EQ(f.chip->handler_cost(21).instructions, 5u);
   EXPECT_EQ(f.chip->handler_cost(22).instructions, 5u);

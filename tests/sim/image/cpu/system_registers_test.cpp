@@ -26,16 +26,16 @@ struct Core {
 
 TEST(ImageCoreRegisters, ScbResetValuesAndKeys) {
   Core core;
-  EXPECT_EQ(core.read(0xE000ED00), 0x411FC271u);  // CPUID: Arm, r1p1, Cortex-M7 (0xC27)
-  EXPECT_EQ(core.read(0xE000ED14), 0x00040200u);  // CCR: BP, STKALIGN (M7 TRM)
+  EXPECT_EQ(core.read(0xE000ED00), 0x411FC271u);    // CPUID: Arm, r1p1, Cortex-M7 (0xC27)
+  EXPECT_EQ(core.read(0xE000ED14), 0x00040200u);    // CCR: BP, STKALIGN (M7 TRM)
   EXPECT_EQ(core.read(0xE000ED0C) >> 16, 0xFA05u);  // AIRCR reads VECTKEYSTAT
-  core.write(0xE000ED0C, 0x00000500);                // no key: ignored
+  core.write(0xE000ED0C, 0x00000500);               // no key: ignored
   EXPECT_EQ((core.read(0xE000ED0C) >> 8) & 7, 0u);
-  core.write(0xE000ED0C, 0x05FA0500);                // PRIGROUP 5
+  core.write(0xE000ED0C, 0x05FA0500);  // PRIGROUP 5
   EXPECT_EQ((core.read(0xE000ED0C) >> 8) & 7, 5u);
-  core.write(0xE000ED08, 0x20001234);                // VTOR: TBLOFF is bits [31:7]
+  core.write(0xE000ED08, 0x20001234);  // VTOR: TBLOFF is bits [31:7]
   EXPECT_EQ(core.read(0xE000ED08), 0x20001200u);
-  core.write(0xE000ED20, 0x20200000);                // SHPR3: SysTick and PendSV priority 32
+  core.write(0xE000ED20, 0x20200000);  // SHPR3: SysTick and PendSV priority 32
   EXPECT_EQ(core.chip.exceptions().priority(15), 0x20);
   EXPECT_EQ(core.chip.exceptions().priority(14), 0x20);
 }
@@ -49,18 +49,18 @@ TEST(ImageCoreRegisters, NvicHas160LinesAndFourPriorityBits) {
   EXPECT_EQ(core.read(0xE000E100 + 5 * 4), 0u);
   core.write(0xE000E180 + 4 * 4, 0x00000001);  // ICER4: IRQ 128 off
   EXPECT_EQ(core.read(0xE000E100 + 4 * 4), 0xFFFFFFFEu);
-  core.write(0xE000E400 + 7, 0xFF, 1);         // IPR byte of IRQ 7: low 4 bits read zero
+  core.write(0xE000E400 + 7, 0xFF, 1);  // IPR byte of IRQ 7: low 4 bits read zero
   EXPECT_EQ(core.read(0xE000E400 + 4), 0xF0000000u);
-  core.write(0xE000E200, 0x4);                 // ISPR0: IRQ 2 pending
+  core.write(0xE000E200, 0x4);  // ISPR0: IRQ 2 pending
   EXPECT_TRUE(core.chip.exceptions().pending(18));
-  EXPECT_EQ(core.read(0xE000E280), 0x4u);      // ICPR reads the pending bits too
+  EXPECT_EQ(core.read(0xE000E280), 0x4u);  // ICPR reads the pending bits too
 }
 
 TEST(ImageCoreRegisters, SysTickOnTheExternalReferenceReachesZeroEveryHundredTicks) {
   Core core;
-  core.write(0xE000E014, 99);  // RVR: 100 ticks of 10 µs = 1 ms
-  core.write(0xE000E018, 0);   // CVR cleared at t = 0 (tick 0)
-  core.write(0xE000E010, 3);   // ENABLE | TICKINT, CLKSOURCE 0: the 100 kHz reference
+  core.write(0xE000E014, 99);                    // RVR: 100 ticks of 10 µs = 1 ms
+  core.write(0xE000E018, 0);                     // CVR cleared at t = 0 (tick 0)
+  core.write(0xE000E010, 3);                     // ENABLE | TICKINT, CLKSOURCE 0: the 100 kHz reference
   core.scheduler.run_until(500 * kMicrosecond);  // tick 50: reloaded at tick 1 to 99, then 49 down
   EXPECT_EQ(core.read(0xE000E018), 50u);
   EXPECT_FALSE(core.chip.exceptions().pending(15));
@@ -81,7 +81,7 @@ TEST(ImageCoreRegisters, DwtCountsOnlyWithTrcenaAndCyccntena) {
   EXPECT_EQ(core.read(0xE0001004), 0u);
   core.write(0xE000EDFC, 1u << 24);  // DEMCR.TRCENA
   core.write(0xE0001004, 1234);
-  EXPECT_EQ(core.read(0xE0001004), 1234u);  // no instruction has run
+  EXPECT_EQ(core.read(0xE0001004), 1234u);     // no instruction has run
   EXPECT_EQ(core.read(0xE0001000) >> 28, 4u);  // NUMCOMP
 }
 

@@ -99,9 +99,8 @@ std::vector<uint64_t> trace_of(const std::string& name) {
   if (!f.boot_with_device(name)) return trace;
   std::vector<std::unique_ptr<At>> events;
   for (unsigned k = 0; k < 5; ++k) {
-    events.push_back(std::make_unique<At>(f.scheduler, 20 * kMicrosecond + k * 3331, [&f, k] {
-      f.chip->set_irq_level(4 + k % 3, true);
-    }));
+    events.push_back(std::make_unique<At>(f.scheduler, 20 * kMicrosecond + k * 3331,
+                                          [&f, k] { f.chip->set_irq_level(4 + k % 3, true); }));
   }
   f.scheduler.run_until(100 * kMicrosecond);
   for (const TestDevice::Mark& mark : f.device->marks) {

@@ -64,7 +64,7 @@ TEST(UnicornStop, WithACodeHookAnywhereThePcIsAnEarlierBlocksStart) {
   uc_hook_add(e.uc, &hook, UC_HOOK_CODE, reinterpret_cast<void*>(&Engine::on_code), nullptr, 0x8000, 0x8000);
   e.call(0);
   e.call(kPopBlock);
-  EXPECT_EQ(e.reg(UC_ARM_REG_PC), kCode);       // resumed here, the push would run twice
+  EXPECT_EQ(e.reg(UC_ARM_REG_PC), kCode);  // resumed here, the push would run twice
   EXPECT_EQ(e.reg(UC_ARM_REG_SP), kStack - 8);
 }
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "image/chip/peripheral_bus.hpp"
 #include "fake_chip.hpp"
+#include "image/chip/peripheral_bus.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 namespace {
@@ -16,7 +16,9 @@ constexpr uint32_t kHc0 = 0x00, kHs = 0x20, kR0 = 0x24, kCfg = 0x44, kGc = 0x48,
 class AdcChip : public ::testing::Test {
  protected:
   AdcChip()
-      : analog(chip), ccm(chip, analog), adc1(0, chip, ccm, world, TeensyModel::kTeensy41),
+      : analog(chip),
+        ccm(chip, analog),
+        adc1(0, chip, ccm, world, TeensyModel::kTeensy41),
         adc2(1, chip, ccm, world, TeensyModel::kTeensy41) {
     window.add(analog);
     bus.add(ccm);
@@ -111,7 +113,7 @@ TEST_F(AdcChip, OurBackendsRoundRobinGetsAnInterruptPerConversion) {
 }
 
 TEST_F(AdcChip, ResultsScaleToTheResolution) {
-  world.analog[24] = 1023;  // pin 24 = AD_B0_12 = ADC1 channel 1
+  world.analog[24] = 1023;           // pin 24 = AD_B0_12 = ADC1 channel 1
   wr(kAdc1 + kCfg, (2u << 2) | 1u);  // 12 bits
   wr(kAdc1 + kHc0, 1);
   wait([&] { return (rd(kAdc1 + kHs) & 1u) != 0; });
@@ -125,8 +127,8 @@ TEST_F(AdcChip, ResultsScaleToTheResolution) {
 
 TEST_F(AdcChip, ContinuousConversionsFollowEachOtherWithoutTheFirstAdder) {
   world.analog[24] = 300;
-  wr(kAdc1 + kCfg, 1u << 2);     // 10 bits, ADICLK = IPG (3 MHz at reset), short sample ADSTS 0
-  wr(kAdc1 + kGc, 1u << 6);      // ADCO
+  wr(kAdc1 + kCfg, 1u << 2);  // 10 bits, ADICLK = IPG (3 MHz at reset), short sample ADSTS 0
+  wr(kAdc1 + kGc, 1u << 6);   // ADCO
   const SimTime start = chip.now_ns();
   wr(kAdc1 + kHc0, (1u << 7) | 1u);
   // First: 6 + (21 + 3) = 30 cycles = 10 µs; each next: 24 cycles = 8 µs. 100 conversions end at

@@ -4,9 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "fake_chip.hpp"
 #include "image/chip/peripheral_bus.hpp"
 #include "image/rt1062/dcdc.hpp"
-#include "fake_chip.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 namespace {
@@ -54,16 +54,16 @@ class ClockChip : public ::testing::Test {
 };
 
 TEST_F(ClockChip, ResetValuesAreTheManuals) {
-  EXPECT_EQ(rd(kCbcdr), 0x000A8300u);            // RM §14.7.5
-  EXPECT_EQ(rd(kCbcmr), 0x2DAE8324u);            // RM §14.7.6
-  EXPECT_EQ(rd(kCcm + 0x70), 0xFC3FFFFFu);       // CCGR2, RM §14.7.23
-  EXPECT_EQ(rd(kCcm + 0x74), 0xFFFFFFCFu);       // CCGR3, RM §14.7.24
-  EXPECT_EQ(rd(kPllArm), 0x00013063u);           // RM §14.8.1: bypassed, powered down, DIV 99
-  EXPECT_EQ(rd(kPllUsb1), 0x00012000u);          // RM §14.8.2
-  EXPECT_EQ(rd(kPllUsb1Set), 0x00012000u);       // an alias reads the register
-  EXPECT_EQ(rd(kPfd480), 0x1311100Cu);           // RM §14.8.15
-  EXPECT_EQ(rd(kDcdc + 0x0C), 0x0000010Eu);      // DCDC_REG3, RM §18.6.4: TRG 14 = 1.15 V
-  EXPECT_EQ(rd(kAnalog + 0x120), 0x00000F74u);   // PMU_REG_3P0, RM §13.4.2
+  EXPECT_EQ(rd(kCbcdr), 0x000A8300u);           // RM §14.7.5
+  EXPECT_EQ(rd(kCbcmr), 0x2DAE8324u);           // RM §14.7.6
+  EXPECT_EQ(rd(kCcm + 0x70), 0xFC3FFFFFu);      // CCGR2, RM §14.7.23
+  EXPECT_EQ(rd(kCcm + 0x74), 0xFFFFFFCFu);      // CCGR3, RM §14.7.24
+  EXPECT_EQ(rd(kPllArm), 0x00013063u);          // RM §14.8.1: bypassed, powered down, DIV 99
+  EXPECT_EQ(rd(kPllUsb1), 0x00012000u);         // RM §14.8.2
+  EXPECT_EQ(rd(kPllUsb1Set), 0x00012000u);      // an alias reads the register
+  EXPECT_EQ(rd(kPfd480), 0x1311100Cu);          // RM §14.8.15
+  EXPECT_EQ(rd(kDcdc + 0x0C), 0x0000010Eu);     // DCDC_REG3, RM §18.6.4: TRG 14 = 1.15 V
+  EXPECT_EQ(rd(kAnalog + 0x120), 0x00000F74u);  // PMU_REG_3P0, RM §13.4.2
   // At reset the core runs from PLL1's 24 MHz bypass through ARM_PODF = 1 (÷2): 12 MHz;
   // IPG = ÷4 (IPG_PODF 3) = 3 MHz; PERCLK = IPG ÷ 1.
   EXPECT_EQ(ccm.core_clock_hz(), 12000000u);
@@ -121,7 +121,6 @@ TEST_F(ClockChip, UsbPllStartEndsWithTheUsbPllLockedAfterItsLockTime) {
   EXPECT_EQ(analog.pfd_hz(Pll::kUsb1, 0), 720000000u);
 }
 
-
 TEST_F(ClockChip, SetArmClock600MHzGivesThe600MHzCoreAnd150MHzIpg) {
   wr(kPllUsb1Set, 1u << 12);  // the USB PLL as usb_pll_start leaves it
   chip.advance_to(100 * kMicrosecond);
@@ -145,13 +144,13 @@ TEST_F(ClockChip, SetArmClock600MHzGivesThe600MHzCoreAnd150MHzIpg) {
   EXPECT_EQ(rd(kCdhipr), 0u);
   EXPECT_EQ(ccm.core_clock_hz(), 120000000u);
 
-  wr(kPllArm, 1u << 12);                  // POWERDOWN
-  wr(kPllArm, (1u << 13) | 100u);         // ENABLE, DIV_SELECT 100
+  wr(kPllArm, 1u << 12);           // POWERDOWN
+  wr(kPllArm, (1u << 13) | 100u);  // ENABLE, DIV_SELECT 100
   const SimTime started = chip.now_ns();
   while (!(rd(kPllArm) & kLock)) spin();  // lock after 2250 / 24 MHz = 93.75 µs
   EXPECT_GE(chip.now_ns() - started, 93750);
   EXPECT_LE(chip.now_ns() - started, 93750 + kMicrosecond);
-  wr(kCacrr, 1);  // ARM_PODF = ÷2
+  wr(kCacrr, 1);                             // ARM_PODF = ÷2
   cbcdr = (cbcdr & ~(3u << 8)) | (3u << 8);  // IPG_PODF = ÷4
   wr(kCbcdr, cbcdr);
   wr(kCbcdr, rd(kCbcdr) & ~(1u << 25));  // back to PRE_PERIPH = PLL1 ÷ ARM_PODF
@@ -204,7 +203,7 @@ TEST_F(ClockChip, ABlockWhoseGateIsOffIsRefused) {
 }
 
 TEST_F(ClockChip, PllLockIsLostOnPowerDownAndTheCoreClockFollows) {
-  wr(kPllArm, (1u << 13) | 88u);  // 24 × 88 / 2 = 1056 MHz
+  wr(kPllArm, (1u << 13) | 88u);            // 24 × 88 / 2 = 1056 MHz
   EXPECT_EQ(analog.pll_hz(Pll::kArm), 0u);  // not yet locked
   chip.advance_to(chip.now_ns() + 100 * kMicrosecond);
   EXPECT_EQ(analog.pll_hz(Pll::kArm), 1056000000u);

@@ -16,9 +16,11 @@ TEST(ClockAndPinBlocks, AddsEveryBlockAtItsAddressAndWiresTheGates) {
   ASSERT_NE(blocks, nullptr);
   // RM table 2-2 addresses.
   const std::pair<uint32_t, const char*> expected[] = {
-      {0x400FC000u, "CCM"},  {0x400D8000u, "CCM_ANALOG"}, {0x40080000u, "DCDC"},  {0x401F8000u, "IOMUXC"},
-      {0x400AC000u, "IOMUXC_GPR"}, {0x401B8000u, "GPIO1"}, {0x400C0000u, "GPIO5"}, {0x42000000u, "GPIO6"},
-      {0x4200C000u, "GPIO9"}, {0x401EC000u, "GPT1"}, {0x401F0000u, "GPT2"}, {0x40084000u, "PIT"}, {0x400C4000u, "ADC1"}, {0x400C8000u, "ADC2"}, {0x401F4000u, "OCOTP"}, {0x400D4000u, "SNVS"}, {0x401DC000u, "TMR1"}, {0x401E8000u, "TMR4"}, {0x402A4000u, "FLEXSPI2"}, {0x402A8000u, "FLEXSPI"}};
+      {0x400FC000u, "CCM"},        {0x400D8000u, "CCM_ANALOG"}, {0x40080000u, "DCDC"},     {0x401F8000u, "IOMUXC"},
+      {0x400AC000u, "IOMUXC_GPR"}, {0x401B8000u, "GPIO1"},      {0x400C0000u, "GPIO5"},    {0x42000000u, "GPIO6"},
+      {0x4200C000u, "GPIO9"},      {0x401EC000u, "GPT1"},       {0x401F0000u, "GPT2"},     {0x40084000u, "PIT"},
+      {0x400C4000u, "ADC1"},       {0x400C8000u, "ADC2"},       {0x401F4000u, "OCOTP"},    {0x400D4000u, "SNVS"},
+      {0x401DC000u, "TMR1"},       {0x401E8000u, "TMR4"},       {0x402A4000u, "FLEXSPI2"}, {0x402A8000u, "FLEXSPI"}};
   for (const auto& [address, name] : expected) {
     ASSERT_NE(bus.find(address), nullptr) << name;
     EXPECT_STREQ(bus.find(address)->name(), name);

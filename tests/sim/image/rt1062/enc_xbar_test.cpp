@@ -4,9 +4,9 @@
 // counts the fake world reports.
 #include <gtest/gtest.h>
 
-#include "motion_fakes.hpp"
 #include "image/rt1062/enc.hpp"
 #include "image/rt1062/xbar1.hpp"
+#include "motion_fakes.hpp"
 
 namespace stepdance::sim::image {
 namespace {
@@ -74,9 +74,9 @@ struct EncTest : ::testing::Test {
 };
 
 TEST_F(EncTest, ResetValuesFollowTheManual) {
-  EXPECT_EQ(r16(sel(66)), 0u);                   // XBARA1_SEL33: every output selects input 0
+  EXPECT_EQ(r16(sel(66)), 0u);  // XBARA1_SEL33: every output selects input 0
   EXPECT_EQ(r16(enc(0, kCtrl)), 0u);
-  EXPECT_EQ(r16(enc(0, kUcomp)), 0xFFFFu);       // UCOMP/LCOMP reset 0xFFFF
+  EXPECT_EQ(r16(enc(0, kUcomp)), 0xFFFFu);  // UCOMP/LCOMP reset 0xFFFF
   ASSERT_TRUE(w16(sel(0), 0xFFFF));
   EXPECT_EQ(r16(sel(0)), 0x7F7Fu) << "SELn bits 15 and 7 are reserved";
 }

@@ -52,8 +52,7 @@ class FakeWorld : public BoardIo {
     analog_reads.push_back({now, pin});
     return analog[pin];
   }
-  int i2c_transfer(SimTime, uint8_t, uint32_t, uint8_t, const uint8_t*, size_t, uint8_t*, size_t,
-                   SimTime&) override {
+  int i2c_transfer(SimTime, uint8_t, uint32_t, uint8_t, const uint8_t*, size_t, uint8_t*, size_t, SimTime&) override {
     return 0;
   }
   size_t serial_from_device(SimTime, const uint8_t*, size_t) override { return 0; }

@@ -103,7 +103,7 @@ TEST_F(Flexio3Test, ResetValuesAndReservedBitsFollowTheManual) {
   EXPECT_EQ(rig.read32(kCtrl), 0u);
   EXPECT_EQ(rig.read32(timctl(3)), 0u);
   ASSERT_TRUE(rig.write(timcmp(2), 0xABCD1234u));
-  EXPECT_EQ(rig.read32(timcmp(2)), 0x1234u);  // CMP is bits 15:0
+  EXPECT_EQ(rig.read32(timcmp(2)), 0x1234u);   // CMP is bits 15:0
   ASSERT_TRUE(rig.write(kCtrl, 0x3FFFFFF8u));  // only reserved bits
   EXPECT_EQ(rig.read32(kCtrl), 0u);
   // SHIFTCTL: TIMSEL 26:24, TIMPOL 23, PINCFG 17:16, PINSEL 12:8, PINPOL 7, SMOD 2:0; the rest reserved.
@@ -205,8 +205,8 @@ TEST_F(Flexio3Test, AWriteAfterTheTickGoesOutOneFrameLater) {
   power_up();
   configure_port_a();
   rig.run_until(2000);
-  start_frame_clock();  // launches zeros at 2000
-  rig.run_until(42000);  // the second tick has launched (zeros again)
+  start_frame_clock();                               // launches zeros at 2000
+  rig.run_until(42000);                              // the second tick has launched (zeros again)
   ASSERT_TRUE(rig.write(shiftbuf(0), 0x0000000Cu));  // too late for the tick at 42000
   rig.run_until(82000);
   ASSERT_EQ(rig.io.frames.size(), 3u);

@@ -4,9 +4,9 @@
 // period 65536 / 150 MHz.
 #include <gtest/gtest.h>
 
-#include "motion_fakes.hpp"
 #include "image/rt1062/flexpwm.hpp"
 #include "image/rt1062/input_capture.hpp"
+#include "motion_fakes.hpp"
 
 namespace stepdance::sim::image {
 namespace {
@@ -66,9 +66,9 @@ struct CaptureTest : ::testing::Test {
 };
 
 TEST_F(CaptureTest, ResetValuesFollowTheManual) {
-  EXPECT_EQ(r16(sm(kPwm2, 0, kCtrl)), 0x0400u);   // SMnCTRL: FULL
-  EXPECT_EQ(r16(sm(kPwm2, 0, 0x2C)), 0xFFFFu);    // SMnDISMAP0
-  EXPECT_EQ(r16(sm(kPwm2, 0, 0x30)), 0x07FFu);    // SMnDTCNT0
+  EXPECT_EQ(r16(sm(kPwm2, 0, kCtrl)), 0x0400u);  // SMnCTRL: FULL
+  EXPECT_EQ(r16(sm(kPwm2, 0, 0x2C)), 0xFFFFu);   // SMnDISMAP0
+  EXPECT_EQ(r16(sm(kPwm2, 0, 0x30)), 0x07FFu);   // SMnDTCNT0
   EXPECT_EQ(r16(sm(kPwm2, 0, kCnt)), 0u);
   uint32_t value = 0;
   EXPECT_FALSE(rig.read(sm(kPwm2, 0, kCtrl), value, 4)) << "32-bit access";

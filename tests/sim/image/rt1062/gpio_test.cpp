@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "image/chip/peripheral_bus.hpp"
 #include "fake_chip.hpp"
+#include "image/chip/peripheral_bus.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 namespace {
@@ -46,11 +46,11 @@ class GpioChip : public ::testing::Test {
 };
 
 TEST_F(GpioChip, PadRegistersResetToGpioWithTheKeeper) {
-  EXPECT_EQ(rd(kIomuxc + kMuxB0_03), 5u);        // ALT5 = GPIO2_IO03 (RM §11.7)
-  EXPECT_EQ(rd(kIomuxc + kPadB0_03), 0x10B0u);   // RM §11.7 reset value
-  EXPECT_EQ(rd(kGpr + 0x6C), 0u);                // GPR27: GPIO2 drives the B0/B1 pads
+  EXPECT_EQ(rd(kIomuxc + kMuxB0_03), 5u);       // ALT5 = GPIO2_IO03 (RM §11.7)
+  EXPECT_EQ(rd(kIomuxc + kPadB0_03), 0x10B0u);  // RM §11.7 reset value
+  EXPECT_EQ(rd(kGpr + 0x6C), 0u);               // GPR27: GPIO2 drives the B0/B1 pads
   wr(kIomuxc + kMuxB0_03, 0xFFFFFFFFu);
-  EXPECT_EQ(rd(kIomuxc + kMuxB0_03), 0x1Fu);     // MUX_MODE and SION only; the rest reads 0
+  EXPECT_EQ(rd(kIomuxc + kMuxB0_03), 0x1Fu);  // MUX_MODE and SION only; the rest reads 0
   uint32_t value = 0;
   BusRefusal refusal;
   EXPECT_FALSE(bus.read(kIomuxc + 0x790, 4, value, refusal));  // past the last daisy select
@@ -148,9 +148,9 @@ TEST_F(GpioChip, ALevelInterruptOnGpio1StaysWhileTheLevelHolds) {
 }
 
 TEST_F(GpioChip, TheSlowPortsAreGatedTheFastOnesAreNot) {
-  EXPECT_EQ(pads.port(1).gate().ccgr, 1);   // GPIO1: CCGR1 CG13 (RM §14.7.22)
+  EXPECT_EQ(pads.port(1).gate().ccgr, 1);  // GPIO1: CCGR1 CG13 (RM §14.7.22)
   EXPECT_EQ(pads.port(1).gate().field, 13);
-  EXPECT_EQ(pads.port(2).gate().ccgr, 0);   // GPIO2: CCGR0 CG15 (RM §14.7.21)
+  EXPECT_EQ(pads.port(2).gate().ccgr, 0);  // GPIO2: CCGR0 CG15 (RM §14.7.21)
   EXPECT_EQ(pads.port(2).gate().field, 15);
   EXPECT_LT(pads.port(7).gate().ccgr, 0);
   EXPECT_EQ(pads.port(7).base(), kGpio7);

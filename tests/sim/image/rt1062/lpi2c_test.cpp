@@ -69,9 +69,12 @@ struct WireLike {
     for (int i = 0; i < 20000; ++i) {
       if (index <= bytes.size()) {
         for (uint32_t used = reg(kMfsr) & 7u; used < 4; ++used) {
-          if (index == 0) set(kMtdr, kCmdStart | bytes[0]);
-          else if (index < bytes.size()) set(kMtdr, kCmdTransmit | bytes[index]);
-          else if (stop) set(kMtdr, kCmdStop);
+          if (index == 0)
+            set(kMtdr, kCmdStart | bytes[0]);
+          else if (index < bytes.size())
+            set(kMtdr, kCmdTransmit | bytes[index]);
+          else if (stop)
+            set(kMtdr, kCmdStop);
           if (index++ >= bytes.size()) break;
         }
       }

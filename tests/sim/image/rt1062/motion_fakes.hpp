@@ -89,8 +89,8 @@ class FakeIo : public BoardIo {
   uint16_t analog_level(SimTime, uint8_t) override { return 0; }
   int i2c_transfer(SimTime now_ns, uint8_t bus, uint32_t clock_hz, uint8_t address, const uint8_t* write,
                    size_t write_length, uint8_t* read, size_t read_length, SimTime& wire_ns) override {
-    i2c_calls.push_back({now_ns, bus, clock_hz, address, std::vector<uint8_t>(write, write + write_length),
-                         read_length});
+    i2c_calls.push_back(
+        {now_ns, bus, clock_hz, address, std::vector<uint8_t>(write, write + write_length), read_length});
     // 9 bit times per byte plus start/stop, as a real bus at clock_hz would take.
     wire_ns = static_cast<SimTime>((9 * (1 + write_length + (read_length ? 1 + read_length : 0)) + 2) * 1000000000LL /
                                    clock_hz);
@@ -107,7 +107,7 @@ class FakeIo : public BoardIo {
   std::map<uint8_t, bool> pins;
   std::map<uint8_t, int64_t> encoders;
   std::map<uint8_t, std::vector<uint8_t>> i2c_devices;  ///< address → bytes it answers reads with
-  std::map<uint8_t, int> i2c_results;                    ///< address → a result to force (4 = data NACK)
+  std::map<uint8_t, int> i2c_results;                   ///< address → a result to force (4 = data NACK)
   std::vector<PortFrame> frames;
   std::vector<I2cCall> i2c_calls;
 };
@@ -157,10 +157,10 @@ class FakePit : public FakeClockBlock {
 /// power_up() sets it (PLL3 / 2 / 2 = 120 MHz) unless a test changes CS1CDR.
 struct Rig {
   Rig() {
-    ccm.registers[0x14] = 0x000A8300u;   // CBCDR: IPG_PODF (9:8) = 3 → ÷4
-    ccm.registers[0x20] = 0x13192F06u;   // CSCMR2 reset: FLEXIO2_CLK_SEL (20:19) = 3, PLL3
+    ccm.registers[0x14] = 0x000A8300u;             // CBCDR: IPG_PODF (9:8) = 3 → ÷4
+    ccm.registers[0x20] = 0x13192F06u;             // CSCMR2 reset: FLEXIO2_CLK_SEL (20:19) = 3, PLL3
     ccm.registers[0x28] = (1u << 25) | (1u << 9);  // CS1CDR: PODF 1, PRED 1 (÷2 ÷2)
-    analog.registers[0x10] = 0x80003040u;  // PLL_USB1: LOCK, POWER, EN_USB_CLKS, DIV_SELECT 0 (×20)
+    analog.registers[0x10] = 0x80003040u;          // PLL_USB1: LOCK, POWER, EN_USB_CLKS, DIV_SELECT 0 (×20)
     bus.add(ccm);
     bus.add(analog);
   }

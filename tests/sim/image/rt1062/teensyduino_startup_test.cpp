@@ -4,8 +4,8 @@
 // clocks end at 600/150/24 MHz, and the world sees no pin change.
 #include <gtest/gtest.h>
 
-#include "image/rt1062/clock_and_pin_blocks.hpp"
 #include "fake_chip.hpp"
+#include "image/rt1062/clock_and_pin_blocks.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 namespace {
@@ -35,8 +35,8 @@ class Startup : public ::testing::Test {
     wr(kGpr + 0x38, 0x00AA0000u);  // GPR14: 512 KB ITCM and DTCM
     wr(kAnalog + 0x154, 1u << 3);  // PMU_MISC0_SET
     reset_pfd();
-    wr(kCcm + 0x1C, (rd(kCcm + 0x1C) & ~0x3Fu) | (1u << 6));              // CSCMR1
-    wr(kCcm + 0x24, (rd(kCcm + 0x24) & ~0x3Fu) | (1u << 6));              // CSCDR1
+    wr(kCcm + 0x1C, (rd(kCcm + 0x1C) & ~0x3Fu) | (1u << 6));                // CSCMR1
+    wr(kCcm + 0x24, (rd(kCcm + 0x24) & ~0x3Fu) | (1u << 6));                // CSCDR1
     for (uint32_t n = 0; n < 4; ++n) wr(kGpr + 0x68 + 4 * n, 0xFFFFFFFFu);  // GPR26..29
   }
   void reset_pfd() {
@@ -147,8 +147,8 @@ void Startup::analog_init() {
 }
 
 void Startup::pwm_and_tempmon_and_usb() {
-  wr(kCcm + 0x78, rd(kCcm + 0x78) | (0xFFu << 16));                      // CCGR4 PWM1..4
-  wr(kCcm + 0x80, rd(kCcm + 0x80) | (0x3Fu << 26) | (3u << 16));          // CCGR6 QTIMER1..4
+  wr(kCcm + 0x78, rd(kCcm + 0x78) | (0xFFu << 16));               // CCGR4 PWM1..4
+  wr(kCcm + 0x80, rd(kCcm + 0x80) | (0x3Fu << 26) | (3u << 16));  // CCGR6 QTIMER1..4
   for (uint32_t tmr : {0x401DC000u, 0x401E0000u, 0x401E4000u}) {
     for (uint32_t ch = 0; ch < 4; ++ch) {
       const uint32_t at = tmr + 0x20 * ch;
@@ -171,8 +171,8 @@ void Startup::pwm_and_tempmon_and_usb() {
   wr(kAnalog + 0x290, rd(kAnalog + 0x290) | 0x5C0u);
   wr(kAnalog + 0x180, rd(kAnalog + 0x180) | 2u);
   wr(kAnalog + 0x120, (0x0Fu << 8) | (6u << 4) | 1u);  // usb_init: PMU_REG_3P0
-  wr(kCcm + 0x80, rd(kCcm + 0x80) | 3u);                // CCGR6 USBOH3
-  EXPECT_EQ(rd(0x401F4620u) & 0xFFFFFFu, 0x123456u);    // usb_init_serialnumber: MAC0
+  wr(kCcm + 0x80, rd(kCcm + 0x80) | 3u);               // CCGR6 USBOH3
+  EXPECT_EQ(rd(0x401F4620u) & 0xFFFFFFu, 0x123456u);   // usb_init_serialnumber: MAC0
 }
 
 TEST_F(Startup, EveryAccessOfTeensyduinosStartUpIsAnsweredAndTheClocksEndRight) {
@@ -212,9 +212,9 @@ TEST_F(Startup, EveryAccessOfTeensyduinosStartUpIsAnsweredAndTheClocksEndRight) 
 
 TEST_F(Startup, TheBootRomsClocksStartTheCoreAt396MHz) {
   blocks->apply_boot_rom_clocks();
-  EXPECT_EQ(blocks->ccm.core_clock_hz(), 396000000u);  // PLL1 792 MHz ÷ ARM_PODF 2
-  EXPECT_EQ(blocks->ccm.ipg_clock_hz(), 132000000u);   // ÷ 3: Teensyduino's F_BUS_ACTUAL at start
-  EXPECT_TRUE(rd(kAnalog + 0x30) & (1u << 31));       // PLL_SYS locked
+  EXPECT_EQ(blocks->ccm.core_clock_hz(), 396000000u);               // PLL1 792 MHz ÷ ARM_PODF 2
+  EXPECT_EQ(blocks->ccm.ipg_clock_hz(), 132000000u);                // ÷ 3: Teensyduino's F_BUS_ACTUAL at start
+  EXPECT_TRUE(rd(kAnalog + 0x30) & (1u << 31));                     // PLL_SYS locked
   EXPECT_EQ(rd(kAnalog) & ((1u << 31) | 0x7Fu), (1u << 31) | 66u);  // PLL_ARM locked, DIV_SELECT 66
   // set_arm_clock takes the same path from here (PERIPH_CLK_SEL is 0) and ends at 600 MHz.
   usb_pll_start();

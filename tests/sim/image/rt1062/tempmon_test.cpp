@@ -50,7 +50,9 @@ TEST_F(TempChip, TempmonInitThenGetTempReadsTwentyFiveDegrees) {
   const uint32_t fuse = rd(kAna1);
   const double hot_temp = fuse & 0xFFu, hot_count = (fuse >> 8) & 0xFFFu, room_count = fuse >> 20;
   const double per_degree = (room_count - hot_count) / (hot_temp - 25.0);
-  const auto code = [&](double celsius) { return static_cast<uint32_t>(hot_count + (hot_temp - celsius) * per_degree); };
+  const auto code = [&](double celsius) {
+    return static_cast<uint32_t>(hot_count + (hot_temp - celsius) * per_degree);
+  };
   wr(kSense0, rd(kSense0) | (code(85) << 20));
   wr(kSense2, rd(kSense2) | (code(90) << 16));
   wr(kSense2, rd(kSense2) | code(25));

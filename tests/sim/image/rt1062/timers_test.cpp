@@ -5,10 +5,10 @@
 #include <utility>
 #include <vector>
 
+#include "fake_chip.hpp"
 #include "image/chip/peripheral_bus.hpp"
 #include "image/rt1062/gpt.hpp"
 #include "image/rt1062/pit.hpp"
-#include "fake_chip.hpp"
 
 namespace stepdance::sim::image::rt1062 {
 namespace {
@@ -46,8 +46,8 @@ class TimerChip : public ::testing::Test {
     wr(kGpt2 + 0x10, period_ticks - 1u);
     wr(kGpt2 + 0x08, 0x3F);
     wr(kGpt2 + 0x00, (1u << 6) | (1u << 1));  // CLKSRC = PERCLK, ENMOD
-    wr(kGpt2 + 0x0C, 1u);                      // OF1IE
-    wr(kGpt2 + 0x00, rd(kGpt2 + 0x00) | 1u);   // EN
+    wr(kGpt2 + 0x0C, 1u);                     // OF1IE
+    wr(kGpt2 + 0x00, rd(kGpt2 + 0x00) | 1u);  // EN
   }
 
   testing::FakeChip chip;
@@ -166,7 +166,7 @@ TEST_F(TimerChip, PitStaysStillWhileTheModuleIsDisabled) {
   uint32_t value = 0;
   BusRefusal refusal;
   EXPECT_FALSE(bus.read(kPit + 0x0E0, 4, value, refusal));  // LTMR64H: not modelled
-  EXPECT_FALSE(bus.write(kPit + 0x108, 4, 4u, refusal));     // CHN: not modelled
+  EXPECT_FALSE(bus.write(kPit + 0x108, 4, 4u, refusal));    // CHN: not modelled
 }
 
 }  // namespace

@@ -3,12 +3,12 @@
 // No double-precision arithmetic: it runs on any ImageChip.
 #include <Arduino.h>
 
-volatile uint32_t boot_stage = 0;            // 1 once setup() has run, 2 once loop() has
-volatile uint32_t boot_millis_at_setup = 0;  // millis() when setup() began
-volatile uint32_t boot_delay_us = 0;         // micros() across delay(5)
+volatile uint32_t boot_stage = 0;                  // 1 once setup() has run, 2 once loop() has
+volatile uint32_t boot_millis_at_setup = 0;        // millis() when setup() began
+volatile uint32_t boot_delay_us = 0;               // micros() across delay(5)
 volatile uint32_t boot_delay_microseconds_us = 0;  // micros() across delayMicroseconds(250)
-volatile uint32_t boot_cpu_hz = 0;           // F_CPU_ACTUAL as setup() saw it
-volatile uint32_t boot_bus_hz = 0;           // F_BUS_ACTUAL
+volatile uint32_t boot_cpu_hz = 0;                 // F_CPU_ACTUAL as setup() saw it
+volatile uint32_t boot_bus_hz = 0;                 // F_BUS_ACTUAL
 
 void setup() {
   boot_millis_at_setup = millis();

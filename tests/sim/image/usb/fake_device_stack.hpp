@@ -19,19 +19,19 @@ namespace stepdance::sim::image::usb::testing {
 // Descriptors written by hand from USB 2.0 §9.6 and CDC 1.2 / PSTN 1.2 §5: a Teensy-like
 // serial (16C0:0483), endpoints 0x82 (notification), 0x03 (bulk OUT), 0x84 (bulk IN).
 inline const std::vector<uint8_t> kDeviceDescriptor = {18,   1,    0x00, 0x02, 0xEF, 0x02, 0x01, 64, 0xC0,
-                                                        0x16, 0x83, 0x04, 0x00, 0x01, 1,    2,    3,  1};
+                                                       0x16, 0x83, 0x04, 0x00, 0x01, 1,    2,    3,  1};
 inline const std::vector<uint8_t> kConfiguration = {
-    9, 2, 75, 0, 2, 1, 0, 0xC0, 50,              // configuration: 75 bytes, 2 interfaces, value 1
-    8, 11, 0, 2, 2, 2, 1, 0,                     // interface association: interfaces 0..1, CDC ACM
-    9, 4, 0, 0, 1, 2, 2, 1, 0,                   // interface 0: communications, ACM, AT commands
-    5, 0x24, 0x00, 0x10, 0x01,                   // CDC header, bcdCDC 1.10
-    5, 0x24, 0x01, 0x00, 1,                      // call management: data interface 1
-    4, 0x24, 0x02, 0x06,                         // ACM: line coding + break
-    5, 0x24, 0x06, 0, 1,                         // union: master 0, slave 1
-    7, 5, 0x82, 3, 16, 0, 5,                     // endpoint 0x82 interrupt, 16 bytes
-    9, 4, 1, 0, 2, 0x0A, 0, 0, 0,                // interface 1: data
-    7, 5, 0x03, 2, 0x00, 0x02, 0,                // endpoint 0x03 bulk OUT, 512 bytes
-    7, 5, 0x84, 2, 0x00, 0x02, 0,                // endpoint 0x84 bulk IN, 512 bytes
+    9, 2,    75,   0,    2,    1,    0, 0xC0, 50,  // configuration: 75 bytes, 2 interfaces, value 1
+    8, 11,   0,    2,    2,    2,    1, 0,         // interface association: interfaces 0..1, CDC ACM
+    9, 4,    0,    0,    1,    2,    2, 1,    0,   // interface 0: communications, ACM, AT commands
+    5, 0x24, 0x00, 0x10, 0x01,                     // CDC header, bcdCDC 1.10
+    5, 0x24, 0x01, 0x00, 1,                        // call management: data interface 1
+    4, 0x24, 0x02, 0x06,                           // ACM: line coding + break
+    5, 0x24, 0x06, 0,    1,                        // union: master 0, slave 1
+    7, 5,    0x82, 3,    16,   0,    5,            // endpoint 0x82 interrupt, 16 bytes
+    9, 4,    1,    0,    2,    0x0A, 0, 0,    0,   // interface 1: data
+    7, 5,    0x03, 2,    0x00, 0x02, 0,            // endpoint 0x03 bulk OUT, 512 bytes
+    7, 5,    0x84, 2,    0x00, 0x02, 0,            // endpoint 0x84 bulk IN, 512 bytes
 };
 inline const std::vector<uint8_t> kLanguages = {4, 3, 0x09, 0x04};
 inline const std::vector<uint8_t> kManufacturer = {12, 3, 'M', 0, 'a', 0, 'k', 0, 'e', 0, 'r', 0};
@@ -64,7 +64,7 @@ class FakeDeviceStack {
   void init(bool power_phy = true) {
     if (power_phy) {
       EXPECT_EQ(phy_.write(0x38, 4, UsbPhy::kCtrlSoftReset | UsbPhy::kCtrlClockGate), Access::kOk);  // CTRL_CLR
-      EXPECT_EQ(phy_.write(0x00, 4, 0), Access::kOk);                                               // PWD = 0
+      EXPECT_EQ(phy_.write(0x00, 4, 0), Access::kOk);                                                // PWD = 0
     }
     set(kUsbMode, 2 | (1u << 3));  // device mode, setup lockout off
     chip_.set_word(head(0), (64u << 16) | (1u << 15));
@@ -96,7 +96,7 @@ class FakeDeviceStack {
   }
   /// SET_CONFIGURATION's work: endpoints 2 (interrupt IN), 3 (bulk OUT), 4 (bulk IN).
   void configure_endpoints() {
-    set(kEndptCtrl0 + 8, 0x00CC0000u);  // TX interrupt, enabled
+    set(kEndptCtrl0 + 8, 0x00CC0000u);   // TX interrupt, enabled
     set(kEndptCtrl0 + 12, 0x000000C8u);  // RX bulk, enabled
     set(kEndptCtrl0 + 16, 0x00C80000u);  // TX bulk, enabled
     chip_.set_word(head(2 * 3), (512u << 16) | kCapZltDisabled);
@@ -168,7 +168,7 @@ inline void FakeDeviceStack::transmit(const std::vector<uint8_t>& data, uint16_t
   for (uint32_t i = 0; i < length; ++i) chip_.ram[kEp0Buffer - FakeChip::kRamBase + i] = data[i];
   make_dtd(kDtdData, kEp0Buffer, length, false);
   prime(1, kDtdData);
-  make_dtd(kDtdAck, 0, 0, false);  // status stage: the host's zero-length OUT
+  make_dtd(kDtdAck, 0, 0, false);    // status stage: the host's zero-length OUT
   set(kEndptComplete, 0x00010001u);  // forget earlier endpoint-0 completions, as Teensyduino does
   prime(0, kDtdAck);
 }
@@ -223,9 +223,7 @@ inline void FakeDeviceStack::handle_setup(const uint8_t s[8]) {
       prime(1, kDtdAck);
       line_coding_pending_ = true;
       return;
-    case 0x2221:
-      line_state = value;
-      return acknowledge_in();
+    case 0x2221: line_state = value; return acknowledge_in();
     default: set(kEndptCtrl0, 0x00010001u);
   }
 }

@@ -12,8 +12,8 @@
 namespace stepdance::sim::image::usb::testing {
 namespace {
 
-constexpr unsigned kRxQueue = 2 * 3;     // endpoint 3 OUT (CDC_RX_ENDPOINT)
-constexpr unsigned kTxQueue = 2 * 4 + 1;  // endpoint 4 IN (CDC_TX_ENDPOINT)
+constexpr unsigned kRxQueue = 2 * 3;                             // endpoint 3 OUT (CDC_RX_ENDPOINT)
+constexpr unsigned kTxQueue = 2 * 4 + 1;                         // endpoint 4 IN (CDC_TX_ENDPOINT)
 constexpr uint32_t kRxDtds = FakeDeviceStack::kDtdData + 0x200;  // 8 dTDs, 32 bytes apart
 
 /// Teensyduino's usb_init() up to RS, in its order.

@@ -65,7 +65,7 @@ TEST(UsbDescriptors, AVendorInterfaceBesideTheCdcPairIsIgnored) {
 TEST(UsbDescriptors, StringsDecodeFromUtf16) {
   EXPECT_EQ(decode_string_descriptor(kManufacturer), "Maker");
   EXPECT_EQ(decode_string_descriptor({6, 3, 0xE9, 0x00, 'x', 0}), "?x");  // é is not ASCII
-  EXPECT_EQ(decode_string_descriptor({4, 2, 'x', 0}), "");                 // not a string descriptor
+  EXPECT_EQ(decode_string_descriptor({4, 2, 'x', 0}), "");                // not a string descriptor
 }
 
 }  // namespace

@@ -7,8 +7,14 @@ namespace stepdance::sim::image::usb::testing {
 namespace {
 
 std::vector<uint8_t> setup_bytes(uint8_t type, uint8_t request, uint16_t value, uint16_t index, uint16_t length) {
-  return {type, request, static_cast<uint8_t>(value), static_cast<uint8_t>(value >> 8), static_cast<uint8_t>(index),
-          static_cast<uint8_t>(index >> 8), static_cast<uint8_t>(length), static_cast<uint8_t>(length >> 8)};
+  return {type,
+          request,
+          static_cast<uint8_t>(value),
+          static_cast<uint8_t>(value >> 8),
+          static_cast<uint8_t>(index),
+          static_cast<uint8_t>(index >> 8),
+          static_cast<uint8_t>(length),
+          static_cast<uint8_t>(length >> 8)};
 }
 
 TEST(UsbEnumeration, ReadsTheDescriptorsByteForByte) {
@@ -51,9 +57,9 @@ TEST(UsbEnumeration, SendsThePcRequestsInOrder) {
   EXPECT_EQ(s[4], setup_bytes(0x80, 6, 0x0200, 0, 75));
   EXPECT_EQ(s[5], setup_bytes(0x80, 6, 0x0300, 0, 255));
   EXPECT_EQ(s[6], setup_bytes(0x80, 6, 0x0301, 0x0409, 255));
-  EXPECT_EQ(s[9], setup_bytes(0x00, 9, 1, 0, 0));         // SET_CONFIGURATION 1
-  EXPECT_EQ(s[10], setup_bytes(0x21, 0x20, 0, 0, 7));     // SET_LINE_CODING, interface 0
-  EXPECT_EQ(s[11], setup_bytes(0x21, 0x22, 3, 0, 0));     // SET_CONTROL_LINE_STATE: DTR | RTS
+  EXPECT_EQ(s[9], setup_bytes(0x00, 9, 1, 0, 0));      // SET_CONFIGURATION 1
+  EXPECT_EQ(s[10], setup_bytes(0x21, 0x20, 0, 0, 7));  // SET_LINE_CODING, interface 0
+  EXPECT_EQ(s[11], setup_bytes(0x21, 0x22, 3, 0, 0));  // SET_CONTROL_LINE_STATE: DTR | RTS
 }
 
 TEST(UsbEnumeration, CdcRequestsReachTheDevice) {
@@ -83,8 +89,9 @@ TEST(UsbEnumeration, TakesTheSpecsWaitsAndNoMore) {
   EXPECT_GE(r.configured_ns, 122 * kMillisecond);
   EXPECT_LT(r.configured_ns, 125 * kMillisecond);
   EXPECT_EQ(bench.stack.bus_resets, 1);
-  EXPECT_EQ(bench.host().describe(),
-            "usb host: configured at 0.124750 s, high speed, 16C0:0483 \"Maker\" \"Serial\", CDC bulk IN 0x84 OUT 0x03");
+  EXPECT_EQ(
+      bench.host().describe(),
+      "usb host: configured at 0.124750 s, high speed, 16C0:0483 \"Maker\" \"Serial\", CDC bulk IN 0x84 OUT 0x03");
 }
 
 TEST(UsbEnumeration, ADeviceThatNeverAnswersIsReportedInOneLine) {
@@ -188,7 +195,7 @@ TEST(UsbEnumeration, ATerminalClosingAndOpeningThePortTogglesDtr) {
   bench.host().set_line_state(false, false);  // the port closed
   bench.stack.run_until(bench.chip.now_ns() + kMillisecond);
   EXPECT_EQ(bench.stack.line_state, 0);
-  bench.host().set_line_state(true, false);   // opened again, DTR only
+  bench.host().set_line_state(true, false);  // opened again, DTR only
   bench.stack.run_until(bench.chip.now_ns() + kMillisecond);
   EXPECT_EQ(bench.stack.line_state, 1);
   EXPECT_EQ(bench.stack.setups.back(), (std::vector<uint8_t>{0x21, 0x22, 1, 0, 0, 0, 0, 0}));

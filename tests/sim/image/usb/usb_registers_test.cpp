@@ -36,9 +36,9 @@ TEST(UsbRegisters, BlocksSitWhereTheMemoryMapPutsThem) {
 TEST(UsbRegisters, UnmodelledRegistersSaySo) {
   UsbBench bench;
   uint32_t value = 0;
-  EXPECT_EQ(bench.usb().read(0x000, 4, value), Access::kUnmodelled);  // ID
-  EXPECT_EQ(bench.usb().read(0x178, 4, value), Access::kUnmodelled);  // ENDPTNAK
-  EXPECT_EQ(bench.usb().read(0x1A4, 4, value), Access::kUnmodelled);  // OTGSC
+  EXPECT_EQ(bench.usb().read(0x000, 4, value), Access::kUnmodelled);       // ID
+  EXPECT_EQ(bench.usb().read(0x178, 4, value), Access::kUnmodelled);       // ENDPTNAK
+  EXPECT_EQ(bench.usb().read(0x1A4, 4, value), Access::kUnmodelled);       // OTGSC
   EXPECT_EQ(bench.blocks->phy.read(0x80, 4, value), Access::kUnmodelled);  // VERSION
 }
 
@@ -52,7 +52,7 @@ TEST(UsbRegisters, PhySetClearAndToggleAliases) {
   ASSERT_EQ(phy.write(0x3C, 4, 0x00000002u), Access::kOk);  // CTRL_TOG bit 1
   ASSERT_EQ(phy.read(0x30, 4, value), Access::kOk);
   EXPECT_EQ(value, 0x00200002u);
-  EXPECT_FALSE(phy.ready());  // PWD still powers the transceivers down
+  EXPECT_FALSE(phy.ready());                                // PWD still powers the transceivers down
   ASSERT_EQ(phy.write(0x08, 4, 0xFFFFFFFFu), Access::kOk);  // PWD_CLR
   EXPECT_TRUE(phy.ready());
   ASSERT_EQ(phy.write(0x34, 4, 0x80000000u), Access::kOk);  // CTRL_SET SFTRST: PWD back to reset

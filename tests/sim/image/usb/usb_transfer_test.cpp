@@ -35,7 +35,7 @@ TEST(UsbTransfers, BulkOutBytesLandInThePrimedDtd) {
   // A short packet (5 < 512) retires the dTD: 507 bytes left, IOC kept, Active cleared.
   EXPECT_EQ(bench.chip.word(FakeDeviceStack::kDtdRx + 4), (507u << 16) | (1u << 15));
   EXPECT_EQ(s.completions & (1u << 3), 1u << 3);  // ENDPTCOMPLETE bit 3 (ERCE3)
-  EXPECT_FALSE(s.reg(kEndptStat) & (1u << 3));      // no longer primed
+  EXPECT_FALSE(s.reg(kEndptStat) & (1u << 3));    // no longer primed
   ASSERT_FALSE(bench.chip.levels.empty());
   EXPECT_EQ(bench.chip.levels.front().irq, 113u);
   EXPECT_TRUE(bench.chip.levels.front().high);
@@ -53,7 +53,7 @@ TEST(UsbTransfers, AnUnprimedEndpointHoldsTheHostsBytesUntilPrimed) {
   s.make_dtd(FakeDeviceStack::kDtdRx, FakeDeviceStack::kRxBuffer, 512, true);
   const SimTime primed_at = bench.chip.now_ns();
   s.prime(kBulkOut, FakeDeviceStack::kDtdRx);
-  EXPECT_GE(bench.chip.stops, 1);  // the prime woke the host: the CPU's run must end
+  EXPECT_GE(bench.chip.stops, 1);               // the prime woke the host: the CPU's run must end
   s.run_until(primed_at + 125 * kMicrosecond);  // within one microframe of the prime
   EXPECT_EQ(ram_text(bench.chip, FakeDeviceStack::kRxBuffer, 3), "abc");
   EXPECT_EQ(bench.host().out_pending(), 0u);
@@ -74,7 +74,7 @@ TEST(UsbTransfers, InCompletionSetsEndptCompleteAndRaisesIrq113) {
   EXPECT_EQ(s.reg(kEndptComplete), 1u << 20);  // ETCE4: transmit endpoint 4
   EXPECT_TRUE(s.reg(kUsbSts) & kStsUi);
   EXPECT_TRUE(bench.chip.irq113);
-  EXPECT_EQ(bench.chip.word(FakeDeviceStack::kDtdTx + 4), 1u << 15);  // 0 left, IOC, not active
+  EXPECT_EQ(bench.chip.word(FakeDeviceStack::kDtdTx + 4), 1u << 15);         // 0 left, IOC, not active
   EXPECT_EQ(bench.chip.word(s.head(kBulkIn) + 4), FakeDeviceStack::kDtdTx);  // current dTD pointer
 }
 
@@ -182,7 +182,6 @@ TEST(UsbTransfers, ATransferIntoUnmappedMemoryIsASystemError) {
   EXPECT_TRUE(s.reg(kUsbSts) & kStsSei);
   EXPECT_NE(bench.host().failure(), "");
 }
-
 
 TEST(UsbTransfers, TheHostTakesOnlyWhatItCanHoldAndLosesNothing) {
   UsbBench bench;

@@ -18,8 +18,8 @@ using stepdance::sim::image::BusRefusal;
 
 constexpr unsigned kIrqs = 160;
 constexpr uint32_t kCoreFirst = 0xE0000000u, kCoreLast = 0xE00FFFFFu;  // ARMv7-M PPB
-constexpr uint32_t kCyccnt = 0xE0001004u;                               // DWT_CYCCNT (§C1.8.8)
-constexpr uint32_t kIser = 0xE000E100u, kIcer = 0xE000E180u;            // NVIC (§B3.4)
+constexpr uint32_t kCyccnt = 0xE0001004u;                              // DWT_CYCCNT (§C1.8.8)
+constexpr uint32_t kIser = 0xE000E100u, kIcer = 0xE000E180u;           // NVIC (§B3.4)
 constexpr uint32_t kIspr = 0xE000E200u, kIcpr = 0xE000E280u, kIpr = 0xE000E400u;
 
 struct Nvic {
@@ -105,7 +105,8 @@ uint32_t core_read(uint32_t address) {
   Nvic& n = nvic();
   if (address == kCyccnt) return static_cast<uint32_t>(world().chip.cycles());
   if (in_block(address, kIser) || in_block(address, kIcer)) {
-    return get_bits([](unsigned irq) { return nvic().enabled[irq]; }, address, in_block(address, kIser) ? kIser : kIcer);
+    return get_bits([](unsigned irq) { return nvic().enabled[irq]; }, address,
+                    in_block(address, kIser) ? kIser : kIcer);
   }
   if (in_block(address, kIspr) || in_block(address, kIcpr)) {
     return get_bits(is_pending, address, in_block(address, kIspr) ? kIspr : kIcpr);
@@ -116,12 +117,18 @@ uint32_t core_read(uint32_t address) {
 
 void core_write(uint32_t address, uint32_t value) {
   Nvic& n = nvic();
-  if (in_block(address, kIser)) set_bits(n.enabled, address, kIser, value, true);
-  else if (in_block(address, kIcer)) set_bits(n.enabled, address, kIcer, value, false);
-  else if (in_block(address, kIspr)) set_bits(n.pending, address, kIspr, value, true);
-  else if (in_block(address, kIcpr)) set_bits(n.pending, address, kIcpr, value, false);
-  else if (address >= kIpr && address < kIpr + kIrqs) n.priority[address - kIpr] = static_cast<uint8_t>(value & 0xF0u);
-  else if (address != kCyccnt) n.core[address] = value;
+  if (in_block(address, kIser))
+    set_bits(n.enabled, address, kIser, value, true);
+  else if (in_block(address, kIcer))
+    set_bits(n.enabled, address, kIcer, value, false);
+  else if (in_block(address, kIspr))
+    set_bits(n.pending, address, kIspr, value, true);
+  else if (in_block(address, kIcpr))
+    set_bits(n.pending, address, kIcpr, value, false);
+  else if (address >= kIpr && address < kIpr + kIrqs)
+    n.priority[address - kIpr] = static_cast<uint8_t>(value & 0xF0u);
+  else if (address != kCyccnt)
+    n.core[address] = value;
 }
 
 }  // namespace

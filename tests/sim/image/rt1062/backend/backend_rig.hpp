@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <memory>
 
-#include "motion_fakes.hpp"
 #include "image/rt1062/motion_blocks.hpp"
+#include "motion_fakes.hpp"
 
 namespace backend_rig {
 
@@ -32,10 +32,8 @@ struct World {
   stepdance::sim::image::testing::FakeClockBlock iomuxc{"IOMUXC", 0x401F8000u};
   stepdance::sim::image::testing::FakeClockBlock gpr{"IOMUXC_GPR", 0x400AC000u};
   stepdance::sim::image::testing::FakePit pit;
-  stepdance::sim::image::testing::FakeClockBlock gpio[4] = {{"GPIO6", 0x42000000u},
-                                                            {"GPIO7", 0x42004000u},
-                                                            {"GPIO8", 0x42008000u},
-                                                            {"GPIO9", 0x4200C000u}};
+  stepdance::sim::image::testing::FakeClockBlock gpio[4] = {
+      {"GPIO6", 0x42000000u}, {"GPIO7", 0x42004000u}, {"GPIO8", 0x42008000u}, {"GPIO9", 0x4200C000u}};
   stepdance::sim::image::PeripheralBus bus;
   std::unique_ptr<stepdance::sim::image::MotionBlocks> blocks;
 };
