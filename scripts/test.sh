@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Sets up the machine, then builds and runs the whole test suite: the core's portability check,
 # the function-length limits (60 lines in src/, sim/ and cli/; 40 in sim/scenario/), the comment
-# density of src/ (at least 0.10, scripts/comment-density.sh),
+# density of src/ (at least 0.10, scripts/comment-density.sh), the C/C++ format
+# (scripts/check-format.sh, .clang-format),
 # the Cortex-M7 builds (core, Teensy backend, every example sketch, firmware image, Arduino zip),
 # the core's unit tests on a Cortex-M7 under QEMU, the host tests (CTest: unit, example sketches,
 # simulator, servo firmware under simavr), the host tests again under AddressSanitizer + UBSan,
@@ -21,6 +22,7 @@ stage scripts/check-function-length.sh 60 src sim cli
 stage scripts/check-function-length.sh 40 sim/scenario
 stage scripts/comment-density.sh --min 0.10 src
 stage scripts/check-format.sh --self-test
+stage scripts/check-format.sh
 stage scripts/build-target.sh
 stage scripts/build-teensy.sh
 stage scripts/test-target-qemu.sh
