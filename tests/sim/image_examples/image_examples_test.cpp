@@ -128,7 +128,7 @@ SimTime first_step_ns(const ExampleRun& run, const std::string& board) {
 /// `scenario` (on the image's clocks) with each image board's host sketch powered on as much later
 /// as its first step came before the image's. A host-compiled sketch's setup() and loop() cost no
 /// simulated time; the image's cost what the core takes (PlannedDrawing plans its first moves for
-/// 0.52 ms before its first step). A short host run finds the host's first step; the difference
+/// 0.92 ms before its first step). A short host run finds the host's first step; the difference
 /// is a whole number of frames, since both boards' frames are on the same clock. Without it, what
 /// the world does at a fixed time (a knob turned at 16 s) meets a motion shifted by that much.
 scenario::Scenario started_like_the_image(scenario::Scenario scenario, const ExampleRun& image,
