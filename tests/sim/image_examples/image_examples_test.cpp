@@ -158,10 +158,10 @@ struct ImageExample {
   bool fed_over_serial = false;               ///< its motion comes from a scripted host's lines
   /// Run to its end, its frames must match to the last. False where, measured, a step lands a
   /// frame apart after a while though the steps, the drawing and every expectation stay the same
-  /// (the difference is printed and kept as a test property): ClayTexturizer, whose pedal is an
-  /// analog input the image's ADCs convert round-robin in the background; Harmonograph, for a
-  /// cause not found yet (docs/simulator.md, "Image boards": not its encoders' read instants,
-  /// which the sample clock fixed, nor the image's fused multiply-adds).
+  /// (the difference is printed and kept as a test property): ClayTexturizer and Harmonograph,
+  /// measured before the host board was powered on at the image's first step
+  /// (started_like_the_image); since then both equal frame for frame through 6 s, and their full
+  /// runs are to be repeated before this goes back to true (docs/simulator.md, "Image boards").
   bool frames_to_the_end = true;
 };
 
